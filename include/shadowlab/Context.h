@@ -1,0 +1,58 @@
+#pragma once
+/// @file Context.h
+/// An OpenGL 4.5 core context. Everything shadowlab draws needs one current
+/// on the calling thread.
+#include <cstddef>
+#include <memory>
+#include <string>
+
+namespace shadowlab {
+
+struct ContextOptions {
+    /// Request a debug context and route KHR_debug messages to stderr
+    /// (errors always, other messages when `verbose`). Default on.
+    bool debug = true;
+    /// Also print KHR_debug messages of low/notification severity. Default off.
+    bool verbose = false;
+};
+
+/// What the driver reports, and the limits techniques must respect.
+struct GlInfo {
+    std::string vendor, renderer, version, glslVersion;
+    std::string platform;       ///< "egl-surfaceless", "egl-device" or "glfw"
+    int maxTextureSize = 0;     ///< GL_MAX_TEXTURE_SIZE, texels
+    int maxCubeMapSize = 0;     ///< GL_MAX_CUBE_MAP_TEXTURE_SIZE, texels
+    int maxArrayLayers = 0;     ///< GL_MAX_ARRAY_TEXTURE_LAYERS
+    int maxRenderbufferSize = 0;///< GL_MAX_RENDERBUFFER_SIZE
+    int maxViewportWidth = 0, maxViewportHeight = 0;
+};
+
+/// A headless context: EGL on Mesa's surfaceless platform (llvmpipe where
+/// there is no GPU), else the EGL device platform (NVIDIA headless). The
+/// environment variable SHADOWLAB_EGL_PLATFORM=surfaceless|device forces one.
+/// Throws shadowlab::Error when no OpenGL 4.5 core context can be made,
+/// naming the version that was found.
+class Context {
+public:
+    static Context createHeadless(const ContextOptions& options = {});
+
+    Context(Context&&) noexcept;
+    Context& operator=(Context&&) noexcept;
+    ~Context();
+
+    const GlInfo& info() const;
+    void makeCurrent();
+    /// GL errors reported through KHR_debug since creation or the last reset.
+    std::size_t debugErrorCount() const;
+    /// The most recent KHR_debug error message, empty if none.
+    std::string lastDebugError() const;
+    void resetDebugErrors();
+
+    struct Impl;
+    explicit Context(std::unique_ptr<Impl> impl);
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace shadowlab

@@ -1,0 +1,144 @@
+#pragma once
+/// @file Scene.h
+/// The scene model: meshes, materials, a node hierarchy, one camera, lights.
+///
+/// Units: lengths in scene units (treated as metres in the docs), angles in
+/// degrees in the scene file and in these structs, colours linear RGB.
+/// World space is right-handed with +Y up (as glTF).
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+/// Triangle mesh in object space. `normals` and `uvs` are per vertex and have
+/// the size of `positions` (uvs may be empty). Indices are counter-clockwise
+/// front-facing triangles.
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint32_t> indices;
+
+    std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+/// 8-bit RGBA image in memory, rows top to bottom.
+struct ImageRGBA8 {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels; ///< width*height*4 bytes
+};
+
+/// Blinn-Phong material as in the lecture material (ambient, diffuse,
+/// specular, shininess), with a base colour that tints ambient and diffuse.
+/// Lit colour = globalAmbient*ambient*base
+///            + sum_lights visibility * light * (diffuse*base*max(N.L,0)
+///                                               + specular*max(N.H,0)^shininess)
+struct Material {
+    std::string name;
+    glm::vec3 baseColor{0.8f};   ///< linear RGB, default 0.8 grey
+    int baseColorTexture = -1;   ///< index into Scene::textures (sRGB), -1 none
+    glm::vec3 ambient{1.0f};     ///< ambient reflectance, multiplies baseColor; default 1
+    glm::vec3 diffuse{1.0f};     ///< diffuse reflectance, multiplies baseColor; default 1
+    glm::vec3 specular{0.2f};    ///< specular reflectance (not tinted); default 0.2
+    float shininess = 32.0f;     ///< Blinn-Phong exponent, > 0; default 32
+};
+
+/// Which algorithm decides a light's visibility term. Each technique is its
+/// own module under src/techniques/. Only `None` exists in the foundation;
+/// the technique issues add their enumerators here.
+enum class ShadowTechnique {
+    None, ///< visibility is always 1: no shadows (the unshadowed baseline)
+};
+
+/// Per-light shadow settings (the scene file's `lights[i].shadow` block).
+/// The technique modules add their options structs as members here.
+struct ShadowSettings {
+    ShadowTechnique technique = ShadowTechnique::None; ///< default none
+};
+
+enum class LightType { Directional, Spot, Point };
+
+/// A light. Fields that do not apply to a type are ignored for it.
+struct Light {
+    std::string name;
+    LightType type = LightType::Directional;
+    glm::vec3 color{1.0f};             ///< linear RGB, default white
+    float intensity = 1.0f;            ///< multiplies color, >= 0, default 1
+    glm::vec3 position{0.0f};          ///< world space; spot and point
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; ///< world space, unit length, the way light travels; directional and spot
+    float range = 0.0f;                ///< spot/point: distance beyond which the light has no effect; 0 = unlimited. No other falloff.
+    float innerConeDeg = 20.0f;        ///< spot: half-angle of full intensity, degrees, default 20
+    float outerConeDeg = 30.0f;        ///< spot: half-angle where light reaches zero, degrees, default 30, >= inner, < 90
+    float size = 0.0f;                 ///< soft reference only: radius (point/spot, scene units) or angular diameter (directional, degrees); 0 = hard
+    ShadowSettings shadow;
+};
+
+/// Perspective camera.
+struct Camera {
+    glm::vec3 position{0.0f, 4.0f, 10.0f}; ///< world space
+    glm::vec3 target{0.0f};                ///< world-space point looked at
+    glm::vec3 up{0.0f, 1.0f, 0.0f};        ///< world-space up hint
+    float fovYDeg = 45.0f;                 ///< vertical field of view, degrees, (0,180)
+    float nearPlane = 0.1f;                ///< > 0
+    float farPlane = 100.0f;               ///< > near
+
+    glm::mat4 viewFromWorld() const;
+    glm::mat4 clipFromView(float aspect) const;
+};
+
+/// A node of the hierarchy. Transform = translation * rotation * scale,
+/// relative to the parent.
+struct Node {
+    std::string name;
+    int parent = -1;            ///< index into Scene::nodes, -1 for a root
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 scale{1.0f};
+    int mesh = -1;              ///< index into Scene::meshes, -1 for none
+    int material = -1;          ///< index into Scene::materials, -1 = default material
+    bool castsShadows = true;   ///< default true
+    bool receivesShadows = true;///< default true
+
+    glm::mat4 parentFromLocal() const;
+};
+
+/// One mesh instance to draw, with its world transform resolved.
+struct DrawItem {
+    int mesh = -1;
+    int material = -1;
+    int node = -1;
+    glm::mat4 worldFromObject{1.0f};
+    bool castsShadows = true;
+    bool receivesShadows = true;
+};
+
+struct Scene {
+    std::string name;
+    Camera camera;
+    glm::vec3 ambient{0.15f};       ///< global ambient light, linear RGB, default 0.15
+    glm::vec3 background{0.02f, 0.02f, 0.03f}; ///< clear colour, linear RGB
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<ImageRGBA8> textures; ///< base-colour textures, sRGB-encoded
+    std::vector<Node> nodes;          ///< parents come before their children
+    std::vector<Light> lights;
+
+    /// Every node with a mesh, with world transforms resolved (parents first).
+    std::vector<DrawItem> drawItems() const;
+    /// World-space axis-aligned bounds of all drawn geometry ({+inf},{-inf} if none).
+    std::pair<glm::vec3, glm::vec3> worldBounds() const;
+};
+
+/// Name <-> enum for the scene file and the command line.
+const char* toString(ShadowTechnique t);
+const char* toString(LightType t);
+
+} // namespace shadowlab

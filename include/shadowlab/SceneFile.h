@@ -1,0 +1,31 @@
+#pragma once
+/// @file SceneFile.h
+/// JSON scene files (format: docs/scene-format.md) and `--set` overrides.
+#include <shadowlab/Scene.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+/// Loads a scene file. Mesh and texture paths are relative to the file's
+/// directory. `overrides` are `path=value` strings as given to `--set`
+/// (e.g. `lights[0].intensity=2`, `camera.fovY=60`); the value is JSON, or a
+/// plain string when it is not valid JSON. Throws shadowlab::Error with a
+/// one-line message naming the file (or the `--set` flag), the JSON path of
+/// the bad value and what was expected.
+Scene loadSceneFile(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+
+/// Parses scene JSON text. `sourceName` names it in errors; `baseDir`
+/// resolves relative mesh and texture paths.
+Scene parseScene(const std::string& jsonText, const std::string& sourceName,
+                 const std::filesystem::path& baseDir, const std::vector<std::string>& overrides = {});
+
+/// The built-in default scene (a torus floating over a ground plane, one
+/// directional light): what `shadowlab render` draws without a scene file.
+Scene defaultScene(const std::vector<std::string>& overrides = {});
+/// The default scene's JSON text.
+const std::string& defaultSceneJson();
+
+} // namespace shadowlab

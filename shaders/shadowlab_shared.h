@@ -1,0 +1,72 @@
+// Constants and uniform-block layouts shared by C++ and GLSL: the one place
+// they are written. Included by src/render/*.cpp and by the shaders.
+// Blocks use std140 with vec4/mat4 members only, so the C++ structs (glm)
+// have the same layout without padding rules to remember.
+#ifndef SHADOWLAB_SHARED_H
+#define SHADOWLAB_SHARED_H
+
+// Light types (LightUniforms.params.w and the LIGHT_TYPE variant define).
+#define SL_LIGHT_DIRECTIONAL 0
+#define SL_LIGHT_SPOT 1
+#define SL_LIGHT_POINT 2
+
+// Shadow techniques (the SHADOW_TECHNIQUE variant define).
+#define SL_SHADOW_NONE 0
+
+// Uniform-block binding points.
+#define SL_BINDING_FRAME 0
+#define SL_BINDING_LIGHT 1
+#define SL_BINDING_DRAW 2
+
+// Texture units.
+#define SL_UNIT_BASE_COLOR 0
+#define SL_UNIT_RESOLVE_INPUT 1
+#define SL_UNIT_SHADOW_FIRST 4
+
+// Base-pass colour attachments.
+#define SL_TARGET_COLOR 0     // linear RGB radiance, RGBA16F
+#define SL_TARGET_POSITION 1  // world position xyz, w = 1 on geometry (RGBA32F)
+#define SL_TARGET_NORMAL 2    // geometric normal xyz facing the camera, w = receives shadows (RGBA16F)
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace shadowlab::shared {
+#define SL_VEC4 glm::vec4
+#define SL_MAT4 glm::mat4
+#define SL_BLOCK(name, bindingPoint, instance) struct name
+#define SL_END_BLOCK(instance) ;
+#else
+#define SL_VEC4 vec4
+#define SL_MAT4 mat4
+#define SL_BLOCK(name, bindingPoint, instance) layout(std140, binding = bindingPoint) uniform name
+#define SL_END_BLOCK(instance) instance;
+#endif
+
+SL_BLOCK(FrameUniforms, SL_BINDING_FRAME, frame) {
+    SL_MAT4 clipFromWorld;
+    SL_VEC4 cameraPosition;   // world space, w unused
+    SL_VEC4 ambient;          // global ambient, linear RGB
+} SL_END_BLOCK(frame)
+
+SL_BLOCK(LightUniforms, SL_BINDING_LIGHT, light) {
+    SL_VEC4 radiance;         // colour * intensity, linear RGB
+    SL_VEC4 position;         // world space (spot, point)
+    SL_VEC4 direction;        // world space unit vector the light travels (directional, spot)
+    SL_VEC4 params;           // x range (0 = unlimited), y cos(inner), z cos(outer), w type
+} SL_END_BLOCK(light)
+
+SL_BLOCK(DrawUniforms, SL_BINDING_DRAW, draw) {
+    SL_MAT4 worldFromObject;
+    SL_MAT4 normalFromObject; // inverse transpose of worldFromObject's 3x3
+    SL_VEC4 baseColor;        // rgb, w = receives shadows (1/0)
+    SL_VEC4 ambient;          // rgb
+    SL_VEC4 diffuse;          // rgb
+    SL_VEC4 specular;         // rgb, w = shininess
+} SL_END_BLOCK(draw)
+
+#ifdef __cplusplus
+} // namespace shadowlab::shared
+#endif
+#undef SL_BLOCK
+#undef SL_END_BLOCK
+#endif

@@ -1,0 +1,71 @@
+#include "gl/Debug.h"
+
+#include <shadowlab/Error.h>
+
+#include <epoxy/gl.h>
+
+#include <cstdio>
+
+namespace shadowlab::gl {
+
+namespace {
+void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
+                               const GLchar* message, const void* user) {
+    auto& state = *static_cast<DebugState*>(const_cast<void*>(user));
+    const bool error = type == GL_DEBUG_TYPE_ERROR;
+    if (error) {
+        state.errors.fetch_add(1);
+        std::lock_guard lock(state.mutex);
+        state.lastError = message;
+    }
+    const bool important = severity == GL_DEBUG_SEVERITY_HIGH || severity == GL_DEBUG_SEVERITY_MEDIUM;
+    if (error || (important && type != GL_DEBUG_TYPE_PERFORMANCE) || state.verbose)
+        std::fprintf(stderr, "shadowlab: GL %s: %s\n", error ? "error" : "debug", message);
+}
+
+std::string glString(GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(name));
+    return s ? s : "";
+}
+int glInt(GLenum name) {
+    GLint v = 0;
+    glGetIntegerv(name, &v);
+    return v;
+}
+} // namespace
+
+void installDebugOutput(DebugState& state) {
+    if (!epoxy_has_gl_extension("GL_KHR_debug") && epoxy_gl_version() < 43) return;
+    glEnable(GL_DEBUG_OUTPUT);
+    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    glDebugMessageCallback(onDebugMessage, &state);
+    glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+}
+
+GlInfo queryGlInfo() {
+    GlInfo info;
+    info.vendor = glString(GL_VENDOR);
+    info.renderer = glString(GL_RENDERER);
+    info.version = glString(GL_VERSION);
+    info.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
+    info.maxTextureSize = glInt(GL_MAX_TEXTURE_SIZE);
+    info.maxCubeMapSize = glInt(GL_MAX_CUBE_MAP_TEXTURE_SIZE);
+    info.maxArrayLayers = glInt(GL_MAX_ARRAY_TEXTURE_LAYERS);
+    info.maxRenderbufferSize = glInt(GL_MAX_RENDERBUFFER_SIZE);
+    GLint dims[2] = {0, 0};
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
+    info.maxViewportWidth = dims[0];
+    info.maxViewportHeight = dims[1];
+    return info;
+}
+
+void requireGl45(const char* platform) {
+    const int version = epoxy_gl_version();
+    GLint mask = 0;
+    if (version >= 32) glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+    if (version < 45 || !(mask & GL_CONTEXT_CORE_PROFILE_BIT))
+        throw Error(std::string(platform) + ": OpenGL 4.5 core is required, found '" + glString(GL_VERSION) + "'" +
+                    (mask & GL_CONTEXT_CORE_PROFILE_BIT ? "" : " (not a core profile)"));
+}
+
+} // namespace shadowlab::gl

@@ -1,0 +1,25 @@
+#pragma once
+// KHR_debug output: messages to stderr, errors counted so tests can fail on them.
+#include <shadowlab/Context.h>
+
+#include <atomic>
+#include <mutex>
+#include <string>
+
+namespace shadowlab::gl {
+
+struct DebugState {
+    bool verbose = false;
+    std::atomic<std::size_t> errors{0};
+    std::mutex mutex;
+    std::string lastError;
+};
+
+/// Installs the debug callback on the current context (synchronous output).
+void installDebugOutput(DebugState& state);
+/// Fills GlInfo from the current context (platform left to the caller).
+GlInfo queryGlInfo();
+/// Throws shadowlab::Error unless the current context is 4.5 core or newer.
+void requireGl45(const char* platform);
+
+} // namespace shadowlab::gl

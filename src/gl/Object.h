@@ -1,0 +1,87 @@
+#pragma once
+// Move-only RAII handles for OpenGL 4.5 objects, created with direct state
+// access (glCreate*). One alias per object kind; the destructor deletes the
+// object and does nothing for id 0 (a moved-from or NoCreate handle).
+#include <epoxy/gl.h>
+
+#include <utility>
+
+namespace shadowlab::gl {
+
+/// Tag for an empty handle that owns no GL object (Magnum's NoCreate).
+struct NoCreateT { explicit constexpr NoCreateT() = default; };
+inline constexpr NoCreateT NoCreate{};
+
+template <class Traits>
+class Object {
+public:
+    explicit Object(NoCreateT) noexcept {}
+    /// Creates the object. Args go to Traits::create (e.g. a texture target).
+    template <class... Args>
+    explicit Object(Args... args) : id_(Traits::create(args...)) {}
+    ~Object() { if (id_ != 0) Traits::destroy(id_); }
+    Object(const Object&) = delete;
+    Object& operator=(const Object&) = delete;
+    Object(Object&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+    Object& operator=(Object&& other) noexcept {
+        if (this != &other) {
+            if (id_ != 0) Traits::destroy(id_);
+            id_ = std::exchange(other.id_, 0);
+        }
+        return *this;
+    }
+    GLuint id() const noexcept { return id_; }
+    explicit operator bool() const noexcept { return id_ != 0; }
+
+private:
+    GLuint id_ = 0;
+};
+
+namespace detail {
+struct BufferTraits {
+    static GLuint create() { GLuint id = 0; glCreateBuffers(1, &id); return id; }
+    static void destroy(GLuint id) { glDeleteBuffers(1, &id); }
+};
+struct VertexArrayTraits {
+    static GLuint create() { GLuint id = 0; glCreateVertexArrays(1, &id); return id; }
+    static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); }
+};
+struct TextureTraits {
+    static GLuint create(GLenum target) { GLuint id = 0; glCreateTextures(target, 1, &id); return id; }
+    static void destroy(GLuint id) { glDeleteTextures(1, &id); }
+};
+struct SamplerTraits {
+    static GLuint create() { GLuint id = 0; glCreateSamplers(1, &id); return id; }
+    static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
+};
+struct FramebufferTraits {
+    static GLuint create() { GLuint id = 0; glCreateFramebuffers(1, &id); return id; }
+    static void destroy(GLuint id) { glDeleteFramebuffers(1, &id); }
+};
+struct QueryTraits {
+    static GLuint create(GLenum target) { GLuint id = 0; glCreateQueries(target, 1, &id); return id; }
+    static void destroy(GLuint id) { glDeleteQueries(1, &id); }
+};
+struct ShaderTraits {
+    static GLuint create(GLenum stage) { return glCreateShader(stage); }
+    static void destroy(GLuint id) { glDeleteShader(id); }
+};
+struct ProgramTraits {
+    static GLuint create() { return glCreateProgram(); }
+    static void destroy(GLuint id) { glDeleteProgram(id); }
+};
+} // namespace detail
+
+using Buffer = Object<detail::BufferTraits>;
+using VertexArray = Object<detail::VertexArrayTraits>;
+using Texture = Object<detail::TextureTraits>;         ///< Texture(GL_TEXTURE_2D) etc.
+using Sampler = Object<detail::SamplerTraits>;
+using Framebuffer = Object<detail::FramebufferTraits>;
+using Query = Object<detail::QueryTraits>;             ///< Query(GL_TIME_ELAPSED) etc.
+using Shader = Object<detail::ShaderTraits>;           ///< Shader(GL_VERTEX_SHADER) etc.
+using ProgramHandle = Object<detail::ProgramTraits>;
+
+/// Throws shadowlab::Error naming `what` unless the framebuffer is complete.
+void checkFramebuffer(const Framebuffer& fb, const char* what);
+
+} // namespace shadowlab::gl

@@ -1,0 +1,111 @@
+#include "gl/ShaderSource.h"
+
+#include <shadowlab/Error.h>
+
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+namespace shadowlab::gl {
+
+namespace {
+
+std::vector<std::string_view> splitLines(std::string_view text) {
+    std::vector<std::string_view> lines;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) {
+            if (start < text.size()) lines.push_back(text.substr(start));
+            break;
+        }
+        lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    return lines;
+}
+
+// Returns the quoted name if `line` is `#include "name"`.
+std::optional<std::string_view> includeTarget(std::string_view line) {
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string_view::npos || line.compare(first, 8, "#include") != 0) return std::nullopt;
+    const auto open = line.find('"', first + 8);
+    const auto close = open == std::string_view::npos ? open : line.find('"', open + 1);
+    if (close == std::string_view::npos) return std::nullopt;
+    return line.substr(open + 1, close - open - 1);
+}
+
+void appendFile(std::string_view name, AssembledSource& out, std::vector<std::string>& stack) {
+    const auto text = embeddedShader(name);
+    if (!text) {
+        throw Error(stack.empty() ? "shader " + std::string(name) + ": no such embedded shader file"
+                                  : stack.back() + ": #include \"" + std::string(name) + "\": no such embedded shader file");
+    }
+    if (std::find(stack.begin(), stack.end(), name) != stack.end())
+        throw Error(stack.back() + ": #include \"" + std::string(name) + "\" forms a cycle");
+    stack.emplace_back(name);
+    const int index = static_cast<int>(out.files.size());
+    out.files.emplace_back(name);
+    out.text += "#line 1 " + std::to_string(index) + "\n";
+    int lineNo = 0;
+    for (std::string_view line : splitLines(*text)) {
+        ++lineNo;
+        if (auto target = includeTarget(line)) {
+            appendFile(*target, out, stack);
+            out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
+        } else {
+            out.text.append(line);
+            out.text += '\n';
+        }
+    }
+    stack.pop_back();
+}
+
+} // namespace
+
+AssembledSource assembleShader(std::string_view fileName, std::string_view preamble) {
+    AssembledSource out;
+    out.files.emplace_back("<variant preamble>");
+    out.text = "#version 450 core\n";
+    out.text.append(preamble);
+    if (!preamble.empty() && preamble.back() != '\n') out.text += '\n';
+    std::vector<std::string> stack;
+    appendFile(fileName, out, stack);
+    return out;
+}
+
+std::string describeShaderLog(std::string_view log, const AssembledSource& source) {
+    static const std::regex mesa(R"(^(\d+):(\d+)\(\d+\):\s*(.*)$)");
+    static const std::regex nvidia(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
+    std::string out;
+    for (std::string_view lineView : splitLines(log)) {
+        const std::string line(lineView);
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        std::smatch m;
+        if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia)) {
+            const std::size_t fileIndex = std::stoul(m[1].str());
+            const int lineNo = std::stoi(m[2].str());
+            std::string name = fileIndex < source.files.size() ? source.files[fileIndex] : "<unknown>";
+            std::string text;
+            if (fileIndex > 0 && fileIndex < source.files.size()) {
+                if (auto file = embeddedShader(name)) {
+                    auto lines = splitLines(*file);
+                    if (lineNo >= 1 && lineNo <= static_cast<int>(lines.size())) {
+                        auto l = lines[lineNo - 1];
+                        const auto first = l.find_first_not_of(" \t");
+                        text = first == std::string_view::npos ? "" : std::string(l.substr(first));
+                    }
+                }
+            }
+            if (!out.empty()) out += "; ";
+            out += name + ":" + std::to_string(lineNo) + ": " + m[3].str();
+            if (!text.empty()) out += " | " + text;
+        } else {
+            if (!out.empty()) out += "; ";
+            out += line;
+        }
+    }
+    return out;
+}
+
+} // namespace shadowlab::gl

@@ -1,0 +1,34 @@
+#pragma once
+// Assembles GLSL sources from the embedded shader files: version line, a
+// variant's #define preamble, and `#include "file"` expanded in place. Each
+// file gets its own GLSL source-string number through `#line`, so a compile
+// error can be mapped back to the file and line it came from.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shadowlab::gl {
+
+/// The text of an embedded shader file (shaders/ at build time), or nullopt.
+std::optional<std::string_view> embeddedShader(std::string_view name);
+/// Names of all embedded shader files.
+std::vector<std::string_view> embeddedShaderNames();
+
+struct AssembledSource {
+    std::string text;
+    /// GLSL source-string number -> file name; 0 is the generated preamble.
+    std::vector<std::string> files;
+};
+
+/// Assembles `fileName` with `preamble` (lines of #define). Throws
+/// shadowlab::Error for a missing file, a missing include or an include cycle.
+AssembledSource assembleShader(std::string_view fileName, std::string_view preamble);
+
+/// Rewrites a driver's info log so that each message names the shader file,
+/// the line and that line's text, e.g.
+/// `lighting.frag:42: error: 'foo' undeclared | vec3 c = foo;`
+/// Understands the "N:L(C):" (Mesa) and "N(L) :" (NVIDIA) forms; other lines pass through.
+std::string describeShaderLog(std::string_view log, const AssembledSource& source);
+
+} // namespace shadowlab::gl

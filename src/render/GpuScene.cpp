@@ -1,0 +1,65 @@
+#include "render/GpuScene.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 uv;
+};
+} // namespace
+
+GpuScene::GpuScene(const Scene& scene) {
+    for (const Mesh& mesh : scene.meshes) {
+        std::vector<Vertex> vertices(mesh.positions.size());
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            vertices[i].position = mesh.positions[i];
+            vertices[i].normal = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0);
+            vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
+        }
+        GpuMesh gpu;
+        glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
+                             vertices.empty() ? nullptr : vertices.data(), 0);
+        glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, mesh.indices.size()) * 4),
+                             mesh.indices.empty() ? nullptr : mesh.indices.data(), 0);
+        const GLuint vao = gpu.vao.id();
+        glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(Vertex));
+        glVertexArrayElementBuffer(vao, gpu.indices.id());
+        const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
+        const GLint sizes[] = {3, 3, 2};
+        for (GLuint a = 0; a < 3; ++a) {
+            glEnableVertexArrayAttrib(vao, a);
+            glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+            glVertexArrayAttribBinding(vao, a, 0);
+        }
+        gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+        meshes_.push_back(std::move(gpu));
+    }
+    for (const ImageRGBA8& image : scene.textures) {
+        gl::Texture texture(GL_TEXTURE_2D);
+        const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+        glTextureStorage2D(texture.id(), levels, GL_SRGB8_ALPHA8, image.width, image.height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        // Scene images are stored top row first; GL's t = 0 is the first row
+        // uploaded, which matches glTF's uv convention (v = 0 at the top).
+        glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+        glGenerateTextureMipmap(texture.id());
+        glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+        textures_.push_back(std::move(texture));
+    }
+}
+
+void GpuScene::draw(int mesh) const {
+    const GpuMesh& m = meshes_[static_cast<std::size_t>(mesh)];
+    glBindVertexArray(m.vao.id());
+    glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+}
+
+} // namespace shadowlab

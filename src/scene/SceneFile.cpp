@@ -1,0 +1,604 @@
+// JSON scene files: every key, unit and default is in docs/scene-format.md.
+// Each value is read through a Reader that knows its JSON path, so any error
+// names the file, the path and what was expected, and unknown keys are errors.
+#include <shadowlab/SceneFile.h>
+
+#include "scene/MeshFile.h"
+
+#include <shadowlab/Error.h>
+#include <shadowlab/Shapes.h>
+
+#include <nlohmann/json.hpp>
+#include <stb_image.h>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace shadowlab {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* typeName(const json& j) {
+    switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::string: return "a string";
+    case json::value_t::array: return "an array";
+    case json::value_t::object: return "an object";
+    case json::value_t::discarded: return "nothing";
+    default: return "a number";
+    }
+}
+
+// --- JSON paths and --set overrides ----------------------------------------
+
+struct PathStep {
+    bool isIndex = false;
+    std::string key;
+    std::size_t index = 0;
+};
+
+// Parses `a.b[2].c` into steps; throws with `flag` on bad syntax.
+std::vector<PathStep> parsePath(const std::string& path, const std::string& flag) {
+    std::vector<PathStep> steps;
+    std::size_t i = 0;
+    auto bad = [&](const std::string& why) { throw Error(flag + ": bad JSON path '" + path + "': " + why); };
+    if (path.empty()) bad("empty");
+    while (i < path.size()) {
+        if (path[i] == '[') {
+            const auto close = path.find(']', i);
+            if (close == std::string::npos) bad("missing ']'");
+            const std::string digits = path.substr(i + 1, close - i - 1);
+            if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos)
+                bad("expected an index in [], got '" + digits + "'");
+            steps.push_back({true, {}, std::stoul(digits)});
+            i = close + 1;
+            if (i < path.size() && path[i] == '.') ++i;
+        } else {
+            const auto end = path.find_first_of(".[", i);
+            const std::string key = path.substr(i, end == std::string::npos ? std::string::npos : end - i);
+            if (key.empty()) bad("empty key");
+            steps.push_back({false, key, 0});
+            i = end == std::string::npos ? path.size() : end;
+            if (i < path.size() && path[i] == '.') {
+                ++i;
+                if (i == path.size()) bad("ends with '.'");
+            }
+        }
+    }
+    return steps;
+}
+
+std::string formatPath(const std::vector<PathStep>& steps) {
+    std::string out;
+    for (const PathStep& s : steps) {
+        if (s.isIndex) out += "[" + std::to_string(s.index) + "]";
+        else out += (out.empty() ? "" : ".") + s.key;
+    }
+    return out;
+}
+
+struct Override {
+    std::string flag;  // "--set a.b=1", for messages
+    std::string path;  // canonical JSON path
+};
+
+// Applies `key=value` overrides to the document; returns them for error attribution.
+std::vector<Override> applyOverrides(json& doc, const std::vector<std::string>& overrides) {
+    std::vector<Override> applied;
+    for (const std::string& text : overrides) {
+        const std::string flag = "--set " + text;
+        const auto eq = text.find('=');
+        if (eq == std::string::npos) throw Error(flag + ": expected key=value");
+        const auto steps = parsePath(text.substr(0, eq), flag);
+        const std::string valueText = text.substr(eq + 1);
+        json value = json::parse(valueText, nullptr, false);
+        if (value.is_discarded()) value = valueText;  // a bare word is a string
+        json* node = &doc;
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            const PathStep& step = steps[i];
+            const std::string where = formatPath({steps.begin(), steps.begin() + static_cast<long>(i)});
+            const std::string at = where.empty() ? "the scene" : "'" + where + "'";
+            if (step.isIndex) {
+                if (!node->is_array()) throw Error(flag + ": " + at + " is " + typeName(*node) + ", not an array");
+                if (step.index >= node->size())
+                    throw Error(flag + ": index " + std::to_string(step.index) + " out of range (" + at + " has " +
+                                std::to_string(node->size()) + " elements)");
+                node = &(*node)[step.index];
+            } else {
+                if (node->is_null() && i > 0) *node = json::object();
+                if (!node->is_object()) throw Error(flag + ": " + at + " is " + typeName(*node) + ", not an object");
+                node = &(*node)[step.key];
+            }
+        }
+        *node = value;
+        applied.push_back({flag, formatPath(steps)});
+    }
+    return applied;
+}
+
+// --- Reading values with their JSON path ------------------------------------
+
+struct ParseContext {
+    std::string source;  // file name for messages
+    fs::path baseDir;
+    std::vector<Override> overrides;
+
+    [[noreturn]] void fail(const std::string& path, const std::string& message) const {
+        // An error inside an overridden value is the flag's fault: name the flag.
+        for (auto it = overrides.rbegin(); it != overrides.rend(); ++it) {
+            const std::string& p = it->path;
+            if (path == p || (path.size() > p.size() && path.compare(0, p.size(), p) == 0 &&
+                              (path[p.size()] == '.' || path[p.size()] == '[')))
+                throw Error(it->flag + ": " + path + ": " + message);
+        }
+        throw Error(source + ": " + (path.empty() ? "" : path + ": ") + message);
+    }
+};
+
+class Reader {
+public:
+    Reader(const ParseContext& ctx, const json& value, std::string path)
+        : ctx_(ctx), value_(value), path_(std::move(path)) {}
+
+    const json& value() const { return value_; }
+    const std::string& path() const { return path_; }
+    [[noreturn]] void fail(const std::string& message) const { ctx_.fail(path_, message); }
+
+    Reader child(const std::string& key) const {
+        return Reader(ctx_, value_.at(key), path_.empty() ? key : path_ + "." + key);
+    }
+    Reader element(std::size_t i) const { return Reader(ctx_, value_.at(i), path_ + "[" + std::to_string(i) + "]"); }
+
+    void requireObject() const { if (!value_.is_object()) fail(std::string("expected an object, got ") + typeName(value_)); }
+    void requireArray() const { if (!value_.is_array()) fail(std::string("expected an array, got ") + typeName(value_)); }
+
+    // Errors for keys that are not in `known`.
+    void checkKeys(std::initializer_list<const char*> known) const {
+        requireObject();
+        for (const auto& [key, _] : value_.items()) {
+            bool found = false;
+            for (const char* k : known) found = found || key == k;
+            if (!found) {
+                std::string list;
+                for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+                ctx_.fail(path_.empty() ? key : path_ + "." + key, "unknown key (expected one of: " + list + ")");
+            }
+        }
+    }
+    bool has(const std::string& key) const { return value_.contains(key); }
+
+    float number() const {
+        if (!value_.is_number()) fail(std::string("expected a number, got ") + typeName(value_));
+        const double d = value_.get<double>();
+        if (!std::isfinite(d) || std::fabs(d) > 3.0e38) fail("expected a finite number");
+        return static_cast<float>(d);
+    }
+    int integer() const {
+        if (!value_.is_number_integer()) fail(std::string("expected an integer, got ") + typeName(value_));
+        const auto v = value_.get<long long>();
+        if (v < -1000000000LL || v > 1000000000LL) fail("integer out of range");
+        return static_cast<int>(v);
+    }
+    bool boolean() const {
+        if (!value_.is_boolean()) fail(std::string("expected true or false, got ") + typeName(value_));
+        return value_.get<bool>();
+    }
+    std::string string() const {
+        if (!value_.is_string()) fail(std::string("expected a string, got ") + typeName(value_));
+        return value_.get<std::string>();
+    }
+    glm::vec3 vec3() const {
+        if (!value_.is_array()) fail(std::string("expected 3 numbers, got ") + typeName(value_));
+        if (value_.size() != 3) fail("expected 3 numbers, got " + std::to_string(value_.size()));
+        return {element(0).number(), element(1).number(), element(2).number()};
+    }
+
+    // Optional members with defaults and checks.
+    float number(const std::string& key, float def) const { return has(key) ? child(key).number() : def; }
+    float positive(const std::string& key, float def) const {
+        if (!has(key)) return def;
+        const float v = child(key).number();
+        if (!(v > 0.0f)) child(key).fail("expected a number > 0, got " + fmt(v));
+        return v;
+    }
+    float nonNegative(const std::string& key, float def) const {
+        if (!has(key)) return def;
+        const float v = child(key).number();
+        if (v < 0.0f) child(key).fail("expected a number >= 0, got " + fmt(v));
+        return v;
+    }
+    int integer(const std::string& key, int def, int minimum) const {
+        if (!has(key)) return def;
+        const int v = child(key).integer();
+        if (v < minimum) child(key).fail("expected an integer >= " + std::to_string(minimum) + ", got " + std::to_string(v));
+        return v;
+    }
+    glm::vec3 vec3(const std::string& key, glm::vec3 def) const { return has(key) ? child(key).vec3() : def; }
+    glm::vec3 color(const std::string& key, glm::vec3 def) const {
+        if (!has(key)) return def;
+        const glm::vec3 c = child(key).vec3();
+        if (c.x < 0 || c.y < 0 || c.z < 0) child(key).fail("expected 3 numbers >= 0 (linear RGB)");
+        return c;
+    }
+    glm::vec3 direction(const std::string& key, glm::vec3 def) const {
+        if (!has(key)) return def;
+        const glm::vec3 d = child(key).vec3();
+        if (glm::length(d) < 1e-12f) child(key).fail("expected a non-zero direction, got [0, 0, 0]");
+        return glm::normalize(d);
+    }
+    std::string string(const std::string& key, const std::string& def) const { return has(key) ? child(key).string() : def; }
+    bool boolean(const std::string& key, bool def) const { return has(key) ? child(key).boolean() : def; }
+
+    const ParseContext& context() const { return ctx_; }
+
+    static std::string fmt(float v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    }
+
+private:
+    const ParseContext& ctx_;
+    const json& value_;
+    std::string path_;
+};
+
+// --- Scene parts --------------------------------------------------------------
+
+void readCamera(const Reader& r, Camera& cam) {
+    r.checkKeys({"position", "target", "up", "fovY", "near", "far"});
+    cam.position = r.vec3("position", cam.position);
+    cam.target = r.vec3("target", cam.target);
+    cam.up = r.direction("up", cam.up);
+    cam.fovYDeg = r.positive("fovY", cam.fovYDeg);
+    if (cam.fovYDeg >= 180.0f) r.child("fovY").fail("expected degrees in (0, 180), got " + Reader::fmt(cam.fovYDeg));
+    cam.nearPlane = r.positive("near", cam.nearPlane);
+    cam.farPlane = r.positive("far", cam.farPlane);
+    if (cam.farPlane <= cam.nearPlane)
+        (r.has("far") ? r.child("far") : r).fail("expected far > near (" + Reader::fmt(cam.nearPlane) + ")");
+    const glm::vec3 forward = cam.target - cam.position;
+    if (glm::length(forward) < 1e-9f) r.fail("camera position and target coincide");
+    if (glm::length(glm::cross(glm::normalize(forward), cam.up)) < 1e-6f)
+        r.fail("camera up is parallel to the view direction");
+}
+
+ShadowTechnique parseTechnique(const Reader& r) {
+    const std::string name = r.string();
+    for (ShadowTechnique t : {ShadowTechnique::None})
+        if (name == toString(t)) return t;
+    r.fail("unknown technique '" + name + "' (expected one of: none)");
+}
+
+void readShadow(const Reader& r, ShadowSettings& shadow) {
+    r.checkKeys({"technique"});
+    if (r.has("technique")) shadow.technique = parseTechnique(r.child("technique"));
+}
+
+Light readLight(const Reader& r) {
+    r.checkKeys({"name", "type", "color", "intensity", "position", "direction", "range", "innerCone", "outerCone",
+                 "size", "shadow"});
+    Light light;
+    if (!r.has("type")) r.fail("missing key 'type' (directional, spot or point)");
+    const std::string type = r.child("type").string();
+    if (type == "directional") light.type = LightType::Directional;
+    else if (type == "spot") light.type = LightType::Spot;
+    else if (type == "point") light.type = LightType::Point;
+    else r.child("type").fail("expected directional, spot or point, got '" + type + "'");
+    light.name = r.string("name", type);
+    light.color = r.color("color", light.color);
+    light.intensity = r.nonNegative("intensity", light.intensity);
+    const bool positional = light.type != LightType::Directional;
+    if (positional && !r.has("position")) r.fail("missing key 'position' (a " + type + " light needs one)");
+    if (!positional && r.has("position")) r.child("position").fail("a directional light has no position (use direction)");
+    light.position = r.vec3("position", light.position);
+    if (light.type == LightType::Point && r.has("direction")) r.child("direction").fail("a point light has no direction");
+    light.direction = r.direction("direction", light.direction);
+    light.range = r.nonNegative("range", light.range);
+    if (light.type != LightType::Spot && (r.has("innerCone") || r.has("outerCone")))
+        r.child(r.has("innerCone") ? "innerCone" : "outerCone").fail("only spot lights have cone angles");
+    light.innerConeDeg = r.nonNegative("innerCone", light.innerConeDeg);
+    light.outerConeDeg = r.positive("outerCone", light.outerConeDeg);
+    if (light.outerConeDeg >= 90.0f) r.child("outerCone").fail("expected degrees in (0, 90), got " + Reader::fmt(light.outerConeDeg));
+    if (light.innerConeDeg > light.outerConeDeg)
+        (r.has("innerCone") ? r.child("innerCone") : r).fail("expected innerCone <= outerCone (" + Reader::fmt(light.outerConeDeg) + ")");
+    light.size = r.nonNegative("size", light.size);
+    if (light.type == LightType::Directional && light.size >= 90.0f)
+        r.child("size").fail("expected an angular diameter in degrees < 90, got " + Reader::fmt(light.size));
+    if (r.has("shadow")) readShadow(r.child("shadow"), light.shadow);
+    return light;
+}
+
+ImageRGBA8 loadTexture(const Reader& r, const fs::path& file) {
+    const std::string name = file.string();
+    if (!fs::is_regular_file(file)) r.fail("texture file not found: " + name);
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* data = stbi_load(name.c_str(), &w, &h, &channels, 4);
+    if (!data) r.fail(name + ": not a readable image (" + std::string(stbi_failure_reason()) + ")");
+    ImageRGBA8 image{w, h, std::vector<std::uint8_t>(data, data + static_cast<std::size_t>(w) * h * 4)};
+    stbi_image_free(data);
+    return image;
+}
+
+class SceneBuilder {
+public:
+    SceneBuilder(Scene& scene, const ParseContext& ctx) : scene_(scene), ctx_(ctx) {}
+
+    void readMaterials(const Reader& r) {
+        r.requireObject();
+        for (const auto& [name, _] : r.value().items()) {
+            const Reader m = r.child(name);
+            m.checkKeys({"baseColor", "baseColorTexture", "ambient", "diffuse", "specular", "shininess"});
+            Material mat;
+            mat.name = name;
+            mat.baseColor = m.color("baseColor", mat.baseColor);
+            mat.ambient = m.color("ambient", mat.ambient);
+            mat.diffuse = m.color("diffuse", mat.diffuse);
+            mat.specular = m.color("specular", mat.specular);
+            mat.shininess = m.positive("shininess", mat.shininess);
+            if (m.has("baseColorTexture")) {
+                const Reader t = m.child("baseColorTexture");
+                scene_.textures.push_back(loadTexture(t, ctx_.baseDir / t.string()));
+                mat.baseColorTexture = static_cast<int>(scene_.textures.size()) - 1;
+            }
+            materialIndex_[name] = static_cast<int>(scene_.materials.size());
+            scene_.materials.push_back(std::move(mat));
+        }
+    }
+
+    void readNodes(const Reader& r, int parent) {
+        r.requireArray();
+        for (std::size_t i = 0; i < r.value().size(); ++i) readNode(r.element(i), parent);
+    }
+
+private:
+    int material(const Reader& r) const {
+        const std::string name = r.string();
+        const auto it = materialIndex_.find(name);
+        if (it == materialIndex_.end()) {
+            std::string list;
+            for (const auto& [n, _] : materialIndex_) list += (list.empty() ? "" : ", ") + n;
+            r.fail("unknown material '" + name + "' (defined: " + (list.empty() ? "none" : list) + ")");
+        }
+        return it->second;
+    }
+
+    Mesh shape(const Reader& r) const {
+        r.requireObject();
+        if (!r.has("type")) r.fail("missing key 'type' (plane, box, sphere, torus, cylinder, cone or pyramid)");
+        const std::string type = r.child("type").string();
+        // Parameters are validated here with their JSON paths; the shape
+        // functions' own checks (segment minimums) then cannot fire, but if
+        // one does its message is attached to this shape's path.
+        auto build = [&](auto&& make) -> Mesh {
+            try {
+                return make();
+            } catch (const Error& e) {
+                r.fail(e.what());
+            }
+        };
+        if (type == "plane") {
+            r.checkKeys({"type", "size"});
+            const glm::vec2 s = r.has("size") ? sizeOf2(r.child("size")) : glm::vec2(10.0f);
+            return build([&] { return shapes::plane(s.x, s.y); });
+        }
+        if (type == "box") {
+            r.checkKeys({"type", "size"});
+            const glm::vec3 s = r.vec3("size", glm::vec3(1.0f));
+            if (s.x <= 0 || s.y <= 0 || s.z <= 0) r.child("size").fail("expected 3 numbers > 0");
+            return build([&] { return shapes::box(s); });
+        }
+        if (type == "sphere") {
+            r.checkKeys({"type", "radius", "segments", "rings"});
+            const float radius = r.positive("radius", 1.0f);
+            const int segments = r.integer("segments", 48, 3), rings = r.integer("rings", 24, 2);
+            return build([&] { return shapes::sphere(radius, segments, rings); });
+        }
+        if (type == "torus") {
+            r.checkKeys({"type", "majorRadius", "minorRadius", "majorSegments", "minorSegments"});
+            const float major = r.positive("majorRadius", 1.0f), minor = r.positive("minorRadius", 0.3f);
+            if (minor >= major) r.fail("expected minorRadius < majorRadius");
+            const int majorSegments = r.integer("majorSegments", 64, 3), minorSegments = r.integer("minorSegments", 32, 3);
+            return build([&] { return shapes::torus(major, minor, majorSegments, minorSegments); });
+        }
+        if (type == "cylinder" || type == "cone") {
+            r.checkKeys({"type", "radius", "height", "segments"});
+            const float radius = r.positive("radius", 0.5f), height = r.positive("height", 1.0f);
+            const int segments = r.integer("segments", 48, 3);
+            return build([&] {
+                return type == "cylinder" ? shapes::cylinder(radius, height, segments) : shapes::cone(radius, height, segments);
+            });
+        }
+        if (type == "pyramid") {
+            r.checkKeys({"type", "baseWidth", "height"});
+            const float width = r.positive("baseWidth", 1.0f), height = r.positive("height", 1.0f);
+            return build([&] { return shapes::pyramid(width, height); });
+        }
+        r.child("type").fail("unknown shape '" + type + "' (expected plane, box, sphere, torus, cylinder, cone or pyramid)");
+    }
+
+    static glm::vec2 sizeOf2(const Reader& r) {
+        if (!r.value().is_array() || r.value().size() != 2)
+            r.fail(std::string("expected 2 numbers [width, depth], got ") +
+                   (r.value().is_array() ? std::to_string(r.value().size()) : typeName(r.value())));
+        const glm::vec2 s(r.element(0).number(), r.element(1).number());
+        if (s.x <= 0 || s.y <= 0) r.fail("expected 2 numbers > 0");
+        return s;
+    }
+
+    void readNode(const Reader& r, int parent) {
+        r.checkKeys({"name", "shape", "mesh", "material", "translation", "rotation", "scale", "castsShadows",
+                     "receivesShadows", "children"});
+        if (r.has("shape") && r.has("mesh")) r.fail("a node has either 'shape' or 'mesh', not both");
+        Node node;
+        node.parent = parent;
+        node.name = r.string("name", "");
+        node.translation = r.vec3("translation", node.translation);
+        if (r.has("rotation")) {
+            // Euler angles in degrees, applied about X, then Y, then Z.
+            const glm::vec3 deg = r.child("rotation").vec3();
+            node.rotation = glm::angleAxis(glm::radians(deg.z), glm::vec3(0, 0, 1)) *
+                            glm::angleAxis(glm::radians(deg.y), glm::vec3(0, 1, 0)) *
+                            glm::angleAxis(glm::radians(deg.x), glm::vec3(1, 0, 0));
+        }
+        if (r.has("scale")) {
+            const Reader s = r.child("scale");
+            node.scale = s.value().is_number() ? glm::vec3(s.number()) : s.vec3();
+            if (node.scale.x <= 0 || node.scale.y <= 0 || node.scale.z <= 0)
+                s.fail("expected a number > 0 or 3 numbers > 0");
+        }
+        node.castsShadows = r.boolean("castsShadows", true);
+        node.receivesShadows = r.boolean("receivesShadows", true);
+        const int materialOverride = r.has("material") ? material(r.child("material")) : -1;
+        node.material = materialOverride;
+        if (r.has("shape")) {
+            Mesh mesh = shape(r.child("shape"));
+            mesh.name = node.name.empty() ? r.child("shape").child("type").string() : node.name;
+            node.mesh = addMesh(std::move(mesh));
+        }
+        const int index = static_cast<int>(scene_.nodes.size());
+        scene_.nodes.push_back(node);
+        if (r.has("mesh")) importMesh(r.child("mesh"), index, materialOverride, node);
+        if (r.has("children")) readNodes(r.child("children"), index);
+    }
+
+    int addMesh(Mesh mesh) {
+        scene_.meshes.push_back(std::move(mesh));
+        return static_cast<int>(scene_.meshes.size()) - 1;
+    }
+
+    void importMesh(const Reader& r, int parent, int materialOverride, const Node& owner) {
+        const fs::path file = ctx_.baseDir / r.string();
+        ImportedModel model;
+        try {
+            model = loadMeshFile(file);
+        } catch (const Error& e) {
+            r.fail(e.what());
+        }
+        const int meshBase = static_cast<int>(scene_.meshes.size());
+        const int textureBase = static_cast<int>(scene_.textures.size());
+        const int materialBase = static_cast<int>(scene_.materials.size());
+        for (Mesh& m : model.meshes) scene_.meshes.push_back(std::move(m));
+        for (ImageRGBA8& t : model.textures) scene_.textures.push_back(std::move(t));
+        for (Material m : model.materials) {
+            if (m.baseColorTexture >= 0) m.baseColorTexture += textureBase;
+            scene_.materials.push_back(std::move(m));
+        }
+        std::vector<int> sceneIndex(model.nodes.size());
+        for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+            const ImportedModel::Node& in = model.nodes[i];
+            Node node;
+            node.name = in.name;
+            node.parent = in.parent >= 0 ? sceneIndex[static_cast<std::size_t>(in.parent)] : parent;
+            node.translation = in.translation;
+            node.rotation = in.rotation;
+            node.scale = in.scale;
+            node.castsShadows = owner.castsShadows;
+            node.receivesShadows = owner.receivesShadows;
+            sceneIndex[i] = static_cast<int>(scene_.nodes.size());
+            scene_.nodes.push_back(node);
+            // One child node per primitive: a node draws one mesh with one material.
+            for (const auto& prim : in.primitives) {
+                Node p;
+                p.name = in.name;
+                p.parent = sceneIndex[i];
+                p.mesh = meshBase + prim.mesh;
+                p.material = materialOverride >= 0 ? materialOverride : (prim.material >= 0 ? materialBase + prim.material : -1);
+                p.castsShadows = owner.castsShadows;
+                p.receivesShadows = owner.receivesShadows;
+                scene_.nodes.push_back(p);
+            }
+        }
+    }
+
+    Scene& scene_;
+    const ParseContext& ctx_;
+    std::map<std::string, int> materialIndex_;
+};
+
+} // namespace
+
+Scene parseScene(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir,
+                 const std::vector<std::string>& overrides) {
+    ParseContext ctx{sourceName, baseDir, {}};
+    json doc;
+    try {
+        doc = json::parse(jsonText);
+    } catch (const json::parse_error& e) {
+        // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+        std::string what = e.what();
+        const auto pos = what.find("parse error");
+        throw Error(sourceName + ": invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+    }
+    if (!doc.is_object()) throw Error(sourceName + ": expected a JSON object at the top level, got " + typeName(doc));
+    ctx.overrides = applyOverrides(doc, overrides);
+
+    const Reader root(ctx, doc, "");
+    root.checkKeys({"name", "camera", "ambient", "background", "materials", "lights", "nodes"});
+    Scene scene;
+    scene.name = root.string("name", fs::path(sourceName).stem().string());
+    if (root.has("camera")) readCamera(root.child("camera"), scene.camera);
+    scene.ambient = root.color("ambient", scene.ambient);
+    scene.background = root.color("background", scene.background);
+    SceneBuilder builder(scene, ctx);
+    if (root.has("materials")) builder.readMaterials(root.child("materials"));
+    if (root.has("lights")) {
+        const Reader lights = root.child("lights");
+        lights.requireArray();
+        for (std::size_t i = 0; i < lights.value().size(); ++i) {
+            const Reader l = lights.element(i);
+            l.requireObject();
+            scene.lights.push_back(readLight(l));
+        }
+    }
+    if (root.has("nodes")) builder.readNodes(root.child("nodes"), -1);
+    return scene;
+}
+
+Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overrides) {
+    const std::string name = path.string();
+    if (!fs::exists(path)) throw Error(name + ": file not found");
+    if (!fs::is_regular_file(path)) throw Error(name + ": not a regular file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(name + ": cannot open for reading");
+    std::stringstream text;
+    text << in.rdbuf();
+    return parseScene(text.str(), name, path.parent_path(), overrides);
+}
+
+const std::string& defaultSceneJson() {
+    // The lecture's first scene: a torus floating above a ground plane under
+    // a directional light, seen from above and to the side.
+    static const std::string text = R"({
+  "name": "default",
+  "camera": { "position": [4.5, 4.0, 6.5], "target": [0, 0.6, 0], "fovY": 45 },
+  "ambient": [0.15, 0.15, 0.15],
+  "materials": {
+    "ground": { "baseColor": [0.75, 0.75, 0.72] },
+    "gold": { "baseColor": [0.85, 0.62, 0.2], "specular": [0.6, 0.55, 0.4], "shininess": 48 }
+  },
+  "lights": [
+    { "name": "sun", "type": "directional", "direction": [-0.4, -1.0, -0.3], "intensity": 1.0 }
+  ],
+  "nodes": [
+    { "name": "ground", "shape": { "type": "plane", "size": [12, 12] }, "material": "ground" },
+    { "name": "torus", "shape": { "type": "torus", "majorRadius": 1.0, "minorRadius": 0.35 },
+      "material": "gold", "translation": [0, 1.4, 0], "rotation": [25, 0, 0] }
+  ]
+})";
+    return text;
+}
+
+Scene defaultScene(const std::vector<std::string>& overrides) {
+    return parseScene(defaultSceneJson(), "<default scene>", fs::current_path(), overrides);
+}
+
+} // namespace shadowlab
