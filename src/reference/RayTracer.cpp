@@ -15,6 +15,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <system_error>
 #include <thread>
 
 #if defined(__SSE__) || defined(_M_X64)
@@ -48,16 +49,29 @@ const char* errorText(RTCError code) {
     return "unrecognised error code";
 }
 
-// Collects the text of Embree errors raised while building.
-void recordError(void* userPtr, RTCError code, const char* str) {
-    auto* message = static_cast<std::string*>(userPtr);
-    if (!message->empty()) *message += "; ";
-    *message += errorText(code);
-    if (str && *str) {
-        *message += ": ";
-        *message += str;
+// Collects the text of the Embree errors raised on a device while it lives
+// (the constructor), and detaches itself on every exit path.
+class ErrorCapture {
+public:
+    explicit ErrorCapture(RTCDevice device) : device_(device) { rtcSetDeviceErrorFunction(device_, record, &text_); }
+    ~ErrorCapture() { rtcSetDeviceErrorFunction(device_, nullptr, nullptr); }
+    ErrorCapture(const ErrorCapture&) = delete;
+    ErrorCapture& operator=(const ErrorCapture&) = delete;
+    const std::string& text() const { return text_; }
+
+private:
+    static void record(void* userPtr, RTCError code, const char* str) {
+        auto* message = static_cast<std::string*>(userPtr);
+        if (!message->empty()) *message += "; ";
+        *message += errorText(code);
+        if (str && *str) {
+            *message += ": ";
+            *message += str;
+        }
     }
-}
+    RTCDevice device_;
+    std::string text_;
+};
 
 // Embree recommends flush-to-zero and denormals-are-zero while tracing; set
 // for the lifetime of a worker and restore the thread's previous mode.
@@ -267,12 +281,10 @@ RayTracer::RayTracer(const Scene& scene) {
                     errorText(rtcGetDeviceError(nullptr)));
     device_.reset(device);
 
-    std::string embreeErrors;
-    rtcSetDeviceErrorFunction(device, recordError, &embreeErrors);
-    auto fail = [&](const std::string& what) {
-        rtcSetDeviceErrorFunction(device, nullptr, nullptr);
+    const ErrorCapture errors(device);
+    auto fail = [&errors](const std::string& what) {
         std::string message = "RayTracer: " + what;
-        if (!embreeErrors.empty()) message += ": " + embreeErrors;
+        if (!errors.text().empty()) message += ": " + errors.text();
         throw Error(message);
     };
 
@@ -324,9 +336,7 @@ RayTracer::RayTracer(const Scene& scene) {
         triangleCount_ += triangles;
     }
     rtcCommitScene(rtcScene);
-    if (rtcGetDeviceError(device) != RTC_ERROR_NONE || !embreeErrors.empty())
-        fail("building the BVH failed");
-    rtcSetDeviceErrorFunction(device, nullptr, nullptr);
+    if (rtcGetDeviceError(device) != RTC_ERROR_NONE || !errors.text().empty()) fail("building the BVH failed");
 
     // Automatic normal offset: 1e-4 of the scene's size (see VisibilityOptions).
     const auto [lo, hi] = scene.worldBounds();

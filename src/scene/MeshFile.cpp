@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -97,6 +98,13 @@ std::vector<std::string_view> splitWords(std::string_view s) {
     return words;
 }
 
+/// "1 vertex", "12 vertices", "0 normals", ...
+std::string countOf(std::size_t count, std::string_view kind) {
+    std::string s = std::to_string(count) + " " + std::string(kind);
+    if (count != 1) s = kind == "vertex" ? std::to_string(count) + " vertices" : s + "s";
+    return s;
+}
+
 struct ObjParser {
     std::string file; // for messages
     int line = 0;
@@ -138,8 +146,7 @@ struct ObjParser {
         if (value == 0) fail(std::string(kind) + " index 0 is invalid (OBJ indices start at 1)");
         if (value > 0) return value - 1;
         if (count + value < 0)
-            fail(std::string(kind) + " index " + std::to_string(value) + " out of range (" + std::to_string(count) + " " + kind +
-                 (count == 1 ? "" : "s") + " defined so far)");
+            fail(std::string(kind) + " index " + std::to_string(value) + " out of range (" + countOf(static_cast<std::size_t>(count), kind) + " defined so far)");
         return count + value;
     }
 };
@@ -236,8 +243,7 @@ ImportedModel loadObj(const fs::path& path) {
     const auto checkRange = [&](int line, int index, std::size_t count, const char* kind) {
         if (index >= static_cast<int>(count)) {
             p.line = line;
-            p.fail(std::string(kind) + " index " + std::to_string(index + 1) + " out of range (file has " + std::to_string(count) + " " +
-                   kind + (count == 1 ? "" : "s") + ")");
+            p.fail(std::string(kind) + " index " + std::to_string(index + 1) + " out of range (file has " + countOf(count, kind) + ")");
         }
     };
     bool anyTexcoords = false;
@@ -302,13 +308,27 @@ ImportedModel loadObj(const fs::path& path) {
 
 namespace {
 
+/// tinygltf's error text as one line: newlines become "; " and embedded
+/// base64 payloads (tinygltf quotes whole data URIs) are shortened.
 std::string oneLine(std::string s) {
     while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
     std::string out;
-    for (char c : s) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
         if (c == '\r') continue;
-        if (c == '\n') out += "; ";
-        else out += c;
+        if (c == '\n') {
+            out += "; ";
+        } else if (c == ',' && out.size() >= 6 && out.compare(out.size() - 6, 6, "base64") == 0) {
+            std::size_t end = i + 1;
+            while (end < s.size() && (std::isalnum(static_cast<unsigned char>(s[end])) || s[end] == '+' || s[end] == '/' || s[end] == '='))
+                ++end;
+            out += ',';
+            out.append(s, i + 1, std::min<std::size_t>(end - i - 1, 16));
+            if (end - i - 1 > 16) out += "...";
+            i = end - 1;
+        } else {
+            out += c;
+        }
     }
     return out;
 }
@@ -346,6 +366,7 @@ public:
                     if (c >= 0 && c < static_cast<int>(isChild.size())) isChild[c] = true;
             for (std::size_t i = 0; i < gltf_.nodes.size(); ++i)
                 if (!isChild[i]) roots.push_back(static_cast<int>(i));
+            if (roots.empty() && !gltf_.nodes.empty()) fail("node hierarchy has no root node (cycle)");
         }
         visited_.assign(gltf_.nodes.size(), false);
         for (int r : roots) addNode(r, -1);

@@ -135,9 +135,14 @@ struct ParseContext {
     [[noreturn]] void fail(const std::string& path, const std::string& message) const {
         // An error inside an overridden value is the flag's fault: name the flag.
         for (auto it = overrides.rbegin(); it != overrides.rend(); ++it) {
-            const std::string& p = it->path;
-            if (path == p || (path.size() > p.size() && path.compare(0, p.size(), p) == 0 &&
-                              (path[p.size()] == '.' || path[p.size()] == '[')))
+            // The flag is at fault when the bad value lies inside what it set,
+            // or contains it (setting camera.fovY.x turned fovY into an object).
+            auto within = [](const std::string& inner, const std::string& outer) {
+                return inner == outer || outer.empty() ||
+                       (inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 &&
+                        (inner[outer.size()] == '.' || inner[outer.size()] == '['));
+            };
+            if (within(path, it->path) || within(it->path, path))
                 throw Error(it->flag + ": " + path + ": " + message);
         }
         throw Error(source + ": " + (path.empty() ? "" : path + ": ") + message);
@@ -532,11 +537,14 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
     json doc;
     try {
         doc = json::parse(jsonText);
-    } catch (const json::parse_error& e) {
-        // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    } catch (const json::exception& e) {
+        // nlohmann's messages start with "[json.exception.parse_error.101] ";
+        // a number too large for a double (1e999) is out_of_range.406.
         std::string what = e.what();
-        const auto pos = what.find("parse error");
-        throw Error(sourceName + ": invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos)));
+        const auto pos = what.find("] ");
+        what = pos == std::string::npos ? what : what.substr(pos + 2);
+        if (e.id == 406) what += " (numbers must be finite)";
+        throw Error(sourceName + ": invalid JSON: " + what);
     }
     if (!doc.is_object()) throw Error(sourceName + ": expected a JSON object at the top level, got " + typeName(doc));
     ctx.overrides = applyOverrides(doc, overrides);

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# `shadowlab render` writes the image it names, for the default scene and
+# a scene file with --set, and `shadowlab info` reports OpenGL 4.5.
+set -eu
+tool=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+out=$("$tool" render --width 96 --height 54)
+[[ "$out" == "default.png" && -s default.png ]] || { echo "default render wrote '$out'"; exit 1; }
+out=$("$tool" render "$src/scenes/torus-resting.json" -o t.png --width 64 --height 48 --set lights[0].intensity=0.5)
+[[ "$out" == "t.png" && -s t.png ]] || { echo "scene render wrote '$out'"; exit 1; }
+# PNG signature and size from the IHDR chunk.
+[[ "$(head -c 8 t.png | od -An -tx1 | tr -d ' \n')" == "89504e470d0a1a0a" ]] || { echo "not a PNG"; exit 1; }
+[[ "$(od -An -tu1 -j16 -N8 t.png | tr -s ' ')" == " 0 0 0 64 0 0 0 48" ]] || { echo "wrong size"; exit 1; }
+"$tool" info | grep -q "GL version: *4\.[5-9]" || { echo "info does not report GL 4.5+"; "$tool" info; exit 1; }
+echo "3 passed, 0 failed"

@@ -1,0 +1,236 @@
+// Scene files: values, defaults, hierarchy, --set overrides and every error
+// path. Errors must be one line naming the file (or flag) and the JSON path.
+#include <shadowlab/Error.h>
+#include <shadowlab/SceneFile.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace shadowlab;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kMinimal = R"({
+  "camera": { "position": [0, 2, 5], "target": [0, 0, 0] },
+  "materials": { "m": { "baseColor": [0.5, 0.25, 0.125] } },
+  "lights": [
+    { "type": "directional", "direction": [0, -2, 0] },
+    { "type": "point", "position": [1, 2, 3], "range": 10 }
+  ],
+  "nodes": [
+    { "name": "parent", "translation": [1, 0, 0], "children": [
+      { "name": "child", "shape": { "type": "box", "size": [1, 1, 1] }, "material": "m", "translation": [0, 2, 0] } ] }
+  ]
+})";
+
+// Parses `text` as "scene.json"; returns the error message ("" if none).
+std::string errorOf(const std::string& text, const std::vector<std::string>& overrides = {}) {
+    try {
+        parseScene(text, "scene.json", fs::temp_directory_path(), overrides);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// A scene with one light whose body is `light`.
+std::string withLight(const std::string& light) { return R"({"lights": [)" + light + "]}"; }
+std::string withNode(const std::string& node) { return R"({"nodes": [)" + node + "]}"; }
+
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        path = fs::temp_directory_path() / ("shadowlab-scenetest-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(path);
+    }
+    ~TempDir() { std::error_code ec; fs::remove_all(path, ec); }
+    fs::path write(const std::string& name, const std::string& content) const {
+        std::ofstream(path / name, std::ios::binary) << content;
+        return path / name;
+    }
+};
+
+} // namespace
+
+TEST(SceneFile, ReadsValuesAndDefaults) {
+    const Scene s = parseScene(kMinimal, "scene.json", ".");
+    EXPECT_EQ(s.camera.position, glm::vec3(0, 2, 5));
+    EXPECT_FLOAT_EQ(s.camera.fovYDeg, 45.0f);  // documented default
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_EQ(s.lights[0].type, LightType::Directional);
+    EXPECT_NEAR(glm::length(s.lights[0].direction), 1.0f, 1e-6f);  // normalised
+    EXPECT_EQ(s.lights[0].shadow.technique, ShadowTechnique::None);
+    EXPECT_EQ(s.lights[1].type, LightType::Point);
+    EXPECT_FLOAT_EQ(s.lights[1].range, 10.0f);
+    ASSERT_EQ(s.materials.size(), 1u);
+    EXPECT_EQ(s.materials[0].baseColor, glm::vec3(0.5f, 0.25f, 0.125f));
+    EXPECT_FLOAT_EQ(s.materials[0].shininess, 32.0f);
+}
+
+TEST(SceneFile, ChildTransformsComposeWithParents) {
+    const Scene s = parseScene(kMinimal, "scene.json", ".");
+    const auto items = s.drawItems();
+    ASSERT_EQ(items.size(), 1u);
+    const glm::vec3 origin = glm::vec3(items[0].worldFromObject * glm::vec4(0, 0, 0, 1));
+    EXPECT_NEAR(glm::distance(origin, glm::vec3(1, 2, 0)), 0.0f, 1e-6f);
+    const auto [lo, hi] = s.worldBounds();
+    EXPECT_NEAR(glm::distance(lo, glm::vec3(0.5f, 1.5f, -0.5f)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::distance(hi, glm::vec3(1.5f, 2.5f, 0.5f)), 0.0f, 1e-5f);
+}
+
+TEST(SceneFile, RotationIsEulerDegreesXThenYThenZ) {
+    const Scene s = parseScene(withNode(R"({"shape": {"type": "box"}, "rotation": [90, 0, 0]})"), "scene.json", ".");
+    // A 90 degree turn about X takes +Y to +Z.
+    const glm::vec3 y = glm::vec3(s.drawItems()[0].worldFromObject * glm::vec4(0, 1, 0, 0));
+    EXPECT_NEAR(glm::distance(y, glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+}
+
+TEST(SceneFile, OverridesSetValuesByJsonPath) {
+    const Scene s = parseScene(kMinimal, "scene.json", ".",
+                               {"lights[1].intensity=2.5", "camera.fovY=60", "lights[0].shadow.technique=none",
+                                "materials.m.baseColor=[1,0,0]", "lights[0].type=\"directional\""});
+    EXPECT_FLOAT_EQ(s.lights[1].intensity, 2.5f);
+    EXPECT_FLOAT_EQ(s.camera.fovYDeg, 60.0f);
+    EXPECT_EQ(s.materials[0].baseColor, glm::vec3(1, 0, 0));
+}
+
+TEST(SceneFile, DefaultSceneHasATorusAPlaneAndALight) {
+    const Scene s = defaultScene();
+    EXPECT_EQ(s.drawItems().size(), 2u);
+    EXPECT_EQ(s.lights.size(), 1u);
+    EXPECT_FLOAT_EQ(defaultScene({"lights[0].intensity=3"}).lights[0].intensity, 3.0f);
+}
+
+TEST(SceneFile, EveryShapeTypeParses) {
+    for (const char* shape : {R"({"type":"plane","size":[2,3]})", R"({"type":"box","size":[1,2,3]})",
+                              R"({"type":"sphere","radius":0.5})", R"({"type":"torus","majorRadius":1,"minorRadius":0.2})",
+                              R"({"type":"cylinder"})", R"({"type":"cone","segments":8})",
+                              R"({"type":"pyramid","baseWidth":2,"height":1})"}) {
+        SCOPED_TRACE(shape);
+        const Scene s = parseScene(withNode(std::string(R"({"shape":)") + shape + "}"), "scene.json", ".");
+        ASSERT_EQ(s.meshes.size(), 1u);
+        EXPECT_GT(s.meshes[0].triangleCount(), 0u);
+    }
+}
+
+// --- Errors: one line, file or flag, JSON path, what was expected ------------
+
+struct ErrorCase {
+    const char* name;
+    std::string text;
+    std::vector<std::string> overrides;
+    std::string expected;  // the message must contain this
+};
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
+
+class SceneFileErrors : public ::testing::TestWithParam<ErrorCase> {};
+
+TEST_P(SceneFileErrors, NameFilePathAndExpectation) {
+    const ErrorCase& c = GetParam();
+    const std::string message = errorOf(c.text, c.overrides);
+    ASSERT_FALSE(message.empty()) << "no error for " << c.name;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << "message: " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
+    if (c.overrides.empty()) EXPECT_EQ(message.rfind("scene.json: ", 0), 0u) << message;
+    else EXPECT_EQ(message.rfind("--set ", 0), 0u) << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    All, SceneFileErrors,
+    ::testing::Values(
+        ErrorCase{"InvalidJson", "{ \"nodes\": [ }", {}, "invalid JSON: parse error at line 1"},
+        ErrorCase{"TopLevelArray", "[1, 2]", {}, "expected a JSON object at the top level"},
+        ErrorCase{"UnknownTopKey", R"({"lihgts": []})", {}, "lihgts: unknown key"},
+        ErrorCase{"UnknownNestedKey", withLight(R"({"type":"point","position":[0,1,0],"colour":[1,1,1]})"), {}, "lights[0].colour: unknown key"},
+        ErrorCase{"DirectionTwoNumbers", R"({"lights": [{"type":"directional"}, {"type":"directional","direction":[1,2]}]})", {},
+                  "scene.json: lights[1].direction: expected 3 numbers, got 2"},
+        ErrorCase{"ZeroDirection", withLight(R"({"type":"directional","direction":[0,0,0]})"), {}, "lights[0].direction: expected a non-zero direction"},
+        ErrorCase{"DirectionNotArray", withLight(R"({"type":"directional","direction":"down"})"), {}, "lights[0].direction: expected 3 numbers, got a string"},
+        ErrorCase{"InfiniteNumber", withLight(R"({"type":"directional","intensity":1e999})"), {}, "invalid JSON: number overflow parsing '1e999' (numbers must be finite)"},
+        ErrorCase{"NegativeIntensity", withLight(R"({"type":"directional","intensity":-1})"), {}, "lights[0].intensity: expected a number >= 0, got -1"},
+        ErrorCase{"UnknownLightType", withLight(R"({"type":"area"})"), {}, "lights[0].type: expected directional, spot or point, got 'area'"},
+        ErrorCase{"MissingLightType", withLight(R"({"direction":[0,-1,0]})"), {}, "lights[0]: missing key 'type'"},
+        ErrorCase{"PointWithoutPosition", withLight(R"({"type":"point"})"), {}, "lights[0]: missing key 'position'"},
+        ErrorCase{"ConeOrder", withLight(R"({"type":"spot","position":[0,1,0],"innerCone":40,"outerCone":30})"), {}, "lights[0].innerCone: expected innerCone <= outerCone"},
+        ErrorCase{"ConeTooWide", withLight(R"({"type":"spot","position":[0,1,0],"outerCone":95})"), {}, "lights[0].outerCone: expected degrees in (0, 90)"},
+        ErrorCase{"UnknownTechnique", withLight(R"({"type":"directional","shadow":{"technique":"magic"}})"), {}, "lights[0].shadow.technique: unknown technique 'magic'"},
+        ErrorCase{"NegativeBoxSize", withNode(R"({"shape":{"type":"box","size":[1,-2,1]}})"), {}, "nodes[0].shape.size: expected 3 numbers > 0"},
+        ErrorCase{"NegativeRadius", withNode(R"({"shape":{"type":"sphere","radius":-1}})"), {}, "nodes[0].shape.radius: expected a number > 0, got -1"},
+        ErrorCase{"PlaneSizeCount", withNode(R"({"shape":{"type":"plane","size":[1,2,3]}})"), {}, "nodes[0].shape.size: expected 2 numbers [width, depth], got 3"},
+        ErrorCase{"TorusRadii", withNode(R"({"shape":{"type":"torus","majorRadius":0.2,"minorRadius":0.5}})"), {}, "nodes[0].shape: expected minorRadius < majorRadius"},
+        ErrorCase{"TooFewSegments", withNode(R"({"shape":{"type":"sphere","segments":2}})"), {}, "nodes[0].shape.segments: expected an integer >= 3, got 2"},
+        ErrorCase{"UnknownShape", withNode(R"({"shape":{"type":"teapot"}})"), {}, "nodes[0].shape.type: unknown shape 'teapot'"},
+        ErrorCase{"UnknownMaterial", withNode(R"({"shape":{"type":"box"},"material":"gold"})"), {}, "nodes[0].material: unknown material 'gold'"},
+        ErrorCase{"ZeroScale", withNode(R"({"shape":{"type":"box"},"scale":0})"), {}, "nodes[0].scale: expected a number > 0"},
+        ErrorCase{"NestedChildError", withNode(R"({"children":[{"children":[{"shape":{"type":"box","size":[1,1]}}]}]})"), {}, "nodes[0].children[0].children[0].shape.size: expected 3 numbers, got 2"},
+        ErrorCase{"ShapeAndMesh", withNode(R"({"shape":{"type":"box"},"mesh":"a.obj"})"), {}, "nodes[0]: a node has either 'shape' or 'mesh'"},
+        ErrorCase{"MissingMeshFile", withNode(R"({"mesh":"does-not-exist.obj"})"), {}, "nodes[0].mesh: "},
+        ErrorCase{"MissingTexture", R"({"materials":{"m":{"baseColorTexture":"nope.png"}}})", {}, "materials.m.baseColorTexture: texture file not found"},
+        ErrorCase{"NegativeColor", R"({"ambient":[0.1,-0.1,0]})", {}, "ambient: expected 3 numbers >= 0"},
+        ErrorCase{"FarBeforeNear", R"({"camera":{"near":5,"far":1}})", {}, "camera.far: expected far > near"},
+        ErrorCase{"FovTooWide", R"({"camera":{"fovY":180}})", {}, "camera.fovY: expected degrees in (0, 180)"},
+        ErrorCase{"CameraLooksAtItself", R"({"camera":{"position":[1,1,1],"target":[1,1,1]}})", {}, "camera: camera position and target coincide"},
+        ErrorCase{"NodesNotArray", R"({"nodes":{}})", {}, "nodes: expected an array, got an object"},
+        ErrorCase{"BooleanExpected", withNode(R"({"shape":{"type":"box"},"castsShadows":"yes"})"), {}, "nodes[0].castsShadows: expected true or false"},
+        // --set: the flag is named, with the path and what was wrong.
+        ErrorCase{"SetBadValue", kMinimal, {"lights[0].intensity=abc"}, "--set lights[0].intensity=abc: lights[0].intensity: expected a number, got a string"},
+        ErrorCase{"SetNaN", kMinimal, {"lights[0].intensity=nan"}, "--set lights[0].intensity=nan: lights[0].intensity: expected a number"},
+        ErrorCase{"SetIndexOutOfRange", kMinimal, {"lights[5].intensity=1"}, "--set lights[5].intensity=1: index 5 out of range ('lights' has 2 elements)"},
+        ErrorCase{"SetUnknownKey", kMinimal, {"lights[0].intensty=1"}, "--set lights[0].intensty=1: lights[0].intensty: unknown key"},
+        ErrorCase{"SetNoEquals", kMinimal, {"lights[0].intensity"}, "--set lights[0].intensity: expected key=value"},
+        ErrorCase{"SetBadPath", kMinimal, {"lights[x].intensity=1"}, "--set lights[x].intensity=1: bad JSON path 'lights[x].intensity': expected an index"},
+        ErrorCase{"SetThroughNumber", kMinimal, {"camera.fovY.x=1"}, "--set camera.fovY.x=1: camera.fovY: expected a number, got an object"},
+        ErrorCase{"SetThroughExistingNumber", R"({"camera":{"fovY":40}})", {"camera.fovY.x=1"}, "--set camera.fovY.x=1: 'camera.fovY' is a number, not an object"},
+        ErrorCase{"SetDirectionZero", kMinimal, {"lights[0].direction=[0,0,0]"}, "--set lights[0].direction=[0,0,0]: lights[0].direction: expected a non-zero direction"}),
+    [](const ::testing::TestParamInfo<ErrorCase>& p) { return std::string(p.param.name); });
+
+TEST(SceneFile, MissingFileIsAnError) {
+    try {
+        loadSceneFile("/nonexistent/scene.json");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "/nonexistent/scene.json: file not found");
+    }
+}
+
+TEST(SceneFile, MeshPathsAreRelativeToTheSceneFile) {
+    TempDir dir;
+    dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const fs::path scene = dir.write("scene.json", withNode(R"({"mesh":"tri.obj","translation":[0,0,1]})"));
+    const Scene s = loadSceneFile(scene);
+    ASSERT_EQ(s.drawItems().size(), 1u);
+    EXPECT_EQ(s.meshes.at(0).triangleCount(), 1u);
+}
+
+TEST(SceneFile, GlbThatIsNotGltfNamesTheFileAndPath) {
+    TempDir dir;
+    dir.write("model.glb", "this is not a binary glTF file at all");
+    const fs::path scene = dir.write("scene.json", withNode(R"({"mesh":"model.glb"})"));
+    try {
+        loadSceneFile(scene);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("scene.json: nodes[0].mesh: "), std::string::npos) << m;
+        EXPECT_NE(m.find("model.glb"), std::string::npos) << m;
+        EXPECT_NE(m.find("glTF"), std::string::npos) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+}
+
+TEST(SceneFile, EveryBundledSceneParses) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        SCOPED_TRACE(entry.path().string());
+        const Scene s = loadSceneFile(entry.path());
+        EXPECT_FALSE(s.lights.empty());
+        EXPECT_FALSE(s.drawItems().empty());
+        ++count;
+    }
+    EXPECT_GE(count, 8);  // the eight lecture scenes of the foundation issue
+}
