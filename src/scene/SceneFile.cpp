@@ -590,7 +590,7 @@ const std::string& defaultSceneJson() {
   "camera": { "position": [4.5, 4.0, 6.5], "target": [0, 0.6, 0], "fovY": 45 },
   "ambient": [0.15, 0.15, 0.15],
   "materials": {
-    "ground": { "baseColor": [0.75, 0.75, 0.72] },
+    "ground": { "baseColor": [0.55, 0.55, 0.52] },
     "gold": { "baseColor": [0.85, 0.62, 0.2], "specular": [0.6, 0.55, 0.4], "shininess": 48 }
   },
   "lights": [
