@@ -1,7 +1,9 @@
 // Light pass: one light's Blinn-Phong diffuse and specular (lecture 000,
 // "passTwo"), scaled by the light's visibility, added onto the base pass.
 // Variants: LIGHT_TYPE (SL_LIGHT_*), SHADOW_TECHNIQUE (SL_SHADOW_*),
-// HAS_BASE_COLOR_TEXTURE (0/1).
+// HAS_BASE_COLOR_TEXTURE (0/1), SCREEN_VISIBILITY (0/1: visibility from a
+// per-pixel texture, the ray-traced reference, instead of the technique),
+// OUTPUT_VISIBILITY (0/1: write the visibility term itself, for compare).
 #include "shadowlab_shared.h"
 
 in vec3 vWorldPosition;
@@ -12,11 +14,17 @@ in vec2 vUv;
 layout(binding = SL_UNIT_BASE_COLOR) uniform sampler2D baseColorTexture;
 #endif
 
+#if SCREEN_VISIBILITY
+layout(binding = SL_UNIT_SCREEN_VISIBILITY) uniform sampler2D screenVisibility;
+#endif
+
 layout(location = SL_TARGET_COLOR) out vec4 outColor;
 
 // The hook every shadow technique plugs into: 1 = lit, 0 = shadowed.
 float shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
-#if SHADOW_TECHNIQUE == SL_SHADOW_NONE
+#if SCREEN_VISIBILITY
+    return texelFetch(screenVisibility, ivec2(gl_FragCoord.xy), 0).r;
+#elif SHADOW_TECHNIQUE == SL_SHADOW_NONE
     return 1.0;
 #else
 #error unknown SHADOW_TECHNIQUE
@@ -28,6 +36,11 @@ void main() {
     vec3 V = normalize(frame.cameraPosition.xyz - vWorldPosition);
     // Two-sided lighting: a back face seen by the camera is lit as its front.
     if (!gl_FrontFacing) N = -N;
+#if OUTPUT_VISIBILITY
+    // The shadow term alone, for every pixel: compare classifies it.
+    outColor = vec4(shadowVisibility(vWorldPosition, N), 0.0, 0.0, 1.0);
+    return;
+#endif
 
     vec3 L;
     float attenuation = 1.0;

@@ -21,6 +21,7 @@
 // Texture units.
 #define SL_UNIT_BASE_COLOR 0
 #define SL_UNIT_RESOLVE_INPUT 1
+#define SL_UNIT_SCREEN_VISIBILITY 2   // per-pixel visibility from the ray-traced reference (R32F)
 #define SL_UNIT_SHADOW_FIRST 4
 
 // Base-pass colour attachments.

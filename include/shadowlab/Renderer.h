@@ -54,6 +54,16 @@ public:
     /// Renders a frame of the uploaded scene. Throws shadowlab::Error for a
     /// size beyond the GPU's limits or a scene other than the uploaded one.
     FrameStats render(const Scene& scene, const RenderOptions& options = {});
+    /// Renders the frame as render() does, but each light's visibility comes
+    /// from `visibility[i]` (width*height values in [0,1], rows top to
+    /// bottom) instead of its technique: the exact reference image, lit by
+    /// the same shading code. Shadow passes are skipped.
+    FrameStats renderWithVisibility(const Scene& scene, const RenderOptions& options,
+                                    const std::vector<std::vector<float>>& visibility);
+    /// Light `light`'s visibility term (1 lit, 0 shadowed) at each pixel of
+    /// the last frame as its technique computes it, rows top to bottom; 0 on
+    /// the background. Call after render() with the same scene.
+    std::vector<float> readVisibility(const Scene& scene, std::size_t light);
     /// The last frame, 8-bit sRGB, rows top to bottom.
     ImageRGBA8 readColor() const;
     /// The last frame's per-pixel surface data (for the ray-traced reference).

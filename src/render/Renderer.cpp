@@ -26,7 +26,8 @@ namespace {
 struct Targets {
     glm::ivec2 size{0};
     gl::Texture color{gl::NoCreate}, position{gl::NoCreate}, normal{gl::NoCreate}, depth{gl::NoCreate}, output{gl::NoCreate};
-    gl::Framebuffer scene{gl::NoCreate}, resolve{gl::NoCreate};
+    gl::Texture visibility{gl::NoCreate};        ///< R32F: compare's visibility output, or the reference's input
+    gl::Framebuffer scene{gl::NoCreate}, resolve{gl::NoCreate}, visibilityOut{gl::NoCreate};
 
     explicit Targets(glm::ivec2 s) : size(s) {
         auto make = [&](GLenum format) {
@@ -41,6 +42,7 @@ struct Targets {
         normal = make(GL_RGBA16F);
         depth = make(GL_DEPTH_COMPONENT32F);
         output = make(GL_RGBA8);
+        visibility = make(GL_R32F);
         scene = gl::Framebuffer();
         glNamedFramebufferTexture(scene.id(), GL_COLOR_ATTACHMENT0 + SL_TARGET_COLOR, color.id(), 0);
         glNamedFramebufferTexture(scene.id(), GL_COLOR_ATTACHMENT0 + SL_TARGET_POSITION, position.id(), 0);
@@ -50,6 +52,10 @@ struct Targets {
         resolve = gl::Framebuffer();
         glNamedFramebufferTexture(resolve.id(), GL_COLOR_ATTACHMENT0, output.id(), 0);
         gl::checkFramebuffer(resolve, "resolve framebuffer");
+        visibilityOut = gl::Framebuffer();
+        glNamedFramebufferTexture(visibilityOut.id(), GL_COLOR_ATTACHMENT0, visibility.id(), 0);
+        glNamedFramebufferTexture(visibilityOut.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+        gl::checkFramebuffer(visibilityOut, "visibility framebuffer");
     }
 };
 
@@ -115,6 +121,20 @@ struct Renderer::Impl {
         glNamedBufferStorage(drawUbo.id(), sizeof(shared::DrawUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
 
+    FrameStats frame(const Scene& scene, const RenderOptions& options,
+                     const std::vector<std::vector<float>>* screenVisibility);
+
+    // Uploads rows top to bottom into GL's bottom-up texture.
+    static void uploadVisibility(const Targets& t, const std::vector<float>& values) {
+        std::vector<float> flipped(values.size());
+        const std::size_t row = static_cast<std::size_t>(t.size.x);
+        for (int y = 0; y < t.size.y; ++y)
+            std::copy_n(values.begin() + static_cast<long>((t.size.y - 1 - y) * row), row, flipped.begin() + static_cast<long>(y * row));
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(t.visibility.id(), 0, 0, 0, t.size.x, t.size.y, GL_RED, GL_FLOAT, flipped.data());
+        glBindTextureUnit(SL_UNIT_SCREEN_VISIBILITY, t.visibility.id());
+    }
+
     const gl::Program& program(const ShaderVariant& variant) {
         const auto key = variant.key();
         auto it = programs.find(key);
@@ -172,7 +192,23 @@ void Renderer::upload(const Scene& scene) {
 }
 
 FrameStats Renderer::render(const Scene& scene, const RenderOptions& options) {
-    Impl& d = *impl_;
+    return impl_->frame(scene, options, nullptr);
+}
+
+FrameStats Renderer::renderWithVisibility(const Scene& scene, const RenderOptions& options,
+                                          const std::vector<std::vector<float>>& visibility) {
+    const std::size_t pixels = static_cast<std::size_t>(options.width) * static_cast<std::size_t>(std::max(options.height, 0));
+    if (visibility.size() != scene.lights.size())
+        throw Error("Renderer::renderWithVisibility: " + std::to_string(visibility.size()) + " visibility images for " +
+                    std::to_string(scene.lights.size()) + " lights");
+    for (const auto& v : visibility)
+        if (v.size() != pixels) throw Error("Renderer::renderWithVisibility: a visibility image does not match the render size");
+    return impl_->frame(scene, options, &visibility);
+}
+
+FrameStats Renderer::Impl::frame(const Scene& scene, const RenderOptions& options,
+                                 const std::vector<std::vector<float>>* screenVisibility) {
+    Impl& d = *this;
     const auto cpuStart = std::chrono::steady_clock::now();
     if (!d.gpu) throw Error("Renderer::render: no scene uploaded (call upload first)");
     if (scene.meshes.size() != d.uploadedMeshes || scene.textures.size() != d.uploadedTextures)
@@ -206,7 +242,7 @@ FrameStats Renderer::render(const Scene& scene, const RenderOptions& options) {
     };
 
     // 1. Shadow passes (each technique sets its own framebuffer and state).
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    for (std::size_t i = 0; i < scene.lights.size() && !screenVisibility; ++i) {
         const Light& light = scene.lights[i];
         ShadowModule& module = d.module(i, light.shadow.technique);
         if (!module.hasShadowPass()) continue;
@@ -252,7 +288,13 @@ FrameStats Renderer::render(const Scene& scene, const RenderOptions& options) {
         glBlendFunc(GL_ONE, GL_ONE);
         ShaderVariant variant{ShaderPass::Light, light.type, light.shadow.technique};
         timer.begin("light[" + std::to_string(i) + "]");
-        d.module(i, light.shadow.technique).renderLightPass(contextFor(i), variant);
+        if (screenVisibility) {
+            uploadVisibility(t, (*screenVisibility)[i]);
+            variant.screenVisibility = true;
+            d.drawItems(scene, items, variant);
+        } else {
+            d.module(i, light.shadow.technique).renderLightPass(contextFor(i), variant);
+        }
         timer.end();
     }
     glDisable(GL_BLEND);
@@ -297,6 +339,40 @@ ImageRGBA8 Renderer::readColor() const {
     if (!impl_->targets) throw Error("Renderer::readColor: nothing rendered yet");
     const Targets& t = *impl_->targets;
     return {t.size.x, t.size.y, readTexture<std::uint8_t>(t.output, t.size, GL_RGBA, GL_UNSIGNED_BYTE, 4)};
+}
+
+std::vector<float> Renderer::readVisibility(const Scene& scene, std::size_t lightIndex) {
+    Impl& d = *impl_;
+    if (!d.targets) throw Error("Renderer::readVisibility: nothing rendered yet");
+    if (lightIndex >= scene.lights.size())
+        throw Error("Renderer::readVisibility: light " + std::to_string(lightIndex) + " of " + std::to_string(scene.lights.size()));
+    Targets& t = *d.targets;
+    const Light& light = scene.lights[lightIndex];
+    const auto items = scene.drawItems();
+    const float aspect = static_cast<float>(t.size.x) / static_cast<float>(t.size.y);
+    const glm::mat4 clipFromWorld = scene.camera.clipFromView(aspect) * scene.camera.viewFromWorld();
+    const shared::LightUniforms lu = lightUniforms(light);
+    glNamedBufferSubData(d.lightUbo.id(), 0, sizeof lu, &lu);
+    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, d.frameUbo.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_LIGHT, d.lightUbo.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_DRAW, d.drawUbo.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, t.visibilityOut.id());
+    glViewport(0, 0, t.size.x, t.size.y);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(t.visibilityOut.id(), GL_COLOR, 0, zero);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_EQUAL);  // the last frame's depth: the same visible surfaces
+    glDepthMask(GL_FALSE);
+    glDisable(GL_BLEND);
+    ShaderVariant variant{ShaderPass::Light, light.type, light.shadow.technique};
+    variant.outputVisibility = true;
+    LightPassContext ctx{scene, light, static_cast<int>(lightIndex), items, *d.gpu, clipFromWorld, t.size,
+                         [&](const ShaderVariant& v) { d.drawItems(scene, items, v); }};
+    d.module(lightIndex, light.shadow.technique).renderLightPass(ctx, variant);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return readTexture<float>(t.visibility, t.size, GL_RED, GL_FLOAT, 1);
 }
 
 SurfaceBuffer Renderer::readSurfaces() const {

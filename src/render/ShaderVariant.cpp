@@ -24,7 +24,8 @@ std::uint32_t ShaderVariant::key() const {
     const bool surface = pass != ShaderPass::Resolve;
     const bool light = pass == ShaderPass::Light;
     return static_cast<std::uint32_t>(pass) | (light ? static_cast<std::uint32_t>(lightType) << 4 : 0u) |
-           (light ? static_cast<std::uint32_t>(technique) << 8 : 0u) | (surface && baseColorTexture ? 1u << 16 : 0u);
+           (light ? static_cast<std::uint32_t>(technique) << 8 : 0u) | (surface && baseColorTexture ? 1u << 16 : 0u) |
+           (light && screenVisibility ? 1u << 17 : 0u) | (light && outputVisibility ? 1u << 18 : 0u);
 }
 
 std::string ShaderVariant::preamble() const {
@@ -32,6 +33,9 @@ std::string ShaderVariant::preamble() const {
     out += "#define HAS_BASE_COLOR_TEXTURE " + std::string(baseColorTexture && pass != ShaderPass::Resolve ? "1" : "0") + "\n";
     out += "#define LIGHT_TYPE " + std::string(lightDefine(lightType)) + "\n";
     out += "#define SHADOW_TECHNIQUE " + std::string(techniqueDefine(technique)) + "\n";
+    const bool light = pass == ShaderPass::Light;
+    out += "#define SCREEN_VISIBILITY " + std::string(light && screenVisibility ? "1" : "0") + "\n";
+    out += "#define OUTPUT_VISIBILITY " + std::string(light && outputVisibility ? "1" : "0") + "\n";
     return out;
 }
 

@@ -22,6 +22,8 @@ struct ShaderVariant {
     LightType lightType = LightType::Directional;           ///< Light pass only
     ShadowTechnique technique = ShadowTechnique::None;      ///< Light pass only
     bool baseColorTexture = false;                          ///< Base and Light passes
+    bool screenVisibility = false;  ///< Light pass: visibility from a per-pixel texture (the reference)
+    bool outputVisibility = false;  ///< Light pass: write the visibility term instead of light
 
     /// Unique per distinct variant (fields that do not apply to the pass are ignored).
     std::uint32_t key() const;
