@@ -1,8 +1,13 @@
 // shadowlab: the command-line tool. Subcommands:
 //   render [SCENE.json] -o out.png [--width W --height H] [--set key=value ...]
+//   compare [SCENE.json] [-o DIR] [--set ...]      technique vs ray-traced reference
+//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [-o DIR]
 //   info
 // Every failure prints one line `shadowlab: error: ...` and exits non-zero;
 // no output file is written unless the whole render succeeded.
+#include "Bench.h"
+
+#include <shadowlab/Compare.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/Image.h>
@@ -13,6 +18,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 namespace fs = std::filesystem;
@@ -65,6 +71,93 @@ int runRender(const RenderArgs& args) {
     return 0;
 }
 
+struct CompareArgs {
+    std::string scene;
+    std::string output = "compare";
+    int width = 960;
+    int height = 540;
+    int softSamples = 256;
+    std::vector<std::string> overrides;
+};
+
+fs::path checkOutputDirectory(const std::string& output) {
+    const fs::path dir(output);
+    if (fs::exists(dir) && !fs::is_directory(dir)) throw Error("-o " + output + ": exists and is not a directory");
+    if (!dir.parent_path().empty() && !fs::is_directory(dir.parent_path()))
+        throw Error("-o " + output + ": directory " + dir.parent_path().string() + " does not exist");
+    return dir;
+}
+
+std::string pct(double share) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f%%", 100.0 * share);
+    return buf;
+}
+
+int runCompare(const CompareArgs& args) {
+    const Scene scene = loadScene(args.scene, args.overrides);
+    const fs::path dir = checkOutputDirectory(args.output);
+    Context context = Context::createHeadless();
+    checkSize({"", "", args.width, args.height, {}}, context.info());
+    Renderer renderer(context);
+    renderer.upload(scene);
+    CompareOptions options;
+    options.width = args.width;
+    options.height = args.height;
+    options.softSamples = args.softSamples;
+    const Comparison c = compareWithReference(renderer, scene, options);
+    if (context.debugErrorCount() > 0)
+        throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
+
+    fs::create_directories(dir);
+    std::vector<fs::path> written{dir / "technique.png", dir / "reference.png"};
+    writePng(written[0], c.technique);
+    writePng(written[1], c.reference);
+    std::cout << "scene " << scene.name << ", " << args.width << "x" << args.height << ", reference traced in "
+              << static_cast<long>(c.referenceMs) << " ms\n";
+    for (std::size_t i = 0; i < c.lights.size(); ++i) {
+        const LightComparison& l = c.lights[i];
+        const Light& light = scene.lights[i];
+        std::cout << "light " << i << " '" << l.name << "' (" << toString(light.type) << ", " << (l.soft ? "soft" : "hard")
+                  << ", technique " << toString(light.shadow.technique) << "): " << l.receiverPixels << " receiver pixels, "
+                  << pct(l.receiverPixels ? double(l.referenceShadowedPixels) / double(l.receiverPixels) : 0.0)
+                  << " shadowed in truth\n"
+                  << "  misclassified, all receivers:      false shadow " << pct(l.falseShadow) << ", false lit " << pct(l.falseLit) << "\n"
+                  << "  misclassified, away from edges:    false shadow " << pct(l.falseShadowAwayFromEdges) << ", false lit "
+                  << pct(l.falseLitAwayFromEdges) << " (" << l.edgePixels << " pixels in the 1-pixel edge band)\n"
+                  << "  visibility error:                  MAE " << l.meanAbsError << ", RMSE " << l.rmse << "\n";
+        written.push_back(dir / ("error-" + std::to_string(i) + ".png"));
+        writePng(written.back(), l.errorImage);
+        written.push_back(dir / ("visibility-" + std::to_string(i) + ".png"));
+        writePng16(written.back(), l.referenceVisibility);
+    }
+    std::cout << "wrote";
+    for (const fs::path& p : written) std::cout << " " << p.string();
+    std::cout << "\n";
+    return 0;
+}
+
+int runBenchCommand(const tool::BenchArgs& args) {
+    for (const std::string& file : args.scenes)
+        if (!fs::is_regular_file(file)) throw Error(file + ": file not found");
+    checkOutputDirectory(args.output.string());
+    Context context = Context::createHeadless();
+    checkSize({"", "", args.width, args.height, {}}, context.info());
+    const nlohmann::json results = tool::runBench(context, args);
+    const fs::path json = args.output / "results.json";
+    {
+        std::ofstream out(args.output / "results.json.partial");
+        out << results.dump(2) << "\n";
+        if (!out) throw Error(json.string() + ": cannot write");
+    }
+    fs::rename(args.output / "results.json.partial", json);
+    tool::writeReport(results, args.output);
+    if (context.debugErrorCount() > 0)
+        throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
+    std::cout << json.string() << "\n" << (args.output / "report.html").string() << "\n";
+    return 0;
+}
+
 int runInfo() {
     Context context = Context::createHeadless();
     const GlInfo& i = context.info();
@@ -103,6 +196,30 @@ int main(int argc, char** argv) {
     render->add_option("--height", renderArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     render->add_option("--set", renderArgs.overrides, "Override a scene value by JSON path, e.g. lights[0].intensity=2")->take_all();
 
+    CompareArgs compareArgs;
+    CLI::App* compare = app.add_subcommand("compare", "Compare a scene's shadow techniques with exact ray-traced shadows");
+    compare->add_option("scene", compareArgs.scene, "Scene file (JSON); the built-in default scene when omitted");
+    compare->add_option("-o,--output", compareArgs.output, "Output directory")->capture_default_str();
+    compare->add_option("--width", compareArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    compare->add_option("--height", compareArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    compare->add_option("--samples", compareArgs.softSamples, "Reference rays per pixel for lights with a size")
+        ->check(CLI::Range(1, 65536))->capture_default_str();
+    compare->add_option("--set", compareArgs.overrides, "Override a scene value by JSON path")->take_all();
+
+    tool::BenchArgs benchArgs;
+    std::string benchOutput = "bench";
+    CLI::App* bench = app.add_subcommand("bench", "Time and accuracy of every combination of settings, with results.json and report.html");
+    bench->add_option("scenes", benchArgs.scenes, "Scene files (JSON); the built-in default scene when omitted");
+    bench->add_option("--set", benchArgs.overrides, "Override a scene value for every run")->take_all();
+    bench->add_option("--vary", benchArgs.vary, "key=v1,v2,...: run once per value (several --vary: every combination)")->take_all();
+    bench->add_option("--frames", benchArgs.frames, "Timed frames per combination")->check(CLI::Range(1, 100000))->capture_default_str();
+    bench->add_option("--warmup", benchArgs.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
+    bench->add_option("--width", benchArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    bench->add_option("--height", benchArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    bench->add_option("--samples", benchArgs.softSamples, "Reference rays per pixel for lights with a size")
+        ->check(CLI::Range(1, 65536))->capture_default_str();
+    bench->add_option("-o,--output", benchOutput, "Output directory")->capture_default_str();
+
     CLI::App* info = app.add_subcommand("info", "Print the OpenGL implementation, its limits and the build options");
 
     try {
@@ -112,6 +229,11 @@ int main(int argc, char** argv) {
     }
     try {
         if (*render) return runRender(renderArgs);
+        if (*compare) return runCompare(compareArgs);
+        if (*bench) {
+            benchArgs.output = benchOutput;
+            return runBenchCommand(benchArgs);
+        }
         if (*info) return runInfo();
     } catch (const Error& e) {
         std::cerr << "shadowlab: error: " << e.what() << "\n";

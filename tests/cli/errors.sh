@@ -71,5 +71,24 @@ expect_error output-missing-dir "directory" render -o no/such/dir/out.png
 expect_error unknown-subcommand "shadowlab: error:" frobnicate
 expect_error unknown-flag "shadowlab: error:" render --frobnicate
 
+# compare and bench: the same rules; the output here is a directory.
+expect_dir_error() {
+  local name=$1 expected=$2
+  shift 2
+  rm -rf "$work/outdir"
+  expect_error "$name" "$expected" "$@"
+  if [[ -e "$work/outdir" ]]; then echo "FAIL $name: output directory was created"; failures=$((failures + 1)); passed=$((passed - 1)); fi
+}
+expect_dir_error compare-missing-scene "nope.json: file not found" compare nope.json -o outdir
+expect_dir_error compare-bad-set "--set lights[0].intensity=x: lights[0].intensity: expected a number" compare -o outdir --set 'lights[0].intensity=x'
+expect_dir_error compare-samples-zero "--samples" compare -o outdir --samples 0
+expect_dir_error compare-output-is-file "-o malformed.json: exists and is not a directory" compare -o malformed.json
+expect_dir_error bench-missing-scene "nope.json: file not found" bench nope.json -o outdir
+expect_dir_error bench-bad-vary "--vary lights[0].intensity: expected key=value1,value2" bench -o outdir --vary 'lights[0].intensity'
+expect_dir_error bench-vary-bad-value "--vary lights[0].intensity=abc: lights[0].intensity: expected a number" bench -o outdir --vary 'lights[0].intensity=1,abc'
+expect_dir_error bench-vary-empty-value "--vary lights[0].intensity=1,,2: empty value" bench -o outdir --vary 'lights[0].intensity=1,,2'
+expect_dir_error bench-frames-zero "--frames" bench -o outdir --frames 0
+expect_dir_error bench-bad-scene "direction.json: lights[1].direction" bench direction.json -o outdir
+
 echo "$passed passed, $failures failed"
 [[ $failures -eq 0 ]]

@@ -1,0 +1,224 @@
+#include "Bench.h"
+
+#include <shadowlab/Compare.h>
+#include <shadowlab/Error.h>
+#include <shadowlab/Image.h>
+#include <shadowlab/Renderer.h>
+#include <shadowlab/SceneFile.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <unistd.h>
+
+namespace shadowlab::tool {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+Variation parseVariation(const std::string& text) {
+    const std::string flag = "--vary " + text;
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) throw Error(flag + ": expected key=value1,value2,...");
+    Variation v{text.substr(0, eq), {}};
+    std::string current;
+    int depth = 0;
+    bool quoted = false;
+    for (char c : text.substr(eq + 1)) {
+        if (c == '"') quoted = !quoted;
+        if (!quoted && (c == '[' || c == '{')) ++depth;
+        if (!quoted && (c == ']' || c == '}')) --depth;
+        if (c == ',' && depth == 0 && !quoted) {
+            v.values.push_back(current);
+            current.clear();
+        } else {
+            current += c;
+        }
+    }
+    v.values.push_back(current);
+    for (const std::string& value : v.values)
+        if (value.empty()) throw Error(flag + ": empty value in the list");
+    return v;
+}
+
+std::vector<std::vector<std::string>> combinations(const std::vector<Variation>& variations) {
+    std::vector<std::vector<std::string>> out{{}};
+    for (const Variation& v : variations) {
+        std::vector<std::vector<std::string>> next;
+        for (const auto& partial : out)
+            for (const std::string& value : v.values) {
+                auto c = partial;
+                c.push_back(v.key + "=" + value);
+                next.push_back(std::move(c));
+            }
+        out = std::move(next);
+    }
+    return out;
+}
+
+namespace {
+
+json stats(std::vector<double> values) {
+    if (values.empty()) return json{{"median", 0.0}, {"min", 0.0}, {"max", 0.0}};
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    const double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    return json{{"median", median}, {"min", values.front()}, {"max", values.back()}};
+}
+
+// One line per step when stderr is not a terminal, an updating bar when it is.
+class Progress {
+public:
+    explicit Progress(std::size_t total) : total_(total), tty_(isatty(STDERR_FILENO)) {}
+    void step(std::size_t done, const std::string& what) {
+        const int width = 30;
+        const int filled = static_cast<int>(width * done / std::max<std::size_t>(total_, 1));
+        std::string bar(static_cast<std::size_t>(filled), '#');
+        bar.resize(width, '.');
+        std::fprintf(stderr, "%s[%s] %zu/%zu %s%s", tty_ ? "\r\033[K" : "", bar.c_str(), done, total_, what.c_str(),
+                     tty_ ? "" : "\n");
+        if (tty_ && done == total_) std::fputc('\n', stderr);
+        std::fflush(stderr);
+    }
+
+private:
+    std::size_t total_;
+    bool tty_;
+};
+
+std::string slug(const std::string& text) {
+    std::string out;
+    for (char c : text) out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' ? c : '_';
+    return out;
+}
+
+} // namespace
+
+json runBench(Context& context, const BenchArgs& args) {
+    if (args.frames < 1) throw Error("--frames " + std::to_string(args.frames) + ": expected at least 1");
+    if (args.warmup < 0) throw Error("--warmup " + std::to_string(args.warmup) + ": expected 0 or more");
+    std::vector<Variation> variations;
+    for (const std::string& v : args.vary) variations.push_back(parseVariation(v));
+    const auto combos = combinations(variations);
+    std::vector<std::string> scenes = args.scenes;
+    if (scenes.empty()) scenes.push_back("");
+
+    // Validate every scene and combination before the long run starts.
+    for (const std::string& file : scenes)
+        for (const auto& combo : combos) {
+            std::vector<std::string> overrides = args.overrides;
+            overrides.insert(overrides.end(), combo.begin(), combo.end());
+            try {
+                (void)(file.empty() ? defaultScene(overrides) : loadSceneFile(file, overrides));
+            } catch (const Error& e) {
+                // A varied value is applied like --set; name the flag the user wrote.
+                const std::string message = e.what();
+                for (const std::string& c : combo)
+                    if (message.rfind("--set " + c + ":", 0) == 0) throw Error("--vary " + c + message.substr(6 + c.size()));
+                throw;
+            }
+        }
+
+    fs::create_directories(args.output / "images");
+    const std::size_t total = scenes.size() * combos.size();
+    Progress progress(total);
+    json records = json::array();
+    std::size_t done = 0;
+    for (const std::string& file : scenes) {
+        for (const auto& combo : combos) {
+            std::vector<std::string> overrides = args.overrides;
+            overrides.insert(overrides.end(), combo.begin(), combo.end());
+            const Scene scene = file.empty() ? defaultScene(overrides) : loadSceneFile(file, overrides);
+            std::string label = scene.name;
+            for (const std::string& c : combo) label += " " + c;
+            progress.step(done, label);
+
+            Renderer renderer(context);
+            renderer.upload(scene);
+            const RenderOptions options{args.width, args.height, true};
+            for (int i = 0; i < args.warmup; ++i) renderer.render(scene, options);
+            std::map<std::string, std::vector<double>> passTimes;
+            std::vector<double> cpu, gpuTotal;
+            for (int i = 0; i < args.frames; ++i) {
+                const FrameStats frame = renderer.render(scene, options);
+                double sum = 0.0;
+                for (const PassTiming& p : frame.passes) {
+                    passTimes[p.name].push_back(p.gpuMs);
+                    sum += p.gpuMs;
+                }
+                gpuTotal.push_back(sum);
+                cpu.push_back(frame.cpuMs);
+            }
+
+            CompareOptions compareOptions;
+            compareOptions.width = args.width;
+            compareOptions.height = args.height;
+            compareOptions.softSamples = args.softSamples;
+            const Comparison comparison = compareWithReference(renderer, scene, compareOptions);
+
+            const std::string stem = std::to_string(records.size()) + "-" + slug(label);
+            const fs::path images = args.output / "images";
+            writePng(images / (stem + "-technique.png"), comparison.technique);
+            writePng(images / (stem + "-reference.png"), comparison.reference);
+            json lights = json::array();
+            for (std::size_t l = 0; l < comparison.lights.size(); ++l) {
+                const LightComparison& c = comparison.lights[l];
+                const std::string errorName = stem + "-error-" + std::to_string(l) + ".png";
+                writePng(images / errorName, c.errorImage);
+                lights.push_back({{"name", c.name},
+                                  {"type", toString(scene.lights[l].type)},
+                                  {"technique", toString(scene.lights[l].shadow.technique)},
+                                  {"soft", c.soft},
+                                  {"receiverPixels", c.receiverPixels},
+                                  {"referenceShadowedPixels", c.referenceShadowedPixels},
+                                  {"edgePixels", c.edgePixels},
+                                  {"falseShadow", c.falseShadow},
+                                  {"falseLit", c.falseLit},
+                                  {"falseShadowAwayFromEdges", c.falseShadowAwayFromEdges},
+                                  {"falseLitAwayFromEdges", c.falseLitAwayFromEdges},
+                                  {"meanAbsError", c.meanAbsError},
+                                  {"rmse", c.rmse},
+                                  {"errorImage", "images/" + errorName}});
+            }
+            json passes = json::object();
+            for (const auto& [name, times] : passTimes) passes[name] = stats(times);
+            json settings = json::object();
+            for (const std::string& c : combo) {
+                const auto eq = c.find('=');
+                settings[c.substr(0, eq)] = c.substr(eq + 1);
+            }
+            std::size_t triangles = 0;
+            for (const DrawItem& item : scene.drawItems()) triangles += scene.meshes[static_cast<std::size_t>(item.mesh)].triangleCount();
+            records.push_back({{"scene", scene.name},
+                               {"sceneFile", file.empty() ? "<default>" : file},
+                               {"settings", settings},
+                               {"triangles", triangles},
+                               {"frames", args.frames},
+                               {"gpuMs", passes},
+                               {"gpuTotalMs", stats(gpuTotal)},
+                               {"cpuMs", stats(cpu)},
+                               {"referenceMs", comparison.referenceMs},
+                               {"lights", lights},
+                               {"techniqueImage", "images/" + stem + "-technique.png"},
+                               {"referenceImage", "images/" + stem + "-reference.png"}});
+            ++done;
+            progress.step(done, label);
+        }
+    }
+    const GlInfo& info = context.info();
+    return json{{"tool", "shadowlab bench"},
+                {"renderer", info.renderer},
+                {"glVersion", info.version},
+                {"width", args.width},
+                {"height", args.height},
+                {"frames", args.frames},
+                {"warmup", args.warmup},
+                {"softSamples", args.softSamples},
+                {"overrides", args.overrides},
+                {"vary", args.vary},
+                {"results", records}};
+}
+
+} // namespace shadowlab::tool

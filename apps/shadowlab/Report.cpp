@@ -1,0 +1,230 @@
+// report.html: one self-contained page (images inlined as data URIs, plot as
+// inline SVG, no scripts from elsewhere) that opens from disk.
+#include "Bench.h"
+
+#include <shadowlab/Error.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace shadowlab::tool {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string escape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    std::size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 | static_cast<unsigned char>(bytes[i + 1]) << 8 |
+                           static_cast<unsigned char>(bytes[i + 2]);
+        out += table[v >> 18 & 63];
+        out += table[v >> 12 & 63];
+        out += table[v >> 6 & 63];
+        out += table[v & 63];
+    }
+    if (i < bytes.size()) {
+        unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+        out += table[v >> 18 & 63];
+        out += table[v >> 12 & 63];
+        out += i + 1 < bytes.size() ? table[v >> 6 & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+std::string dataUri(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(file.string() + ": cannot read image for the report");
+    std::stringstream s;
+    s << in.rdbuf();
+    return "data:image/png;base64," + base64(s.str());
+}
+
+std::string fixed(double v, int digits) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(digits) << v;
+    return s.str();
+}
+
+std::string percent(double share) { return fixed(100.0 * share, 3); }
+
+std::string settingsText(const json& record) {
+    std::string out;
+    for (const auto& [key, value] : record["settings"].items()) out += (out.empty() ? "" : ", ") + key + "=" + value.get<std::string>();
+    return out.empty() ? "defaults" : out;
+}
+
+// Misclassified share away from edges, mean over lights: the plot's y.
+double errorOf(const json& record) {
+    double sum = 0.0;
+    for (const json& l : record["lights"]) sum += l["falseLitAwayFromEdges"].get<double>() + l["falseShadowAwayFromEdges"].get<double>();
+    return record["lights"].empty() ? 0.0 : sum / static_cast<double>(record["lights"].size());
+}
+
+double niceStep(double range) {
+    const double raw = range / 5.0;
+    const double p = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (raw <= m * p) return m * p;
+    return 10.0 * p;
+}
+
+std::string scatterPlot(const json& records) {
+    const double W = 640, H = 360, left = 70, right = 20, top = 20, bottom = 50;
+    double maxX = 0, maxY = 0;
+    for (const json& r : records) {
+        maxX = std::max(maxX, r["gpuTotalMs"]["median"].get<double>());
+        maxY = std::max(maxY, 100.0 * errorOf(r));
+    }
+    const double stepX = niceStep(std::max(maxX, 1e-3)), stepY = niceStep(std::max(maxY, 1e-3));
+    maxX = std::ceil(std::max(maxX, 1e-3) / stepX) * stepX;
+    maxY = std::ceil(std::max(maxY, 1e-3) / stepY) * stepY;
+    auto px = [&](double x) { return left + (W - left - right) * x / maxX; };
+    auto py = [&](double y) { return H - bottom - (H - top - bottom) * y / maxY; };
+    std::ostringstream s;
+    s << "<svg id=\"scatter\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
+      << "\" role=\"img\" aria-label=\"GPU time against misclassified pixels\">\n";
+    s << "<rect x=\"0\" y=\"0\" width=\"" << W << "\" height=\"" << H << "\" fill=\"#fff\"/>\n";
+    for (double x = 0; x <= maxX + 1e-9; x += stepX) {
+        s << "<line x1=\"" << px(x) << "\" y1=\"" << top << "\" x2=\"" << px(x) << "\" y2=\"" << H - bottom
+          << "\" stroke=\"#e4e4e4\"/><text x=\"" << px(x) << "\" y=\"" << H - bottom + 16
+          << "\" text-anchor=\"middle\" font-size=\"11\">" << fixed(x, stepX < 1 ? 2 : 0) << "</text>\n";
+    }
+    for (double y = 0; y <= maxY + 1e-9; y += stepY) {
+        s << "<line x1=\"" << left << "\" y1=\"" << py(y) << "\" x2=\"" << W - right << "\" y2=\"" << py(y)
+          << "\" stroke=\"#e4e4e4\"/><text x=\"" << left - 6 << "\" y=\"" << py(y) + 4
+          << "\" text-anchor=\"end\" font-size=\"11\">" << fixed(y, stepY < 1 ? 2 : 0) << "</text>\n";
+    }
+    s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 12
+      << "\" text-anchor=\"middle\" font-size=\"12\">GPU time per frame, median (ms)</text>\n";
+    s << "<text transform=\"translate(16," << (top + H - bottom) / 2
+      << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"12\">misclassified away from edges (%)</text>\n";
+    int index = 0;
+    for (const json& r : records) {
+        const double x = px(r["gpuTotalMs"]["median"].get<double>()), y = py(100.0 * errorOf(r));
+        s << "<g class=\"point\"><circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"5\" fill=\"#2b6cb0\" fill-opacity=\"0.75\"><title>"
+          << escape(r["scene"].get<std::string>() + " (" + settingsText(r) + ")") << "</title></circle><text x=\"" << x + 7
+          << "\" y=\"" << y - 6 << "\" font-size=\"10\">" << index << "</text></g>\n";
+        ++index;
+    }
+    s << "</svg>\n";
+    return s.str();
+}
+
+} // namespace
+
+void writeReport(const json& results, const fs::path& directory) {
+    const json& records = results["results"];
+    std::ostringstream h;
+    h << R"(<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>shadowlab bench report</title>
+<style>
+body { font: 14px/1.4 system-ui, sans-serif; margin: 24px; color: #222; }
+.scroll { overflow-x: auto; }
+table { border-collapse: collapse; margin: 12px 0; font-size: 13px; }
+th, td { border: 1px solid #ccc; padding: 3px 8px; text-align: right; }
+th { background: #f0f0f0; } td.l { text-align: left; }
+figure { display: inline-block; margin: 4px; } figure img { width: 320px; display: block; }
+figcaption { font-size: 12px; color: #555; }
+.legend span { display: inline-block; padding: 0 6px; margin-right: 6px; color: #fff; }
+</style></head><body>
+<h1>shadowlab bench</h1>
+)";
+    h << "<p>" << escape(results["renderer"].get<std::string>()) << ", OpenGL " << escape(results["glVersion"].get<std::string>())
+      << ". " << results["width"] << "&times;" << results["height"] << " pixels, " << results["frames"] << " timed frames after "
+      << results["warmup"] << " warm-up frames per row; GPU times from GL_TIME_ELAPSED queries (median, min&ndash;max). "
+      << "Accuracy against the Embree ray-traced reference at the same surface points; shares of receiver pixels "
+         "(see docs/metrics.md).</p>\n";
+    double fastest = 0.0;
+    for (const json& r : records) {
+        const double m = r["gpuTotalMs"]["median"].get<double>();
+        if (m > 0.0 && (fastest == 0.0 || m < fastest)) fastest = m;
+    }
+    h << "<h2>Time and error</h2>\n<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
+         "<th>triangles</th><th>GPU frame ms</th><th>&times; fastest</th><th>shadow ms</th><th>lighting ms</th><th>CPU ms</th>"
+         "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
+         "<th>MAE</th><th>RMSE</th></tr>\n";
+    int index = 0;
+    for (const json& r : records) {
+        double shadowMs = 0, lightMs = 0;
+        for (const auto& [name, st] : r["gpuMs"].items()) {
+            if (name.rfind("shadow", 0) == 0) shadowMs += st["median"].get<double>();
+            if (name.rfind("light", 0) == 0) lightMs += st["median"].get<double>();
+        }
+        const json& g = r["gpuTotalMs"];
+        for (const json& l : r["lights"]) {
+            h << "<tr><td>" << index << "</td><td class=\"l\">" << escape(r["scene"].get<std::string>()) << "</td><td class=\"l\">"
+              << escape(settingsText(r)) << "</td><td class=\"l\">" << escape(l["name"].get<std::string>()) << " ("
+              << escape(l["type"].get<std::string>()) << (l["soft"].get<bool>() ? ", soft" : "") << ")</td><td class=\"l\">"
+              << escape(l["technique"].get<std::string>()) << "</td><td>" << r["triangles"] << "</td><td>"
+              << fixed(g["median"], 1) << " (" << fixed(g["min"], 1) << "&ndash;" << fixed(g["max"], 1) << ")</td><td>"
+              << (fastest > 0.0 ? fixed(g["median"].get<double>() / fastest, 2) : std::string("&ndash;")) << "</td><td>"
+              << fixed(shadowMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td>" << fixed(r["cpuMs"]["median"], 1)
+              << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
+              << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
+              << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4) << "</td></tr>\n";
+        }
+        ++index;
+    }
+    h << "</table></div>\n<h2>Time against error</h2>\n<p>Each point is a row of the table (its number); lower left is better.</p>\n"
+      << scatterPlot(records);
+    h << "<h2>Images</h2>\n<p class=\"legend\">Error images: <span style=\"background:#eb281e\">false lit</span>"
+         "<span style=\"background:#286ef0\">false shadow</span> paler in the 1-pixel band around true shadow edges; grey: agrees.</p>\n";
+    index = 0;
+    for (const json& r : records) {
+        h << "<section class=\"row\"><h3>" << index << ". " << escape(r["scene"].get<std::string>()) << " &mdash; "
+          << escape(settingsText(r)) << "</h3>\n";
+        auto figure = [&](const std::string& file, const std::string& caption) {
+            h << "<figure><img alt=\"" << escape(caption) << "\" src=\"" << dataUri(directory / file) << "\"><figcaption>"
+              << escape(caption) << "</figcaption></figure>\n";
+        };
+        figure(r["techniqueImage"], "technique");
+        figure(r["referenceImage"], "ray-traced reference");
+        for (const json& l : r["lights"]) figure(l["errorImage"], "error: " + l["name"].get<std::string>());
+        h << "</section>\n";
+        ++index;
+    }
+    // Lets a test (or a person) see that every image decoded.
+    h << R"(<script>
+window.addEventListener('load', () => {
+  const images = Array.from(document.images);
+  const ok = images.filter(i => i.complete && i.naturalWidth > 0).length;
+  document.body.dataset.imagesLoaded = ok + '/' + images.length;
+});
+</script>
+</body></html>
+)";
+    const fs::path path = directory / "report.html";
+    const fs::path tmp = directory / "report.html.partial";
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out << h.str();
+        if (!out) throw Error(path.string() + ": cannot write");
+    }
+    fs::rename(tmp, path);
+}
+
+} // namespace shadowlab::tool

@@ -1,0 +1,58 @@
+#pragma once
+/// @file Compare.h
+/// A technique against exact ray-traced shadows (Embree): per light, which
+/// pixels it shadows wrongly, and how far its visibility is from the truth.
+/// Only in builds with SHADOWLAB_WITH_EMBREE (the default). Metrics are
+/// explained in docs/metrics.md.
+#include <shadowlab/Image.h>
+#include <shadowlab/Renderer.h>
+#include <shadowlab/Scene.h>
+
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+struct CompareOptions {
+    int width = 960;          ///< pixels, default 960
+    int height = 540;         ///< pixels, default 540
+    int softSamples = 256;    ///< reference rays per pixel for lights with size > 0, >= 1; default 256
+    unsigned seed = 1;        ///< the reference's stratified jitter; default 1
+    /// Visibility at or above this counts as lit when pixels are classified
+    /// (both sides). Default 0.5.
+    float litThreshold = 0.5f;
+};
+
+struct LightComparison {
+    std::string name;             ///< the light's name
+    bool soft = false;            ///< light.size > 0: the reference is Monte-Carlo visibility
+    /// Receiver pixels: geometry that receives shadows, faces the light (geometric
+    /// normal) and lies within its reach (spot cone, range). All shares below are of these.
+    std::size_t receiverPixels = 0;
+    std::size_t referenceShadowedPixels = 0; ///< receivers the reference classifies as shadowed
+    std::size_t edgePixels = 0;   ///< receivers within 1 pixel of a true shadow edge
+    double falseShadow = 0.0;     ///< share of receivers shadowed by the technique but lit in truth
+    double falseLit = 0.0;        ///< share of receivers lit by the technique but shadowed in truth
+    double falseShadowAwayFromEdges = 0.0; ///< falseShadow counted outside the edge band, share of receivers outside it
+    double falseLitAwayFromEdges = 0.0;    ///< falseLit counted outside the edge band, share of receivers outside it
+    double meanAbsError = 0.0;    ///< mean |technique - reference| visibility over receivers
+    double rmse = 0.0;            ///< root mean square of the same
+    ImageGray16 referenceVisibility; ///< 0 = shadowed .. 65535 = lit, whole image (background 0)
+    ImageRGBA8 errorImage;        ///< false lit red, false shadow blue, grey elsewhere (paler colours in the edge band)
+};
+
+struct Comparison {
+    std::vector<LightComparison> lights;
+    ImageRGBA8 technique;         ///< the scene as its techniques render it
+    ImageRGBA8 reference;         ///< the same shading with exact visibility
+    FrameStats techniqueFrame;    ///< the technique frame's timings (GPU times measured)
+    double referenceMs = 0.0;     ///< wall time of ray tracing, milliseconds
+};
+
+/// Renders `scene` (already uploaded to `renderer`) with its configured
+/// techniques and with ray-traced visibility from the same visible surface
+/// points, and compares them per light. Throws shadowlab::Error for bad
+/// options, or when built without Embree.
+Comparison compareWithReference(Renderer& renderer, const Scene& scene, const CompareOptions& options = {});
+
+} // namespace shadowlab

@@ -1,0 +1,165 @@
+// compareWithReference: the technique's per-pixel visibility against the
+// ray-traced truth at the very same surface points (read back from the
+// rasterizer's base pass), classified and measured per light.
+#include <shadowlab/Compare.h>
+
+#include "reference/RayTracer.h"
+
+#include <shadowlab/Error.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+// Direction from the surface point towards the light's centre, and whether
+// the point is within the light's reach (spot cone, range), as the reference
+// and lighting.frag define them.
+struct Reach {
+    glm::vec3 toLight;
+    bool inReach;
+};
+
+Reach reachOf(const Light& light, const glm::vec3& p) {
+    if (light.type == LightType::Directional) return {-glm::normalize(light.direction), true};
+    const glm::vec3 d = light.position - p;
+    const float distance = glm::length(d);
+    if (!(distance > 0.0f)) return {glm::vec3(0.0f), false};
+    bool in = light.range <= 0.0f || distance <= light.range;
+    if (light.type == LightType::Spot)
+        in = in && glm::dot(-d / distance, glm::normalize(light.direction)) > std::cos(glm::radians(light.outerConeDeg));
+    return {d / distance, in};
+}
+
+std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
+
+} // namespace
+
+#ifndef SHADOWLAB_WITH_EMBREE
+Comparison compareWithReference(Renderer&, const Scene&, const CompareOptions&) {
+    throw Error("compare: this build has no ray-traced reference (configure with -DSHADOWLAB_WITH_EMBREE=ON)");
+}
+#else
+Comparison compareWithReference(Renderer& renderer, const Scene& scene, const CompareOptions& options) {
+    if (options.softSamples < 1) throw Error("compare: softSamples must be >= 1, got " + std::to_string(options.softSamples));
+    if (!(options.litThreshold > 0.0f && options.litThreshold <= 1.0f))
+        throw Error("compare: litThreshold must be in (0, 1]");
+    RenderOptions renderOptions{options.width, options.height, true};
+    Comparison out;
+    out.techniqueFrame = renderer.render(scene, renderOptions);
+    out.technique = renderer.readColor();
+    const SurfaceBuffer surfaces = renderer.readSurfaces();
+    const int w = surfaces.width, h = surfaces.height;
+    const std::size_t n = static_cast<std::size_t>(w) * h;
+
+    std::vector<reference::SurfaceSample> samples(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 normal(surfaces.normal[i]);
+        const float len = glm::length(normal);
+        samples[i].valid = surfaces.position[i].w > 0.5f && len > 0.5f;
+        samples[i].position = glm::vec3(surfaces.position[i]);
+        samples[i].normal = samples[i].valid ? normal / len : glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+
+    const auto traceStart = std::chrono::steady_clock::now();
+    const reference::RayTracer tracer(scene);
+    reference::VisibilityOptions visibilityOptions;
+    visibilityOptions.softSamples = options.softSamples;
+    visibilityOptions.seed = options.seed;
+    std::vector<std::vector<float>> truth;
+    for (const Light& light : scene.lights) truth.push_back(tracer.visibility(light, samples, visibilityOptions));
+    out.referenceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - traceStart).count();
+
+    // The technique's own visibility per light, then the reference image
+    // (same shading, exact visibility) for the error images' backdrop.
+    std::vector<std::vector<float>> techniqueVisibility;
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) techniqueVisibility.push_back(renderer.readVisibility(scene, l));
+    renderer.renderWithVisibility(scene, {options.width, options.height}, truth);
+    out.reference = renderer.readColor();
+
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+        const Light& light = scene.lights[l];
+        const std::vector<float>& technique = techniqueVisibility[l];
+        const std::vector<float>& exact = truth[l];
+        LightComparison c;
+        c.name = light.name;
+        c.soft = light.size > 0.0f;
+
+        // Receivers and the reference's classes.
+        std::vector<std::uint8_t> receiver(n, 0), exactLit(n, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!samples[i].valid || surfaces.normal[i].w < 0.5f) continue;
+            const Reach reach = reachOf(light, samples[i].position);
+            if (!reach.inReach || glm::dot(samples[i].normal, reach.toLight) <= 0.0f) continue;
+            receiver[i] = 1;
+            exactLit[i] = exact[i] >= options.litThreshold;
+        }
+        // The edge band: receivers with an 8-neighbour receiver of the other true class.
+        std::vector<std::uint8_t> edge(n, 0);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y) * w + x;
+                if (!receiver[i]) continue;
+                for (int dy = -1; dy <= 1 && !edge[i]; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int nx = x + dx, ny = y + dy;
+                        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                        const std::size_t j = static_cast<std::size_t>(ny) * w + nx;
+                        if (receiver[j] && exactLit[j] != exactLit[i]) { edge[i] = 1; break; }
+                    }
+            }
+
+        std::size_t falseShadow = 0, falseLit = 0, falseShadowAway = 0, falseLitAway = 0;
+        double absSum = 0.0, sqSum = 0.0;
+        c.referenceVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
+        c.errorImage = {w, h, std::vector<std::uint8_t>(n * 4, 0)};
+        for (std::size_t i = 0; i < n; ++i) {
+            c.referenceVisibility.pixels[i] = static_cast<std::uint16_t>(std::lround(std::clamp(exact[i], 0.0f, 1.0f) * 65535.0f));
+            // Grey: the reference image's own luminance, dimmed, so the scene stays readable.
+            const std::uint8_t* ref = &out.reference.pixels[i * 4];
+            std::uint8_t rgb[3];
+            const float grey = (0.3f * ref[0] + 0.59f * ref[1] + 0.11f * ref[2]) / 255.0f;
+            const std::uint8_t g = toByte(receiver[i] ? 0.25f + 0.5f * grey : 0.1f + 0.25f * grey);
+            rgb[0] = rgb[1] = rgb[2] = g;
+            if (receiver[i]) {
+                ++c.receiverPixels;
+                c.referenceShadowedPixels += !exactLit[i];
+                c.edgePixels += edge[i];
+                const bool techniqueLit = technique[i] >= options.litThreshold;
+                const double e = static_cast<double>(technique[i]) - exact[i];
+                absSum += std::fabs(e);
+                sqSum += e * e;
+                if (techniqueLit && !exactLit[i]) {
+                    ++falseLit;
+                    falseLitAway += !edge[i];
+                    const std::uint8_t red[3] = {235, 40, 30}, pale[3] = {240, 150, 140};
+                    std::copy_n(edge[i] ? pale : red, 3, rgb);
+                } else if (!techniqueLit && exactLit[i]) {
+                    ++falseShadow;
+                    falseShadowAway += !edge[i];
+                    const std::uint8_t blue[3] = {40, 110, 240}, pale[3] = {150, 180, 240};
+                    std::copy_n(edge[i] ? pale : blue, 3, rgb);
+                }
+            }
+            std::copy_n(rgb, 3, &c.errorImage.pixels[i * 4]);
+            c.errorImage.pixels[i * 4 + 3] = 255;
+        }
+        const double receivers = static_cast<double>(std::max<std::size_t>(c.receiverPixels, 1));
+        const double away = static_cast<double>(std::max<std::size_t>(c.receiverPixels - c.edgePixels, 1));
+        c.falseShadow = static_cast<double>(falseShadow) / receivers;
+        c.falseLit = static_cast<double>(falseLit) / receivers;
+        c.falseShadowAwayFromEdges = static_cast<double>(falseShadowAway) / away;
+        c.falseLitAwayFromEdges = static_cast<double>(falseLitAway) / away;
+        c.meanAbsError = absSum / receivers;
+        c.rmse = std::sqrt(sqSum / receivers);
+        out.lights.push_back(std::move(c));
+    }
+
+    return out;
+}
+#endif
+
+} // namespace shadowlab

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# `shadowlab compare` prints the numbers and writes its images; `shadowlab
+# bench` runs every --vary combination and writes results.json and a
+# report.html that headless Chromium renders with its table, plot and images.
+# Usage: bench.sh SHADOWLAB_BINARY SOURCE_DIR
+set -eu
+tool=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+passed=0
+
+# compare: numbers per light and the files it names.
+out=$("$tool" compare "$src/scenes/torus-floating.json" -o cmp --width 160 --height 90)
+grep -q "light 0 'sun' (directional, hard, technique none)" <<<"$out" || fail "compare output: $out"
+grep -q "false shadow 0.000%, false lit [1-9]" <<<"$out" || fail "unshadowed should be false lit only: $out"
+for f in technique.png reference.png error-0.png visibility-0.png; do [[ -s cmp/$f ]] || fail "compare did not write $f"; done
+# visibility-0.png is 16-bit greyscale: IHDR bit depth 16, colour type 0.
+[[ "$(od -An -tu1 -j24 -N2 cmp/visibility-0.png | tr -s ' ')" == " 16 0" ]] || fail "visibility-0.png is not 16-bit grey"
+passed=$((passed + 1))
+
+# bench: two scenes x two intensities = four records.
+"$tool" bench "$src/scenes/torus-floating.json" "$src/scenes/four-spheres-point.json" \
+  --vary 'lights[0].intensity=0.5,1' --frames 2 --warmup 1 --width 160 --height 90 -o bench >/dev/null 2>progress.txt
+[[ -s bench/results.json && -s bench/report.html ]] || fail "bench did not write results.json and report.html"
+grep -q '\[##############################\] 4/4' progress.txt || fail "no progress bar: $(cat progress.txt)"
+records=$(grep -c '"sceneFile"' bench/results.json)
+[[ $records -eq 4 ]] || fail "expected 4 records, got $records"
+grep -q '"median"' bench/results.json || fail "no medians in results.json"
+passed=$((passed + 1))
+
+# The report, rendered by a real browser from disk.
+if ! command -v chromium >/dev/null; then fail "chromium is not installed (scripts/install-deps.sh installs it)"; fi
+flags=(--headless --no-sandbox --disable-gpu --disable-background-networking --disable-component-update
+       --disable-sync --no-first-run --user-data-dir="$work/chromium" --virtual-time-budget=5000)
+timeout 120 chromium "${flags[@]}" --dump-dom "file://$work/bench/report.html" > dom.html 2>/dev/null || fail "chromium --dump-dom failed"
+rows=$(grep -o '<tr>' dom.html | wc -l)
+[[ $rows -ge 5 ]] || fail "report table has $rows rows (expected a header and 4 rows)"
+grep -q '<svg id="scatter"' dom.html || fail "no scatter plot"
+points=$(grep -o '<circle' dom.html | wc -l)
+[[ $points -eq 4 ]] || fail "scatter plot has $points points, expected 4"
+# 4 records x (technique, reference, one error image) = 12 images, all decoded.
+grep -q 'data-images-loaded="12/12"' dom.html || fail "images did not all load: $(grep -o 'data-images-loaded="[^"]*"' dom.html || echo none)"
+timeout 120 chromium "${flags[@]}" --window-size=1200,1600 --screenshot="$work/report.png" "file://$work/bench/report.html" >/dev/null 2>&1 \
+  || fail "chromium --screenshot failed"
+size=$(stat -c %s report.png)
+[[ $size -gt 50000 ]] || fail "screenshot is only $size bytes (a blank page is ~10 kB)"
+if [[ -n "${SHADOWLAB_KEEP_SCREENSHOT:-}" ]]; then cp report.png "$SHADOWLAB_KEEP_SCREENSHOT"; fi
+passed=$((passed + 1))
+echo "$passed passed, 0 failed"
