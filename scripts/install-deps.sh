@@ -12,7 +12,7 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev libcli11-dev
   libimgui-dev libembree-dev
   googletest libgtest-dev
-  glmark2-data
+  glmark2-data xvfb xauth
 )
 if [[ "${1:-}" != "--no-browser" ]]; then
   packages+=(chromium)

@@ -6,6 +6,8 @@
 #include <memory>
 #include <string>
 
+struct GLFWwindow;
+
 namespace shadowlab {
 
 struct ContextOptions {
@@ -35,6 +37,11 @@ struct GlInfo {
 class Context {
 public:
     static Context createHeadless(const ContextOptions& options = {});
+    /// A window of `width` x `height` screen coordinates with an OpenGL 4.5
+    /// core context (GLFW), for the interactive viewer; all rendering code is
+    /// the same as headless. Throws shadowlab::Error when there is no display,
+    /// no OpenGL 4.5 core, or the build has SHADOWLAB_BUILD_VIEWER off.
+    static Context createWindow(int width, int height, const std::string& title, const ContextOptions& options = {});
 
     Context(Context&&) noexcept;
     Context& operator=(Context&&) noexcept;
@@ -47,6 +54,8 @@ public:
     /// The most recent KHR_debug error message, empty if none.
     std::string lastDebugError() const;
     void resetDebugErrors();
+    /// The window of a createWindow context, nullptr when headless.
+    GLFWwindow* window() const;
 
     struct Impl;
     explicit Context(std::unique_ptr<Impl> impl);

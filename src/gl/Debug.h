@@ -15,6 +15,21 @@ struct DebugState {
     std::string lastError;
 };
 
+} // namespace shadowlab::gl
+
+namespace shadowlab {
+/// What every kind of context holds; EGL and GLFW derive from it.
+struct Context::Impl {
+    GlInfo info;
+    gl::DebugState debug;
+    virtual ~Impl() = default;
+    virtual void makeCurrent() = 0;
+    virtual GLFWwindow* window() const { return nullptr; }
+};
+} // namespace shadowlab
+
+namespace shadowlab::gl {
+
 /// Installs the debug callback on the current context (synchronous output).
 void installDebugOutput(DebugState& state);
 /// Fills GlInfo from the current context (platform left to the caller).

@@ -19,13 +19,19 @@
 
 namespace shadowlab {
 
-struct Context::Impl {
+namespace {
+std::string eglErrorText();
+}
+
+struct EglImpl final : Context::Impl {
     EGLDisplay display = EGL_NO_DISPLAY;
     EGLContext context = EGL_NO_CONTEXT;
-    GlInfo info;
-    gl::DebugState debug;
 
-    ~Impl() {
+    void makeCurrent() override {
+        if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
+            throw Error("eglMakeCurrent failed (" + eglErrorText() + ")");
+    }
+    ~EglImpl() override {
         if (display != EGL_NO_DISPLAY) {
             eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
             if (context != EGL_NO_CONTEXT) eglDestroyContext(display, context);
@@ -84,7 +90,7 @@ EGLContext createContext(EGLDisplay display, bool debug, EGLint major, EGLint mi
 } // namespace
 
 Context Context::createHeadless(const ContextOptions& options) {
-    auto impl = std::make_unique<Impl>();
+    auto impl = std::make_unique<EglImpl>();
     impl->debug.verbose = options.verbose;
     const char* forced = std::getenv("SHADOWLAB_EGL_PLATFORM");
     const std::string want = forced ? forced : "";
@@ -138,10 +144,8 @@ Context& Context::operator=(Context&&) noexcept = default;
 Context::~Context() = default;
 
 const GlInfo& Context::info() const { return impl_->info; }
-void Context::makeCurrent() {
-    if (!eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context))
-        throw Error("eglMakeCurrent failed (" + eglErrorText() + ")");
-}
+void Context::makeCurrent() { impl_->makeCurrent(); }
+GLFWwindow* Context::window() const { return impl_->window(); }
 std::size_t Context::debugErrorCount() const { return impl_->debug.errors.load(); }
 std::string Context::lastDebugError() const {
     std::lock_guard lock(impl_->debug.mutex);
