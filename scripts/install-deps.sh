@@ -7,7 +7,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config ninja-build
-  libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libgbm1
+  libepoxy-dev libegl-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libgbm1
   libglfw3-dev libglm-dev libstb-dev libpng-dev
   libtinygltf-dev nlohmann-json3-dev libcli11-dev
   libimgui-dev libembree-dev

@@ -175,6 +175,8 @@ struct ObjFace {
 ImportedModel loadObj(const fs::path& path) {
     const std::string text = readWholeFile(path);
     ObjParser p{displayName(path)};
+    // OBJ is text; a NUL byte means some other file with an .obj name.
+    if (text.find('\0') != std::string::npos) throw Error(p.file + ": not a Wavefront OBJ file (binary data)");
 
     std::vector<glm::vec3> positions, normals;
     std::vector<bool> normalValid; // false for zero-length vn (treated as absent)
@@ -312,11 +314,18 @@ namespace {
 /// base64 payloads (tinygltf quotes whole data URIs) are shortened.
 std::string oneLine(std::string s) {
     while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+    // nlohmann's "[json.exception.parse_error.101] " prefix says nothing to a user.
+    if (const auto pos = s.find("[json.exception."); pos != std::string::npos) {
+        const auto end = s.find("] ", pos);
+        if (end != std::string::npos) s.erase(pos, end + 2 - pos);
+    }
     std::string out;
     for (std::size_t i = 0; i < s.size(); ++i) {
         const char c = s[i];
         if (c == '\r') continue;
-        if (c == '\n') {
+        if (c != '\n' && (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)) {
+            out += '?';  // bytes quoted from a binary file must not break the line
+        } else if (c == '\n') {
             out += "; ";
         } else if (c == ',' && out.size() >= 6 && out.compare(out.size() - 6, 6, "base64") == 0) {
             std::size_t end = i + 1;
@@ -631,6 +640,11 @@ ImportedModel loadGltf(const fs::path& path) {
         char magic[4] = {};
         if (!in.read(magic, 4) || std::memcmp(magic, "glTF", 4) != 0)
             throw Error(file + ": not a binary glTF file (missing 'glTF' magic)");
+    } else {
+        std::ifstream in(path, std::ios::binary);
+        char first = 0;
+        while (in.get(first) && std::isspace(static_cast<unsigned char>(first))) {}
+        if (first != '{') throw Error(file + ": not a glTF JSON file (expected '{' at the start)");
     }
     tinygltf::TinyGLTF loader;
     tinygltf::Model model;

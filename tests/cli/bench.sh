@@ -21,6 +21,16 @@ for f in technique.png reference.png error-0.png visibility-0.png; do [[ -s cmp/
 [[ "$(od -An -tu1 -j24 -N2 cmp/visibility-0.png | tr -s ' ')" == " 16 0" ]] || fail "visibility-0.png is not 16-bit grey"
 passed=$((passed + 1))
 
+# compare works on every bundled scene, and the unshadowed technique shows
+# its false-lit share (every scene has some true shadow).
+for scene in "$src"/scenes/*.json; do
+  name=$(basename "$scene" .json)
+  out=$("$tool" compare "$scene" -o "all/$name" --width 160 --height 90) || fail "compare $name failed"
+  grep -q "false lit [0-9.]*[1-9][0-9.]*%" <<<"$out" || fail "compare $name: no false-lit share: $out"
+  for f in technique.png reference.png error-0.png; do [[ -s all/$name/$f ]] || fail "compare $name did not write $f"; done
+done
+passed=$((passed + 1))
+
 # bench: two scenes x two intensities = four records.
 "$tool" bench "$src/scenes/torus-floating.json" "$src/scenes/four-spheres-point.json" \
   --vary 'lights[0].intensity=0.5,1' --frames 2 --warmup 1 --width 160 --height 90 -o bench >/dev/null 2>progress.txt

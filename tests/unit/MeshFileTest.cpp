@@ -710,3 +710,20 @@ TEST_F(MeshFileTest, GltfContentErrors) {
 }
 
 } // namespace
+
+TEST_F(MeshFileTest, FilesThatAreNotWhatTheirExtensionSaysAreErrors) {
+    const std::string png("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16);
+    expectError([&] { shadowlab::loadMeshFile(write("image.obj", png)); }, {"image.obj", "not a Wavefront OBJ file"});
+    expectError([&] { shadowlab::loadMeshFile(write("image.gltf", png)); }, {"image.gltf", "not a glTF JSON file"});
+    expectError([&] { shadowlab::loadMeshFile(write("image.glb", png)); }, {"image.glb", "not a binary glTF file"});
+    // JSON that is not glTF: tinygltf's complaint, in one printable line.
+    try {
+        shadowlab::loadMeshFile(write("plain.gltf", "{\"hello\": \"\x01world\"}"));
+        FAIL() << "no error";
+    } catch (const shadowlab::Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("plain.gltf: "), std::string::npos) << m;
+        EXPECT_EQ(m.find("[json.exception"), std::string::npos) << m;
+        for (char c : m) EXPECT_TRUE(static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f) << m;
+    }
+}
