@@ -23,6 +23,7 @@ passed=$((passed + 1))
 
 # compare works on every bundled scene, and the unshadowed technique shows
 # its false-lit share (every scene has some true shadow).
+mkdir -p all
 for scene in "$src"/scenes/*.json; do
   name=$(basename "$scene" .json)
   out=$("$tool" compare "$scene" -o "all/$name" --width 160 --height 90) || fail "compare $name failed"
