@@ -1,7 +1,8 @@
 #pragma once
 /// @file Shapes.h
 /// Procedural meshes. Every shape is centred on the origin of its bounding
-/// box, with +Y up, counter-clockwise front faces, unit normals and uvs in
+/// box (round shapes exactly so when their segment count is a multiple of 4,
+/// as the defaults are; otherwise the polygon's corners fall unevenly), with +Y up, counter-clockwise front faces, unit normals and uvs in
 /// [0,1]. Sizes are in scene units; each function throws shadowlab::Error
 /// for a size that is not finite and > 0 or a segment count below its minimum.
 #include <shadowlab/Scene.h>
