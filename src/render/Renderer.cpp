@@ -124,6 +124,31 @@ struct Renderer::Impl {
     FrameStats frame(const Scene& scene, const RenderOptions& options,
                      const std::vector<std::vector<float>>* screenVisibility);
 
+    // Fills and binds the frame, light and draw uniform blocks; returns the camera's clipFromWorld.
+    glm::mat4 bindFrameUniforms(const Scene& scene, glm::ivec2 size) {
+        const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+        shared::FrameUniforms u{};
+        u.clipFromWorld = scene.camera.clipFromView(aspect) * scene.camera.viewFromWorld();
+        u.cameraPosition = glm::vec4(scene.camera.position, 1.0f);
+        u.ambient = glm::vec4(scene.ambient, 0.0f);
+        glNamedBufferSubData(frameUbo.id(), 0, sizeof u, &u);
+        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, frameUbo.id());
+        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_LIGHT, lightUbo.id());
+        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_DRAW, drawUbo.id());
+        return u.clipFromWorld;
+    }
+
+    void setLight(const Light& light) {
+        const shared::LightUniforms u = lightUniforms(light);
+        glNamedBufferSubData(lightUbo.id(), 0, sizeof u, &u);
+    }
+
+    LightPassContext lightContext(const Scene& scene, std::size_t i, const std::vector<DrawItem>& items,
+                                  const glm::mat4& clipFromWorld, glm::ivec2 size) {
+        return LightPassContext{scene, scene.lights[i], static_cast<int>(i), items, *gpu, clipFromWorld, size,
+                                [this, &scene, &items](const ShaderVariant& variant) { drawItems(scene, items, variant); }};
+    }
+
     // Uploads rows top to bottom into GL's bottom-up texture.
     static void uploadVisibility(const Targets& t, const std::vector<float>& values) {
         std::vector<float> flipped(values.size());
@@ -223,23 +248,9 @@ FrameStats Renderer::Impl::frame(const Scene& scene, const RenderOptions& option
     Targets& t = *d.targets;
 
     const auto items = scene.drawItems();
-    const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-    const glm::mat4 clipFromWorld = scene.camera.clipFromView(aspect) * scene.camera.viewFromWorld();
-    shared::FrameUniforms frame{};
-    frame.clipFromWorld = clipFromWorld;
-    frame.cameraPosition = glm::vec4(scene.camera.position, 1.0f);
-    frame.ambient = glm::vec4(scene.ambient, 0.0f);
-    glNamedBufferSubData(d.frameUbo.id(), 0, sizeof frame, &frame);
-    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, d.frameUbo.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_LIGHT, d.lightUbo.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_DRAW, d.drawUbo.id());
-
+    const glm::mat4 clipFromWorld = d.bindFrameUniforms(scene, size);
     PassTimer timer(options.measureGpuTime);
-    auto contextFor = [&](std::size_t i) {
-        const Light& light = scene.lights[i];
-        return LightPassContext{scene, light, static_cast<int>(i), items, *d.gpu, clipFromWorld, size,
-                                [&](const ShaderVariant& variant) { d.drawItems(scene, items, variant); }};
-    };
+    auto contextFor = [&](std::size_t i) { return d.lightContext(scene, i, items, clipFromWorld, size); };
 
     // 1. Shadow passes (each technique sets its own framebuffer and state).
     for (std::size_t i = 0; i < scene.lights.size() && !screenVisibility; ++i) {
@@ -276,8 +287,7 @@ FrameStats Renderer::Impl::frame(const Scene& scene, const RenderOptions& option
     const GLenum colorOnly[] = {GL_COLOR_ATTACHMENT0 + SL_TARGET_COLOR, GL_NONE, GL_NONE};
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];
-        const shared::LightUniforms lu = lightUniforms(light);
-        glNamedBufferSubData(d.lightUbo.id(), 0, sizeof lu, &lu);
+        d.setLight(light);
         glBindFramebuffer(GL_FRAMEBUFFER, t.scene.id());
         glNamedFramebufferDrawBuffers(t.scene.id(), 3, colorOnly);
         glViewport(0, 0, size.x, size.y);
@@ -349,13 +359,8 @@ std::vector<float> Renderer::readVisibility(const Scene& scene, std::size_t ligh
     Targets& t = *d.targets;
     const Light& light = scene.lights[lightIndex];
     const auto items = scene.drawItems();
-    const float aspect = static_cast<float>(t.size.x) / static_cast<float>(t.size.y);
-    const glm::mat4 clipFromWorld = scene.camera.clipFromView(aspect) * scene.camera.viewFromWorld();
-    const shared::LightUniforms lu = lightUniforms(light);
-    glNamedBufferSubData(d.lightUbo.id(), 0, sizeof lu, &lu);
-    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, d.frameUbo.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_LIGHT, d.lightUbo.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_DRAW, d.drawUbo.id());
+    const glm::mat4 clipFromWorld = d.bindFrameUniforms(scene, t.size);
+    d.setLight(light);
     glBindFramebuffer(GL_FRAMEBUFFER, t.visibilityOut.id());
     glViewport(0, 0, t.size.x, t.size.y);
     const float zero[4] = {0, 0, 0, 0};
@@ -366,9 +371,7 @@ std::vector<float> Renderer::readVisibility(const Scene& scene, std::size_t ligh
     glDisable(GL_BLEND);
     ShaderVariant variant{ShaderPass::Light, light.type, light.shadow.technique};
     variant.outputVisibility = true;
-    LightPassContext ctx{scene, light, static_cast<int>(lightIndex), items, *d.gpu, clipFromWorld, t.size,
-                         [&](const ShaderVariant& v) { d.drawItems(scene, items, v); }};
-    d.module(lightIndex, light.shadow.technique).renderLightPass(ctx, variant);
+    d.module(lightIndex, light.shadow.technique).renderLightPass(d.lightContext(scene, lightIndex, items, clipFromWorld, t.size), variant);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
