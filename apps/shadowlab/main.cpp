@@ -55,6 +55,11 @@ void checkSize(const RenderArgs& args, const GlInfo& info) {
     if (args.height > limit) throw Error("--height " + std::to_string(args.height) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
 }
 
+void requireNoGlErrors(const Context& context) {
+    if (context.debugErrorCount() > 0)
+        throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
+}
+
 int runRender(const RenderArgs& args) {
     const Scene scene = loadScene(args.scene, args.overrides);
     const std::string defaultName = (args.scene.empty() ? std::string("default") : fs::path(args.scene).stem().string()) + ".png";
@@ -64,9 +69,9 @@ int runRender(const RenderArgs& args) {
     Renderer renderer(context);
     renderer.upload(scene);
     renderer.render(scene, {args.width, args.height});
-    writePng(output, renderer.readColor());
-    if (context.debugErrorCount() > 0)
-        throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
+    const ImageRGBA8 image = renderer.readColor();
+    requireNoGlErrors(context);  // before writing: no image from a failed frame
+    writePng(output, image);
     std::cout << output.string() << "\n";
     return 0;
 }
@@ -106,8 +111,7 @@ int runCompare(const CompareArgs& args) {
     options.height = args.height;
     options.softSamples = args.softSamples;
     const Comparison c = compareWithReference(renderer, scene, options);
-    if (context.debugErrorCount() > 0)
-        throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
+    requireNoGlErrors(context);
 
     fs::create_directories(dir);
     std::vector<fs::path> written{dir / "technique.png", dir / "reference.png"};
@@ -144,6 +148,7 @@ int runBenchCommand(const tool::BenchArgs& args) {
     Context context = Context::createHeadless();
     checkSize({"", "", args.width, args.height, {}}, context.info());
     const nlohmann::json results = tool::runBench(context, args);
+    requireNoGlErrors(context);
     const fs::path json = args.output / "results.json";
     {
         std::ofstream out(args.output / "results.json.partial");
@@ -152,8 +157,6 @@ int runBenchCommand(const tool::BenchArgs& args) {
     }
     fs::rename(args.output / "results.json.partial", json);
     tool::writeReport(results, args.output);
-    if (context.debugErrorCount() > 0)
-        throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
     std::cout << json.string() << "\n" << (args.output / "report.html").string() << "\n";
     return 0;
 }

@@ -1,7 +1,10 @@
 #include "render/GpuScene.h"
 
+#include <shadowlab/Error.h>
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace shadowlab {
 
@@ -39,7 +42,13 @@ GpuScene::GpuScene(const Scene& scene) {
         gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
         meshes_.push_back(std::move(gpu));
     }
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     for (const ImageRGBA8& image : scene.textures) {
+        if (image.width < 1 || image.height < 1 || image.width > maxSize || image.height > maxSize)
+            throw Error("texture " + std::to_string(textures_.size()) + " (" + std::to_string(image.width) + "x" +
+                        std::to_string(image.height) + "): expected 1.." + std::to_string(maxSize) +
+                        " texels per side (this GPU's limit)");
         gl::Texture texture(GL_TEXTURE_2D);
         const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
         glTextureStorage2D(texture.id(), levels, GL_SRGB8_ALPHA8, image.width, image.height);

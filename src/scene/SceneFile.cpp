@@ -221,10 +221,12 @@ public:
         if (v < 0.0f) child(key).fail("expected a number >= 0, got " + fmt(v));
         return v;
     }
-    int integer(const std::string& key, int def, int minimum) const {
+    int integer(const std::string& key, int def, int minimum, int maximum) const {
         if (!has(key)) return def;
         const int v = child(key).integer();
-        if (v < minimum) child(key).fail("expected an integer >= " + std::to_string(minimum) + ", got " + std::to_string(v));
+        if (v < minimum || v > maximum)
+            child(key).fail("expected an integer in " + std::to_string(minimum) + ".." + std::to_string(maximum) + ", got " +
+                            std::to_string(v));
         return v;
     }
     glm::vec3 vec3(const std::string& key, glm::vec3 def) const { return has(key) ? child(key).vec3() : def; }
@@ -380,6 +382,9 @@ private:
         r.requireObject();
         if (!r.has("type")) r.fail("missing key 'type' (plane, box, sphere, torus, cylinder, cone or pyramid)");
         const std::string type = r.child("type").string();
+        // Segment counts stop at kMaxSegments: enough for any smooth shape, and
+        // a typo like 1000000000 cannot exhaust memory.
+        constexpr int kMaxSegments = 1024;
         // Parameters are validated here with their JSON paths; the shape
         // functions' own checks (segment minimums) then cannot fire, but if
         // one does its message is attached to this shape's path.
@@ -404,20 +409,20 @@ private:
         if (type == "sphere") {
             r.checkKeys({"type", "radius", "segments", "rings"});
             const float radius = r.positive("radius", 1.0f);
-            const int segments = r.integer("segments", 48, 3), rings = r.integer("rings", 24, 2);
+            const int segments = r.integer("segments", 48, 3, kMaxSegments), rings = r.integer("rings", 24, 2, kMaxSegments);
             return build([&] { return shapes::sphere(radius, segments, rings); });
         }
         if (type == "torus") {
             r.checkKeys({"type", "majorRadius", "minorRadius", "majorSegments", "minorSegments"});
             const float major = r.positive("majorRadius", 1.0f), minor = r.positive("minorRadius", 0.3f);
             if (minor >= major) r.fail("expected minorRadius < majorRadius");
-            const int majorSegments = r.integer("majorSegments", 64, 3), minorSegments = r.integer("minorSegments", 32, 3);
+            const int majorSegments = r.integer("majorSegments", 64, 3, kMaxSegments), minorSegments = r.integer("minorSegments", 32, 3, kMaxSegments);
             return build([&] { return shapes::torus(major, minor, majorSegments, minorSegments); });
         }
         if (type == "cylinder" || type == "cone") {
             r.checkKeys({"type", "radius", "height", "segments"});
             const float radius = r.positive("radius", 0.5f), height = r.positive("height", 1.0f);
-            const int segments = r.integer("segments", 48, 3);
+            const int segments = r.integer("segments", 48, 3, kMaxSegments);
             return build([&] {
                 return type == "cylinder" ? shapes::cylinder(radius, height, segments) : shapes::cone(radius, height, segments);
             });
