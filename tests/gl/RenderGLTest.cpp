@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <unistd.h>
 
 using namespace shadowlab;
 using shadowlab::test::GLTest;
@@ -198,4 +199,20 @@ TEST_F(RenderGLTest, EveryBundledSceneRendersWithoutGlError) {
         ++count;
     }
     EXPECT_GE(count, 8);
+}
+
+TEST_F(RenderGLTest, TextureWiderThanTheGpuLimitIsAnError) {
+    const int tooWide = test::glContext().info().maxTextureSize + 1;
+    const fs::path png = fs::temp_directory_path() / ("shadowlab-wide-" + std::to_string(::getpid()) + ".png");
+    writePng(png, ImageRGBA8{tooWide, 1, std::vector<std::uint8_t>(static_cast<std::size_t>(tooWide) * 4, 255)});
+    const Scene scene = parseScene(R"({"materials": {"m": {"baseColorTexture": ")" + png.filename().string() + R"("}},
+                                       "nodes": [{"shape": {"type": "box"}, "material": "m"}]})", "test", png.parent_path());
+    fs::remove(png);
+    Renderer renderer(test::glContext());
+    try {
+        renderer.upload(scene);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("texture 0 (" + std::to_string(tooWide) + "x1)"), std::string::npos) << e.what();
+    }
 }
