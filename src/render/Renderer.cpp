@@ -198,9 +198,14 @@ struct Renderer::Impl {
     // Draws every item with the program for `variant`, choosing the textured
     // or untextured form per material.
     void drawItems(const Scene& scene, const std::vector<DrawItem>& items, ShaderVariant variant) {
+        const gl::Program* current = nullptr;
         for (const DrawItem& item : items) {
             variant.baseColorTexture = textured(scene, item);
-            program(variant).use();
+            const gl::Program& wanted = program(variant);
+            if (&wanted != current) {  // switch programs only between textured and untextured items
+                wanted.use();
+                current = &wanted;
+            }
             setDraw(scene, item);
             gpu->draw(item.mesh);
         }

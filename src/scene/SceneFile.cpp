@@ -138,7 +138,7 @@ struct ParseContext {
             // The flag is at fault when the bad value lies inside what it set,
             // or contains it (setting camera.fovY.x turned fovY into an object).
             auto within = [](const std::string& inner, const std::string& outer) {
-                return inner == outer || outer.empty() ||
+                return inner == outer ||
                        (inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 &&
                         (inner[outer.size()] == '.' || inner[outer.size()] == '['));
             };

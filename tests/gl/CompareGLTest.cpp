@@ -33,6 +33,15 @@ Scene sphereOverPlane() {
     })", "sphere-over-plane", ".");
 }
 
+// Uploads the scene and compares it at `width` x `height`.
+Comparison compareAt(Renderer& renderer, const Scene& scene, int width, int height) {
+    renderer.upload(scene);
+    CompareOptions options;
+    options.width = width;
+    options.height = height;
+    return compareWithReference(renderer, scene, options);
+}
+
 } // namespace
 
 class CompareGLTest : public GLTest {};
@@ -40,11 +49,7 @@ class CompareGLTest : public GLTest {};
 TEST_F(CompareGLTest, ReferenceMatchesTheAnalyticEllipseAwayFromEdges) {
     const Scene scene = sphereOverPlane();
     Renderer renderer(test::glContext());
-    renderer.upload(scene);
-    CompareOptions options;
-    options.width = 480;
-    options.height = 270;
-    const Comparison c = compareWithReference(renderer, scene, options);
+    const Comparison c = compareAt(renderer, scene, 480, 270);
     const SurfaceBuffer s = renderer.readSurfaces();  // the same camera and size
     const int w = s.width, h = s.height;
     const auto& vis = c.lights.at(0).referenceVisibility.pixels;
@@ -82,11 +87,7 @@ TEST_F(CompareGLTest, ReferenceMatchesTheAnalyticEllipseAwayFromEdges) {
 TEST_F(CompareGLTest, UnshadowedTechniqueIsAllFalseLitAndNeverFalseShadow) {
     const Scene scene = sphereOverPlane();
     Renderer renderer(test::glContext());
-    renderer.upload(scene);
-    CompareOptions options;
-    options.width = 320;
-    options.height = 180;
-    const Comparison c = compareWithReference(renderer, scene, options);
+    const Comparison c = compareAt(renderer, scene, 320, 180);
     ASSERT_EQ(c.lights.size(), 1u);
     const LightComparison& l = c.lights[0];
     EXPECT_GT(l.receiverPixels, 30000u);
@@ -112,11 +113,7 @@ TEST_F(CompareGLTest, UnshadowedTechniqueIsAllFalseLitAndNeverFalseShadow) {
 TEST_F(CompareGLTest, ReferenceImageUsesExactVisibility) {
     const Scene scene = sphereOverPlane();
     Renderer renderer(test::glContext());
-    renderer.upload(scene);
-    CompareOptions options;
-    options.width = 160;
-    options.height = 90;
-    const Comparison c = compareWithReference(renderer, scene, options);
+    const Comparison c = compareAt(renderer, scene, 160, 90);
     const auto& vis = c.lights[0].referenceVisibility.pixels;
     const SurfaceBuffer s = renderer.readSurfaces();
     // Where the reference says the ground is shadowed, the reference image has

@@ -4,6 +4,8 @@
 
 #include <shadowlab/Error.h>
 
+#include "ErrorText.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -27,15 +29,6 @@ using shadowlab::Mesh;
 
 // ---------------------------------------------------------------------------
 // Helpers
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const shadowlab::Error& e) {
-        return e.what();
-    }
-    return "<no shadowlab::Error thrown>";
-}
 
 /// Expects a shadowlab::Error whose single-line message contains every part.
 void expectError(const std::function<void()>& f, const std::vector<std::string>& parts) {

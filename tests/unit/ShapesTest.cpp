@@ -4,6 +4,8 @@
 #include <shadowlab/Error.h>
 #include <shadowlab/Shapes.h>
 
+#include "ErrorText.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/constants.hpp>
@@ -150,15 +152,6 @@ double polygonDeficitBound(int n) {
 /// Float positions carry ~1e-7 relative error; volumes sum thousands of
 /// such terms, so exact-geometry comparisons use 1e-5 relative tolerance.
 constexpr double kRoundoff = 1e-5;
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const shadowlab::Error& e) {
-        return e.what();
-    }
-    return "<no shadowlab::Error thrown>";
-}
 
 #define EXPECT_ERROR_CONTAINS(expr, text)                                                                   \
     do {                                                                                                    \
