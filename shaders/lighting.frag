@@ -5,6 +5,7 @@
 // per-pixel texture, the ray-traced reference, instead of the technique),
 // OUTPUT_VISIBILITY (0/1: write the visibility term itself, for compare).
 #include "shadowlab_shared.h"
+#include "light_reach.h"
 
 in vec3 vWorldPosition;
 in vec3 vWorldNormal;
@@ -48,9 +49,9 @@ void main() {
     L = -light.direction.xyz;
 #else
     vec3 toLight = light.position.xyz - vWorldPosition;
-    float distance = length(toLight);
-    L = toLight / distance;
-    if (light.params.x > 0.0 && distance > light.params.x) attenuation = 0.0;
+    L = normalize(toLight);
+    if (!slLightReaches(LIGHT_TYPE, light.position.xyz, light.direction.xyz, light.params.x, light.params.z, vWorldPosition))
+        discard;
 #if LIGHT_TYPE == SL_LIGHT_SPOT
     // Smooth falloff between the inner and outer cone (cosines in params.yz).
     float cosAngle = dot(-L, light.direction.xyz);
