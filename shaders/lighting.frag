@@ -1,9 +1,15 @@
-// Light pass: one light's Blinn-Phong diffuse and specular (lecture 000,
-// "passTwo"), scaled by the light's visibility, added onto the base pass.
-// Variants: LIGHT_TYPE (SL_LIGHT_*), SHADOW_TECHNIQUE (SL_SHADOW_*),
-// HAS_BASE_COLOR_TEXTURE (0/1), SCREEN_VISIBILITY (0/1: visibility from a
-// per-pixel texture, the ray-traced reference, instead of the technique),
-// OUTPUT_VISIBILITY (0/1: write the visibility term itself, for compare).
+// Every pass that shades scene geometry: the base pass (ambient, and one
+// light merged in when its technique allows) and the additive pass of each
+// further light. Blinn-Phong as in the lecture (000, "passTwo"):
+//   colour = globalAmbient*ambient*base
+//          + visibility * light * (diffuse*base*max(N.L,0) + specular*max(N.H,0)^shininess)
+// Variants (ShaderVariant): AMBIENT, LIGHT (0/1: the ambient term, one
+// light's term), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE,
+// WRITE_SURFACES (world position and geometric normal for the reference),
+// SCREEN_VISIBILITY (visibility from a per-pixel texture: the ray-traced
+// reference), OUTPUT_VISIBILITY (write the visibility term itself, for
+// compare). The technique's GLSL fills the "@shadow" slot with
+// vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal).
 #include "shadowlab_shared.h"
 #include "light_reach.h"
 
@@ -15,59 +21,88 @@ in vec2 vUv;
 layout(binding = SL_UNIT_BASE_COLOR) uniform sampler2D baseColorTexture;
 #endif
 
+layout(location = SL_TARGET_COLOR) out vec4 outColor;
+#if WRITE_SURFACES
+layout(location = SL_TARGET_POSITION) out vec4 outPosition;
+layout(location = SL_TARGET_NORMAL) out vec4 outNormal;
+#endif
+
+#if LIGHT
 #if SCREEN_VISIBILITY
 layout(binding = SL_UNIT_SCREEN_VISIBILITY) uniform sampler2D screenVisibility;
-#endif
-
-layout(location = SL_TARGET_COLOR) out vec4 outColor;
-
-// The hook every shadow technique plugs into: 1 = lit, 0 = shadowed.
-float shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
-#if SCREEN_VISIBILITY
-    return texelFetch(screenVisibility, ivec2(gl_FragCoord.xy), 0).r;
-#elif SHADOW_TECHNIQUE == SL_SHADOW_NONE
-    return 1.0;
+vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
+    return vec3(texelFetch(screenVisibility, ivec2(gl_FragCoord.xy), 0).r);
+}
 #else
-#error unknown SHADOW_TECHNIQUE
+#include "@shadow"
 #endif
+// The one place `receivesShadows` applies: a node that does not receive
+// shadows is lit whatever the technique (or the reference) says.
+vec3 lightVisibility(vec3 worldPosition, vec3 worldNormal) {
+    return draw.baseColor.w > 0.5 ? shadowVisibility(worldPosition, worldNormal) : vec3(1.0);
 }
 
-void main() {
-    vec3 N = normalize(vWorldNormal);
-    vec3 V = normalize(frame.cameraPosition.xyz - vWorldPosition);
-    // Two-sided lighting: a back face seen by the camera is lit as its front.
-    if (!gl_FrontFacing) N = -N;
-#if OUTPUT_VISIBILITY
-    // The shadow term alone, for every pixel: compare classifies it.
-    outColor = vec4(shadowVisibility(vWorldPosition, N), 0.0, 0.0, 1.0);
-    return;
-#endif
-
+// One light's diffuse and specular at this fragment, before visibility;
+// `reached` false outside the light's reach or facing away.
+vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
     vec3 L;
     float attenuation = 1.0;
 #if LIGHT_TYPE == SL_LIGHT_DIRECTIONAL
     L = -light.direction.xyz;
 #else
-    vec3 toLight = light.position.xyz - vWorldPosition;
-    L = normalize(toLight);
+    L = normalize(light.position.xyz - vWorldPosition);
     if (!slLightReaches(LIGHT_TYPE, light.position.xyz, light.direction.xyz, light.params.x, light.params.z, vWorldPosition))
-        discard;
+        attenuation = 0.0;
 #if LIGHT_TYPE == SL_LIGHT_SPOT
     // Smooth falloff between the inner and outer cone (cosines in params.yz).
-    float cosAngle = dot(-L, light.direction.xyz);
-    attenuation *= smoothstep(light.params.z, light.params.y, cosAngle);
+    attenuation *= smoothstep(light.params.z, light.params.y, dot(-L, light.direction.xyz));
 #endif
 #endif
     float NdotL = max(dot(N, L), 0.0);
-    if (NdotL <= 0.0 || attenuation <= 0.0) discard;
+    reached = NdotL > 0.0 && attenuation > 0.0;
+    if (!reached) return vec3(0.0);
+    vec3 H = normalize(L + V);
+    vec3 diffuse = draw.diffuse.rgb * base * NdotL;
+    vec3 specular = draw.specular.rgb * pow(max(dot(N, H), 0.0), draw.specular.w);
+    return attenuation * light.radiance.rgb * (diffuse + specular);
+}
+#endif
+
+void main() {
+    vec3 N = normalize(vWorldNormal);
+    // Two-sided lighting: a back face seen by the camera is lit as its front.
+    if (!gl_FrontFacing) N = -N;
+#if OUTPUT_VISIBILITY && LIGHT
+    // The shadow term alone, for every pixel: compare classifies it.
+    outColor = vec4(lightVisibility(vWorldPosition, N), 1.0);
+    return;
+#endif
 
     vec3 base = draw.baseColor.rgb;
 #if HAS_BASE_COLOR_TEXTURE
     base *= texture(baseColorTexture, vUv).rgb;
 #endif
-    vec3 H = normalize(L + V);
-    vec3 diffuse = draw.diffuse.rgb * base * NdotL;
-    vec3 specular = draw.specular.rgb * pow(max(dot(N, H), 0.0), draw.specular.w);
-    float visibility = shadowVisibility(vWorldPosition, N);
-    outColor = vec4(visibility * attenuation * light.radiance.rgb * (diffuse + specular), 1.0);
+    vec3 color = vec3(0.0);
+#if AMBIENT
+    color += frame.ambient.rgb * draw.ambient.rgb * base;
+#endif
+#if LIGHT
+    vec3 V = normalize(frame.cameraPosition.xyz - vWorldPosition);
+    bool reached;
+    vec3 term = lightTerm(N, V, base, reached);
+#if !AMBIENT
+    if (!reached) discard;  // an additive pass adds nothing here
+#endif
+    if (reached) color += lightVisibility(vWorldPosition, N) * term;
+#endif
+    outColor = vec4(color, 1.0);
+
+#if WRITE_SURFACES
+    // Geometric (flat) normal from screen-space derivatives of the position,
+    // turned towards the camera: the normal of the visible triangle itself.
+    vec3 geometric = normalize(cross(dFdx(vWorldPosition), dFdy(vWorldPosition)));
+    if (dot(geometric, frame.cameraPosition.xyz - vWorldPosition) < 0.0) geometric = -geometric;
+    outPosition = vec4(vWorldPosition, 1.0);
+    outNormal = vec4(geometric, draw.baseColor.w);
+#endif
 }

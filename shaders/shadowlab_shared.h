@@ -10,24 +10,21 @@
 #define SL_LIGHT_SPOT 1
 #define SL_LIGHT_POINT 2
 
-// Shadow techniques (the SHADOW_TECHNIQUE variant define).
-#define SL_SHADOW_NONE 0
-
 // Uniform-block binding points.
 #define SL_BINDING_FRAME 0
 #define SL_BINDING_LIGHT 1
 #define SL_BINDING_DRAW 2
+#define SL_BINDING_TECHNIQUE 3     // a technique's own block (light-space matrices, bias, ...)
 
 // Texture units.
 #define SL_UNIT_BASE_COLOR 0
-#define SL_UNIT_RESOLVE_INPUT 1
 #define SL_UNIT_SCREEN_VISIBILITY 2   // per-pixel visibility from the ray-traced reference (R32F)
-#define SL_UNIT_SHADOW_FIRST 4
+#define SL_UNIT_SHADOW_FIRST 4        // units a technique's textures use, from here up
 
-// Base-pass colour attachments.
-#define SL_TARGET_COLOR 0     // linear RGB radiance, RGBA16F
-#define SL_TARGET_POSITION 1  // world position xyz, w = 1 on geometry (RGBA32F)
-#define SL_TARGET_NORMAL 2    // geometric normal xyz facing the camera, w = receives shadows (RGBA16F)
+// Colour attachments of the frame's framebuffer.
+#define SL_TARGET_COLOR 0     // radiance, SRGB8_ALPHA8 (linear values, encoded on write)
+#define SL_TARGET_POSITION 1  // only when surfaces are asked for: world position xyz, w = 1 on geometry (RGBA32F)
+#define SL_TARGET_NORMAL 2    // only when surfaces are asked for: geometric normal facing the camera, w = receives shadows (RGBA16F)
 
 #ifdef __cplusplus
 #include <glm/glm.hpp>

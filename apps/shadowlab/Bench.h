@@ -2,6 +2,7 @@
 // shadowlab bench: time and accuracy for every combination of varied
 // settings over a set of scenes; results.json and a self-contained report.html.
 #include <shadowlab/Context.h>
+#include <shadowlab/Renderer.h>
 
 #include <nlohmann/json.hpp>
 
@@ -19,6 +20,9 @@ struct BenchArgs {
     int warmup = 2;                      ///< untimed frames first (shader compilation, caches)
     int width = 960, height = 540;
     int softSamples = 256;
+    /// Per-pass clock (--clock): Auto = glFinish-bracketed CPU time on a
+    /// software rasteriser, timestamp queries on a GPU.
+    TimingClock clock = TimingClock::Auto;
     std::filesystem::path output = "bench";
 };
 

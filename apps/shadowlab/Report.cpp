@@ -96,7 +96,7 @@ std::string scatterPlot(const json& records) {
     const double W = 640, H = 360, left = 70, right = 20, top = 20, bottom = 50;
     double maxX = 0, maxY = 0;
     for (const json& r : records) {
-        maxX = std::max(maxX, r["gpuTotalMs"]["median"].get<double>());
+        maxX = std::max(maxX, r["frameMs"]["median"].get<double>());
         maxY = std::max(maxY, 100.0 * errorOf(r));
     }
     const double stepX = niceStep(std::max(maxX, 1e-3)), stepY = niceStep(std::max(maxY, 1e-3));
@@ -106,7 +106,7 @@ std::string scatterPlot(const json& records) {
     auto py = [&](double y) { return H - bottom - (H - top - bottom) * y / maxY; };
     std::ostringstream s;
     s << "<svg id=\"scatter\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
-      << "\" role=\"img\" aria-label=\"GPU time against misclassified pixels\">\n";
+      << "\" role=\"img\" aria-label=\"frame time against misclassified pixels\">\n";
     s << "<rect x=\"0\" y=\"0\" width=\"" << W << "\" height=\"" << H << "\" fill=\"#fff\"/>\n";
     for (double x = 0; x <= maxX + 1e-9; x += stepX) {
         s << "<line x1=\"" << px(x) << "\" y1=\"" << top << "\" x2=\"" << px(x) << "\" y2=\"" << H - bottom
@@ -119,12 +119,12 @@ std::string scatterPlot(const json& records) {
           << "\" text-anchor=\"end\" font-size=\"11\">" << fixed(y, stepY < 1 ? 2 : 0) << "</text>\n";
     }
     s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 12
-      << "\" text-anchor=\"middle\" font-size=\"12\">GPU time per frame, median (ms)</text>\n";
+      << "\" text-anchor=\"middle\" font-size=\"12\">frame time, median (ms)</text>\n";
     s << "<text transform=\"translate(16," << (top + H - bottom) / 2
       << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"12\">misclassified away from edges (%)</text>\n";
     int index = 0;
     for (const json& r : records) {
-        const double x = px(r["gpuTotalMs"]["median"].get<double>()), y = py(100.0 * errorOf(r));
+        const double x = px(r["frameMs"]["median"].get<double>()), y = py(100.0 * errorOf(r));
         s << "<g class=\"point\"><circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"5\" fill=\"#2b6cb0\" fill-opacity=\"0.75\"><title>"
           << escape(r["scene"].get<std::string>() + " (" + settingsText(r) + ")") << "</title></circle><text x=\"" << x + 7
           << "\" y=\"" << y - 6 << "\" font-size=\"10\">" << index << "</text></g>\n";
@@ -155,26 +155,31 @@ figcaption { font-size: 12px; color: #555; }
 )";
     h << "<p>" << escape(results["renderer"].get<std::string>()) << ", OpenGL " << escape(results["glVersion"].get<std::string>())
       << ". " << results["width"] << "&times;" << results["height"] << " pixels, " << results["frames"] << " timed frames after "
-      << results["warmup"] << " warm-up frames per row; GPU times from GL_TIME_ELAPSED queries (median, min&ndash;max). "
+      << results["warmup"] << " warm-up frames per row. Frame: wall time of a finished frame as users get it; passes: "
+      << escape(records.empty() ? std::string("-") : records[0]["clock"].get<std::string>())
+      << " clock (cpu-finish: glFinish around each pass on a software rasteriser; gpu-timestamp: GL_TIMESTAMP queries); "
+         "medians, min&ndash;max in brackets. "
       << "Accuracy against the Embree ray-traced reference at the same surface points; shares of receiver pixels "
          "(see docs/metrics.md).</p>\n";
     double fastest = 0.0;
     for (const json& r : records) {
-        const double m = r["gpuTotalMs"]["median"].get<double>();
+        const double m = r["frameMs"]["median"].get<double>();
         if (m > 0.0 && (fastest == 0.0 || m < fastest)) fastest = m;
     }
     h << "<h2>Time and error</h2>\n<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
-         "<th>triangles</th><th>GPU frame ms</th><th>&times; fastest</th><th>shadow ms</th><th>lighting ms</th><th>CPU ms</th>"
+         "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>shadow ms</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
          "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
          "<th>MAE</th><th>RMSE</th></tr>\n";
     int index = 0;
     for (const json& r : records) {
-        double shadowMs = 0, lightMs = 0;
-        for (const auto& [name, st] : r["gpuMs"].items()) {
+        double shadowMs = 0, baseMs = 0, lightMs = 0;
+        for (const auto& [name, st] : r["passMs"].items()) {
+            if (name.find('.') != std::string::npos) continue;  // nested scopes are inside their pass
             if (name.rfind("shadow", 0) == 0) shadowMs += st["median"].get<double>();
+            if (name == "base") baseMs += st["median"].get<double>();
             if (name.rfind("light", 0) == 0) lightMs += st["median"].get<double>();
         }
-        const json& g = r["gpuTotalMs"];
+        const json& g = r["frameMs"];
         for (const json& l : r["lights"]) {
             h << "<tr><td>" << index << "</td><td class=\"l\">" << escape(r["scene"].get<std::string>()) << "</td><td class=\"l\">"
               << escape(settingsText(r)) << "</td><td class=\"l\">" << escape(l["name"].get<std::string>()) << " ("
@@ -182,7 +187,8 @@ figcaption { font-size: 12px; color: #555; }
               << escape(l["technique"].get<std::string>()) << "</td><td>" << r["triangles"] << "</td><td>"
               << fixed(g["median"], 1) << " (" << fixed(g["min"], 1) << "&ndash;" << fixed(g["max"], 1) << ")</td><td>"
               << (fastest > 0.0 ? fixed(g["median"].get<double>() / fastest, 2) : std::string("&ndash;")) << "</td><td>"
-              << fixed(shadowMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td>" << fixed(r["cpuMs"]["median"], 1)
+              << fixed(shadowMs, 1) << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
+              << escape(r["clock"].get<std::string>())
               << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
               << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
               << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4) << "</td></tr>\n";

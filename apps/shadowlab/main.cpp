@@ -13,6 +13,7 @@
 #include <shadowlab/Image.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/SceneFile.h>
+#include <shadowlab/Techniques.h>
 
 #include <CLI/CLI.hpp>
 
@@ -20,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 
 namespace fs = std::filesystem;
 using namespace shadowlab;
@@ -32,6 +34,7 @@ struct RenderArgs {
     int width = 1280;
     int height = 720;
     std::vector<std::string> overrides;
+    std::string debugImages;  ///< directory for the techniques' debug images; empty = none
 };
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
@@ -49,10 +52,10 @@ fs::path checkOutput(const std::string& output, const std::string& flag) {
     return path;
 }
 
-void checkSize(const RenderArgs& args, const GlInfo& info) {
+void checkSize(int width, int height, const GlInfo& info) {
     const int limit = std::min({info.maxTextureSize, info.maxViewportWidth, info.maxViewportHeight});
-    if (args.width > limit) throw Error("--width " + std::to_string(args.width) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
-    if (args.height > limit) throw Error("--height " + std::to_string(args.height) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
+    if (width > limit) throw Error("--width " + std::to_string(width) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
+    if (height > limit) throw Error("--height " + std::to_string(height) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
 }
 
 void requireNoGlErrors(const Context& context) {
@@ -65,14 +68,27 @@ int runRender(const RenderArgs& args) {
     const std::string defaultName = (args.scene.empty() ? std::string("default") : fs::path(args.scene).stem().string()) + ".png";
     const fs::path output = checkOutput(args.output.empty() ? defaultName : args.output, "-o");
     Context context = Context::createHeadless();
-    checkSize(args, context.info());
+    checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(scene);
-    renderer.render(scene, {args.width, args.height});
+    RenderOptions options;
+    options.width = args.width;
+    options.height = args.height;
+    renderer.render(scene, options);
     const ImageRGBA8 image = renderer.readColor();
+    std::vector<DebugImage> debug;
+    if (!args.debugImages.empty()) debug = renderer.debugImages(scene);
     requireNoGlErrors(context);  // before writing: no image from a failed frame
     writePng(output, image);
     std::cout << output.string() << "\n";
+    if (!args.debugImages.empty()) {
+        const fs::path dir(args.debugImages);
+        fs::create_directories(dir);
+        for (const DebugImage& d : debug) {
+            writePng(dir / (d.name + ".png"), d.image);
+            std::cout << (dir / (d.name + ".png")).string() << "\n";
+        }
+    }
     return 0;
 }
 
@@ -103,7 +119,7 @@ int runCompare(const CompareArgs& args) {
     const Scene scene = loadScene(args.scene, args.overrides);
     const fs::path dir = checkOutputDirectory(args.output);
     Context context = Context::createHeadless();
-    checkSize({"", "", args.width, args.height, {}}, context.info());
+    checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(scene);
     CompareOptions options;
@@ -123,7 +139,7 @@ int runCompare(const CompareArgs& args) {
         const LightComparison& l = c.lights[i];
         const Light& light = scene.lights[i];
         std::cout << "light " << i << " '" << l.name << "' (" << toString(light.type) << ", " << (l.soft ? "soft" : "hard")
-                  << ", technique " << toString(light.shadow.technique) << "): " << l.receiverPixels << " receiver pixels, "
+                  << ", technique " << light.shadow.technique << "): " << l.receiverPixels << " receiver pixels, "
                   << pct(l.receiverPixels ? double(l.referenceShadowedPixels) / double(l.receiverPixels) : 0.0)
                   << " shadowed in truth\n"
                   << "  misclassified, all receivers:      false shadow " << pct(l.falseShadow) << ", false lit " << pct(l.falseLit) << "\n"
@@ -146,7 +162,7 @@ int runBenchCommand(const tool::BenchArgs& args) {
         if (!fs::is_regular_file(file)) throw Error(file + ": file not found");
     checkOutputDirectory(args.output.string());
     Context context = Context::createHeadless();
-    checkSize({"", "", args.width, args.height, {}}, context.info());
+    checkSize(args.width, args.height, context.info());
     const nlohmann::json results = tool::runBench(context, args);
     requireNoGlErrors(context);
     const fs::path json = args.output / "results.json";
@@ -158,6 +174,24 @@ int runBenchCommand(const tool::BenchArgs& args) {
     fs::rename(args.output / "results.json.partial", json);
     tool::writeReport(results, args.output);
     std::cout << json.string() << "\n" << (args.output / "report.html").string() << "\n";
+    return 0;
+}
+
+// The registered techniques and their options tables (the same tables the
+// scene parser, --set, bench --vary and docs/scene-format.md use).
+int runTechniques(bool markdown) {
+    for (const TechniqueInfo& t : techniques()) {
+        if (markdown) {
+            std::cout << "#### `lights[i].shadow." << t.name << "`\n\n" << t.summary << ".\n\n";
+            if (t.options->fields.empty()) std::cout << "No options.\n\n";
+            else std::cout << t.options->markdown() << "\n";
+            continue;
+        }
+        std::cout << t.name << ": " << t.summary << "\n";
+        for (const OptionField& f : t.options->fields)
+            std::cout << "  lights[i].shadow." << t.name << "." << f.key << " = " << t.options->defaultText(f) << "  ("
+                      << OptionTable::rangeText(f) << (f.unit.empty() ? "" : " " + f.unit) << ") " << f.doc << "\n";
+    }
     return 0;
 }
 
@@ -198,6 +232,7 @@ int main(int argc, char** argv) {
     render->add_option("--width", renderArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     render->add_option("--height", renderArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     render->add_option("--set", renderArgs.overrides, "Override a scene value by JSON path, e.g. lights[0].intensity=2")->take_all();
+    render->add_option("--debug-images", renderArgs.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
 
     CompareArgs compareArgs;
     CLI::App* compare = app.add_subcommand("compare", "Compare a scene's shadow techniques with exact ray-traced shadows");
@@ -222,6 +257,17 @@ int main(int argc, char** argv) {
     bench->add_option("--samples", benchArgs.softSamples, "Reference rays per pixel for lights with a size")
         ->check(CLI::Range(1, 65536))->capture_default_str();
     bench->add_option("-o,--output", benchOutput, "Output directory")->capture_default_str();
+    const std::map<std::string, TimingClock> clocks{{"auto", TimingClock::Auto},
+                                                    {"cpu-finish", TimingClock::CpuFinish},
+                                                    {"gpu-timestamp", TimingClock::GpuTimestamp}};
+    bench->add_option("--clock", benchArgs.clock,
+                      "Per-pass clock: auto (cpu-finish on a software rasteriser, gpu-timestamp on a GPU), cpu-finish, gpu-timestamp")
+        ->transform(CLI::CheckedTransformer(clocks, CLI::ignore_case))
+        ->default_str("auto");
+
+    bool techniquesMarkdown = false;
+    CLI::App* techniquesCommand = app.add_subcommand("techniques", "List the shadow techniques and their options");
+    techniquesCommand->add_flag("--markdown", techniquesMarkdown, "Print the options tables as docs/scene-format.md carries them");
 
     CLI::App* info = app.add_subcommand("info", "Print the OpenGL implementation, its limits and the build options");
 
@@ -238,6 +284,7 @@ int main(int argc, char** argv) {
             return runBenchCommand(benchArgs);
         }
         if (*info) return runInfo();
+        if (*techniquesCommand) return runTechniques(techniquesMarkdown);
     } catch (const Error& e) {
         std::cerr << "shadowlab: error: " << e.what() << "\n";
         return 1;

@@ -45,7 +45,7 @@ struct Comparison {
     std::vector<LightComparison> lights;
     ImageRGBA8 technique;         ///< the scene as its techniques render it
     ImageRGBA8 reference;         ///< the same shading with exact visibility
-    FrameStats techniqueFrame;    ///< the technique frame's timings (GPU times measured)
+    FrameStats techniqueFrame;    ///< the technique frame's timings (TimingClock::Auto, surfaces written)
     double referenceMs = 0.0;     ///< wall time of ray tracing, milliseconds
 };
 

@@ -59,6 +59,8 @@ public:
 
     struct Impl;
     explicit Context(std::unique_ptr<Impl> impl);
+    /// The implementation (library-internal: program cache, debug state).
+    Impl& impl() { return *impl_; }
 
 private:
     std::unique_ptr<Impl> impl_;

@@ -2,10 +2,12 @@
 /// @file Renderer.h
 /// Draws a Scene with each light's shadow technique into an offscreen image.
 ///
-/// Passes per frame: for each light its technique's shadow pass (if any);
-/// the base pass (depth, ambient term, world position and normal); for each
-/// light an additive Blinn-Phong pass scaled by the technique's visibility;
-/// the resolve to 8-bit sRGB.
+/// Passes per frame: for each light whose technique has one, its shadow
+/// pass ("shadow[i]"); the base pass ("base": depth, stencil cleared, the
+/// ambient term, and the first light whose technique can share it); for
+/// each further light its technique's light pass ("light[i]"), added on the
+/// base pass's depth. Colour is written as 8-bit sRGB with lit passes
+/// blended in linear light, so there is no separate resolve pass.
 #include <shadowlab/Context.h>
 #include <shadowlab/Scene.h>
 
@@ -15,22 +17,38 @@
 
 namespace shadowlab {
 
+/// How per-pass times are taken (see docs/metrics.md).
+enum class TimingClock {
+    Off,          ///< no per-pass times (names only, 0 ms)
+    Auto,         ///< CpuFinish on a software rasteriser (llvmpipe ...), GpuTimestamp on a GPU
+    CpuFinish,    ///< glFinish around each pass, CPU clock: honest where rasterisation is deferred
+    GpuTimestamp, ///< GL_TIMESTAMP queries around each pass: no stalls, for GPUs
+};
+
 struct RenderOptions {
     int width = 1280;   ///< pixels, 1 .. GL_MAX_TEXTURE_SIZE; default 1280
     int height = 720;   ///< pixels, 1 .. GL_MAX_TEXTURE_SIZE; default 720
-    /// Measure each pass's GPU time with GL_TIME_ELAPSED queries (waits for
-    /// the results at the end of the frame). Default off.
-    bool measureGpuTime = false;
+    /// Per-pass times in FrameStats::passes. Default Off: a frame as lean as it gets.
+    TimingClock clock = TimingClock::Off;
+    /// Also write each pixel's world position and geometric normal, for
+    /// readSurfaces() and the ray-traced reference. Default off (it costs
+    /// two float targets per frame).
+    bool surfaces = false;
+    /// Seconds since the start of an animation, handed to techniques and
+    /// animated lights. Default 0.
+    double timeSeconds = 0.0;
 };
 
 struct PassTiming {
-    std::string name;   ///< "shadow[i]", "base", "light[i]", "resolve"
-    double gpuMs = 0.0; ///< milliseconds; 0 when not measured
+    std::string name;   ///< "shadow[i]", "base", "light[i]", nested scopes as "shadow[i].blur"
+    double ms = 0.0;    ///< milliseconds by FrameStats::clock; 0 when Off
 };
 
 struct FrameStats {
     std::vector<PassTiming> passes;
-    double cpuMs = 0.0; ///< wall time of render() including glFinish, milliseconds
+    std::string clock = "off"; ///< "cpu-finish", "gpu-timestamp" or "off"
+    int baseLight = -1;        ///< the light shaded inside the base pass (no "light[i]" of its own), -1 none
+    double cpuMs = 0.0;        ///< wall time of render() including glFinish, milliseconds
 };
 
 /// What the base pass saw at each pixel, rows top to bottom.
@@ -38,6 +56,12 @@ struct SurfaceBuffer {
     int width = 0, height = 0;
     std::vector<glm::vec4> position; ///< world xyz, w = 1 where geometry was drawn, 0 on background
     std::vector<glm::vec4> normal;   ///< geometric normal facing the camera, w = 1 if the surface receives shadows
+};
+
+/// An image a technique offers for inspection (a depth map, a cube cross).
+struct DebugImage {
+    std::string name;   ///< file-name friendly, e.g. "light0-depth"
+    ImageRGBA8 image;
 };
 
 class Renderer {
@@ -62,11 +86,17 @@ public:
                                     const std::vector<std::vector<float>>& visibility);
     /// Light `light`'s visibility term (1 lit, 0 shadowed) at each pixel of
     /// the last frame as its technique computes it, rows top to bottom; 0 on
-    /// the background. Call after render() with the same scene.
+    /// the background. Coloured techniques: the mean of the three channels.
+    /// Call after render() with the same scene.
     std::vector<float> readVisibility(const Scene& scene, std::size_t light);
+    /// The same per channel (transmittance through coloured casters).
+    std::vector<glm::vec3> readVisibilityRgb(const Scene& scene, std::size_t light);
+    /// Every technique's debug images for the last frame, named by light.
+    std::vector<DebugImage> debugImages(const Scene& scene);
     /// The last frame, 8-bit sRGB, rows top to bottom.
     ImageRGBA8 readColor() const;
-    /// The last frame's per-pixel surface data (for the ray-traced reference).
+    /// The last frame's per-pixel surface data (for the ray-traced
+    /// reference). Throws unless it was rendered with RenderOptions::surfaces.
     SurfaceBuffer readSurfaces() const;
 
 private:

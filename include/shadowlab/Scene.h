@@ -8,8 +8,10 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <any>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,17 +53,34 @@ struct Material {
     float shininess = 32.0f;     ///< Blinn-Phong exponent, > 0; default 32
 };
 
-/// Which algorithm decides a light's visibility term. Each technique is its
-/// own module under src/techniques/. Only `None` exists in the foundation;
-/// the technique issues add their enumerators here.
-enum class ShadowTechnique {
-    None, ///< visibility is always 1: no shadows (the unshadowed baseline)
-};
-
-/// Per-light shadow settings (the scene file's `lights[i].shadow` block).
-/// The technique modules add their options structs as members here.
+/// Per-light shadow settings (the scene file's `lights[i].shadow` block):
+/// which technique decides the light's visibility term, and one options
+/// block per technique (`lights[i].shadow.<technique>`). A scene may carry
+/// blocks for several techniques, so switching `technique` (for example with
+/// `bench --vary lights[0].shadow.technique=a,b`) keeps each one's settings.
+/// The registered techniques and their options: Techniques.h.
 struct ShadowSettings {
-    ShadowTechnique technique = ShadowTechnique::None; ///< default none
+    std::string technique = "none"; ///< a registered technique's name; default "none" (no shadows)
+    /// Options blocks by technique name, each holding that technique's
+    /// options struct (a technique with no block here uses its defaults).
+    std::map<std::string, std::any> options;
+
+    /// The options of technique `T::kTechnique` (T is its options struct):
+    /// the scene's block, or the defaults.
+    template <class T>
+    const T& get() const {
+        static const T defaults{};
+        const auto it = options.find(T::kTechnique);
+        const T* stored = it == options.end() ? nullptr : std::any_cast<T>(&it->second);
+        return stored ? *stored : defaults;
+    }
+    /// The options of technique `T::kTechnique` to change (created with defaults).
+    template <class T>
+    T& edit() {
+        std::any& a = options[T::kTechnique];
+        if (!std::any_cast<T>(&a)) a = T{};
+        return *std::any_cast<T>(&a);
+    }
 };
 
 enum class LightType { Directional, Spot, Point };
@@ -137,8 +156,7 @@ struct Scene {
     std::pair<glm::vec3, glm::vec3> worldBounds() const;
 };
 
-/// Name <-> enum for the scene file and the command line.
-const char* toString(ShadowTechnique t);
+/// The scene file's name of a light type: "directional", "spot", "point".
 const char* toString(LightType t);
 
 } // namespace shadowlab

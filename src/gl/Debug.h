@@ -1,5 +1,7 @@
 #pragma once
 // KHR_debug output: messages to stderr, errors counted so tests can fail on them.
+#include "gl/Program.h"
+
 #include <shadowlab/Context.h>
 
 #include <atomic>
@@ -22,6 +24,10 @@ namespace shadowlab {
 struct Context::Impl {
     GlInfo info;
     gl::DebugState debug;
+    /// Programs live as long as the context; derived destructors call
+    /// releaseGlObjects() while the context still exists.
+    std::unique_ptr<gl::ProgramCache> programs = std::make_unique<gl::ProgramCache>();
+    void releaseGlObjects() { programs.reset(); }
     virtual ~Impl() = default;
     virtual void makeCurrent() = 0;
     virtual GLFWwindow* window() const { return nullptr; }

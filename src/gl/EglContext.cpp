@@ -32,6 +32,9 @@ struct EglImpl final : Context::Impl {
             throw Error("eglMakeCurrent failed (" + eglErrorText() + ")");
     }
     ~EglImpl() override {
+        if (display != EGL_NO_DISPLAY && context != EGL_NO_CONTEXT &&
+            eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
+            releaseGlObjects();
         if (display != EGL_NO_DISPLAY) {
             eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
             if (context != EGL_NO_CONTEXT) eglDestroyContext(display, context);

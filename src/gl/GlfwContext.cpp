@@ -26,7 +26,11 @@ struct GlfwImpl final : Context::Impl {
     void makeCurrent() override { glfwMakeContextCurrent(handle); }
     GLFWwindow* window() const override { return handle; }
     ~GlfwImpl() override {
-        if (handle) glfwDestroyWindow(handle);
+        if (handle) {
+            glfwMakeContextCurrent(handle);
+            releaseGlObjects();
+            glfwDestroyWindow(handle);
+        }
         glfwTerminate();
     }
 };

@@ -35,8 +35,20 @@ std::optional<std::string_view> includeTarget(std::string_view line) {
     return line.substr(open + 1, close - open - 1);
 }
 
-void appendFile(std::string_view name, AssembledSource& out, std::vector<std::string>& stack) {
-    const auto text = embeddedShader(name);
+struct Assembly {
+    const IncludeAliases& aliases;
+    std::optional<std::string_view> inlineText; // the top file's text when given inline
+};
+
+void appendFile(std::string_view requested, AssembledSource& out, std::vector<std::string>& stack, const Assembly& how) {
+    std::string_view name = requested;
+    if (!requested.empty() && requested.front() == '@') {
+        const auto it = std::find_if(how.aliases.begin(), how.aliases.end(), [&](const auto& a) { return a.first == requested; });
+        if (it == how.aliases.end())
+            throw Error(stack.back() + ": #include \"" + std::string(requested) + "\": the variant fills no such slot");
+        name = it->second;
+    }
+    const auto text = stack.empty() && how.inlineText ? how.inlineText : embeddedShader(name);
     if (!text) {
         throw Error(stack.empty() ? "shader " + std::string(name) + ": no such embedded shader file"
                                   : stack.back() + ": #include \"" + std::string(name) + "\": no such embedded shader file");
@@ -51,7 +63,7 @@ void appendFile(std::string_view name, AssembledSource& out, std::vector<std::st
     for (std::string_view line : splitLines(*text)) {
         ++lineNo;
         if (auto target = includeTarget(line)) {
-            appendFile(*target, out, stack);
+            appendFile(*target, out, stack, how);
             out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
         } else {
             out.text.append(line);
@@ -63,14 +75,16 @@ void appendFile(std::string_view name, AssembledSource& out, std::vector<std::st
 
 } // namespace
 
-AssembledSource assembleShader(std::string_view fileName, std::string_view preamble) {
+AssembledSource assembleShader(std::string_view fileName, std::string_view preamble, const IncludeAliases& aliases,
+                               std::optional<std::string_view> inlineText) {
     AssembledSource out;
     out.files.emplace_back("<variant preamble>");
     out.text = "#version 450 core\n";
+    if (inlineText) out.inlineText = std::string(*inlineText);
     out.text.append(preamble);
     if (!preamble.empty() && preamble.back() != '\n') out.text += '\n';
     std::vector<std::string> stack;
-    appendFile(fileName, out, stack);
+    appendFile(fileName, out, stack, Assembly{aliases, inlineText});
     return out;
 }
 
@@ -88,7 +102,9 @@ std::string describeShaderLog(std::string_view log, const AssembledSource& sourc
             std::string name = fileIndex < source.files.size() ? source.files[fileIndex] : "<unknown>";
             std::string text;
             if (fileIndex > 0 && fileIndex < source.files.size()) {
-                if (auto file = embeddedShader(name)) {
+                const auto file = fileIndex == 1 && !source.inlineText.empty() ? std::optional<std::string_view>(source.inlineText)
+                                                                                 : embeddedShader(name);
+                if (file) {
                     auto lines = splitLines(*file);
                     if (lineNo >= 1 && lineNo <= static_cast<int>(lines.size())) {
                         auto l = lines[lineNo - 1];

@@ -19,11 +19,21 @@ struct AssembledSource {
     std::string text;
     /// GLSL source-string number -> file name; 0 is the generated preamble.
     std::vector<std::string> files;
+    /// The text of a file given inline (empty when it was embedded), for messages.
+    std::string inlineText;
 };
 
-/// Assembles `fileName` with `preamble` (lines of #define). Throws
-/// shadowlab::Error for a missing file, a missing include or an include cycle.
-AssembledSource assembleShader(std::string_view fileName, std::string_view preamble);
+/// `#include "@name"` lines resolve through these (alias, file) pairs: a
+/// variant chooses which file fills a slot, e.g. "@shadow" -> "shadow_none.glsl".
+using IncludeAliases = std::vector<std::pair<std::string, std::string>>;
+
+/// Assembles `fileName` with `preamble` (lines of #define). When
+/// `inlineText` is given it is the file's text (test-only or generated
+/// shaders) and `fileName` only names it in messages. Throws
+/// shadowlab::Error for a missing file, a missing include or alias, or an
+/// include cycle.
+AssembledSource assembleShader(std::string_view fileName, std::string_view preamble,
+                               const IncludeAliases& aliases = {}, std::optional<std::string_view> inlineText = {});
 
 /// Rewrites a driver's info log so that each message names the shader file,
 /// the line and that line's text, e.g.

@@ -47,7 +47,11 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
     if (options.softSamples < 1) throw Error("compare: softSamples must be >= 1, got " + std::to_string(options.softSamples));
     if (!(options.litThreshold > 0.0f && options.litThreshold <= 1.0f))
         throw Error("compare: litThreshold must be in (0, 1]");
-    RenderOptions renderOptions{options.width, options.height, true};
+    RenderOptions renderOptions;
+    renderOptions.width = options.width;
+    renderOptions.height = options.height;
+    renderOptions.clock = TimingClock::Auto;
+    renderOptions.surfaces = true;  // the reference traces from the base pass's surface points
     Comparison out;
     out.techniqueFrame = renderer.render(scene, renderOptions);
     out.technique = renderer.readColor();
@@ -77,7 +81,10 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
     // (same shading, exact visibility) for the error images' backdrop.
     std::vector<std::vector<float>> techniqueVisibility;
     for (std::size_t l = 0; l < scene.lights.size(); ++l) techniqueVisibility.push_back(renderer.readVisibility(scene, l));
-    renderer.renderWithVisibility(scene, {options.width, options.height}, truth);
+    RenderOptions referenceOptions;
+    referenceOptions.width = options.width;
+    referenceOptions.height = options.height;
+    renderer.renderWithVisibility(scene, referenceOptions, truth);
     out.reference = renderer.readColor();
 
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {

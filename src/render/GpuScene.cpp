@@ -1,5 +1,7 @@
 #include "render/GpuScene.h"
 
+#include "core/Adjacency.h"
+
 #include <shadowlab/Error.h>
 
 #include <algorithm>
@@ -40,6 +42,7 @@ GpuScene::GpuScene(const Scene& scene) {
             glVertexArrayAttribBinding(vao, a, 0);
         }
         gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+        for (const glm::vec3& p : mesh.positions) gpu.bounds.add(p);
         meshes_.push_back(std::move(gpu));
     }
     GLint maxSize = 0;
@@ -63,6 +66,36 @@ GpuScene::GpuScene(const Scene& scene) {
         glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
         textures_.push_back(std::move(texture));
     }
+}
+
+const gl::Buffer& GpuScene::adjacencyIndices(int mesh, const Mesh& source) {
+    GpuMesh& m = meshes_[static_cast<std::size_t>(mesh)];
+    if (!m.adjacency) {
+        const std::vector<std::uint32_t> indices = shadowlab::adjacencyIndices(source.positions, source.indices);
+        m.adjacency = gl::Buffer();
+        glNamedBufferStorage(m.adjacency.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, indices.size()) * 4),
+                             indices.empty() ? nullptr : indices.data(), 0);
+        // A second vertex array: same vertices, the adjacency indices.
+        m.adjacencyArray = gl::VertexArray();
+        const GLuint vao = m.adjacencyArray.id();
+        glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, sizeof(Vertex));
+        glVertexArrayElementBuffer(vao, m.adjacency.id());
+        const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
+        const GLint sizes[] = {3, 3, 2};
+        for (GLuint a = 0; a < 3; ++a) {
+            glEnableVertexArrayAttrib(vao, a);
+            glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+            glVertexArrayAttribBinding(vao, a, 0);
+        }
+    }
+    return m.adjacency;
+}
+
+void GpuScene::drawAdjacency(int mesh, const Mesh& source) {
+    adjacencyIndices(mesh, source);
+    const GpuMesh& m = meshes_[static_cast<std::size_t>(mesh)];
+    glBindVertexArray(m.adjacencyArray.id());
+    glDrawElements(GL_TRIANGLES_ADJACENCY, m.indexCount * 2, GL_UNSIGNED_INT, nullptr);
 }
 
 void GpuScene::draw(int mesh) const {

@@ -1,5 +1,6 @@
 #pragma once
 // The scene's meshes and textures on the GPU.
+#include "core/Bounds.h"
 #include "gl/Object.h"
 
 #include <shadowlab/Scene.h>
@@ -13,6 +14,9 @@ struct GpuMesh {
     gl::Buffer indices;
     gl::VertexArray vao;
     GLsizei indexCount = 0;
+    Bounds bounds;                 ///< object space
+    gl::Buffer adjacency{gl::NoCreate}; ///< GL_TRIANGLES_ADJACENCY indices, built on first use
+    gl::VertexArray adjacencyArray{gl::NoCreate};
 };
 
 class GpuScene {
@@ -20,6 +24,13 @@ public:
     explicit GpuScene(const Scene& scene);
     /// Binds the mesh's vertex array and draws its triangles.
     void draw(int mesh) const;
+    /// Draws the mesh as GL_TRIANGLES_ADJACENCY (builds the indices on
+    /// first use from `source`, the uploaded Scene::meshes[mesh]).
+    void drawAdjacency(int mesh, const Mesh& source);
+    /// The mesh's GL_TRIANGLES_ADJACENCY index buffer (built on first use).
+    const gl::Buffer& adjacencyIndices(int mesh, const Mesh& source);
+    /// Object-space bounds of Scene::meshes[mesh].
+    const Bounds& bounds(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].bounds; }
     /// The texture for Scene::textures[i].
     const gl::Texture& texture(int i) const { return textures_[static_cast<std::size_t>(i)]; }
     std::size_t meshCount() const { return meshes_.size(); }

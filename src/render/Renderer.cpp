@@ -1,17 +1,18 @@
-// The frame: which passes run in which order (see Renderer.h).
+// The frame: which passes run in which order (see Renderer.h), and the
+// services the techniques get (TechniqueHost).
 #include <shadowlab/Renderer.h>
 
-#include "gl/Object.h"
-#include "gl/Program.h"
+#include "gl/Debug.h"
+#include "render/DrawList.h"
+#include "render/FrameTargets.h"
 #include "render/GpuScene.h"
 #include "render/ShaderVariant.h"
-#include "techniques/ShadowModule.h"
+#include "techniques/Registry.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/Techniques.h>
 
 #include "shadowlab_shared.h"
-
-#include <glm/gtc/matrix_inverse.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -21,74 +22,6 @@
 namespace shadowlab {
 
 namespace {
-
-/// The offscreen targets of one frame size.
-struct Targets {
-    glm::ivec2 size{0};
-    gl::Texture color{gl::NoCreate}, position{gl::NoCreate}, normal{gl::NoCreate}, depth{gl::NoCreate}, output{gl::NoCreate};
-    gl::Texture visibility{gl::NoCreate};        ///< R32F: compare's visibility output, or the reference's input
-    gl::Framebuffer scene{gl::NoCreate}, resolve{gl::NoCreate}, visibilityOut{gl::NoCreate};
-
-    explicit Targets(glm::ivec2 s) : size(s) {
-        auto make = [&](GLenum format) {
-            gl::Texture t(GL_TEXTURE_2D);
-            glTextureStorage2D(t.id(), 1, format, size.x, size.y);
-            glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-            return t;
-        };
-        color = make(GL_RGBA16F);
-        position = make(GL_RGBA32F);
-        normal = make(GL_RGBA16F);
-        depth = make(GL_DEPTH_COMPONENT32F);
-        output = make(GL_RGBA8);
-        visibility = make(GL_R32F);
-        scene = gl::Framebuffer();
-        glNamedFramebufferTexture(scene.id(), GL_COLOR_ATTACHMENT0 + SL_TARGET_COLOR, color.id(), 0);
-        glNamedFramebufferTexture(scene.id(), GL_COLOR_ATTACHMENT0 + SL_TARGET_POSITION, position.id(), 0);
-        glNamedFramebufferTexture(scene.id(), GL_COLOR_ATTACHMENT0 + SL_TARGET_NORMAL, normal.id(), 0);
-        glNamedFramebufferTexture(scene.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-        gl::checkFramebuffer(scene, "scene framebuffer");
-        resolve = gl::Framebuffer();
-        glNamedFramebufferTexture(resolve.id(), GL_COLOR_ATTACHMENT0, output.id(), 0);
-        gl::checkFramebuffer(resolve, "resolve framebuffer");
-        visibilityOut = gl::Framebuffer();
-        glNamedFramebufferTexture(visibilityOut.id(), GL_COLOR_ATTACHMENT0, visibility.id(), 0);
-        glNamedFramebufferTexture(visibilityOut.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-        gl::checkFramebuffer(visibilityOut, "visibility framebuffer");
-    }
-};
-
-/// GL_TIME_ELAPSED around a pass; results read after the frame.
-class PassTimer {
-public:
-    explicit PassTimer(bool enabled) : enabled_(enabled) {}
-    void begin(std::string name) {
-        if (!enabled_) { names_.push_back(std::move(name)); return; }
-        queries_.emplace_back(GL_TIME_ELAPSED);
-        names_.push_back(std::move(name));
-        glBeginQuery(GL_TIME_ELAPSED, queries_.back().id());
-    }
-    void end() { if (enabled_) glEndQuery(GL_TIME_ELAPSED); }
-    std::vector<PassTiming> results() const {
-        std::vector<PassTiming> out;
-        for (std::size_t i = 0; i < names_.size(); ++i) {
-            double ms = 0.0;
-            if (enabled_) {
-                GLuint64 ns = 0;
-                glGetQueryObjectui64v(queries_[i].id(), GL_QUERY_RESULT, &ns);
-                ms = static_cast<double>(ns) * 1e-6;
-            }
-            out.push_back({names_[i], ms});
-        }
-        return out;
-    }
-
-private:
-    bool enabled_;
-    std::vector<gl::Query> queries_;
-    std::vector<std::string> names_;
-};
 
 shared::LightUniforms lightUniforms(const Light& light) {
     shared::LightUniforms u{};
@@ -103,113 +36,204 @@ shared::LightUniforms lightUniforms(const Light& light) {
     return u;
 }
 
+gl::ClockKind clockKind(TimingClock clock, const GlInfo& info) {
+    switch (clock) {
+    case TimingClock::Off: return gl::ClockKind::Off;
+    case TimingClock::Auto: return gl::clockFor(info.renderer);
+    case TimingClock::CpuFinish: return gl::ClockKind::CpuFinish;
+    case TimingClock::GpuTimestamp: return gl::ClockKind::GpuTimestamp;
+    }
+    return gl::ClockKind::Off;
+}
+
+/// What drawLit draws: the light's shading, its visibility term (compare),
+/// or the shading with the reference's visibility.
+enum class LitMode { Shade, OutputVisibility, ScreenVisibility };
+
 } // namespace
 
-struct Renderer::Impl {
+struct Renderer::Impl final : TechniqueHost {
     Context& context;
+    gl::ProgramCache& programs;
     std::optional<GpuScene> gpu;
     std::size_t uploadedMeshes = 0, uploadedTextures = 0;
-    std::optional<Targets> targets;
-    std::map<std::uint32_t, gl::Program> programs;
-    std::vector<std::pair<ShadowTechnique, std::unique_ptr<ShadowModule>>> modules; // per light
-    gl::Buffer frameUbo, lightUbo, drawUbo;
+    std::optional<FrameTargets> targets;
+    std::map<std::string, std::unique_ptr<Technique>, std::less<>> instances;
+    DrawList drawList;
+    gl::Buffer frameUbo, lightUbo;
     gl::VertexArray emptyVao;
+    std::uint64_t frames = 0;
+    bool lastFrameHadSurfaces = false;
 
-    explicit Impl(Context& c) : context(c) {
+    // The frame being drawn (valid inside frame(), readVisibility(), debugImages()).
+    const Scene* scene = nullptr;
+    std::vector<DrawItem> items;
+    std::vector<Bounds> itemBounds;
+    std::optional<FrameInfo> info;
+    std::optional<gl::PassClock> clock;
+    LitMode litMode = LitMode::Shade;
+    const Light* currentLight = nullptr;
+
+    explicit Impl(Context& c) : context(c), programs(*c.impl().programs) {
         glNamedBufferStorage(frameUbo.id(), sizeof(shared::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
         glNamedBufferStorage(lightUbo.id(), sizeof(shared::LightUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
-        glNamedBufferStorage(drawUbo.id(), sizeof(shared::DrawUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
 
-    FrameStats frame(const Scene& scene, const RenderOptions& options,
-                     const std::vector<std::vector<float>>* screenVisibility);
+    // --- TechniqueHost ---------------------------------------------------------
+    const gl::Program& program(const gl::ProgramKey& key) override { return programs.get(key); }
+    void apply(const gl::RenderState& state) override { gl::apply(state); }
 
-    // Fills and binds the frame, light and draw uniform blocks; returns the camera's clipFromWorld.
-    glm::mat4 bindFrameUniforms(const Scene& scene, glm::ivec2 size) {
-        const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-        shared::FrameUniforms u{};
-        u.clipFromWorld = scene.camera.clipFromView(aspect) * scene.camera.viewFromWorld();
-        u.cameraPosition = glm::vec4(scene.camera.position, 1.0f);
-        u.ambient = glm::vec4(scene.ambient, 0.0f);
-        glNamedBufferSubData(frameUbo.id(), 0, sizeof u, &u);
+    void drawItems(ItemFilter filter, const gl::Program& prog, const std::function<bool(std::size_t)>& perItem,
+                   Topology topology) override {
+        bindOwnBlocks();
+        prog.use();
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            const DrawItem& item = items[i];
+            if ((filter == ItemFilter::Casters && !item.castsShadows) || (filter == ItemFilter::Receivers && !item.receivesShadows))
+                continue;
+            if (perItem && !perItem(i)) continue;
+            drawList.bind(i);
+            if (topology == Topology::TrianglesAdjacency)
+                gpu->drawAdjacency(item.mesh, scene->meshes[static_cast<std::size_t>(item.mesh)]);
+            else
+                gpu->draw(item.mesh);
+        }
+    }
+
+    void drawFullscreenTriangle() override {
+        glBindVertexArray(emptyVao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+
+    gl::RenderState litState() const override {
+        gl::RenderState s;
+        s.depthFunc = GL_EQUAL;  // the base pass's visible surfaces, bit for bit (scene.vert: invariant)
+        s.depthWrite = false;
+        if (litMode == LitMode::OutputVisibility) return s;  // overwrite: one light's term per pixel
+        s.blend = true;
+        s.blendSrc = s.blendDst = GL_ONE;
+        s.framebufferSrgb = true;
+        return s;
+    }
+
+    void drawLit(const gl::RenderState& state) override {
+        const Light& light = *currentLight;
+        ShaderVariant variant;
+        variant.ambient = false;
+        variant.light = true;
+        variant.lightType = light.type;
+        variant.outputVisibility = litMode == LitMode::OutputVisibility;
+        variant.screenVisibility = litMode == LitMode::ScreenVisibility;
+        setTechnique(variant, light);
+        gl::apply(state);
+        drawShaded(variant);
+    }
+
+    void bindFrameTarget() override {
+        const bool visibility = litMode == LitMode::OutputVisibility;
+        glBindFramebuffer(GL_FRAMEBUFFER, visibility ? targets->visibility.id() : targets->frame.id());
+        if (!visibility) targets->drawBuffers(false);
+        glViewport(0, 0, targets->size.x, targets->size.y);
+    }
+
+    const gl::Buffer& adjacencyIndices(int mesh) override {
+        return gpu->adjacencyIndices(mesh, scene->meshes[static_cast<std::size_t>(mesh)]);
+    }
+
+    gl::ScopedPass timeScope(const std::string& name) override { return gl::ScopedPass(*clock, name); }
+    const GlInfo& glInfo() const override { return context.info(); }
+
+    // --- The renderer's own work --------------------------------------------------
+    void bindOwnBlocks() {
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_FRAME, frameUbo.id());
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_LIGHT, lightUbo.id());
-        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_DRAW, drawUbo.id());
-        return u.clipFromWorld;
     }
 
-    void setLight(const Light& light) {
-        const shared::LightUniforms u = lightUniforms(light);
+    Technique& technique(const std::string& name) {
+        auto it = instances.find(name);
+        if (it == instances.end()) {
+            const TechniqueEntry* entry = findTechniqueEntry(name);
+            if (!entry) throw Error("Renderer: unknown shadow technique '" + name + "'");
+            it = instances.emplace(name, entry->create()).first;
+        }
+        return *it->second;
+    }
+
+    void setTechnique(ShaderVariant& variant, const Light& light) {
+        const TechniqueEntry* entry = findTechniqueEntry(light.shadow.technique);
+        variant.techniqueFile = entry->shaderFile;
+        variant.techniqueDefines = technique(light.shadow.technique).lightPassDefines(light);
+    }
+
+    void setLight(std::size_t i) {
+        currentLight = &scene->lights[i];
+        const shared::LightUniforms u = lightUniforms(*currentLight);
         glNamedBufferSubData(lightUbo.id(), 0, sizeof u, &u);
     }
 
-    LightPassContext lightContext(const Scene& scene, std::size_t i, const std::vector<DrawItem>& items,
-                                  const glm::mat4& clipFromWorld, glm::ivec2 size) {
-        return LightPassContext{scene, scene.lights[i], static_cast<int>(i), items, *gpu, clipFromWorld, size,
-                                [this, &scene, &items](const ShaderVariant& variant) { drawItems(scene, items, variant); }};
-    }
+    LightView view(std::size_t i) const { return {scene->lights[i], static_cast<int>(i)}; }
 
-    // Uploads rows top to bottom into GL's bottom-up texture.
-    static void uploadVisibility(const Targets& t, const std::vector<float>& values) {
-        std::vector<float> flipped(values.size());
-        const std::size_t row = static_cast<std::size_t>(t.size.x);
-        for (int y = 0; y < t.size.y; ++y)
-            std::copy_n(values.begin() + static_cast<long>((t.size.y - 1 - y) * row), row, flipped.begin() + static_cast<long>(y * row));
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTextureSubImage2D(t.visibility.id(), 0, 0, 0, t.size.x, t.size.y, GL_RED, GL_FLOAT, flipped.data());
-        glBindTextureUnit(SL_UNIT_SCREEN_VISIBILITY, t.visibility.id());
-    }
-
-    const gl::Program& program(const ShaderVariant& variant) {
-        const auto key = variant.key();
-        auto it = programs.find(key);
-        if (it == programs.end()) it = programs.emplace(key, gl::Program(variant.stages(), variant.preamble())).first;
-        return it->second;
-    }
-
-    ShadowModule& module(std::size_t light, ShadowTechnique technique) {
-        if (modules.size() <= light) modules.resize(light + 1);
-        auto& [t, m] = modules[light];
-        if (!m || t != technique) {
-            m = createShadowModule(technique);
-            t = technique;
-        }
-        return *m;
-    }
-
-    void setDraw(const Scene& scene, const DrawItem& item) {
-        static const Material fallback;
-        const Material& m = item.material >= 0 ? scene.materials[static_cast<std::size_t>(item.material)] : fallback;
-        shared::DrawUniforms u{};
-        u.worldFromObject = item.worldFromObject;
-        u.normalFromObject = glm::mat4(glm::inverseTranspose(glm::mat3(item.worldFromObject)));
-        u.baseColor = glm::vec4(m.baseColor, item.receivesShadows ? 1.0f : 0.0f);
-        u.ambient = glm::vec4(m.ambient, 0.0f);
-        u.diffuse = glm::vec4(m.diffuse, 0.0f);
-        u.specular = glm::vec4(m.specular, m.shininess);
-        glNamedBufferSubData(drawUbo.id(), 0, sizeof u, &u);
-        if (m.baseColorTexture >= 0) glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
-    }
-
-    bool textured(const Scene& scene, const DrawItem& item) const {
-        return item.material >= 0 && scene.materials[static_cast<std::size_t>(item.material)].baseColorTexture >= 0;
-    }
-
-    // Draws every item with the program for `variant`, choosing the textured
-    // or untextured form per material.
-    void drawItems(const Scene& scene, const std::vector<DrawItem>& items, ShaderVariant variant) {
+    // Draws every item with the renderer's shading program for `variant`
+    // (textured or untextured per material).
+    void drawShaded(ShaderVariant variant) {
+        bindOwnBlocks();
+        variant.baseColorTexture = false;
+        const gl::Program& plain = programs.get(variant.program());
+        const gl::Program* textured = nullptr;
         const gl::Program* current = nullptr;
-        for (const DrawItem& item : items) {
-            variant.baseColorTexture = textured(scene, item);
-            const gl::Program& wanted = program(variant);
-            if (&wanted != current) {  // switch programs only between textured and untextured items
-                wanted.use();
-                current = &wanted;
+        static const Material fallback;
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            const DrawItem& item = items[i];
+            const Material& m = item.material >= 0 ? scene->materials[static_cast<std::size_t>(item.material)] : fallback;
+            const gl::Program* wanted = &plain;
+            if (m.baseColorTexture >= 0) {
+                if (!textured) {
+                    variant.baseColorTexture = true;
+                    textured = &programs.get(variant.program());
+                }
+                wanted = textured;
+                glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
             }
-            setDraw(scene, item);
+            if (wanted != current) {
+                wanted->use();
+                current = wanted;
+            }
+            drawList.bind(i);
             gpu->draw(item.mesh);
         }
     }
+
+    void beginFrame(const Scene& s, glm::ivec2 size, double timeSeconds) {
+        scene = &s;
+        items = s.drawItems();
+        itemBounds.clear();
+        for (const DrawItem& item : items) itemBounds.push_back(gpu->bounds(item.mesh).transformed(item.worldFromObject));
+        const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+        info.emplace(FrameInfo{s, items, itemBounds, size});
+        info->viewFromWorld = s.camera.viewFromWorld();
+        info->clipFromView = s.camera.clipFromView(aspect);
+        info->clipFromWorld = info->clipFromView * info->viewFromWorld;
+        info->timeSeconds = timeSeconds;
+        info->frameIndex = frames;
+        shared::FrameUniforms u{};
+        u.clipFromWorld = info->clipFromWorld;
+        u.cameraPosition = glm::vec4(s.camera.position, 1.0f);
+        u.ambient = glm::vec4(s.ambient, 0.0f);
+        glNamedBufferSubData(frameUbo.id(), 0, sizeof u, &u);
+        drawList.upload(s, items);
+    }
+
+    void checkScene(const Scene& s) const {
+        if (!gpu) throw Error("Renderer: no scene uploaded (call upload first)");
+        if (s.meshes.size() != uploadedMeshes || s.textures.size() != uploadedTextures)
+            throw Error("Renderer: the scene differs from the uploaded one (call upload again)");
+        for (std::size_t i = 0; i < s.lights.size(); ++i) {
+            const std::string reason = unsupportedReason(s.lights[i].shadow.technique, s.lights[i]);
+            if (!reason.empty()) throw Error("Renderer: light " + std::to_string(i) + " ('" + s.lights[i].name + "'): " + reason);
+        }
+    }
+
+    FrameStats frame(const Scene& scene, const RenderOptions& options, const std::vector<std::vector<float>>* screenVisibility);
 };
 
 Renderer::Renderer(Context& context) : impl_(std::make_unique<Impl>(context)) {}
@@ -221,13 +245,11 @@ void Renderer::upload(const Scene& scene) {
     impl_->uploadedTextures = scene.textures.size();
 }
 
-FrameStats Renderer::render(const Scene& scene, const RenderOptions& options) {
-    return impl_->frame(scene, options, nullptr);
-}
+FrameStats Renderer::render(const Scene& scene, const RenderOptions& options) { return impl_->frame(scene, options, nullptr); }
 
 FrameStats Renderer::renderWithVisibility(const Scene& scene, const RenderOptions& options,
                                           const std::vector<std::vector<float>>& visibility) {
-    const std::size_t pixels = static_cast<std::size_t>(options.width) * static_cast<std::size_t>(std::max(options.height, 0));
+    const std::size_t pixels = static_cast<std::size_t>(std::max(options.width, 0)) * static_cast<std::size_t>(std::max(options.height, 0));
     if (visibility.size() != scene.lights.size())
         throw Error("Renderer::renderWithVisibility: " + std::to_string(visibility.size()) + " visibility images for " +
                     std::to_string(scene.lights.size()) + " lights");
@@ -236,102 +258,112 @@ FrameStats Renderer::renderWithVisibility(const Scene& scene, const RenderOption
     return impl_->frame(scene, options, &visibility);
 }
 
-FrameStats Renderer::Impl::frame(const Scene& scene, const RenderOptions& options,
+namespace {
+// Uploads rows top to bottom into GL's bottom-up texture.
+void uploadVisibility(const FrameTargets& t, const std::vector<float>& values) {
+    std::vector<float> flipped(values.size());
+    const std::size_t row = static_cast<std::size_t>(t.size.x);
+    for (int y = 0; y < t.size.y; ++y)
+        std::copy_n(values.begin() + static_cast<long>((t.size.y - 1 - y) * row), row, flipped.begin() + static_cast<long>(y * row));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(t.visibilityIn.id(), 0, 0, 0, t.size.x, t.size.y, GL_RED, GL_FLOAT, flipped.data());
+    glBindTextureUnit(SL_UNIT_SCREEN_VISIBILITY, t.visibilityIn.id());
+}
+} // namespace
+
+FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
                                  const std::vector<std::vector<float>>* screenVisibility) {
-    Impl& d = *this;
     const auto cpuStart = std::chrono::steady_clock::now();
-    if (!d.gpu) throw Error("Renderer::render: no scene uploaded (call upload first)");
-    if (scene.meshes.size() != d.uploadedMeshes || scene.textures.size() != d.uploadedTextures)
-        throw Error("Renderer::render: the scene differs from the uploaded one (call upload again)");
-    const GlInfo& info = d.context.info();
-    const int limit = std::min({info.maxTextureSize, info.maxViewportWidth, info.maxViewportHeight});
+    checkScene(s);
+    const GlInfo& gl = context.info();
+    const int limit = std::min({gl.maxTextureSize, gl.maxViewportWidth, gl.maxViewportHeight});
     if (options.width < 1 || options.height < 1 || options.width > limit || options.height > limit)
         throw Error("render size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                     ": expected 1.." + std::to_string(limit) + " pixels per side (this GPU's limit)");
     const glm::ivec2 size(options.width, options.height);
-    if (!d.targets || d.targets->size != size) d.targets.emplace(size);
-    Targets& t = *d.targets;
+    if (!targets || targets->size != size || (options.surfaces && !targets->surfaces)) targets.emplace(size, options.surfaces);
+    beginFrame(s, size, options.timeSeconds);
+    clock.emplace(clockKind(options.clock, gl));
+    litMode = LitMode::Shade;
 
-    const auto items = scene.drawItems();
-    const glm::mat4 clipFromWorld = d.bindFrameUniforms(scene, size);
-    PassTimer timer(options.measureGpuTime);
-    auto contextFor = [&](std::size_t i) { return d.lightContext(scene, i, items, clipFromWorld, size); };
+    // Techniques in use, each with its lights; they prepare their resources.
+    std::map<std::string, std::vector<int>> lightsOf;
+    for (std::size_t i = 0; i < s.lights.size(); ++i) lightsOf[s.lights[i].shadow.technique].push_back(static_cast<int>(i));
+    for (const auto& [name, lights] : lightsOf) technique(name).prepare(*this, *info, lights);
 
-    // 1. Shadow passes (each technique sets its own framebuffer and state).
-    for (std::size_t i = 0; i < scene.lights.size() && !screenVisibility; ++i) {
-        const Light& light = scene.lights[i];
-        ShadowModule& module = d.module(i, light.shadow.technique);
-        if (!module.hasShadowPass()) continue;
-        timer.begin("shadow[" + std::to_string(i) + "]");
-        module.renderShadowPass(contextFor(i));
-        timer.end();
+    // 1. Shadow passes (the reference brings its own visibility: none).
+    for (std::size_t i = 0; i < s.lights.size() && !screenVisibility; ++i) {
+        Technique& t = technique(s.lights[i].shadow.technique);
+        if (!t.hasShadowPass(s.lights[i])) continue;
+        setLight(i);
+        const gl::ScopedPass scope(*clock, "shadow[" + std::to_string(i) + "]");
+        t.renderShadowPass(*this, *info, view(i));
     }
 
-    // 2. Base pass: depth, ambient, position, normal.
-    glBindFramebuffer(GL_FRAMEBUFFER, t.scene.id());
-    glViewport(0, 0, size.x, size.y);
-    const GLenum all[] = {GL_COLOR_ATTACHMENT0 + SL_TARGET_COLOR, GL_COLOR_ATTACHMENT0 + SL_TARGET_POSITION,
-                          GL_COLOR_ATTACHMENT0 + SL_TARGET_NORMAL};
-    glNamedFramebufferDrawBuffers(t.scene.id(), 3, all);
-    const glm::vec4 background(scene.background, 1.0f), zero(0.0f);
-    const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(t.scene.id(), GL_COLOR, SL_TARGET_COLOR, &background.x);
-    glClearNamedFramebufferfv(t.scene.id(), GL_COLOR, SL_TARGET_POSITION, &zero.x);
-    glClearNamedFramebufferfv(t.scene.id(), GL_COLOR, SL_TARGET_NORMAL, &zero.x);
-    glClearNamedFramebufferfv(t.scene.id(), GL_DEPTH, 0, &farDepth);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    timer.begin("base");
-    d.drawItems(scene, items, ShaderVariant{ShaderPass::Base});
-    timer.end();
-
-    // 3. One additive pass per light on the base pass's depth.
-    const GLenum colorOnly[] = {GL_COLOR_ATTACHMENT0 + SL_TARGET_COLOR, GL_NONE, GL_NONE};
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        const Light& light = scene.lights[i];
-        d.setLight(light);
-        glBindFramebuffer(GL_FRAMEBUFFER, t.scene.id());
-        glNamedFramebufferDrawBuffers(t.scene.id(), 3, colorOnly);
-        glViewport(0, 0, size.x, size.y);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_EQUAL);
-        glDepthMask(GL_FALSE);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ONE);
-        ShaderVariant variant{ShaderPass::Light, light.type, light.shadow.technique};
-        timer.begin("light[" + std::to_string(i) + "]");
-        if (screenVisibility) {
-            uploadVisibility(t, (*screenVisibility)[i]);
-            variant.screenVisibility = true;
-            d.drawItems(scene, items, variant);
-        } else {
-            d.module(i, light.shadow.technique).renderLightPass(contextFor(i), variant);
+    // 2. Base pass: depth, stencil cleared, ambient, and the first light
+    // whose technique needs no pass of its own after this one.
+    int baseLight = -1;
+    for (std::size_t i = 0; i < s.lights.size() && baseLight < 0; ++i)
+        if (screenVisibility || technique(s.lights[i].shadow.technique).sharesBasePass(s.lights[i])) baseLight = static_cast<int>(i);
+    {
+        const gl::ScopedPass scope(*clock, "base");
+        ShaderVariant variant;
+        variant.writeSurfaces = options.surfaces;
+        if (baseLight >= 0) {
+            setLight(static_cast<std::size_t>(baseLight));
+            variant.light = true;
+            variant.lightType = currentLight->type;
+            if (screenVisibility) {
+                variant.screenVisibility = true;
+                uploadVisibility(*targets, (*screenVisibility)[static_cast<std::size_t>(baseLight)]);
+            } else {
+                setTechnique(variant, *currentLight);
+                technique(currentLight->shadow.technique).bindLightPass(*this, *info, view(static_cast<std::size_t>(baseLight)));
+            }
         }
-        timer.end();
+        glBindFramebuffer(GL_FRAMEBUFFER, targets->frame.id());
+        targets->drawBuffers(options.surfaces);
+        glViewport(0, 0, size.x, size.y);
+        gl::RenderState state;
+        state.framebufferSrgb = true;  // linear radiance in, sRGB bytes stored
+        gl::apply(state);              // all writes on: the clears below obey the masks
+        const glm::vec4 background(s.background, 1.0f), zero(0.0f);
+        glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, 0, &background.x);
+        if (options.surfaces) {
+            glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_POSITION, &zero.x);
+            glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_NORMAL, &zero.x);
+        }
+        glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+        drawShaded(variant);
+        targets->drawBuffers(false);
     }
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
 
-    // 4. Resolve to sRGB.
-    glBindFramebuffer(GL_FRAMEBUFFER, t.resolve.id());
-    glViewport(0, 0, size.x, size.y);
-    glDisable(GL_DEPTH_TEST);
-    timer.begin("resolve");
-    d.program(ShaderVariant{ShaderPass::Resolve}).use();
-    glBindTextureUnit(SL_UNIT_RESOLVE_INPUT, t.color.id());
-    glBindVertexArray(d.emptyVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    timer.end();
+    // 3. Every other light: its technique's pass on the base pass's depth.
+    for (std::size_t i = 0; i < s.lights.size(); ++i) {
+        if (static_cast<int>(i) == baseLight) continue;
+        setLight(i);
+        const gl::ScopedPass scope(*clock, "light[" + std::to_string(i) + "]");
+        bindFrameTarget();
+        if (screenVisibility) {
+            litMode = LitMode::ScreenVisibility;
+            uploadVisibility(*targets, (*screenVisibility)[i]);
+            drawLit(litState());
+            litMode = LitMode::Shade;
+        } else {
+            technique(s.lights[i].shadow.technique).renderLightPass(*this, *info, view(i));
+        }
+    }
+    gl::apply(gl::RenderState{});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     FrameStats stats;
-    stats.passes = timer.results();
+    for (auto& [name, ms] : clock->results()) stats.passes.push_back({name, ms});
+    stats.clock = gl::toString(clock->kind());
+    stats.baseLight = baseLight;
     glFinish();
     stats.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
+    ++frames;
+    lastFrameHadSurfaces = options.surfaces;
     return stats;
 }
 
@@ -352,40 +384,73 @@ std::vector<T> readTexture(const gl::Texture& texture, glm::ivec2 size, GLenum f
 
 ImageRGBA8 Renderer::readColor() const {
     if (!impl_->targets) throw Error("Renderer::readColor: nothing rendered yet");
-    const Targets& t = *impl_->targets;
-    return {t.size.x, t.size.y, readTexture<std::uint8_t>(t.output, t.size, GL_RGBA, GL_UNSIGNED_BYTE, 4)};
+    const FrameTargets& t = *impl_->targets;
+    return {t.size.x, t.size.y, readTexture<std::uint8_t>(t.color, t.size, GL_RGBA, GL_UNSIGNED_BYTE, 4)};
 }
 
-std::vector<float> Renderer::readVisibility(const Scene& scene, std::size_t lightIndex) {
+std::vector<glm::vec3> Renderer::readVisibilityRgb(const Scene& scene, std::size_t lightIndex) {
     Impl& d = *impl_;
     if (!d.targets) throw Error("Renderer::readVisibility: nothing rendered yet");
     if (lightIndex >= scene.lights.size())
         throw Error("Renderer::readVisibility: light " + std::to_string(lightIndex) + " of " + std::to_string(scene.lights.size()));
-    Targets& t = *d.targets;
-    const Light& light = scene.lights[lightIndex];
-    const auto items = scene.drawItems();
-    const glm::mat4 clipFromWorld = d.bindFrameUniforms(scene, t.size);
-    d.setLight(light);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.visibilityOut.id());
-    glViewport(0, 0, t.size.x, t.size.y);
+    d.checkScene(scene);
+    FrameTargets& t = *d.targets;
+    d.beginFrame(scene, t.size, d.info ? d.info->timeSeconds : 0.0);
+    d.clock.emplace(gl::ClockKind::Off);
+    d.setLight(lightIndex);
+    d.litMode = LitMode::OutputVisibility;
+    d.bindFrameTarget();
+    gl::apply(gl::RenderState{});
     const float zero[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(t.visibilityOut.id(), GL_COLOR, 0, zero);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_EQUAL);  // the last frame's depth: the same visible surfaces
-    glDepthMask(GL_FALSE);
-    glDisable(GL_BLEND);
-    ShaderVariant variant{ShaderPass::Light, light.type, light.shadow.technique};
-    variant.outputVisibility = true;
-    d.module(lightIndex, light.shadow.technique).renderLightPass(d.lightContext(scene, lightIndex, items, clipFromWorld, t.size), variant);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
+    glClearNamedFramebufferfv(t.visibility.id(), GL_COLOR, 0, zero);
+    try {
+        d.technique(scene.lights[lightIndex].shadow.technique).renderLightPass(d, *d.info, d.view(lightIndex));
+    } catch (...) {
+        d.litMode = LitMode::Shade;
+        throw;
+    }
+    d.litMode = LitMode::Shade;
+    gl::apply(gl::RenderState{});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return readTexture<float>(t.visibility, t.size, GL_RED, GL_FLOAT, 1);
+    const auto rgba = readTexture<float>(t.visibilityOut, t.size, GL_RGBA, GL_FLOAT, 4);
+    std::vector<glm::vec3> out(rgba.size() / 4);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = glm::vec3(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]);
+    return out;
+}
+
+std::vector<float> Renderer::readVisibility(const Scene& scene, std::size_t lightIndex) {
+    const auto rgb = readVisibilityRgb(scene, lightIndex);
+    std::vector<float> out(rgb.size());
+    for (std::size_t i = 0; i < rgb.size(); ++i) out[i] = (rgb[i].r + rgb[i].g + rgb[i].b) / 3.0f;
+    return out;
+}
+
+std::vector<DebugImage> Renderer::debugImages(const Scene& scene) {
+    Impl& d = *impl_;
+    if (!d.targets) throw Error("Renderer::debugImages: nothing rendered yet");
+    d.checkScene(scene);
+    d.beginFrame(scene, d.targets->size, d.info ? d.info->timeSeconds : 0.0);
+    d.clock.emplace(gl::ClockKind::Off);
+    std::vector<DebugImage> out;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        std::vector<DebugImage> images;
+        d.setLight(i);
+        d.technique(scene.lights[i].shadow.technique).debugImages(d, *d.info, d.view(i), images);
+        for (DebugImage& image : images) {
+            image.name = "light" + std::to_string(i) + "-" + image.name;
+            out.push_back(std::move(image));
+        }
+    }
+    gl::apply(gl::RenderState{});
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return out;
 }
 
 SurfaceBuffer Renderer::readSurfaces() const {
     if (!impl_->targets) throw Error("Renderer::readSurfaces: nothing rendered yet");
-    const Targets& t = *impl_->targets;
+    if (!impl_->lastFrameHadSurfaces)
+        throw Error("Renderer::readSurfaces: the last frame did not write surfaces (render with RenderOptions::surfaces = true)");
+    const FrameTargets& t = *impl_->targets;
     SurfaceBuffer out;
     out.width = t.size.x;
     out.height = t.size.y;

@@ -12,40 +12,27 @@ const char* lightDefine(LightType t) {
     }
     return "?";
 }
-const char* techniqueDefine(ShadowTechnique t) {
-    switch (t) {
-    case ShadowTechnique::None: return "SL_SHADOW_NONE";
-    }
-    return "?";
-}
+std::string flag(const char* name, bool on) { return std::string("#define ") + name + (on ? " 1\n" : " 0\n"); }
 } // namespace
-
-std::uint32_t ShaderVariant::key() const {
-    const bool surface = pass != ShaderPass::Resolve;
-    const bool light = pass == ShaderPass::Light;
-    return static_cast<std::uint32_t>(pass) | (light ? static_cast<std::uint32_t>(lightType) << 4 : 0u) |
-           (light ? static_cast<std::uint32_t>(technique) << 8 : 0u) | (surface && baseColorTexture ? 1u << 16 : 0u) |
-           (light && screenVisibility ? 1u << 17 : 0u) | (light && outputVisibility ? 1u << 18 : 0u);
-}
 
 std::string ShaderVariant::preamble() const {
     std::string out;
-    out += "#define HAS_BASE_COLOR_TEXTURE " + std::string(baseColorTexture && pass != ShaderPass::Resolve ? "1" : "0") + "\n";
-    out += "#define LIGHT_TYPE " + std::string(lightDefine(lightType)) + "\n";
-    out += "#define SHADOW_TECHNIQUE " + std::string(techniqueDefine(technique)) + "\n";
-    const bool light = pass == ShaderPass::Light;
-    out += "#define SCREEN_VISIBILITY " + std::string(light && screenVisibility ? "1" : "0") + "\n";
-    out += "#define OUTPUT_VISIBILITY " + std::string(light && outputVisibility ? "1" : "0") + "\n";
+    out += flag("AMBIENT", ambient);
+    out += flag("LIGHT", light);
+    out += std::string("#define LIGHT_TYPE ") + (light ? lightDefine(lightType) : "SL_LIGHT_DIRECTIONAL") + "\n";
+    out += flag("HAS_BASE_COLOR_TEXTURE", baseColorTexture);
+    out += flag("WRITE_SURFACES", writeSurfaces);
+    out += flag("SCREEN_VISIBILITY", light && screenVisibility);
+    out += flag("OUTPUT_VISIBILITY", light && outputVisibility);
+    if (light && !screenVisibility) out += techniqueDefines;
     return out;
 }
 
-std::vector<gl::ShaderStage> ShaderVariant::stages() const {
-    switch (pass) {
-    case ShaderPass::Base: return {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "base.frag"}};
-    case ShaderPass::Light: return {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}};
-    case ShaderPass::Resolve: return {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "resolve.frag"}};
-    }
-    return {};
+gl::ProgramKey ShaderVariant::program() const {
+    const bool technique = light && !screenVisibility;
+    return {{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}},
+            preamble(),
+            {{"@shadow", technique ? techniqueFile : std::string("shadow_none.glsl")}}};
 }
 
 } // namespace shadowlab

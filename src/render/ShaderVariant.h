@@ -1,35 +1,32 @@
 #pragma once
-// The typed set of shader options. Each distinct value is one compiled
-// program; preamble() turns it into #defines for the one source per stage.
+// The typed set of shader options of the renderer's own passes. Each
+// distinct value is one program; program() turns it into the stages, the
+// `#define` preamble and the technique's file in the "@shadow" slot.
 #include "gl/Program.h"
 
 #include <shadowlab/Scene.h>
 
-#include <cstdint>
 #include <string>
-#include <vector>
 
 namespace shadowlab {
 
-enum class ShaderPass : std::uint8_t {
-    Base,    ///< scene.vert + base.frag
-    Light,   ///< scene.vert + lighting.frag
-    Resolve, ///< fullscreen.vert + resolve.frag
-};
-
 struct ShaderVariant {
-    ShaderPass pass = ShaderPass::Base;
-    LightType lightType = LightType::Directional;           ///< Light pass only
-    ShadowTechnique technique = ShadowTechnique::None;      ///< Light pass only
-    bool baseColorTexture = false;                          ///< Base and Light passes
-    bool screenVisibility = false;  ///< Light pass: visibility from a per-pixel texture (the reference)
-    bool outputVisibility = false;  ///< Light pass: write the visibility term instead of light
+    bool ambient = true;            ///< add the ambient term (the base pass)
+    bool light = false;             ///< add one light's term (merged base pass, light passes)
+    LightType lightType = LightType::Directional; ///< with `light`
+    std::string techniqueFile = "shadow_none.glsl"; ///< with `light`: fills "@shadow"
+    std::string techniqueDefines;   ///< with `light`: the technique's own `#define` lines
+    bool baseColorTexture = false;
+    bool writeSurfaces = false;     ///< world position and geometric normal (compare)
+    bool screenVisibility = false;  ///< with `light`: visibility from a per-pixel texture (the reference)
+    bool outputVisibility = false;  ///< with `light`: write the visibility term instead of light
 
-    /// Unique per distinct variant (fields that do not apply to the pass are ignored).
-    std::uint32_t key() const;
-    /// `#define` lines; every define the sources test is always defined.
+    /// `#define` lines; every define the sources test is always defined, and
+    /// fields that do not apply (light type without a light) are left out so
+    /// they do not split the cache.
     std::string preamble() const;
-    std::vector<gl::ShaderStage> stages() const;
+    /// The program: scene.vert + lighting.frag with preamble and slot.
+    gl::ProgramKey program() const;
 };
 
 } // namespace shadowlab

@@ -45,13 +45,6 @@ std::pair<glm::vec3, glm::vec3> Scene::worldBounds() const {
     return {lo, hi};
 }
 
-const char* toString(ShadowTechnique t) {
-    switch (t) {
-    case ShadowTechnique::None: return "none";
-    }
-    return "?";
-}
-
 const char* toString(LightType t) {
     switch (t) {
     case LightType::Directional: return "directional";

@@ -7,12 +7,14 @@
 
 #include <shadowlab/Error.h>
 #include <shadowlab/Shapes.h>
+#include <shadowlab/Techniques.h>
 
 #include <nlohmann/json.hpp>
 #include <stb_image.h>
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -167,7 +169,8 @@ public:
     void requireArray() const { if (!value_.is_array()) fail(std::string("expected an array, got ") + typeName(value_)); }
 
     // Errors for keys that are not in `known`.
-    void checkKeys(std::initializer_list<const char*> known) const {
+    void checkKeys(std::initializer_list<const char*> known) const { checkKeys(std::vector<const char*>(known)); }
+    void checkKeys(const std::vector<const char*>& known) const {
         requireObject();
         for (const auto& [key, _] : value_.items()) {
             bool found = false;
@@ -278,16 +281,66 @@ void readCamera(const Reader& r, Camera& cam) {
         r.fail("camera up is parallel to the view direction");
 }
 
-ShadowTechnique parseTechnique(const Reader& r) {
-    const std::string name = r.string();
-    for (ShadowTechnique t : {ShadowTechnique::None})
-        if (name == toString(t)) return t;
-    r.fail("unknown technique '" + name + "' (expected one of: none)");
+std::string techniqueList() {
+    std::string list;
+    for (const TechniqueInfo& t : techniques()) list += (list.empty() ? "" : ", ") + t.name;
+    return list;
 }
 
-void readShadow(const Reader& r, ShadowSettings& shadow) {
-    r.checkKeys({"technique"});
-    if (r.has("technique")) shadow.technique = parseTechnique(r.child("technique"));
+// One technique's block, `lights[i].shadow.<name>`, read through its options
+// table: every key known, every value of its kind and within its range.
+std::any readOptions(const Reader& r, const OptionTable& table) {
+    std::vector<const char*> keys;
+    for (const OptionField& f : table.fields) keys.push_back(f.key.c_str());
+    r.checkKeys(keys);
+    std::any options = table.makeDefault();
+    for (const OptionField& f : table.fields) {
+        if (!r.has(f.key)) continue;
+        const Reader v = r.child(f.key);
+        const std::string allowed = OptionTable::rangeText(f);
+        switch (f.kind) {
+        case OptionKind::Number: {
+            const double x = v.number();
+            if (x < f.minimum || x > f.maximum) v.fail("expected a number in " + allowed + ", got " + Reader::fmt(static_cast<float>(x)));
+            f.set(options, x);
+            break;
+        }
+        case OptionKind::Integer: {
+            const int x = v.integer();
+            if (x < f.minimum || x > f.maximum) v.fail("expected an integer in " + allowed + ", got " + std::to_string(x));
+            f.set(options, x);
+            break;
+        }
+        case OptionKind::Boolean: f.set(options, v.boolean() ? 1.0 : 0.0); break;
+        case OptionKind::Choice: {
+            const std::string name = v.string();
+            const auto it = std::find(f.choices.begin(), f.choices.end(), name);
+            if (it == f.choices.end()) v.fail("expected one of " + allowed + ", got \"" + name + "\"");
+            f.set(options, static_cast<double>(it - f.choices.begin()));
+            break;
+        }
+        }
+    }
+    return options;
+}
+
+void readShadow(const Reader& r, ShadowSettings& shadow, const Light& light) {
+    std::vector<const char*> keys{"technique"};
+    const std::vector<TechniqueInfo> all = techniques();
+    for (const TechniqueInfo& t : all) keys.push_back(t.name.c_str());
+    r.checkKeys(keys);
+    if (r.has("technique")) {
+        const Reader t = r.child("technique");
+        shadow.technique = t.string();
+        if (!findTechnique(shadow.technique))
+            t.fail("unknown technique '" + shadow.technique + "' (expected one of: " + techniqueList() + ")");
+        const std::string reason = unsupportedReason(shadow.technique, light);
+        if (!reason.empty()) t.fail(reason);
+    }
+    // Every block is read and checked, the chosen technique's or not, so a
+    // scene can carry several and switch between them.
+    for (const TechniqueInfo& t : all)
+        if (r.has(t.name)) shadow.options[t.name] = readOptions(r.child(t.name), *t.options);
 }
 
 Light readLight(const Reader& r) {
@@ -320,7 +373,7 @@ Light readLight(const Reader& r) {
     light.size = r.nonNegative("size", light.size);
     if (light.type == LightType::Directional && light.size >= 90.0f)
         r.child("size").fail("expected an angular diameter in degrees < 90, got " + Reader::fmt(light.size));
-    if (r.has("shadow")) readShadow(r.child("shadow"), light.shadow);
+    if (r.has("shadow")) readShadow(r.child("shadow"), light.shadow, light);
     return light;
 }
 

@@ -2,6 +2,8 @@
 // compile error names the file, the line and its text.
 #include "GLTestContext.h"
 
+#include "gl/Debug.h"
+
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
 #include "render/ShaderVariant.h"
@@ -9,6 +11,7 @@
 #include <shadowlab/Error.h>
 
 #include <algorithm>
+#include <set>
 
 using namespace shadowlab;
 using shadowlab::test::GLTest;
@@ -16,35 +19,51 @@ using shadowlab::test::GLTest;
 class ProgramGLTest : public GLTest {};
 
 TEST_F(ProgramGLTest, EveryVariantCompilesAndLinks) {
-    int built = 0;
-    for (ShaderPass pass : {ShaderPass::Base, ShaderPass::Light, ShaderPass::Resolve})
-        for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point})
-            for (bool texture : {false, true}) {
-                const ShaderVariant v{pass, light, ShadowTechnique::None, texture};
-                SCOPED_TRACE(v.preamble());
-                gl::Program program(v.stages(), v.preamble());
-                EXPECT_NE(program.id(), 0u);
-                ++built;
-            }
-    EXPECT_EQ(built, 18);
+    std::set<std::string> built;
+    for (int bits = 0; bits < 64; ++bits)
+        for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point}) {
+            ShaderVariant v;
+            v.ambient = bits & 1;
+            v.light = bits & 2;
+            v.baseColorTexture = bits & 4;
+            v.writeSurfaces = bits & 8;
+            v.screenVisibility = bits & 16;
+            v.outputVisibility = bits & 32;
+            v.lightType = light;
+            const gl::ProgramKey key = v.program();
+            if (!built.insert(key.id()).second) continue;
+            SCOPED_TRACE(key.preamble);
+            gl::Program program(key);
+            EXPECT_NE(program.id(), 0u);
+        }
+    // Without a light: ambient x texture x surfaces = 8 programs (light type
+    // and the visibility modes do not apply); with one: the same 8 x 3 light
+    // types x 4 combinations of the two visibility switches = 96.
+    EXPECT_EQ(built.size(), 8u + 96u);
+}
+
+TEST_F(ProgramGLTest, TheContextCacheCompilesEachProgramOnce) {
+    gl::ProgramCache& cache = *test::glContext().impl().programs;
+    ShaderVariant v;
+    v.light = true;
+    v.lightType = LightType::Spot;
+    v.techniqueDefines = "#define CACHE_TEST_UNIQUE 1\n";  // a program no other test asks for
+    const std::size_t before = cache.compiles();
+    const gl::Program& first = cache.get(v.program());
+    const gl::Program& second = cache.get(v.program());
+    EXPECT_EQ(&first, &second);
+    EXPECT_EQ(cache.compiles(), before + 1);
 }
 
 TEST_F(ProgramGLTest, CompileErrorNamesFileLineAndText) {
-    // A technique number no module defines stops lighting.frag at its #error.
+    const std::string text = "void main() {\n    float x = undefinedThing;\n}\n";
     try {
-        gl::Program program({{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}},
-                            "#define HAS_BASE_COLOR_TEXTURE 0\n#define LIGHT_TYPE SL_LIGHT_POINT\n#define SHADOW_TECHNIQUE 99\n");
+        gl::Program program({{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "broken.frag", text}}, "");
         FAIL() << "no error";
     } catch (const Error& e) {
         const std::string m = e.what();
-        const auto source = gl::embeddedShader("lighting.frag");
-        ASSERT_TRUE(source);
-        // The line number of the #error directive in the embedded file.
-        const auto at = source->find("#error unknown SHADOW_TECHNIQUE");
-        ASSERT_NE(at, std::string_view::npos);
-        const long line = 1 + std::count(source->begin(), source->begin() + static_cast<long>(at), '\n');
-        EXPECT_NE(m.find("lighting.frag:" + std::to_string(line) + ": "), std::string::npos) << m;
-        EXPECT_NE(m.find("| #error unknown SHADOW_TECHNIQUE"), std::string::npos) << m;  // the line's text
+        EXPECT_NE(m.find("broken.frag:2: "), std::string::npos) << m;
+        EXPECT_NE(m.find("| float x = undefinedThing;"), std::string::npos) << m;  // the line's text
         EXPECT_EQ(m.find('\n'), std::string::npos) << m;
     }
     test::glContext().resetDebugErrors();  // the failed compile is expected to be reported

@@ -114,7 +114,7 @@ TEST_F(RenderGLTest, ObjectOnTheCameraLeftAppearsOnTheImageLeft) {
     })", "test", ".");
     Renderer renderer(test::glContext());
     renderer.upload(scene);
-    renderer.render(scene, {160, 120});
+    renderer.render(scene, {160, 120, TimingClock::Off, true});
     const SurfaceBuffer surfaces = renderer.readSurfaces();
     double sumX = 0, sumY = 0, count = 0;
     for (int y = 0; y < surfaces.height; ++y)
@@ -140,7 +140,7 @@ TEST_F(RenderGLTest, SurfaceBufferHoldsWorldPositionAndNormal) {
     const Scene scene = planeFromAbove(R"({"type": "directional", "direction": [0, -1, 0]})");
     Renderer renderer(test::glContext());
     renderer.upload(scene);
-    renderer.render(scene, {65, 65});
+    renderer.render(scene, {65, 65, TimingClock::Off, true});
     const SurfaceBuffer s = renderer.readSurfaces();
     const glm::vec4 p = s.position[32 * 65 + 32], n = s.normal[32 * 65 + 32];
     EXPECT_NEAR(glm::length(glm::vec3(p)), 0.0f, 1e-4f);  // the centre pixel sees the origin
@@ -158,17 +158,34 @@ TEST_F(RenderGLTest, SizeBeyondTheGpuLimitIsAnError) {
     EXPECT_THROW(renderer.render(scene, {0, 4}), Error);
 }
 
-TEST_F(RenderGLTest, GpuTimingsCoverEveryPass) {
-    const Scene scene = defaultScene();
+TEST_F(RenderGLTest, TimingsNameEveryPassOfTheFrame) {
+    // Two lights with "none": the first is shaded inside the base pass, the
+    // second gets a pass of its own.
+    Scene scene = defaultScene();
+    scene.lights.push_back(scene.lights[0]);
     Renderer renderer(test::glContext());
     renderer.upload(scene);
-    const FrameStats stats = renderer.render(scene, {128, 72, true});
-    std::set<std::string> names;
+    RenderOptions options;
+    options.width = 128;
+    options.height = 72;
+    options.clock = TimingClock::CpuFinish;
+    const FrameStats stats = renderer.render(scene, options);
+    EXPECT_EQ(stats.clock, "cpu-finish");
+    EXPECT_EQ(stats.baseLight, 0);
+    std::vector<std::string> names;
+    double sum = 0.0;
     for (const PassTiming& p : stats.passes) {
-        names.insert(p.name);
-        EXPECT_GT(p.gpuMs, 0.0) << p.name;
+        names.push_back(p.name);
+        EXPECT_GE(p.ms, 0.0) << p.name;
+        sum += p.ms;
     }
-    EXPECT_EQ(names, (std::set<std::string>{"base", "light[0]", "resolve"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"base", "light[1]"}));
+    // The passes are inside the frame: their sum cannot exceed its wall time.
+    EXPECT_LE(sum, stats.cpuMs);
+    options.clock = TimingClock::Off;
+    const FrameStats off = renderer.render(scene, options);
+    EXPECT_EQ(off.clock, "off");
+    for (const PassTiming& p : off.passes) EXPECT_EQ(p.ms, 0.0) << p.name;
 }
 
 TEST_F(RenderGLTest, EveryBundledSceneRendersWithoutGlError) {
@@ -179,7 +196,11 @@ TEST_F(RenderGLTest, EveryBundledSceneRendersWithoutGlError) {
         const Scene scene = loadSceneFile(entry.path());
         Renderer renderer(test::glContext());
         renderer.upload(scene);
-        renderer.render(scene, {160, 90});
+        RenderOptions options;
+        options.width = 160;
+        options.height = 90;
+        options.surfaces = true;
+        renderer.render(scene, options);
         EXPECT_EQ(test::glContext().debugErrorCount(), 0u) << test::glContext().lastDebugError();
         // Something was drawn: geometry covers part of the image and it is not one flat colour.
         const SurfaceBuffer s = renderer.readSurfaces();

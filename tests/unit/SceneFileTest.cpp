@@ -63,7 +63,7 @@ TEST(SceneFile, ReadsValuesAndDefaults) {
     ASSERT_EQ(s.lights.size(), 2u);
     EXPECT_EQ(s.lights[0].type, LightType::Directional);
     EXPECT_NEAR(glm::length(s.lights[0].direction), 1.0f, 1e-6f);  // normalised
-    EXPECT_EQ(s.lights[0].shadow.technique, ShadowTechnique::None);
+    EXPECT_EQ(s.lights[0].shadow.technique, "none");  // documented default
     EXPECT_EQ(s.lights[1].type, LightType::Point);
     EXPECT_FLOAT_EQ(s.lights[1].range, 10.0f);
     ASSERT_EQ(s.materials.size(), 1u);
@@ -90,12 +90,17 @@ TEST(SceneFile, RotationIsEulerDegreesXThenYThenZ) {
 }
 
 TEST(SceneFile, OverridesSetValuesByJsonPath) {
+    // Every value set differs from what the file (or the default) has, and each is checked.
     const Scene s = parseScene(kMinimal, "scene.json", ".",
-                               {"lights[1].intensity=2.5", "camera.fovY=60", "lights[0].shadow.technique=none",
-                                "materials.m.baseColor=[1,0,0]", "lights[0].type=\"directional\""});
-    EXPECT_FLOAT_EQ(s.lights[1].intensity, 2.5f);
-    EXPECT_FLOAT_EQ(s.camera.fovYDeg, 60.0f);
-    EXPECT_EQ(s.materials[0].baseColor, glm::vec3(1, 0, 0));
+                               {"lights[1].intensity=2.5", "camera.fovY=60", "materials.m.baseColor=[1,0,0]",
+                                "lights[0].type=spot", "lights[0].position=[0,5,0]", "nodes[0].children[0].castsShadows=false"});
+    EXPECT_FLOAT_EQ(s.lights[1].intensity, 2.5f);  // file: default 1
+    EXPECT_FLOAT_EQ(s.camera.fovYDeg, 60.0f);      // default 45
+    EXPECT_EQ(s.materials[0].baseColor, glm::vec3(1, 0, 0));  // file: [0.5, 0.25, 0.125]
+    EXPECT_EQ(s.lights[0].type, LightType::Spot);  // file: directional (a bare word is a string)
+    EXPECT_EQ(s.lights[0].position, glm::vec3(0, 5, 0));
+    ASSERT_EQ(s.drawItems().size(), 1u);
+    EXPECT_FALSE(s.drawItems()[0].castsShadows);   // default true
 }
 
 TEST(SceneFile, DefaultSceneHasATorusAPlaneAndALight) {

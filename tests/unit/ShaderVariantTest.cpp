@@ -6,44 +6,89 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
+#include <tuple>
 
 using namespace shadowlab;
 
-TEST(ShaderVariant, DistinctVariantsHaveDistinctKeys) {
-    std::set<std::uint32_t> keys;
-    int count = 0;
-    for (ShaderPass pass : {ShaderPass::Base, ShaderPass::Light})
-        for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point})
-            for (bool texture : {false, true}) {
-                if (pass == ShaderPass::Base && light != LightType::Directional) continue;  // light ignored in Base
-                keys.insert(ShaderVariant{pass, light, ShadowTechnique::None, texture}.key());
-                ++count;
-            }
-    keys.insert(ShaderVariant{ShaderPass::Resolve}.key());
-    EXPECT_EQ(keys.size(), static_cast<std::size_t>(count + 1));
+namespace {
+// Every combination of the renderer's own switches.
+std::vector<ShaderVariant> allVariants() {
+    std::vector<ShaderVariant> out;
+    for (int bits = 0; bits < 64; ++bits)
+        for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point}) {
+            ShaderVariant v;
+            v.ambient = bits & 1;
+            v.light = bits & 2;
+            v.baseColorTexture = bits & 4;
+            v.writeSurfaces = bits & 8;
+            v.screenVisibility = bits & 16;
+            v.outputVisibility = bits & 32;
+            v.lightType = light;
+            out.push_back(v);
+        }
+    return out;
+}
+} // namespace
+
+TEST(ShaderVariant, DistinctVariantsHaveDistinctPrograms) {
+    // Two variants get the same program exactly when they differ only in
+    // fields that do not apply (light type, screen/output visibility without a light).
+    auto canonical = [](ShaderVariant v) {
+        if (!v.light) {
+            v.lightType = LightType::Directional;
+            v.screenVisibility = v.outputVisibility = false;
+        }
+        return std::make_tuple(v.ambient, v.light, static_cast<int>(v.lightType), v.baseColorTexture, v.writeSurfaces,
+                               v.screenVisibility, v.outputVisibility);
+    };
+    std::map<std::string, std::set<decltype(canonical(ShaderVariant{}))>> byProgram;
+    for (const ShaderVariant& v : allVariants()) byProgram[v.program().id()].insert(canonical(v));
+    std::set<decltype(canonical(ShaderVariant{}))> distinct;
+    for (const ShaderVariant& v : allVariants()) distinct.insert(canonical(v));
+    EXPECT_EQ(byProgram.size(), distinct.size());
+    for (const auto& [id, variants] : byProgram) EXPECT_EQ(variants.size(), 1u) << id;
 }
 
-TEST(ShaderVariant, FieldsThatDoNotApplyDoNotSplitTheCache) {
-    EXPECT_EQ((ShaderVariant{ShaderPass::Base, LightType::Directional}.key()),
-              (ShaderVariant{ShaderPass::Base, LightType::Point}.key()));
-    EXPECT_EQ((ShaderVariant{ShaderPass::Resolve, LightType::Spot, ShadowTechnique::None, true}.key()),
-              (ShaderVariant{ShaderPass::Resolve}.key()));
+TEST(ShaderVariant, TechniqueFileAndDefinesSplitTheCacheOnlyWithALight) {
+    ShaderVariant a, b;
+    a.light = b.light = true;
+    b.techniqueFile = "shadow_other.glsl";
+    EXPECT_NE(a.program().id(), b.program().id());
+    b = a;
+    b.techniqueDefines = "#define MAP_FILTER 2\n";
+    EXPECT_NE(a.program().id(), b.program().id());
+    EXPECT_NE(b.preamble().find("#define MAP_FILTER 2\n"), std::string::npos);
+    a.light = b.light = false;  // the base pass without a light never reads the technique
+    EXPECT_EQ(a.program().id(), b.program().id());
 }
 
 TEST(ShaderVariant, PreambleDefinesEverySwitchTheSourcesTest) {
-    const std::string p = ShaderVariant{ShaderPass::Light, LightType::Spot, ShadowTechnique::None, true}.preamble();
-    EXPECT_NE(p.find("#define LIGHT_TYPE SL_LIGHT_SPOT\n"), std::string::npos) << p;
-    EXPECT_NE(p.find("#define SHADOW_TECHNIQUE SL_SHADOW_NONE\n"), std::string::npos) << p;
-    EXPECT_NE(p.find("#define HAS_BASE_COLOR_TEXTURE 1\n"), std::string::npos) << p;
+    ShaderVariant v;
+    v.light = true;
+    v.lightType = LightType::Spot;
+    v.baseColorTexture = true;
+    const std::string p = v.preamble();
+    for (const char* define : {"#define AMBIENT 1\n", "#define LIGHT 1\n", "#define LIGHT_TYPE SL_LIGHT_SPOT\n",
+                               "#define HAS_BASE_COLOR_TEXTURE 1\n", "#define WRITE_SURFACES 0\n",
+                               "#define SCREEN_VISIBILITY 0\n", "#define OUTPUT_VISIBILITY 0\n"})
+        EXPECT_NE(p.find(define), std::string::npos) << define << " in " << p;
+    const gl::ProgramKey key = v.program();
+    ASSERT_EQ(key.aliases.size(), 1u);
+    EXPECT_EQ(key.aliases[0], (std::pair<std::string, std::string>{"@shadow", "shadow_none.glsl"}));
 }
 
 TEST(ShaderSource, IncludesExpandWithLineDirectivesPerFile) {
-    const gl::AssembledSource s = gl::assembleShader("lighting.frag", "#define X 1\n");
     EXPECT_EQ(s.text.rfind("#version 450 core\n#define X 1\n", 0), 0u);
-    ASSERT_EQ(s.files.size(), 3u);  // preamble, lighting.frag, shadowlab_shared.h
+    const gl::AssembledSource s = gl::assembleShader("lighting.frag", "#define X 1\n", {{"@shadow", "shadow_none.glsl"}});
+    // preamble, lighting.frag, shadowlab_shared.h, light_reach.h (which includes
+    // shadowlab_shared.h again: its include guard keeps one copy), the "@shadow" slot's file.
+    ASSERT_EQ(s.files.size(), 6u);
     EXPECT_EQ(s.files[1], "lighting.frag");
     EXPECT_EQ(s.files[2], "shadowlab_shared.h");
+    EXPECT_EQ(s.files[3], "light_reach.h");
+    EXPECT_EQ(s.files[5], "shadow_none.glsl");
     EXPECT_NE(s.text.find("#line 1 2\n"), std::string::npos);
     EXPECT_EQ(s.text.find("#include \""), std::string::npos);  // quoted includes are all expanded
 }
@@ -52,14 +97,29 @@ TEST(ShaderSource, MissingFileIsAnError) {
     EXPECT_THROW(gl::assembleShader("nope.frag", ""), Error);
 }
 
+TEST(ShaderSource, AnUnfilledSlotIsAnErrorNamingIt) {
+    try {
+        gl::assembleShader("lighting.frag", "");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("lighting.frag: #include \"@shadow\""), std::string::npos) << e.what();
+    }
+}
+
+TEST(ShaderSource, InlineTextIsAssembledAndQuotedInMessages) {
+    const gl::AssembledSource s = gl::assembleShader("test.frag", "", {}, "void main() {}\nbroken line\n");
+    EXPECT_NE(s.text.find("broken line"), std::string::npos);
+    EXPECT_EQ(gl::describeShaderLog("1:2(1): error: syntax", s), "test.frag:2: error: syntax | broken line");
+}
+
 TEST(ShaderSource, CompileLogNamesFileLineAndText) {
-    const gl::AssembledSource s = gl::assembleShader("resolve.frag", "");
-    // Mesa's form "<source>:<line>(<column>): error: ..."; line 1 of resolve.frag.
-    const auto embedded = gl::embeddedShader("resolve.frag");
+    const gl::AssembledSource s = gl::assembleShader("fullscreen.vert", "");
+    // Mesa's form "<source>:<line>(<column>): error: ..."; line 1 of fullscreen.vert.
+    const auto embedded = gl::embeddedShader("fullscreen.vert");
     ASSERT_TRUE(embedded);
     const std::string firstLine(embedded->substr(0, embedded->find('\n')));
     const std::string log = gl::describeShaderLog("1:1(3): error: something is wrong\n", s);
-    EXPECT_EQ(log, "resolve.frag:1: error: something is wrong | " + firstLine);
+    EXPECT_EQ(log, "fullscreen.vert:1: error: something is wrong | " + firstLine);
     // NVIDIA's form "<source>(<line>) : error ...".
     EXPECT_EQ(gl::describeShaderLog("0(2) : error C0000: bad", s).rfind("<variant preamble>:2: error C0000: bad", 0), 0u);
 }

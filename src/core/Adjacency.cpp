@@ -1,0 +1,77 @@
+#include "core/Adjacency.h"
+
+#include <cstring>
+#include <unordered_map>
+
+namespace shadowlab {
+
+namespace {
+
+// Canonical vertex id per index: the first vertex with the same position.
+std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions) {
+    struct Hash {
+        std::size_t operator()(const glm::vec3& p) const {
+            std::uint32_t b[3];
+            std::memcpy(b, &p, sizeof b);
+            return (std::size_t(b[0]) * 73856093u) ^ (std::size_t(b[1]) * 19349663u) ^ (std::size_t(b[2]) * 83492791u);
+        }
+    };
+    std::unordered_map<glm::vec3, std::uint32_t, Hash> first;
+    std::vector<std::uint32_t> id(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        id[i] = first.emplace(positions[i], static_cast<std::uint32_t>(i)).first->second;
+    return id;
+}
+
+std::uint64_t edgeKey(std::uint32_t from, std::uint32_t to) { return (std::uint64_t(from) << 32) | to; }
+
+struct EdgeUse {
+    std::uint32_t opposite = 0; // original index of the vertex opposite the edge
+    int count = 0;              // triangles using this directed edge
+};
+
+// Directed edges (by welded ids) of every triangle, with their opposite vertex.
+std::unordered_map<std::uint64_t, EdgeUse> directedEdges(const std::vector<std::uint32_t>& id, const std::vector<std::uint32_t>& indices) {
+    std::unordered_map<std::uint64_t, EdgeUse> edges;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = indices[t + e], b = indices[t + (e + 1) % 3], c = indices[t + (e + 2) % 3];
+            EdgeUse& use = edges[edgeKey(id[a], id[b])];
+            use.opposite = c;
+            ++use.count;
+        }
+    return edges;
+}
+
+} // namespace
+
+std::vector<std::uint32_t> adjacencyIndices(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
+    const std::vector<std::uint32_t> id = weld(positions);
+    const auto edges = directedEdges(id, indices);
+    std::vector<std::uint32_t> out;
+    out.reserve(indices.size() * 2);
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = indices[t + e], b = indices[t + (e + 1) % 3], c = indices[t + (e + 2) % 3];
+            // The neighbour walks the edge the other way round.
+            const auto twin = edges.find(edgeKey(id[b], id[a]));
+            const bool manifold = twin != edges.end() && twin->second.count == 1 && edges.at(edgeKey(id[a], id[b])).count == 1;
+            out.push_back(a);
+            out.push_back(manifold ? twin->second.opposite : c);
+        }
+    return out;
+}
+
+std::size_t openEdges(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
+    const std::vector<std::uint32_t> id = weld(positions);
+    const auto edges = directedEdges(id, indices);
+    std::size_t open = 0;
+    for (const auto& [key, use] : edges) {
+        const auto from = static_cast<std::uint32_t>(key >> 32), to = static_cast<std::uint32_t>(key);
+        const auto twin = edges.find(edgeKey(to, from));
+        if (use.count != 1 || twin == edges.end() || twin->second.count != 1) ++open;
+    }
+    return open;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,34 @@
+#include "gl/RenderState.h"
+
+namespace shadowlab::gl {
+
+namespace {
+void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
+
+void stencilFace(GLenum face, const StencilFace& s) {
+    glStencilFuncSeparate(face, s.func, s.ref, s.readMask);
+    glStencilOpSeparate(face, s.stencilFail, s.depthFail, s.depthPass);
+    glStencilMaskSeparate(face, s.writeMask);
+}
+} // namespace
+
+void apply(const RenderState& s) {
+    enable(GL_DEPTH_TEST, s.depthTest);
+    glDepthFunc(s.depthFunc);
+    glDepthMask(s.depthWrite ? GL_TRUE : GL_FALSE);
+    enable(GL_STENCIL_TEST, s.stencilTest);
+    stencilFace(GL_FRONT, s.stencilFront);
+    stencilFace(GL_BACK, s.stencilBack);
+    enable(GL_CULL_FACE, s.cull != Cull::None);
+    glCullFace(s.cull == Cull::Front ? GL_FRONT : GL_BACK);
+    glColorMask(s.colorWrite[0], s.colorWrite[1], s.colorWrite[2], s.colorWrite[3]);
+    enable(GL_BLEND, s.blend);
+    glBlendFunc(s.blendSrc, s.blendDst);
+    glBlendEquation(s.blendEquation);
+    enable(GL_POLYGON_OFFSET_FILL, s.polygonOffset);
+    glPolygonOffset(s.offsetFactor, s.offsetUnits);
+    enable(GL_DEPTH_CLAMP, s.depthClamp);
+    enable(GL_FRAMEBUFFER_SRGB, s.framebufferSrgb);
+}
+
+} // namespace shadowlab::gl

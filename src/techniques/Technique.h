@@ -1,0 +1,140 @@
+#pragma once
+// The plug-in point of every shadow technique.
+//
+// A technique is a module (src/techniques/<Name>.{h,cpp}) with an options
+// struct and table (include/shadowlab/), a GLSL file defining the light
+// pass's visibility hook (shaders/shadow_<name>.glsl) and one line in
+// src/techniques/Registry.cpp. The renderer keeps one instance per technique
+// name and hands it every light that uses it, so the instance can own
+// resources per light and resources shared by several lights (a texture
+// array, an atlas). It only ever talks to the renderer through
+// TechniqueHost; nothing here includes src/render/.
+#include "core/Bounds.h"
+#include "gl/PassClock.h"
+#include "gl/Program.h"
+#include "gl/RenderState.h"
+
+#include <shadowlab/Context.h>
+#include <shadowlab/Options.h>
+#include <shadowlab/Renderer.h>
+#include <shadowlab/Scene.h>
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+/// What every pass of a frame may read.
+struct FrameInfo {
+    const Scene& scene;
+    const std::vector<DrawItem>& items;      ///< every mesh instance, world transforms resolved
+    const std::vector<Bounds>& itemBounds;   ///< world-space bounds of each item
+    glm::ivec2 viewport{0};                  ///< the frame's size, pixels
+    glm::mat4 viewFromWorld{1.0f};           ///< the camera's
+    glm::mat4 clipFromView{1.0f};
+    glm::mat4 clipFromWorld{1.0f};
+    double timeSeconds = 0.0;                ///< RenderOptions::timeSeconds (animated lights)
+    std::uint64_t frameIndex = 0;            ///< frames this Renderer has drawn before this one
+};
+
+/// One light of the frame.
+struct LightView {
+    const Light& light;
+    int index = 0;     ///< into Scene::lights
+};
+
+/// Which items a draw covers.
+enum class ItemFilter {
+    All,
+    Casters,   ///< DrawItem::castsShadows
+    Receivers, ///< DrawItem::receivesShadows
+};
+
+enum class Topology {
+    Triangles,
+    TrianglesAdjacency, ///< GL_TRIANGLES_ADJACENCY: 6 indices per triangle (edge neighbours), for silhouettes
+};
+
+/// What the renderer offers a technique.
+///
+/// Uniform blocks and texture units: the renderer owns the blocks at
+/// SL_BINDING_FRAME, SL_BINDING_LIGHT and SL_BINDING_DRAW and binds them
+/// again before each of its own passes and draws; a technique binds its own
+/// at SL_BINDING_TECHNIQUE and textures at SL_UNIT_SHADOW_FIRST and above.
+class TechniqueHost {
+public:
+    virtual ~TechniqueHost() = default;
+    /// A program from the context's cache (compiled once per context).
+    virtual const gl::Program& program(const gl::ProgramKey& key) = 0;
+    /// Applies a whole render state.
+    virtual void apply(const gl::RenderState& state) = 0;
+    /// Draws the items that pass `filter` with `program` (already in use by
+    /// the caller or not: it is made current), each with its transforms and
+    /// material in the draw block (SL_BINDING_DRAW: worldFromObject,
+    /// normalFromObject). `perItem(i)` runs before item i's draw and skips
+    /// it by returning false (culling per light or per face).
+    virtual void drawItems(ItemFilter filter, const gl::Program& program,
+                           const std::function<bool(std::size_t item)>& perItem = {},
+                           Topology topology = Topology::Triangles) = 0;
+    /// A triangle covering the viewport (fullscreen.vert, no vertex input).
+    virtual void drawFullscreenTriangle() = 0;
+    /// Draws the light's shading (or, when compare asks, its visibility)
+    /// over the base pass's depth, with `state` (start from litState()).
+    virtual void drawLit(const gl::RenderState& state) = 0;
+    /// Additive blend, depth EQUAL on the base pass's depth, no depth writes.
+    virtual gl::RenderState litState() const = 0;
+    /// Binds the frame's framebuffer (colour, depth+stencil) and viewport.
+    virtual void bindFrameTarget() = 0;
+    /// Index buffer with adjacency of Scene::meshes[mesh] (built on first use).
+    virtual const gl::Buffer& adjacencyIndices(int mesh) = 0;
+    /// Times a nested scope of the current pass: "shadow[2]" + "blur".
+    virtual gl::ScopedPass timeScope(const std::string& name) = 0;
+    virtual const GlInfo& glInfo() const = 0;
+};
+
+class Technique {
+public:
+    virtual ~Technique() = default;
+    /// Once per frame before any pass, with the indices of every light that
+    /// uses this technique: create, resize or release resources.
+    virtual void prepare(TechniqueHost&, const FrameInfo&, std::span<const int> /*lights*/) {}
+    /// Whether renderShadowPass does anything for this light (only such
+    /// passes run and are timed, as "shadow[i]").
+    virtual bool hasShadowPass(const Light&) const { return false; }
+    /// Runs before the base pass with the technique's own framebuffers.
+    virtual void renderShadowPass(TechniqueHost&, const FrameInfo&, const LightView&) {}
+    /// Whether the light's shading can be drawn inside the base pass (the
+    /// visibility hook reads only what bindLightPass binds). Techniques
+    /// that need passes after the base pass (stencil) return false.
+    virtual bool sharesBasePass(const Light&) const { return true; }
+    /// `#define` lines for this light's variant of the technique's GLSL file.
+    virtual std::string lightPassDefines(const Light&) const { return {}; }
+    /// Binds what the GLSL hook reads (textures, the technique's block).
+    virtual void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView&) {}
+    /// The light's pass after the base pass; the frame target is bound. The
+    /// default binds and draws lit; stencil techniques fill the stencil first.
+    virtual void renderLightPass(TechniqueHost& host, const FrameInfo& frame, const LightView& light) {
+        bindLightPass(host, frame, light);
+        host.drawLit(host.litState());
+    }
+    /// Images worth looking at (depth maps, cube crosses, texel density);
+    /// `shadowlab render --debug-images DIR` writes them.
+    virtual void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, std::vector<DebugImage>&) {}
+};
+
+/// One registry row: everything the renderer, the scene parser and the docs
+/// need to know about a technique.
+struct TechniqueEntry {
+    std::string name;                      ///< `lights[i].shadow.technique`
+    std::string summary;                   ///< one line
+    const OptionTable* options = nullptr;  ///< the block `lights[i].shadow.<name>`
+    std::string shaderFile;                ///< GLSL defining `vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal)`
+    std::function<std::unique_ptr<Technique>()> create;
+    /// Why the technique cannot shadow this light, or "" (default: it can).
+    std::function<std::string(const Light&)> unsupported = {};
+};
+
+} // namespace shadowlab
