@@ -1,4 +1,5 @@
 #include "Bench.h"
+#include "Metrics.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/Error.h>
@@ -167,20 +168,7 @@ json runBench(Context& context, const BenchArgs& args) {
                 const LightComparison& c = comparison.lights[l];
                 const std::string errorName = stem + "-error-" + std::to_string(l) + ".png";
                 writePng(images / errorName, c.errorImage);
-                lights.push_back({{"name", c.name},
-                                  {"type", toString(scene.lights[l].type)},
-                                  {"technique", toString(scene.lights[l].shadow.technique)},
-                                  {"soft", c.soft},
-                                  {"receiverPixels", c.receiverPixels},
-                                  {"referenceShadowedPixels", c.referenceShadowedPixels},
-                                  {"edgePixels", c.edgePixels},
-                                  {"falseShadow", c.falseShadow},
-                                  {"falseLit", c.falseLit},
-                                  {"falseShadowAwayFromEdges", c.falseShadowAwayFromEdges},
-                                  {"falseLitAwayFromEdges", c.falseLitAwayFromEdges},
-                                  {"meanAbsError", c.meanAbsError},
-                                  {"rmse", c.rmse},
-                                  {"errorImage", "images/" + errorName}});
+                lights.push_back(lightRecord(scene.lights[l], c, {{"errorImage", "images/" + errorName}}));
             }
             json passes = json::object();
             for (const auto& [name, times] : passTimes) passes[name] = stats(times);
