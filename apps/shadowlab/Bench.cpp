@@ -1,4 +1,5 @@
 #include "Bench.h"
+#include "Metrics.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/Error.h>
@@ -179,6 +180,7 @@ json runBench(Context& context, const BenchArgs& args) {
                 const LightComparison& c = comparison.lights[l];
                 const std::string errorName = stem + "-error-" + std::to_string(l) + ".png";
                 writePng(images / errorName, c.errorImage);
+<<<<<<< HEAD
                 lights.push_back({{"name", c.name},
                                   {"type", toString(scene.lights[l].type)},
                                   {"technique", scene.lights[l].shadow.technique},
@@ -193,6 +195,9 @@ json runBench(Context& context, const BenchArgs& args) {
                                   {"meanAbsError", c.meanAbsError},
                                   {"rmse", c.rmse},
                                   {"errorImage", "images/" + errorName}});
+=======
+                lights.push_back(lightRecord(scene.lights[l], c, {{"errorImage", "images/" + errorName}}));
+>>>>>>> ref-yardstick
             }
             json passes = json::object();
             for (const auto& [name, times] : passTimes) passes[name] = stats(times);

@@ -6,6 +6,7 @@
 // Every failure prints one line `shadowlab: error: ...` and exits non-zero;
 // no output file is written unless the whole render succeeded.
 #include "Bench.h"
+#include "Metrics.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/Context.h>
@@ -19,7 +20,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 
@@ -133,6 +133,7 @@ int runCompare(const CompareArgs& args) {
     std::vector<fs::path> written{dir / "technique.png", dir / "reference.png"};
     writePng(written[0], c.technique);
     writePng(written[1], c.reference);
+    nlohmann::json lights = nlohmann::json::array();
     std::cout << "scene " << scene.name << ", " << args.width << "x" << args.height << ", reference traced in "
               << static_cast<long>(c.referenceMs) << " ms\n";
     for (std::size_t i = 0; i < c.lights.size(); ++i) {
@@ -146,11 +147,27 @@ int runCompare(const CompareArgs& args) {
                   << "  misclassified, away from edges:    false shadow " << pct(l.falseShadowAwayFromEdges) << ", false lit "
                   << pct(l.falseLitAwayFromEdges) << " (" << l.edgePixels << " pixels in the 1-pixel edge band)\n"
                   << "  visibility error:                  MAE " << l.meanAbsError << ", RMSE " << l.rmse << "\n";
-        written.push_back(dir / ("error-" + std::to_string(i) + ".png"));
+        const std::string index = std::to_string(i);
+        written.push_back(dir / ("error-" + index + ".png"));
         writePng(written.back(), l.errorImage);
-        written.push_back(dir / ("visibility-" + std::to_string(i) + ".png"));
+        written.push_back(dir / ("visibility-" + index + ".png"));
         writePng16(written.back(), l.referenceVisibility);
+        written.push_back(dir / ("reach-" + index + ".png"));
+        writePng(written.back(), l.reach);
+        lights.push_back(tool::lightRecord(light, l, {{"errorImage", "error-" + index + ".png"},
+                                                      {"visibilityImage", "visibility-" + index + ".png"},
+                                                      {"reachImage", "reach-" + index + ".png"}}));
     }
+    written.push_back(dir / "metrics.json");
+    tool::writeJsonAtomically(written.back(), {{"scene", scene.name},
+                                               {"sceneFile", args.scene.empty() ? "<default>" : args.scene},
+                                               {"width", args.width},
+                                               {"height", args.height},
+                                               {"softSamples", args.softSamples},
+                                               {"referenceMs", c.referenceMs},
+                                               {"techniqueImage", "technique.png"},
+                                               {"referenceImage", "reference.png"},
+                                               {"lights", lights}});
     std::cout << "wrote";
     for (const fs::path& p : written) std::cout << " " << p.string();
     std::cout << "\n";
@@ -166,12 +183,7 @@ int runBenchCommand(const tool::BenchArgs& args) {
     const nlohmann::json results = tool::runBench(context, args);
     requireNoGlErrors(context);
     const fs::path json = args.output / "results.json";
-    {
-        std::ofstream out(args.output / "results.json.partial");
-        out << results.dump(2) << "\n";
-        if (!out) throw Error(json.string() + ": cannot write");
-    }
-    fs::rename(args.output / "results.json.partial", json);
+    tool::writeJsonAtomically(json, results);
     tool::writeReport(results, args.output);
     std::cout << json.string() << "\n" << (args.output / "report.html").string() << "\n";
     return 0;

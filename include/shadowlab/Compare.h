@@ -37,7 +37,12 @@ struct LightComparison {
     double falseLitAwayFromEdges = 0.0;    ///< falseLit counted outside the edge band, share of receivers outside it
     double meanAbsError = 0.0;    ///< mean |technique - reference| visibility over receivers
     double rmse = 0.0;            ///< root mean square of the same
-    ImageGray16 referenceVisibility; ///< 0 = shadowed .. 65535 = lit, whole image (background 0)
+    /// 0 = shadowed .. 65535 = lit, whole image. Also 0 where the light does not
+    /// reach (background, outside a spot's cone, beyond range, facing away): `reach` tells them apart.
+    ImageGray16 referenceVisibility;
+    /// 255 on receiver pixels (the ones counted in receiverPixels: receive shadows,
+    /// within the light's reach, facing it), 0 elsewhere.
+    ImageGray8 reach;
     ImageRGBA8 errorImage;        ///< false lit red, false shadow blue, grey elsewhere (paler colours in the edge band)
 };
 

@@ -17,8 +17,17 @@ struct ImageGray16 {
     std::vector<std::uint16_t> pixels; ///< width*height values
 };
 
+/// 8-bit single-channel image, rows top to bottom.
+struct ImageGray8 {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels; ///< width*height values
+};
+
 /// Writes 8-bit RGBA PNG. Throws shadowlab::Error naming the path on failure.
 void writePng(const std::filesystem::path& path, const ImageRGBA8& image);
+/// Writes 8-bit greyscale PNG. Throws shadowlab::Error naming the path on failure.
+void writePng(const std::filesystem::path& path, const ImageGray8& image);
 /// Writes 16-bit greyscale PNG (libpng). Throws shadowlab::Error naming the path.
 void writePng16(const std::filesystem::path& path, const ImageGray16& image);
 /// Reads any PNG as 8-bit RGBA. Throws shadowlab::Error naming the path.

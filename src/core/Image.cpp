@@ -53,6 +53,20 @@ void writePng(const fs::path& path, const ImageRGBA8& image) {
     commit(tmp, path);
 }
 
+void writePng(const fs::path& path, const ImageGray8& image) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != static_cast<std::size_t>(image.width) * image.height)
+        throw Error(path.string() + ": cannot write an empty or inconsistent image");
+    requireDirectory(path);
+    const fs::path tmp = temporaryBeside(path);
+    if (!stbi_write_png(tmp.string().c_str(), image.width, image.height, 1, image.pixels.data(), image.width)) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw Error(path.string() + ": cannot write PNG");
+    }
+    commit(tmp, path);
+}
+
 void writePng16(const fs::path& path, const ImageGray16& image) {
     if (image.width <= 0 || image.height <= 0 ||
         image.pixels.size() != static_cast<std::size_t>(image.width) * image.height)

@@ -15,25 +15,6 @@ namespace shadowlab {
 
 namespace {
 
-// Direction from the surface point towards the light's centre, and whether
-// the point is within the light's reach (spot cone, range), as the reference
-// and lighting.frag define them.
-struct Reach {
-    glm::vec3 toLight;
-    bool inReach;
-};
-
-Reach reachOf(const Light& light, const glm::vec3& p) {
-    if (light.type == LightType::Directional) return {-glm::normalize(light.direction), true};
-    const glm::vec3 d = light.position - p;
-    const float distance = glm::length(d);
-    if (!(distance > 0.0f)) return {glm::vec3(0.0f), false};
-    bool in = light.range <= 0.0f || distance <= light.range;
-    if (light.type == LightType::Spot)
-        in = in && glm::dot(-d / distance, glm::normalize(light.direction)) > std::cos(glm::radians(light.outerConeDeg));
-    return {d / distance, in};
-}
-
 std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
 } // namespace
@@ -95,14 +76,14 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
         c.name = light.name;
         c.soft = light.size > 0.0f;
 
-        // Receivers and the reference's classes.
-        std::vector<std::uint8_t> receiver(n, 0), exactLit(n, 0);
+        // Receivers (reached by the light, facing it, receiving shadows) and
+        // the reference's classes.
+        std::vector<std::uint8_t> receiver = reference::lightReach(light, samples), exactLit(n, 0);
+        c.reach = {w, h, std::vector<std::uint8_t>(n, 0)};
         for (std::size_t i = 0; i < n; ++i) {
-            if (!samples[i].valid || surfaces.normal[i].w < 0.5f) continue;
-            const Reach reach = reachOf(light, samples[i].position);
-            if (!reach.inReach || glm::dot(samples[i].normal, reach.toLight) <= 0.0f) continue;
-            receiver[i] = 1;
-            exactLit[i] = exact[i] >= options.litThreshold;
+            receiver[i] = receiver[i] && surfaces.normal[i].w >= 0.5f;
+            c.reach.pixels[i] = receiver[i] ? 255 : 0;
+            exactLit[i] = receiver[i] && exact[i] >= options.litThreshold;
         }
         // The edge band: receivers with an 8-neighbour receiver of the other true class.
         std::vector<std::uint8_t> edge(n, 0);

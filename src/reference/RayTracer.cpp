@@ -5,11 +5,14 @@
 
 #include <shadowlab/Error.h>
 
+#include "light_reach.h"
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -185,16 +188,16 @@ struct LightSetup {
     float oneMinusCosHalf = 0.0f;   // directional: 1 - cos(half angular diameter)
     bool soft = false;
 
-    // The sample can receive this light at all (valid, inside range and cone).
+    int shaderType = SL_LIGHT_DIRECTIONAL; // the SL_LIGHT_* code of `type`
+
+    // The sample can receive this light at all: valid, within its reach
+    // (shared::slLightReaches, the definition lighting.frag uses: spot cone,
+    // range) and facing its centre on the geometric normal.
     bool reaches(const SurfaceSample& s) const {
         if (!s.valid) return false;
-        if (type == LightType::Directional) return true;
-        const glm::vec3 d = s.position - position;
-        const float dist = glm::length(d);
-        if (range > 0.0f && dist > range) return false;
-        // angle(axis, d) > outer  <=>  axis.d < cos(outer) * |d|
-        if (type == LightType::Spot && dist > 0.0f && glm::dot(axis, d) < cosOuter * dist) return false;
-        return true;
+        if (!shared::slLightReaches(shaderType, position, axis, range, cosOuter, s.position)) return false;
+        const glm::vec3 toLight = type == LightType::Directional ? towardLight : position - s.position;
+        return glm::dot(s.normal, toLight) > 0.0f;
     }
 };
 
@@ -204,6 +207,9 @@ LightSetup makeLightSetup(const Light& light) {
     setup.position = light.position;
     setup.range = light.range;
     setup.soft = light.size > 0.0f;
+    setup.shaderType = light.type == LightType::Directional ? SL_LIGHT_DIRECTIONAL
+                       : light.type == LightType::Spot      ? SL_LIGHT_SPOT
+                                                            : SL_LIGHT_POINT;
     const std::string who = "RayTracer: light '" + light.name + "': ";
     if (light.type != LightType::Point) {
         const float len = glm::length(light.direction);
@@ -274,6 +280,39 @@ struct Packet {
 
 } // namespace
 
+glm::vec3 offsetRayOrigin(const glm::vec3& p, const glm::vec3& n) {
+    // Wachter and Binder, "A Fast and Robust Method for Avoiding
+    // Self-Intersection", Ray Tracing Gems ch. 6 (2019): move each coordinate
+    // by kIntScale * n_i units in its own last place (integer arithmetic on
+    // the float's bits, so the step cannot be rounded away); near zero, where
+    // ulps vanish, by kFloatScale * n_i scene units instead.
+    constexpr float kOrigin = 1.0f / 32.0f;
+    constexpr float kFloatScale = 1.0f / 65536.0f;
+    constexpr float kIntScale = 256.0f;
+    glm::vec3 o;
+    for (int i = 0; i < 3; ++i) {
+        const auto ulps = static_cast<std::int32_t>(kIntScale * n[i]);
+        const float stepped = std::bit_cast<float>(std::bit_cast<std::int32_t>(p[i]) + (p[i] < 0.0f ? -ulps : ulps));
+        o[i] = std::abs(p[i]) < kOrigin ? p[i] + kFloatScale * n[i] : stepped;
+    }
+    // Plus a push along the normal for the rasterizer's error: p is a
+    // position the GPU interpolated into an RGBA32F target, which can lie a
+    // few ulps of the largest coordinate (more where the plane equation
+    // cancels) below the triangle Embree sees. 2^-16 of the largest
+    // coordinate is 128 of its ulps; CompareGLTest measured at most 5.7 on a
+    // large tilted plane (RasterizedPositionsLieWithinTheOriginPush).
+    constexpr float kPushPerUnit = 1.0f / 65536.0f;
+    const float magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
+    return o + (kPushPerUnit * magnitude) * n;
+}
+
+std::vector<std::uint8_t> lightReach(const Light& light, const std::vector<SurfaceSample>& samples) {
+    const LightSetup setup = makeLightSetup(light);
+    std::vector<std::uint8_t> out(samples.size(), 0);
+    for (std::size_t i = 0; i < samples.size(); ++i) out[i] = setup.reaches(samples[i]) ? 1 : 0;
+    return out;
+}
+
 RayTracer::RayTracer(const Scene& scene) {
     RTCDevice device = rtcNewDevice(nullptr);
     if (!device)
@@ -338,10 +377,6 @@ RayTracer::RayTracer(const Scene& scene) {
     rtcCommitScene(rtcScene);
     if (rtcGetDeviceError(device) != RTC_ERROR_NONE || !errors.text().empty()) fail("building the BVH failed");
 
-    // Automatic normal offset: 1e-4 of the scene's size (see VisibilityOptions).
-    const auto [lo, hi] = scene.worldBounds();
-    const float diagonal = glm::length(hi - lo);
-    autoNormalOffset_ = std::isfinite(diagonal) && diagonal > 0.0f ? 1e-4f * diagonal : 0.0f;
 }
 
 RayTracer::~RayTracer() = default;
@@ -357,12 +392,15 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
         throw Error("RayTracer: VisibilityOptions::softSamples must be >= 1, got " +
                     std::to_string(options.softSamples));
     const LightSetup setup = makeLightSetup(light);
-    const float offset = options.normalOffset >= 0.0f ? options.normalOffset : autoNormalOffset_;
     RTCScene scene = scene_.get();
     std::vector<float> result(samples.size(), 0.0f);
 
-    // Ray origin: the surface point moved `offset` along its geometric normal.
-    auto originOf = [offset](const SurfaceSample& s) { return s.position + offset * s.normal; };
+    // Ray origin: the surface point moved off its surface by an amount that
+    // depends on the point alone (offsetRayOrigin), or by a fixed distance.
+    const float fixedOffset = options.normalOffset;
+    auto originOf = [fixedOffset](const SurfaceSample& s) {
+        return fixedOffset >= 0.0f ? s.position + fixedOffset * s.normal : offsetRayOrigin(s.position, s.normal);
+    };
 
     if (!setup.soft) {
         // Hard: one ray per sample, 16 consecutive samples per packet (raster

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -29,10 +30,13 @@ struct VisibilityOptions {
     /// floor(sqrt(n))^2 are a jittered grid (stratified), any remainder is
     /// uniform random, so the estimate is unbiased for every n.
     int softSamples = 256;
-    /// Scene units the ray origin moves along SurfaceSample::normal; < 0 =
-    /// automatic: 1e-4 * diagonal of Scene::worldBounds().
+    /// How far the ray origin leaves the surface. < 0 (default): by
+    /// offsetRayOrigin(), an amount that depends on the sample's own position
+    /// only, so geometry far away (or geometry that casts no shadow) changes
+    /// no visibility. >= 0: that many scene units along SurfaceSample::normal
+    /// (0: the origin on the surface; for experiments).
     ///
-    /// Why a normal offset and not tnear: a position interpolated on a
+    /// Why an offset along the normal and not tnear: a position interpolated on a
     /// triangle is rounded to float and lies up to an ulp below the surface,
     /// and on a curved mesh the neighbouring facets are tilted towards the
     /// ray. tnear is measured *along the ray*, so for a grazing ray it moves
@@ -40,15 +44,32 @@ struct VisibilityOptions {
     /// re-enters the own or a neighbouring facet (peers measured 0.01-0.8 %
     /// false hits with tnear alone). Moving the origin by eps along the
     /// geometric normal puts every point of the ray strictly outside the own
-    /// facet's plane: n.(o + t*l - p) = eps + t*(n.l) > 0 for n.l >= 0, so on
+    /// facet's plane: n.(o + t*l - p) = eps + t*(n.l) > 0 for n.l > 0, so on
     /// a locally convex surface nothing of it can be hit (0 false hits
-    /// measured). The offset is tiny against the scene, so real contact
-    /// shadows are not lost.
+    /// measured).
     float normalOffset = -1.0f;
     /// Seed of the stratified jitter; results are deterministic for a given
     /// seed (independent of thread count and scheduling).
     unsigned seed = 1;
 };
+
+/// The origin of a shadow ray from surface point p (world space) with unit
+/// geometric normal n: p moved off its surface by an amount that depends on p
+/// alone. First the offset of Wachter and Binder (Ray Tracing Gems ch. 6):
+/// each coordinate steps 256 * n_i units in its own last place (|p_i| <
+/// 1/32: 2^-16 * n_i scene units), which survives float rounding at any
+/// magnitude; then a push of 2^-16 * max(|p_x|, |p_y|, |p_z|, 1) along n, for
+/// the error of the rasterizer's position (interpolated on the GPU into an
+/// RGBA32F target, it can lie slightly below the true surface). Around the
+/// origin the offset is ~3e-5 scene units, at 1000 units ~0.03.
+glm::vec3 offsetRayOrigin(const glm::vec3& p, const glm::vec3& n);
+
+/// Per sample, 1 where `light` reaches it at all, else 0: the sample is
+/// valid, within the light's reach (shaders/light_reach.h: spot cone, range;
+/// the definition lighting.frag uses) and its geometric normal faces the
+/// light's centre (n . toLight > 0). RayTracer::visibility() is 0 wherever
+/// this is 0. Throws shadowlab::Error for a zero or non-finite light direction.
+std::vector<std::uint8_t> lightReach(const Light& light, const std::vector<SurfaceSample>& samples);
 
 /// A BVH of every shadow-casting DrawItem, traced with packets of 16
 /// occlusion rays (rtcOccluded16) on all hardware threads.
@@ -69,8 +90,9 @@ public:
     ///
     /// Hard (light.size == 0): one ray per sample. Point/spot: towards
     /// light.position, ending just before it; directional: along
-    /// -light.direction to infinity. Spot: samples outside the outer cone are
-    /// 0. Point/spot: samples farther than a nonzero light.range are 0.
+    /// -light.direction to infinity. Samples the light does not reach
+    /// (lightReach(): outside a spot's outer cone, farther than a nonzero
+    /// light.range, facing away from the light) are 0, like shadowed ones.
     ///
     /// Soft (light.size > 0): the fraction of unoccluded rays to points on the
     /// light. Point/spot: the light is a disk of radius `size` centred on
@@ -78,7 +100,7 @@ public:
     /// light of that radius shows, up to perspective), sampled uniformly by
     /// area. Directional: directions uniform in solid angle within the cone of
     /// angular diameter `size` degrees around -light.direction (the sun as a
-    /// disk in the sky). The cone and range tests use the light's centre.
+    /// disk in the sky). The cone, range and facing tests use the light's centre.
     ///
     /// Throws shadowlab::Error for softSamples < 1 or a moved-from tracer.
     std::vector<float> visibility(const Light& light, const std::vector<SurfaceSample>& samples,
@@ -86,9 +108,6 @@ public:
 
     /// Triangles in the BVH (shadow casters only).
     std::size_t triangleCount() const;
-
-    /// The offset used when VisibilityOptions::normalOffset < 0.
-    float automaticNormalOffset() const { return autoNormalOffset_; }
 
 private:
     struct DeviceDeleter { void operator()(RTCDeviceTy* device) const; };
@@ -98,7 +117,6 @@ private:
     std::unique_ptr<RTCDeviceTy, DeviceDeleter> device_;
     std::unique_ptr<RTCSceneTy, SceneDeleter> scene_;
     std::size_t triangleCount_ = 0;
-    float autoNormalOffset_ = 0.0f;
 };
 
 } // namespace shadowlab::reference

@@ -5,6 +5,7 @@
 
 #include <shadowlab/Error.h>
 #include <shadowlab/Scene.h>
+#include <shadowlab/Shapes.h>
 
 #include <gtest/gtest.h>
 
@@ -280,7 +281,7 @@ TEST(RayTracer, PointLightOccluderBetweenBesideAndBeyond) {
                                                 {{0.1f, 3.0f, 0.1f}, {0.0f, 1.0f, 0.0f}, true}};
     // The lower quad's top sees the light even though the upper quad lies on
     // the ray's extension beyond it (tfar ends at the light); the upper
-    // quad's top faces away from the light, and its own quad is in the way.
+    // quad's top faces away from the light: unreached, 0.
     EXPECT_EQ(tracer.visibility(bulb, onQuads), (std::vector<float>{1.0f, 0.0f}));
 }
 
@@ -370,13 +371,11 @@ TEST(RayTracer, SoftShadowPenumbraIsMonotonic) {
 }
 
 // Samples on the sphere's own lit facets (interpolated positions, geometric
-// normals) are never falsely occluded with the automatic normal offset.
+// normals) are never falsely occluded with the per-point origin offset.
 TEST(RayTracer, NoFalseSelfOcclusionOnCurvedMesh) {
-    Scene scene; // the sphere alone: a small scene, so the automatic offset is small too
+    Scene scene;
     addInstance(scene, makeUvSphere(kRadius, kSegments, kRings), kCentre);
     const RayTracer tracer(scene);
-    EXPECT_GT(tracer.automaticNormalOffset(), 0.0f);
-    EXPECT_LT(tracer.automaticNormalOffset(), 1e-3f);
 
     const Mesh& mesh = scene.meshes[0];
     const Light lights[] = {directionalLight({0.4f, -1.0f, 0.3f}), pointLight({3.0f, 6.0f, 2.0f}),
@@ -409,7 +408,7 @@ TEST(RayTracer, NoFalseSelfOcclusionOnCurvedMesh) {
         noOffset.normalOffset = 0.0f;
         const std::vector<float> raw = tracer.visibility(light, samples, noOffset);
         std::cout << "[ info ] " << light.name << ": false self-occlusion " << falseHits << "/" << samples.size()
-                  << " with the automatic offset, " << std::count(raw.begin(), raw.end(), 0.0f)
+                  << " with the per-point offset, " << std::count(raw.begin(), raw.end(), 0.0f)
                   << " with no offset and tnear 0\n";
     }
 }
@@ -430,10 +429,153 @@ TEST(RayTracer, SoftShadowsAreDeterministicPerSeed) {
     options.seed = 2;
     const std::vector<float> other = tracer.visibility(sun, samples, options);
     EXPECT_NE(other, first);
+
+    // How far two seeds may differ. Each estimate is a mean over a jittered
+    // 8x8 grid of strata (64 is a square), one ray per stratum: a stratum the
+    // occluder's edge does not cross gives its exact value, a crossed one a
+    // Bernoulli ray of variance <= 1/4. The edge seen from the ground is the
+    // sphere's silhouette, ~30 degrees in radius against a light 5 degrees in
+    // radius: nearly a straight chord, which crosses at most 2g = 16 of the g
+    // x g strata. So var(estimate) <= 16 / (4 n^2), and the difference of two
+    // independent estimates has sigma <= sqrt(2 * 16 / 4) / n = 0.044 (the
+    // unstratified bound would be 1 / sqrt(2 n) = 0.088). The RMS difference
+    // over the penumbra measures that sigma: at most the bound. A single
+    // sample may differ by 6 sigma (0.27; Gaussian tail 2e-9 per sample, so
+    // fewer than 1e-5 false failures over the few thousand penumbra samples).
+    const int grid = 8;
+    ASSERT_EQ(grid * grid, options.softSamples);
+    const double n = options.softSamples;
+    const double sigmaBound = std::sqrt(2.0 * (2.0 * grid) / 4.0) / n;
+    const double tolerance = 6.0 * sigmaBound;
+    double sumSq = 0.0, maxDiff = 0.0;
+    std::size_t penumbra = 0;
     for (std::size_t i = 0; i < first.size(); ++i) {
-        if (first[i] == 0.0f || first[i] == 1.0f) continue;
-        EXPECT_NEAR(other[i], first[i], 0.25f);
+        if ((first[i] == 0.0f || first[i] == 1.0f) && (other[i] == 0.0f || other[i] == 1.0f)) continue;
+        ++penumbra;
+        const double d = static_cast<double>(other[i]) - first[i];
+        sumSq += d * d;
+        maxDiff = std::max(maxDiff, std::abs(d));
+        EXPECT_NEAR(other[i], first[i], tolerance) << "sample " << i;
     }
+    ASSERT_GT(penumbra, 500u) << "the samples must cross the penumbra";
+    const double rms = std::sqrt(sumSq / static_cast<double>(penumbra));
+    EXPECT_LE(rms, sigmaBound) << "stratification must keep the seeds' difference below the stratified bound";
+    std::cout << "[ info ] seeds 1 and 2 over " << penumbra << " penumbra samples: RMS difference " << rms
+              << ", max " << maxDiff << " (sigma bound " << sigmaBound << ", tolerance " << tolerance << ")\n";
+}
+
+// The ray origin's offset depends on the point alone: it leaves the surface
+// (strictly, in exact arithmetic) at every magnitude and stays within a few
+// 2^-16 of the point's largest coordinate.
+TEST(RayTracer, OffsetRayOriginLeavesTheSurfaceAtEveryMagnitude) {
+    const glm::vec3 normals[] = {{0, 1, 0}, {0, 0, -1}, glm::normalize(glm::vec3(0.3f, 0.9f, -0.2f)),
+                                 glm::normalize(glm::vec3(-1.0f, 0.02f, 0.01f))};
+    for (float magnitude : {0.0f, 1e-3f, 0.03f, 1.0f, 7.5f, 30.0f, 1000.0f, 1e5f})
+        for (const glm::vec3& direction : {glm::vec3(1, 1, 1), glm::vec3(-0.2f, 1, 0.7f), glm::vec3(3, -1, -2)})
+            for (const glm::vec3& n : normals) {
+                const glm::vec3 p = magnitude * glm::normalize(direction);
+                const glm::vec3 o = shadowlab::reference::offsetRayOrigin(p, n);
+                const glm::dvec3 moved = glm::dvec3(o) - glm::dvec3(p);
+                const double along = glm::dot(moved, glm::dvec3(n));
+                const double scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
+                SCOPED_TRACE(testing::Message() << "p = (" << p.x << ", " << p.y << ", " << p.z << "), n = (" << n.x << ", "
+                                                << n.y << ", " << n.z << ")");
+                EXPECT_GT(along, 0.0) << "the origin must be strictly off the surface";
+                // 256 ulps per coordinate (each <= 2^-23 |p_i|, so <= 2^-15 |p_i|)
+                // plus the 2^-16 push: below 2^-13 of the scale with room to spare.
+                EXPECT_LT(glm::length(moved), scale * 0x1.0p-13) << "the offset must stay small against the point";
+            }
+}
+
+// The regression of issue 11: a 1 cm box 1000 units away, or a big node that
+// casts no shadow, changed ~170 reference pixels because the old offset grew
+// with the scene's bounding box. Now no sample's visibility changes.
+TEST(RayTracer, FarAwayTinyBoxOrNonCasterChangesNoVisibility) {
+    // Samples where an offset matters: a fine line across the shadow edge on
+    // the ground, and the sphere's facets up to its terminator.
+    std::vector<SurfaceSample> samples;
+    for (int i = 0; i < 4000; ++i) samples.push_back(groundSample(-3.0f + 0.0015f * static_cast<float>(i), 0.1f));
+    const Mesh sphere = makeUvSphere(kRadius, kSegments, kRings);
+    for (std::size_t t = 0; t < sphere.triangleCount(); ++t) {
+        const glm::vec3 a = sphere.positions[sphere.indices[3 * t]] + kCentre;
+        const glm::vec3 b = sphere.positions[sphere.indices[3 * t + 1]] + kCentre;
+        const glm::vec3 c = sphere.positions[sphere.indices[3 * t + 2]] + kCentre;
+        glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+        if (glm::dot(n, a - kCentre) < 0.0f) n = -n;
+        samples.push_back({(a + b + c) / 3.0f, n, true});
+    }
+    const Light lights[] = {directionalLight({0.4f, -1.0f, 0.3f}), pointLight({3.0f, 6.0f, 2.0f}),
+                            directionalLight({0.4f, -1.0f, 0.3f}, 4.0f)};
+    VisibilityOptions options;
+    options.softSamples = 16;
+
+    const Scene base = sphereOverGround(20.0f);
+    Scene withBox = base;
+    Mesh box = shadowlab::shapes::box(glm::vec3(0.01f));
+    box.name = "far box";
+    addInstance(withBox, box, {1000.0f, 1.0f, -1000.0f});
+    Scene withNonCaster = base;
+    addInstance(withNonCaster, makeQuad(5000.0f), {0.0f, -200.0f, 0.0f}, /*castsShadows=*/false);
+
+    // Every light's visibility from one scene's tracer.
+    auto trace = [&](const Scene& scene) {
+        const RayTracer tracer(scene);
+        std::vector<std::vector<float>> out;
+        for (const Light& light : lights) out.push_back(tracer.visibility(light, samples, options));
+        return out;
+    };
+    auto changedSamples = [](const std::vector<std::vector<float>>& a, const std::vector<std::vector<float>>& b) {
+        std::size_t changed = 0;
+        for (std::size_t l = 0; l < a.size(); ++l)
+            for (std::size_t i = 0; i < a[l].size(); ++i) changed += a[l][i] != b[l][i];
+        return changed;
+    };
+    const auto expected = trace(base);
+    EXPECT_EQ(changedSamples(trace(withBox), expected), 0u) << "a 1 cm box 1000 units away changed visibility";
+    EXPECT_EQ(changedSamples(trace(withNonCaster), expected), 0u) << "a node that casts no shadow changed visibility";
+
+    // The samples are sensitive: the old offset, 1e-4 of a bounding-box
+    // diagonal that the far box stretches to ~1400, would move origins by
+    // ~0.14; a tenth of that already changes some visibility.
+    const RayTracer tracer(base);
+    VisibilityOptions stretched = options;
+    stretched.normalOffset = 0.014f;
+    for (std::size_t l = 0; l < std::size(lights); ++l) {
+        const std::vector<float> moved = tracer.visibility(lights[l], samples, stretched);
+        std::size_t changed = 0;
+        for (std::size_t i = 0; i < moved.size(); ++i) changed += moved[i] != expected[l][i];
+        EXPECT_GT(changed, 0u) << lights[l].name << ": a scene-sized offset must change some of these samples";
+        std::cout << "[ info ] " << lights[l].name << (lights[l].size > 0.0f ? " (soft)" : "") << ": " << changed
+                  << " of " << samples.size() << " samples change with a 0.014 offset\n";
+    }
+}
+
+// Reach: one definition (shaders/light_reach.h, plus facing the light) for
+// the tracer and compare; unreached samples are 0 even with nothing in the way.
+TEST(RayTracer, UnreachedSamplesAreZeroAndReachTellsThemApart) {
+    Scene scene;
+    addInstance(scene, makeQuad(10.0f), glm::vec3(0.0f), /*castsShadows=*/false); // nothing casts
+    const RayTracer tracer(scene);
+    Light spot;
+    spot.name = "spot";
+    spot.type = LightType::Spot;
+    spot.position = {0.0f, 5.0f, 0.0f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.outerConeDeg = 30.0f;
+    spot.range = 6.2f;
+    SurfaceSample facingAway = groundSample(0.5f, 0.0f);
+    facingAway.normal = {0.0f, -1.0f, 0.0f};
+    SurfaceSample invalid = groundSample(0.0f, 0.0f);
+    invalid.valid = false;
+    // In the cone; outside it (35 degrees, 6.1 away); in the cone but beyond
+    // range (6.3 away at 18 degrees); facing away; background.
+    const std::vector<SurfaceSample> samples = {groundSample(1.0f, 0.0f), groundSample(-2.5f, 2.45f),
+                                                {{2.0f, -1.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, true}, facingAway, invalid};
+    EXPECT_EQ(shadowlab::reference::lightReach(spot, samples), (std::vector<std::uint8_t>{1, 0, 0, 0, 0}));
+    EXPECT_EQ(tracer.visibility(spot, samples), (std::vector<float>{1.0f, 0.0f, 0.0f, 0.0f, 0.0f}));
+    const Light sun = directionalLight({0.2f, -1.0f, 0.0f});
+    EXPECT_EQ(shadowlab::reference::lightReach(sun, samples), (std::vector<std::uint8_t>{1, 1, 1, 0, 0}));
+    EXPECT_EQ(tracer.visibility(sun, samples), (std::vector<float>{1.0f, 1.0f, 1.0f, 0.0f, 0.0f}));
 }
 
 TEST(RayTracer, MoveOnlyAndOptionErrors) {

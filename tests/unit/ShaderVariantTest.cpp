@@ -80,10 +80,11 @@ TEST(ShaderVariant, PreambleDefinesEverySwitchTheSourcesTest) {
 }
 
 TEST(ShaderSource, IncludesExpandWithLineDirectivesPerFile) {
-    EXPECT_EQ(s.text.rfind("#version 450 core\n#define X 1\n", 0), 0u);
     const gl::AssembledSource s = gl::assembleShader("lighting.frag", "#define X 1\n", {{"@shadow", "shadow_none.glsl"}});
-    // preamble, lighting.frag, shadowlab_shared.h, light_reach.h (which includes
-    // shadowlab_shared.h again: its include guard keeps one copy), the "@shadow" slot's file.
+    EXPECT_EQ(s.text.rfind("#version 450 core\n#define X 1\n", 0), 0u);
+    // preamble, lighting.frag, shadowlab_shared.h, light_reach.h and the
+    // shadowlab_shared.h it includes (its include guard leaves that copy
+    // empty), then the "@shadow" slot's file.
     ASSERT_EQ(s.files.size(), 6u);
     EXPECT_EQ(s.files[1], "lighting.frag");
     EXPECT_EQ(s.files[2], "shadowlab_shared.h");

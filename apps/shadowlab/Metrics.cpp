@@ -1,0 +1,45 @@
+#include "Metrics.h"
+
+#include <shadowlab/Error.h>
+
+#include <fstream>
+#include <system_error>
+
+namespace shadowlab::tool {
+
+nlohmann::json lightRecord(const Light& light, const LightComparison& c,
+                           const std::map<std::string, std::string>& images) {
+    nlohmann::json record{{"name", c.name},
+                          {"type", toString(light.type)},
+                          {"technique", toString(light.shadow.technique)},
+                          {"soft", c.soft},
+                          {"receiverPixels", c.receiverPixels},
+                          {"referenceShadowedPixels", c.referenceShadowedPixels},
+                          {"edgePixels", c.edgePixels},
+                          {"falseShadow", c.falseShadow},
+                          {"falseLit", c.falseLit},
+                          {"falseShadowAwayFromEdges", c.falseShadowAwayFromEdges},
+                          {"falseLitAwayFromEdges", c.falseLitAwayFromEdges},
+                          {"meanAbsError", c.meanAbsError},
+                          {"rmse", c.rmse}};
+    for (const auto& [key, path] : images) record[key] = path;
+    return record;
+}
+
+void writeJsonAtomically(const std::filesystem::path& path, const nlohmann::json& value) {
+    std::filesystem::path partial = path;
+    partial += ".partial";
+    {
+        std::ofstream out(partial);
+        out << value.dump(2) << "\n";
+        if (!out) throw Error(path.string() + ": cannot write");
+    }
+    std::error_code ec;
+    std::filesystem::rename(partial, path, ec);
+    if (ec) {
+        std::filesystem::remove(partial, ec);
+        throw Error(path.string() + ": cannot write (" + ec.message() + ")");
+    }
+}
+
+} // namespace shadowlab::tool

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# `shadowlab compare` writes metrics.json (atomically) with the numbers it
+# printed, the bench record's per-light fields, and reach-<i>.png beside
+# visibility-<i>.png.
+# Usage: compare.sh SHADOWLAB_BINARY SOURCE_DIR
+set -eu
+tool=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+passed=0
+
+for scene in torus-floating spot-objects; do
+  "$tool" compare "$src/scenes/$scene.json" -o "$scene" --width 160 --height 90 > "$scene.txt" || fail "compare $scene failed"
+  [[ -s $scene/metrics.json ]] || fail "compare $scene did not write metrics.json"
+  [[ ! -e $scene/metrics.json.partial ]] || fail "compare $scene left metrics.json.partial behind"
+  [[ -s $scene/reach-0.png ]] || fail "compare $scene did not write reach-0.png"
+  # reach-0.png is 8-bit greyscale: IHDR bit depth 8, colour type 0.
+  [[ "$(od -An -tu1 -j24 -N2 "$scene/reach-0.png" | tr -s ' ')" == " 8 0" ]] || fail "$scene/reach-0.png is not 8-bit grey"
+  # metrics.json parses, has every field, and says what compare printed.
+  python3 - "$scene/metrics.json" "$scene.txt" <<'PY' || fail "compare $scene: metrics.json does not match its output"
+import json, os, re, sys
+metrics = json.load(open(sys.argv[1]))
+printed = open(sys.argv[2]).read()
+top = ["scene", "sceneFile", "width", "height", "softSamples", "referenceMs", "techniqueImage", "referenceImage", "lights"]
+fields = ["name", "type", "technique", "soft", "receiverPixels", "referenceShadowedPixels", "edgePixels", "falseShadow",
+          "falseLit", "falseShadowAwayFromEdges", "falseLitAwayFromEdges", "meanAbsError", "rmse",
+          "errorImage", "visibilityImage", "reachImage"]
+def check(ok, what):
+    if not ok:
+        print(what); sys.exit(1)
+for key in top: check(key in metrics, "metrics.json: no '%s'" % key)
+check(len(metrics["lights"]) >= 1, "metrics.json: no lights")
+head = re.search(r"scene (\S+), (\d+)x(\d+), reference traced in (\d+) ms", printed)
+check(head is not None, "no header line in: " + printed)
+check((metrics["scene"], metrics["width"], metrics["height"]) == (head[1], int(head[2]), int(head[3])), "scene/size differ")
+check(int(metrics["referenceMs"]) == int(head[4]), "referenceMs %s, printed %s" % (metrics["referenceMs"], head[4]))
+pct = lambda share: "%.3f%%" % (100.0 * share)
+for i, l in enumerate(metrics["lights"]):
+    for key in fields: check(key in l, "light %d: no '%s'" % (i, key))
+    for key in ("errorImage", "visibilityImage", "reachImage"):
+        check(os.path.isfile(os.path.join(os.path.dirname(sys.argv[1]), l[key])), "light %d: %s missing" % (i, l[key]))
+    shadowed = l["referenceShadowedPixels"] / l["receiverPixels"] if l["receiverPixels"] else 0.0
+    expected = [
+        "light %d '%s' (%s, %s, technique %s): %d receiver pixels, %s shadowed in truth"
+        % (i, l["name"], l["type"], "soft" if l["soft"] else "hard", l["technique"], l["receiverPixels"], pct(shadowed)),
+        "false shadow %s, false lit %s\n" % (pct(l["falseShadow"]), pct(l["falseLit"])),
+        "false shadow %s, false lit %s (%d pixels in the 1-pixel edge band)"
+        % (pct(l["falseShadowAwayFromEdges"]), pct(l["falseLitAwayFromEdges"]), l["edgePixels"]),
+        "MAE %g, RMSE %g" % (l["meanAbsError"], l["rmse"]),
+    ]
+    for line in expected: check(line in printed, "not printed: %r" % line)
+PY
+done
+passed=$((passed + 1))
+
+# An output directory that cannot be made is one error line, and no metrics.json.
+touch blocker
+if "$tool" compare "$src/scenes/torus-floating.json" -o blocker/out --width 32 --height 18 > out.txt 2> err.txt; then
+  fail "compare into a file's subdirectory succeeded"
+fi
+[[ $(wc -l < err.txt) -eq 1 ]] && grep -q '^shadowlab: error: ' err.txt || fail "expected one error line: $(cat err.txt)"
+passed=$((passed + 1))
+echo "$passed passed, 0 failed"
