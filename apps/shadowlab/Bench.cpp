@@ -180,24 +180,7 @@ json runBench(Context& context, const BenchArgs& args) {
                 const LightComparison& c = comparison.lights[l];
                 const std::string errorName = stem + "-error-" + std::to_string(l) + ".png";
                 writePng(images / errorName, c.errorImage);
-<<<<<<< HEAD
-                lights.push_back({{"name", c.name},
-                                  {"type", toString(scene.lights[l].type)},
-                                  {"technique", scene.lights[l].shadow.technique},
-                                  {"soft", c.soft},
-                                  {"receiverPixels", c.receiverPixels},
-                                  {"referenceShadowedPixels", c.referenceShadowedPixels},
-                                  {"edgePixels", c.edgePixels},
-                                  {"falseShadow", c.falseShadow},
-                                  {"falseLit", c.falseLit},
-                                  {"falseShadowAwayFromEdges", c.falseShadowAwayFromEdges},
-                                  {"falseLitAwayFromEdges", c.falseLitAwayFromEdges},
-                                  {"meanAbsError", c.meanAbsError},
-                                  {"rmse", c.rmse},
-                                  {"errorImage", "images/" + errorName}});
-=======
                 lights.push_back(lightRecord(scene.lights[l], c, {{"errorImage", "images/" + errorName}}));
->>>>>>> ref-yardstick
             }
             json passes = json::object();
             for (const auto& [name, times] : passTimes) passes[name] = stats(times);

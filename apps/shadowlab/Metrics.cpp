@@ -11,7 +11,7 @@ nlohmann::json lightRecord(const Light& light, const LightComparison& c,
                            const std::map<std::string, std::string>& images) {
     nlohmann::json record{{"name", c.name},
                           {"type", toString(light.type)},
-                          {"technique", toString(light.shadow.technique)},
+                          {"technique", light.shadow.technique},
                           {"soft", c.soft},
                           {"receiverPixels", c.receiverPixels},
                           {"referenceShadowedPixels", c.referenceShadowedPixels},

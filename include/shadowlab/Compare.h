@@ -52,6 +52,7 @@ struct Comparison {
     ImageRGBA8 reference;         ///< the same shading with exact visibility
     FrameStats techniqueFrame;    ///< the technique frame's timings (TimingClock::Auto, surfaces written)
     double referenceMs = 0.0;     ///< wall time of ray tracing, milliseconds
+    SurfaceBuffer surfaces;       ///< the surface points both sides were judged at (the technique frame's base pass)
 };
 
 /// Renders `scene` (already uploaded to `renderer`) with its configured

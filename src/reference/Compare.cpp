@@ -36,7 +36,8 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
     Comparison out;
     out.techniqueFrame = renderer.render(scene, renderOptions);
     out.technique = renderer.readColor();
-    const SurfaceBuffer surfaces = renderer.readSurfaces();
+    out.surfaces = renderer.readSurfaces();
+    const SurfaceBuffer& surfaces = out.surfaces;
     const int w = surfaces.width, h = surfaces.height;
     const std::size_t n = static_cast<std::size_t>(w) * h;
 

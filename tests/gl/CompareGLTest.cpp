@@ -52,7 +52,7 @@ TEST_F(CompareGLTest, ReferenceMatchesTheAnalyticEllipseAwayFromEdges) {
     const Scene scene = sphereOverPlane();
     Renderer renderer(test::glContext());
     const Comparison c = compareAt(renderer, scene, 480, 270);
-    const SurfaceBuffer s = renderer.readSurfaces();  // the same camera and size
+    const SurfaceBuffer& s = c.surfaces;  // the same camera and size
     const int w = s.width, h = s.height;
     const auto& vis = c.lights.at(0).referenceVisibility.pixels;
 
@@ -113,7 +113,7 @@ TEST_F(CompareGLTest, UnshadowedTechniqueIsAllFalseLitAndNeverFalseShadow) {
     // everything), true shadow from the ray-traced visibility image, and
     // "none" lights every pixel, so its false-lit pixels are exactly the truly
     // shadowed receivers; those outside the edge band are drawn full red.
-    const SurfaceBuffer s = renderer.readSurfaces();
+    const SurfaceBuffer& s = c.surfaces;
     const int w = s.width, h = s.height;
     const std::size_t n = static_cast<std::size_t>(w) * h;
     std::vector<std::uint8_t> receiver(n, 0), shadowed(n, 0);
@@ -189,7 +189,7 @@ TEST_F(CompareGLTest, RasterizedPositionsLieWithinTheOriginPush) {
     })", "tilted-plane", ".");
     Renderer renderer(test::glContext());
     renderer.upload(scene);
-    renderer.render(scene, {480, 270, true});
+    renderer.render(scene, {480, 270, TimingClock::Off, true});
     const SurfaceBuffer s = renderer.readSurfaces();
     const glm::dmat4 worldFromObject(scene.drawItems().at(0).worldFromObject);
     const glm::dvec3 origin(worldFromObject * glm::dvec4(0.0, 0.0, 0.0, 1.0));
@@ -226,7 +226,7 @@ TEST_F(CompareGLTest, ReachMaskSeparatesUnreachedFromShadowed) {
     Renderer renderer(test::glContext());
     const Comparison c = compareAt(renderer, scene, 320, 180);
     const LightComparison& l = c.lights.at(0);
-    const SurfaceBuffer s = renderer.readSurfaces();
+    const SurfaceBuffer& s = c.surfaces;
     ASSERT_EQ(l.reach.pixels.size(), l.referenceVisibility.pixels.size());
     std::size_t reached = 0, shadowedReached = 0, unreachedGround = 0, litUnreachedGround = 0;
     for (std::size_t i = 0; i < l.reach.pixels.size(); ++i) {
@@ -253,7 +253,7 @@ TEST_F(CompareGLTest, ReferenceImageUsesExactVisibility) {
     Renderer renderer(test::glContext());
     const Comparison c = compareAt(renderer, scene, 160, 90);
     const auto& vis = c.lights[0].referenceVisibility.pixels;
-    const SurfaceBuffer s = renderer.readSurfaces();
+    const SurfaceBuffer& s = c.surfaces;
     // Where the reference says the ground is shadowed, the reference image has
     // ambient-only shading, darker than the technique image (no shadows).
     std::size_t darker = 0, shadowedPixels = 0;
