@@ -77,14 +77,16 @@ public:
         return *this;
     }
     OptionTableFor& boolean(bool T::*member, std::string key, std::string doc) {
-        add(key, OptionKind::Boolean, "", 0, 1, {}, doc, [member](const T& t) { return t.*member ? 1.0 : 0.0; },
+        std::string noUnit;
+        add(key, OptionKind::Boolean, noUnit, 0, 1, {}, doc, [member](const T& t) { return t.*member ? 1.0 : 0.0; },
             [member](T& t, double v) { t.*member = v != 0.0; });
         return *this;
     }
     template <class E>
     OptionTableFor& choice(E T::*member, std::string key, std::vector<std::string> names, std::string doc) {
         const double last = static_cast<double>(names.size()) - 1.0;
-        add(key, OptionKind::Choice, "", 0, last, std::move(names), doc,
+        std::string noUnit;
+        add(key, OptionKind::Choice, noUnit, 0, last, std::move(names), doc,
             [member](const T& t) { return static_cast<double>(static_cast<int>(t.*member)); },
             [member](T& t, double v) { t.*member = static_cast<E>(static_cast<int>(v)); });
         return *this;

@@ -3,12 +3,23 @@
 #include <shadowlab/Error.h>
 
 #include <algorithm>
+#include <map>
+#include <mutex>
 #include <regex>
 #include <sstream>
 
 namespace shadowlab::gl {
 
 namespace {
+
+struct AddedFiles {
+    std::mutex mutex;
+    std::map<std::string, std::string, std::less<>> files;  // nodes are stable: views stay valid
+};
+AddedFiles& addedFiles() {
+    static AddedFiles added;
+    return added;
+}
 
 std::vector<std::string_view> splitLines(std::string_view text) {
     std::vector<std::string_view> lines;
@@ -48,7 +59,7 @@ void appendFile(std::string_view requested, AssembledSource& out, std::vector<st
             throw Error(stack.back() + ": #include \"" + std::string(requested) + "\": the variant fills no such slot");
         name = it->second;
     }
-    const auto text = stack.empty() && how.inlineText ? how.inlineText : embeddedShader(name);
+    const auto text = stack.empty() && how.inlineText ? how.inlineText : shaderFile(name);
     if (!text) {
         throw Error(stack.empty() ? "shader " + std::string(name) + ": no such embedded shader file"
                                   : stack.back() + ": #include \"" + std::string(name) + "\": no such embedded shader file");
@@ -74,6 +85,23 @@ void appendFile(std::string_view requested, AssembledSource& out, std::vector<st
 }
 
 } // namespace
+
+void addShaderFile(const std::string& name, std::string text) {
+    AddedFiles& added = addedFiles();
+    std::lock_guard lock(added.mutex);
+    if (embeddedShader(name) || added.files.count(name)) throw Error("addShaderFile: '" + name + "' already exists");
+    added.files.emplace(name, std::move(text));
+}
+
+std::optional<std::string_view> shaderFile(std::string_view name) {
+    AddedFiles& added = addedFiles();
+    {
+        std::lock_guard lock(added.mutex);
+        const auto it = added.files.find(name);
+        if (it != added.files.end()) return std::string_view(it->second);
+    }
+    return embeddedShader(name);
+}
 
 AssembledSource assembleShader(std::string_view fileName, std::string_view preamble, const IncludeAliases& aliases,
                                std::optional<std::string_view> inlineText) {
@@ -103,7 +131,7 @@ std::string describeShaderLog(std::string_view log, const AssembledSource& sourc
             std::string text;
             if (fileIndex > 0 && fileIndex < source.files.size()) {
                 const auto file = fileIndex == 1 && !source.inlineText.empty() ? std::optional<std::string_view>(source.inlineText)
-                                                                                 : embeddedShader(name);
+                                                                                 : shaderFile(name);
                 if (file) {
                     auto lines = splitLines(*file);
                     if (lineNo >= 1 && lineNo <= static_cast<int>(lines.size())) {

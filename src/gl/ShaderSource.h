@@ -14,6 +14,11 @@ namespace shadowlab::gl {
 std::optional<std::string_view> embeddedShader(std::string_view name);
 /// Names of all embedded shader files.
 std::vector<std::string_view> embeddedShaderNames();
+/// Adds a shader file at run time (a test's technique, a plug-in). Throws
+/// shadowlab::Error when the name is taken by an embedded or added file.
+void addShaderFile(const std::string& name, std::string text);
+/// An added file's text, else an embedded one's, or nullopt.
+std::optional<std::string_view> shaderFile(std::string_view name);
 
 struct AssembledSource {
     std::string text;

@@ -1,6 +1,7 @@
 // The registry: adding a technique adds one line to builtIn() below.
 #include "techniques/Registry.h"
 
+#include "gl/ShaderSource.h"
 #include "techniques/None.h"
 
 #include <shadowlab/Error.h>
@@ -56,6 +57,8 @@ void registerTechnique(TechniqueEntry entry) {
     if (!entry.options || entry.options->block != entry.name)
         throw Error("registerTechnique: '" + entry.name + "' needs an options table whose block is its name");
     if (!entry.create || entry.shaderFile.empty()) throw Error("registerTechnique: '" + entry.name + "' needs a factory and a shader file");
+    if (!gl::shaderFile(entry.shaderFile))
+        throw Error("registerTechnique: '" + entry.name + "': no shader file '" + entry.shaderFile + "' (embed it or gl::addShaderFile)");
     r.entries.push_back(std::move(entry));
 }
 
