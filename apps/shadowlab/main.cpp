@@ -192,13 +192,11 @@ int runBenchCommand(const tool::BenchArgs& args) {
 // The registered techniques and their options tables (the same tables the
 // scene parser, --set, bench --vary and docs/scene-format.md use).
 int runTechniques(bool markdown) {
+    if (markdown) {
+        std::cout << techniquesMarkdown();
+        return 0;
+    }
     for (const TechniqueInfo& t : techniques()) {
-        if (markdown) {
-            std::cout << "#### `lights[i].shadow." << t.name << "`\n\n" << t.summary << ".\n\n";
-            if (t.options->fields.empty()) std::cout << "No options.\n\n";
-            else std::cout << t.options->markdown() << "\n";
-            continue;
-        }
         std::cout << t.name << ": " << t.summary << "\n";
         for (const OptionField& f : t.options->fields)
             std::cout << "  lights[i].shadow." << t.name << "." << f.key << " = " << t.options->defaultText(f) << "  ("

@@ -23,6 +23,10 @@ struct TechniqueInfo {
 std::vector<TechniqueInfo> techniques();
 /// The technique named `name`, or nullptr.
 const TechniqueInfo* findTechnique(std::string_view name);
+/// The Markdown that docs/scene-format.md carries between its "generated"
+/// markers: the `technique` values and each technique's options table
+/// (`shadowlab techniques --markdown` prints it; a test compares the doc).
+std::string techniquesMarkdown();
 /// Why `technique` cannot shadow `light` (e.g. a light type it does not
 /// handle yet), or an empty string when it can.
 std::string unsupportedReason(std::string_view technique, const Light& light);

@@ -91,8 +91,10 @@ struct Builder {
 
     /// Unit direction in XZ (as x, z) of segment boundary i of n: angle 2*pi*i/n
     /// measured from +X towards -Z.
+    /// Direction of segment i of n around a circle; i == n is i == 0 exactly
+    /// (the seam's positions coincide bit for bit, so the mesh is closed).
     static glm::vec2 direction(int i, int n) {
-        const float phi = kTwoPi * static_cast<float>(i) / static_cast<float>(n);
+        const float phi = kTwoPi * static_cast<float>(i % n) / static_cast<float>(n);
         return {std::cos(phi), -std::sin(phi)};
     }
 };
@@ -183,7 +185,7 @@ Mesh torus(float majorRadius, float minorRadius, int majorSegments, int minorSeg
         const glm::vec2 d = Builder::direction(i, majorSegments);
         const glm::vec3 radial{d.x, 0.0f, d.y};
         for (int j = 0; j <= minorSegments; ++j) {
-            const float theta = kTwoPi * ratio(j, minorSegments);
+            const float theta = kTwoPi * ratio(j % minorSegments, minorSegments);  // j == minorSegments is j == 0 exactly
             const glm::vec3 n = std::cos(theta) * radial + glm::vec3(0.0f, std::sin(theta), 0.0f);
             b.vertex(majorRadius * radial + minorRadius * n, n, {ratio(i, majorSegments), ratio(j, minorSegments)});
         }

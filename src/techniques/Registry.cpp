@@ -81,6 +81,16 @@ const TechniqueInfo* findTechnique(std::string_view name) {
     return &infos.back();
 }
 
+std::string techniquesMarkdown() {
+    std::string out = "| `technique` | what |\n|---|---|\n";
+    for (const TechniqueEntry& e : techniqueEntries()) out += "| `" + e.name + "` | " + e.summary + " |\n";
+    for (const TechniqueEntry& e : techniqueEntries()) {
+        out += "\n#### `lights[i].shadow." + e.name + "`\n\n";
+        out += e.options->fields.empty() ? std::string("No options.\n") : e.options->markdown();
+    }
+    return out;
+}
+
 std::string unsupportedReason(std::string_view technique, const Light& light) {
     const TechniqueEntry* e = findTechniqueEntry(technique);
     if (!e) return "unknown technique '" + std::string(technique) + "'";

@@ -1,0 +1,100 @@
+// Options tables: one table per technique drives the parser (errors with the
+// JSON path), --set, the generated docs; the doc must match the tables.
+#include "ErrorText.h"
+
+#include <shadowlab/Error.h>
+#include <shadowlab/Options.h>
+#include <shadowlab/SceneFile.h>
+#include <shadowlab/Techniques.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace shadowlab;
+
+namespace {
+
+enum class Flavour { Plain, Fancy };
+
+struct Sample {
+    static constexpr const char* kTechnique = "sample";
+    int size = 256;
+    float radius = 1.5f;
+    bool enabled = true;
+    Flavour flavour = Flavour::Fancy;
+};
+
+OptionTable sampleTable() {
+    return OptionTableFor<Sample>("sample")
+        .integer(&Sample::size, "size", 16, 4096, "texels", "side of the map")
+        .number(&Sample::radius, "radius", 0.0, 10.0, "scene units", "filter radius")
+        .boolean(&Sample::enabled, "enabled", "on or off")
+        .choice(&Sample::flavour, "flavour", {"plain", "fancy"}, "how it looks")
+        .build();
+}
+
+} // namespace
+
+TEST(OptionTable, DefaultsRangesAndValuesAreReadFromTheStruct) {
+    const OptionTable t = sampleTable();
+    ASSERT_EQ(t.fields.size(), 4u);
+    EXPECT_EQ(t.defaultText(*t.find("size")), "256");
+    EXPECT_EQ(t.defaultText(*t.find("radius")), "1.5");
+    EXPECT_EQ(t.defaultText(*t.find("enabled")), "true");
+    EXPECT_EQ(t.defaultText(*t.find("flavour")), "\"fancy\"");
+    EXPECT_EQ(OptionTable::rangeText(*t.find("size")), "16..4096");
+    EXPECT_EQ(OptionTable::rangeText(*t.find("flavour")), "\"plain\", \"fancy\"");
+    EXPECT_EQ(t.find("nope"), nullptr);
+    std::any options = t.makeDefault();
+    t.find("size")->set(options, 1024);
+    t.find("flavour")->set(options, 0);
+    t.find("enabled")->set(options, 0);
+    EXPECT_EQ(std::any_cast<Sample&>(options).size, 1024);
+    EXPECT_EQ(std::any_cast<Sample&>(options).flavour, Flavour::Plain);
+    EXPECT_FALSE(std::any_cast<Sample&>(options).enabled);
+    EXPECT_EQ(t.valueText(*t.find("flavour"), options), "\"plain\"");
+}
+
+TEST(OptionTable, MarkdownHasOneRowPerField) {
+    const std::string md = sampleTable().markdown();
+    EXPECT_NE(md.find("| `size` | integer | `256` | 16..4096 | texels | side of the map |\n"), std::string::npos) << md;
+    EXPECT_NE(md.find("| `flavour` | string | `\"fancy\"` | \"plain\", \"fancy\" | - | how it looks |\n"), std::string::npos) << md;
+}
+
+TEST(ShadowSettings, GetReturnsTheBlockOrTheDefaults) {
+    ShadowSettings s;
+    EXPECT_EQ(s.get<Sample>().size, 256);  // no block: defaults
+    s.edit<Sample>().size = 64;
+    EXPECT_EQ(s.get<Sample>().size, 64);
+    EXPECT_EQ(s.options.count("sample"), 1u);
+}
+
+TEST(SceneFileShadow, TechniqueNamesComeFromTheRegistry) {
+    std::string names;
+    for (const TechniqueInfo& t : techniques()) names += (names.empty() ? "" : ", ") + t.name;
+    EXPECT_EQ(errorOf([] { parseScene(R"({"lights": [{"type": "spot", "position": [0, 1, 0], "shadow": {"technique": "mapp"}}]})", "s.json", "."); }),
+              "s.json: lights[0].shadow.technique: unknown technique 'mapp' (expected one of: " + names + ")");
+    EXPECT_EQ(errorOf([] { parseScene(R"({"lights": [{"type": "directional", "shadow": {"mapp": {}}}]})", "s.json", "."); }),
+              "s.json: lights[0].shadow.mapp: unknown key (expected one of: technique, " + names + ")");
+    EXPECT_EQ(errorOf([] { parseScene(R"({"lights": [{"type": "directional", "shadow": {"none": {"size": 1}}}]})", "s.json", "."); }),
+              "s.json: lights[0].shadow.none.size: unknown key (expected one of: )");
+    EXPECT_EQ(errorOf([] { parseScene(R"({"lights": [{"type": "directional"}]})", "s.json", ".", {"lights[0].shadow.technique=mapp"}); }),
+              "--set lights[0].shadow.technique=mapp: lights[0].shadow.technique: unknown technique 'mapp' (expected one of: " + names + ")");
+}
+
+TEST(SceneFormatDoc, CarriesExactlyTheGeneratedTechniqueTables) {
+    std::ifstream in(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "docs" / "scene-format.md");
+    ASSERT_TRUE(in) << "docs/scene-format.md";
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string doc = text.str();
+    const std::string begin = "<!-- BEGIN generated: shadowlab techniques --markdown -->\n", end = "<!-- END generated -->";
+    const auto a = doc.find(begin), b = doc.find(end);
+    ASSERT_NE(a, std::string::npos);
+    ASSERT_NE(b, std::string::npos);
+    EXPECT_EQ(doc.substr(a + begin.size(), b - a - begin.size()), techniquesMarkdown())
+        << "docs/scene-format.md disagrees with the options tables: paste `shadowlab techniques --markdown` between its markers";
+}
