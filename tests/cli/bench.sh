@@ -40,6 +40,26 @@ grep -q '\[##############################\] 4/4' progress.txt || fail "no progre
 records=$(grep -c '"sceneFile"' bench/results.json)
 [[ $records -eq 4 ]] || fail "expected 4 records, got $records"
 grep -q '"median"' bench/results.json || fail "no medians in results.json"
+# Every record names its per-pass clock (llvmpipe here: cpu-finish) and times
+# the frame's passes by name.
+python3 - bench/results.json <<'PY' || fail "results.json clock/passes"
+import json, sys
+r = json.load(open(sys.argv[1]))
+for rec in r["results"]:
+    assert rec["clock"] in ("cpu-finish", "gpu-timestamp"), rec["clock"]
+    assert "base" in rec["passMs"], rec["passMs"].keys()
+    assert rec["frameMs"]["median"] > 0 and rec["passTotalMs"]["median"] > 0
+    assert rec["baseLight"] == 0  # "none" shares the base pass
+PY
+passed=$((passed + 1))
+
+# --clock picks the per-pass clock; a bad one is a one-line error.
+"$tool" bench "$src/scenes/torus-floating.json" --clock cpu-finish --frames 1 --warmup 0 --width 64 --height 36 -o clk >/dev/null 2>&1 \
+  || fail "bench --clock cpu-finish failed"
+grep -q '"clock": "cpu-finish"' clk/results.json || fail "results.json does not name the clock"
+if "$tool" bench --clock sundial -o badclk >out.txt 2>err.txt; then fail "bench --clock sundial succeeded"; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--clock" err.txt || fail "bad --clock: $(cat err.txt)"
+[[ ! -e badclk ]] || fail "bad --clock left badclk behind"
 passed=$((passed + 1))
 
 # The report, rendered by a real browser from disk.

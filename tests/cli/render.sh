@@ -15,4 +15,12 @@ out=$("$tool" render "$src/scenes/torus-resting.json" -o t.png --width 64 --heig
 [[ "$(head -c 8 t.png | od -An -tx1 | tr -d ' \n')" == "89504e470d0a1a0a" ]] || { echo "not a PNG"; exit 1; }
 [[ "$(od -An -tu1 -j16 -N8 t.png | tr -s ' ')" == " 0 0 0 64 0 0 0 48" ]] || { echo "wrong size"; exit 1; }
 "$tool" info | grep -q "GL version: *4\.[5-9]" || { echo "info does not report GL 4.5+"; "$tool" info; exit 1; }
-echo "3 passed, 0 failed"
+# The registered techniques and their generated option tables.
+"$tool" techniques | grep -q "^none: " || { echo "techniques does not list none"; exit 1; }
+"$tool" techniques --markdown | grep -q '^#### `lights\[i\].shadow.none`' || { echo "techniques --markdown"; exit 1; }
+# --debug-images: "none" has no images, so the directory stays empty; the
+# render itself is unchanged.
+out=$("$tool" render "$src/scenes/torus-resting.json" -o d.png --width 64 --height 48 --set lights[0].intensity=0.5 --debug-images dbg)
+[[ "$out" == "d.png" && -d dbg && -z "$(ls dbg)" ]] || { echo "debug images: '$out'"; exit 1; }
+cmp -s d.png t.png || { echo "--debug-images changed the image"; exit 1; }
+echo "5 passed, 0 failed"
