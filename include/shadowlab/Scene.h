@@ -111,6 +111,10 @@ struct Camera {
 
     glm::mat4 viewFromWorld() const;
     glm::mat4 clipFromView(float aspect) const;
+    /// The same perspective with the far plane at infinity (the limit of
+    /// clipFromView as farPlane -> inf; depth 1 is reached only at infinity),
+    /// for shadow volumes whose far caps must never be clipped.
+    glm::mat4 clipFromViewInfiniteFar(float aspect) const;
 };
 
 /// A node of the hierarchy. Transform = translation * rotation * scale,

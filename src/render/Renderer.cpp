@@ -204,6 +204,8 @@ struct Renderer::Impl final : TechniqueHost {
     }
 
     void beginFrame(const Scene& s, glm::ivec2 size, double timeSeconds) {
+        bool infiniteFar = false;
+        for (const Light& light : s.lights) infiniteFar = infiniteFar || technique(light.shadow.technique).needsInfiniteFar(light);
         scene = &s;
         items = s.drawItems();
         itemBounds.clear();
@@ -211,7 +213,7 @@ struct Renderer::Impl final : TechniqueHost {
         const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
         info.emplace(FrameInfo{s, items, itemBounds, size});
         info->viewFromWorld = s.camera.viewFromWorld();
-        info->clipFromView = s.camera.clipFromView(aspect);
+        info->clipFromView = infiniteFar ? s.camera.clipFromViewInfiniteFar(aspect) : s.camera.clipFromView(aspect);
         info->clipFromWorld = info->clipFromView * info->viewFromWorld;
         info->timeSeconds = timeSeconds;
         info->frameIndex = frames;

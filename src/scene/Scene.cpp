@@ -12,6 +12,15 @@ glm::mat4 Camera::clipFromView(float aspect) const {
     return glm::perspective(glm::radians(fovYDeg), aspect, nearPlane, farPlane);
 }
 
+glm::mat4 Camera::clipFromViewInfiniteFar(float aspect) const {
+    // glm::perspective with f -> inf: m[2][2] = -(f+n)/(f-n) -> -1,
+    // m[3][2] = -2fn/(f-n) -> -2n (OpenGL depth range [-1, 1]).
+    glm::mat4 m = clipFromView(aspect);
+    m[2][2] = -1.0f;
+    m[3][2] = -2.0f * nearPlane;
+    return m;
+}
+
 glm::mat4 Node::parentFromLocal() const {
     return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) *
            glm::scale(glm::mat4(1.0f), scale);

@@ -110,6 +110,10 @@ public:
     /// visibility hook reads only what bindLightPass binds). Techniques
     /// that need passes after the base pass (stencil) return false.
     virtual bool sharesBasePass(const Light&) const { return true; }
+    /// Whether the frame's camera needs its far plane at infinity (shadow
+    /// volumes: far caps are never clipped). Any light asking for it turns
+    /// it on for the whole frame; FrameInfo::clipFromView says which was used.
+    virtual bool needsInfiniteFar(const Light&) const { return false; }
     /// `#define` lines for this light's variant of the technique's GLSL file.
     virtual std::string lightPassDefines(const Light&) const { return {}; }
     /// Binds what the GLSL hook reads (textures, the technique's block).

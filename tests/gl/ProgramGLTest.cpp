@@ -9,6 +9,8 @@
 #include "render/ShaderVariant.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/Renderer.h>
+#include <shadowlab/SceneFile.h>
 
 #include <algorithm>
 #include <set>
@@ -53,6 +55,22 @@ TEST_F(ProgramGLTest, TheContextCacheCompilesEachProgramOnce) {
     const gl::Program& second = cache.get(v.program());
     EXPECT_EQ(&first, &second);
     EXPECT_EQ(cache.compiles(), before + 1);
+}
+
+TEST_F(ProgramGLTest, ASecondRendererOnTheContextCompilesNothing) {
+    // bench makes a Renderer per combination: the programs outlive it.
+    const Scene scene = defaultScene();
+    gl::ProgramCache& cache = *test::glContext().impl().programs;
+    {
+        Renderer first(test::glContext());
+        first.upload(scene);
+        first.render(scene, {64, 36});
+    }
+    const std::size_t compiled = cache.compiles();
+    Renderer second(test::glContext());
+    second.upload(scene);
+    second.render(scene, {64, 36});
+    EXPECT_EQ(cache.compiles(), compiled);
 }
 
 TEST_F(ProgramGLTest, CompileErrorNamesFileLineAndText) {

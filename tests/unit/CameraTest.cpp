@@ -60,3 +60,21 @@ TEST(Scene, EmptySceneHasInfiniteEmptyBounds) {
     const auto [lo, hi] = s.worldBounds();
     EXPECT_GT(lo.x, hi.x);
 }
+
+TEST(Camera, InfiniteFarIsTheLimitOfFarPlanes) {
+    Camera cam;
+    const glm::vec3 forward = glm::normalize(cam.target - cam.position);
+    const glm::mat4 infinite = cam.clipFromViewInfiniteFar(1.5f) * cam.viewFromWorld();
+    // The near plane still maps to depth -1 (NDC), and nothing finite reaches +1.
+    EXPECT_NEAR(project(infinite, cam.position + cam.nearPlane * forward).z, -1.0f, 1e-5f);
+    const glm::vec4 far = infinite * glm::vec4(cam.position + 1e6f * forward, 1.0f);
+    EXPECT_LT(far.z / far.w, 1.0f);
+    // Points at infinity (w = 0 directions) land exactly on depth 1.
+    const glm::vec4 atInfinity = infinite * glm::vec4(forward, 0.0f);
+    EXPECT_NEAR(atInfinity.z / atInfinity.w, 1.0f, 1e-6f);
+    // A large finite far plane gives almost the same matrix.
+    cam.farPlane = 1e7f;
+    const glm::mat4 big = cam.clipFromView(1.5f), inf = cam.clipFromViewInfiniteFar(1.5f);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_NEAR(big[c][r], inf[c][r], 1e-6f) << c << "," << r;
+}
