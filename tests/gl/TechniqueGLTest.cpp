@@ -244,7 +244,88 @@ const OptionTable& heavyTable() {
     return t;
 }
 
-// Registers both test techniques once per test binary.
+// --- "test-adjacency": draws with adjacency, a tinted hook, frame facts ------
+
+struct AdjacencyOptions {
+    static constexpr const char* kTechnique = "test-adjacency";
+};
+
+const char* kPlainVert = R"(#include "shadowlab_shared.h"
+layout(location = 0) in vec3 inPosition;
+void main() { gl_Position = frame.clipFromWorld * draw.worldFromObject * vec4(inPosition, 1.0); }
+)";
+// Passes each triangle of a GL_TRIANGLES_ADJACENCY primitive through
+// (vertices 0, 2, 4), and checks that each neighbour (1, 3, 5) is a real
+// triangle's vertex: the adjacency builder marks an open edge with the
+// triangle's own opposite vertex, and such a triangle is drawn with 0.5.
+const char* kPassGeom = R"(layout(triangles_adjacency) in;
+layout(triangle_strip, max_vertices = 3) out;
+out float vOk;
+void main() {
+    float ok = 1.0;
+    for (int e = 0; e < 3; ++e) {
+        vec4 own = gl_in[(2 * e + 4) % 6].gl_Position, across = gl_in[2 * e + 1].gl_Position;
+        if (own == across) ok = 0.5;
+    }
+    for (int i = 0; i < 6; i += 2) { gl_Position = gl_in[i].gl_Position; vOk = ok; EmitVertex(); }
+    EndPrimitive();
+}
+)";
+const char* kOkFrag = "in float vOk;\nlayout(location = 0) out vec4 color;\nvoid main() { color = vec4(vOk); }\n";
+const char* kOneFrag = "layout(location = 0) out vec4 color;\nvoid main() { color = vec4(1.0); }\n";
+const char* kTintHook = "vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) { return vec3(1.0, 0.5, 0.25); }\n";
+
+struct FrameFacts {
+    std::uint64_t frameIndex = 0;
+    double timeSeconds = -1.0;
+};
+FrameFacts facts;
+
+class AdjacencyProbe final : public Technique {
+public:
+    bool hasShadowPass(const Light&) const override { return true; }
+    void renderShadowPass(TechniqueHost& host, const FrameInfo& frame, const LightView&) override {
+        facts = {frame.frameIndex, frame.timeSeconds};
+        for (int i = 0; i < 2; ++i) {
+            if (!targets_[i]) {
+                targets_[i] = gl::Texture(GL_TEXTURE_2D);
+                glTextureStorage2D(targets_[i].id(), 1, GL_RGBA8, kSize, kSize);
+                fbos_[i] = gl::Framebuffer();
+                glNamedFramebufferTexture(fbos_[i].id(), GL_COLOR_ATTACHMENT0, targets_[i].id(), 0);
+            }
+            glBindFramebuffer(GL_FRAMEBUFFER, fbos_[i].id());
+            glViewport(0, 0, kSize, kSize);
+            gl::RenderState state;
+            state.depthTest = false;
+            host.apply(state);
+            const float zero[4] = {0, 0, 0, 0};
+            glClearNamedFramebufferfv(fbos_[i].id(), GL_COLOR, 0, zero);
+            if (i == 0) {
+                host.drawItems(ItemFilter::Casters, host.program({{{GL_VERTEX_SHADER, "test-plain.vert", kPlainVert},
+                                                                   {GL_FRAGMENT_SHADER, "test-one.frag", kOneFrag}}, ""}));
+            } else {
+                host.drawItems(ItemFilter::Casters,
+                               host.program({{{GL_VERTEX_SHADER, "test-plain.vert", kPlainVert}, {GL_GEOMETRY_SHADER, "test-pass.geom", kPassGeom},
+                                              {GL_FRAGMENT_SHADER, "test-ok.frag", kOkFrag}}, ""}),
+                               {}, Topology::TrianglesAdjacency);
+            }
+        }
+    }
+    void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, std::vector<DebugImage>& out) override {
+        for (int i = 0; i < 2; ++i) {
+            ImageRGBA8 image{kSize, kSize, std::vector<std::uint8_t>(static_cast<std::size_t>(kSize) * kSize * 4)};
+            glGetTextureImage(targets_[i].id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());
+            out.push_back({i == 0 ? "triangles" : "adjacency", std::move(image)});
+        }
+    }
+
+private:
+    static constexpr int kSize = 128;
+    gl::Texture targets_[2]{gl::Texture(gl::NoCreate), gl::Texture(gl::NoCreate)};
+    gl::Framebuffer fbos_[2]{gl::Framebuffer(gl::NoCreate), gl::Framebuffer(gl::NoCreate)};
+};
+
+// Registers the test techniques once per test binary.
 void registerTestTechniques() {
     static const bool done = [] {
         gl::addShaderFile("shadow_test_stencil_map.glsl", kHook);
@@ -253,6 +334,10 @@ void registerTestTechniques() {
         registerTechnique({"test-heavy", "test: a deliberately slow shadow pass", &heavyTable(), "shadow_none.glsl",
                            [] { return std::make_unique<Heavy>(); },
                            [](const Light& l) { return l.type == LightType::Point ? std::string("test-heavy: no point lights") : std::string(); }});
+        static const OptionTable adjacencyTable = OptionTableFor<AdjacencyOptions>("test-adjacency").build();
+        gl::addShaderFile("shadow_test_tint.glsl", kTintHook);
+        registerTechnique({"test-adjacency", "test: adjacency draws, a tinted hook, frame facts", &adjacencyTable, "shadow_test_tint.glsl",
+                           [] { return std::make_unique<AdjacencyProbe>(); }});
         return true;
     }();
     (void)done;
@@ -438,4 +523,51 @@ TEST_F(TechniqueGLTest, AnUnsupportedLightIsAnErrorNamingTheJsonPath) {
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()), "p.json: lights[0].shadow.technique: test-heavy: no point lights");
     }
+}
+
+TEST_F(TechniqueGLTest, AdjacencyDrawsCoverTheSameTrianglesWithRealNeighbours) {
+    // Closed casters (box, sphere): every edge has a neighbour off its line.
+    Scene scene = twoSuns("test-adjacency");
+    scene.lights.pop_back();
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    renderer.render(scene, {64, 48});
+    const std::vector<DebugImage> images = renderer.debugImages(scene);
+    ASSERT_EQ(images.size(), 2u);
+    const ImageRGBA8& plain = images[0].image;
+    const ImageRGBA8& adjacency = images[1].image;
+    std::size_t covered = 0, mismatched = 0, degenerate = 0;
+    for (std::size_t i = 0; i < plain.pixels.size(); i += 4) {
+        covered += plain.pixels[i] == 255;
+        mismatched += (plain.pixels[i] > 0) != (adjacency.pixels[i] > 0);
+        degenerate += adjacency.pixels[i] > 0 && adjacency.pixels[i] < 255;
+    }
+    // The box and the ball cover about 3 % of the 128x128 view (470 pixels measured).
+    EXPECT_GT(covered, 200u);
+    EXPECT_EQ(mismatched, 0u) << "the adjacency draw covers exactly the triangles";
+    EXPECT_EQ(degenerate, 0u) << "closed meshes have a real neighbour across every edge";
+}
+
+TEST_F(TechniqueGLTest, ColouredVisibilityAndFrameFactsReachTheTechnique) {
+    Scene scene = twoSuns("test-adjacency");
+    scene.lights.pop_back();
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options{64, 48};
+    options.timeSeconds = 2.5;
+    renderer.render(scene, options);
+    renderer.render(scene, options);
+    EXPECT_EQ(facts.frameIndex, 1u) << "the second frame of this renderer";
+    EXPECT_EQ(facts.timeSeconds, 2.5);
+    const std::vector<glm::vec3> rgb = renderer.readVisibilityRgb(scene, 0);
+    const std::vector<float> mean = renderer.readVisibility(scene, 0);
+    std::size_t tinted = 0;
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+        if (rgb[i] == glm::vec3(0.0f)) continue;  // background
+        if (rgb[i] == glm::vec3(1.0f)) continue;  // casters: receivesShadows false, lit whatever the hook says
+        ++tinted;
+        EXPECT_EQ(rgb[i], glm::vec3(1.0f, 0.5f, 0.25f)) << i;
+        EXPECT_FLOAT_EQ(mean[i], (1.0f + 0.5f + 0.25f) / 3.0f) << i;
+    }
+    EXPECT_GT(tinted, 1000u) << "the ground receives the tinted visibility";
 }
