@@ -4,6 +4,7 @@
 // after the base pass, time their own passes, and leave the base pass's
 // output as it was. Checked against the ray-traced reference.
 #include "GLTestContext.h"
+#include "ImageArtifacts.h"
 
 #include "gl/ShaderSource.h"
 #include "techniques/Registry.h"
@@ -475,6 +476,8 @@ TEST_F(TechniqueGLTest, BasePassOutputIsUnchangedAndTheStencilKeepsCastersOutOfT
     EXPECT_GT(casters, 2000u);
     EXPECT_GT(litGround, 20000u);
     EXPECT_GT(darkGround, 50u) << "the two shadows overlap somewhere";
+    test::saveImagesIfFailed("technique-vs-unshadowed", c.technique, lit);
+    test::saveImagesIfFailed("technique-vs-ambient", c.technique, ambient);
 }
 
 TEST_F(TechniqueGLTest, DebugImagesComeThroughTheHook) {
@@ -546,6 +549,7 @@ TEST_F(TechniqueGLTest, AdjacencyDrawsCoverTheSameTrianglesWithRealNeighbours) {
     EXPECT_GT(covered, 200u);
     EXPECT_EQ(mismatched, 0u) << "the adjacency draw covers exactly the triangles";
     EXPECT_EQ(degenerate, 0u) << "closed meshes have a real neighbour across every edge";
+    test::saveImagesIfFailed("adjacency-vs-triangles", adjacency, plain);
 }
 
 TEST_F(TechniqueGLTest, ColouredVisibilityAndFrameFactsReachTheTechnique) {
