@@ -16,6 +16,19 @@ struct Vertex {
     glm::vec3 normal;
     glm::vec2 uv;
 };
+// Attributes 0 position, 1 normal, 2 uv (scene.vert) from `vertices`, indices from `indices`.
+void describeVertices(const gl::VertexArray& array, const gl::Buffer& vertices, const gl::Buffer& indices) {
+    const GLuint vao = array.id();
+    glVertexArrayVertexBuffer(vao, 0, vertices.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao, indices.id());
+    const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
+    const GLint sizes[] = {3, 3, 2};
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+        glVertexArrayAttribBinding(vao, a, 0);
+    }
+}
 } // namespace
 
 GpuScene::GpuScene(const Scene& scene) {
@@ -31,16 +44,7 @@ GpuScene::GpuScene(const Scene& scene) {
                              vertices.empty() ? nullptr : vertices.data(), 0);
         glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, mesh.indices.size()) * 4),
                              mesh.indices.empty() ? nullptr : mesh.indices.data(), 0);
-        const GLuint vao = gpu.vao.id();
-        glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(Vertex));
-        glVertexArrayElementBuffer(vao, gpu.indices.id());
-        const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
-        const GLint sizes[] = {3, 3, 2};
-        for (GLuint a = 0; a < 3; ++a) {
-            glEnableVertexArrayAttrib(vao, a);
-            glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
-            glVertexArrayAttribBinding(vao, a, 0);
-        }
+        describeVertices(gpu.vao, gpu.vertices, gpu.indices);
         gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
         for (const glm::vec3& p : mesh.positions) gpu.bounds.add(p);
         meshes_.push_back(std::move(gpu));
@@ -77,16 +81,7 @@ const gl::Buffer& GpuScene::adjacencyIndices(int mesh, const Mesh& source) {
                              indices.empty() ? nullptr : indices.data(), 0);
         // A second vertex array: same vertices, the adjacency indices.
         m.adjacencyArray = gl::VertexArray();
-        const GLuint vao = m.adjacencyArray.id();
-        glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, sizeof(Vertex));
-        glVertexArrayElementBuffer(vao, m.adjacency.id());
-        const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
-        const GLint sizes[] = {3, 3, 2};
-        for (GLuint a = 0; a < 3; ++a) {
-            glEnableVertexArrayAttrib(vao, a);
-            glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
-            glVertexArrayAttribBinding(vao, a, 0);
-        }
+        describeVertices(m.adjacencyArray, m.vertices, m.adjacency);
     }
     return m.adjacency;
 }

@@ -35,4 +35,21 @@ gl::ProgramKey ShaderVariant::program() const {
             {{"@shadow", technique ? techniqueFile : std::string("shadow_none.glsl")}}};
 }
 
+std::vector<ShaderVariant> ShaderVariant::all() {
+    std::vector<ShaderVariant> out;
+    for (int bits = 0; bits < 64; ++bits)
+        for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point}) {
+            ShaderVariant v;
+            v.ambient = bits & 1;
+            v.light = bits & 2;
+            v.baseColorTexture = bits & 4;
+            v.writeSurfaces = bits & 8;
+            v.screenVisibility = bits & 16;
+            v.outputVisibility = bits & 32;
+            v.lightType = light;
+            out.push_back(v);
+        }
+    return out;
+}
+
 } // namespace shadowlab

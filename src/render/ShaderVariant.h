@@ -27,6 +27,9 @@ struct ShaderVariant {
     std::string preamble() const;
     /// The program: scene.vert + lighting.frag with preamble and slot.
     gl::ProgramKey program() const;
+    /// Every combination of the switches and light types (technique "none"),
+    /// duplicates included (fields that do not apply): for tests and warm-up.
+    static std::vector<ShaderVariant> all();
 };
 
 } // namespace shadowlab

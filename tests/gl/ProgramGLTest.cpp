@@ -22,22 +22,13 @@ class ProgramGLTest : public GLTest {};
 
 TEST_F(ProgramGLTest, EveryVariantCompilesAndLinks) {
     std::set<std::string> built;
-    for (int bits = 0; bits < 64; ++bits)
-        for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point}) {
-            ShaderVariant v;
-            v.ambient = bits & 1;
-            v.light = bits & 2;
-            v.baseColorTexture = bits & 4;
-            v.writeSurfaces = bits & 8;
-            v.screenVisibility = bits & 16;
-            v.outputVisibility = bits & 32;
-            v.lightType = light;
-            const gl::ProgramKey key = v.program();
-            if (!built.insert(key.id()).second) continue;
-            SCOPED_TRACE(key.preamble);
-            gl::Program program(key);
-            EXPECT_NE(program.id(), 0u);
-        }
+    for (const ShaderVariant& v : ShaderVariant::all()) {
+        const gl::ProgramKey key = v.program();
+        if (!built.insert(key.id()).second) continue;
+        SCOPED_TRACE(key.preamble);
+        gl::Program program(key);
+        EXPECT_NE(program.id(), 0u);
+    }
     // Without a light: ambient x texture x surfaces = 8 programs (light type
     // and the visibility modes do not apply); with one: the same 8 x 3 light
     // types x 4 combinations of the two visibility switches = 96.

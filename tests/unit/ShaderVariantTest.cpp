@@ -12,25 +12,6 @@
 
 using namespace shadowlab;
 
-namespace {
-// Every combination of the renderer's own switches.
-std::vector<ShaderVariant> allVariants() {
-    std::vector<ShaderVariant> out;
-    for (int bits = 0; bits < 64; ++bits)
-        for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point}) {
-            ShaderVariant v;
-            v.ambient = bits & 1;
-            v.light = bits & 2;
-            v.baseColorTexture = bits & 4;
-            v.writeSurfaces = bits & 8;
-            v.screenVisibility = bits & 16;
-            v.outputVisibility = bits & 32;
-            v.lightType = light;
-            out.push_back(v);
-        }
-    return out;
-}
-} // namespace
 
 TEST(ShaderVariant, DistinctVariantsHaveDistinctPrograms) {
     // Two variants get the same program exactly when they differ only in
@@ -44,9 +25,9 @@ TEST(ShaderVariant, DistinctVariantsHaveDistinctPrograms) {
                                v.screenVisibility, v.outputVisibility);
     };
     std::map<std::string, std::set<decltype(canonical(ShaderVariant{}))>> byProgram;
-    for (const ShaderVariant& v : allVariants()) byProgram[v.program().id()].insert(canonical(v));
+    for (const ShaderVariant& v : ShaderVariant::all()) byProgram[v.program().id()].insert(canonical(v));
     std::set<decltype(canonical(ShaderVariant{}))> distinct;
-    for (const ShaderVariant& v : allVariants()) distinct.insert(canonical(v));
+    for (const ShaderVariant& v : ShaderVariant::all()) distinct.insert(canonical(v));
     EXPECT_EQ(byProgram.size(), distinct.size());
     for (const auto& [id, variants] : byProgram) EXPECT_EQ(variants.size(), 1u) << id;
 }
