@@ -155,7 +155,6 @@ json runBench(Context& context, const BenchArgs& args) {
     std::vector<std::string> scenes = args.scenes;
     if (scenes.empty()) scenes.push_back("");
     const std::size_t runs = countRuns(scenes.size(), variations); // before building them: 10^7 would fill memory
-    std::fprintf(stderr, "bench: %zu run%s\n", runs, runs == 1 ? "" : "s");
     const auto combos = combinations(variations);
 
     // Validate every scene and combination before the long run starts.
@@ -174,6 +173,7 @@ json runBench(Context& context, const BenchArgs& args) {
             }
         }
 
+    std::fprintf(stderr, "bench: %zu run%s\n", runs, runs == 1 ? "" : "s");
     fs::create_directories(args.output / "images");
     const std::size_t total = scenes.size() * combos.size();
     Progress progress(total);

@@ -134,7 +134,7 @@ private:
         for (std::size_t i = 0; i < gltf_.nodes.size(); ++i) {
             for (int c : gltf_.nodes[i].children) {
                 if (c < 0 || c >= static_cast<int>(gltf_.nodes.size()))
-                    fail(nodeName(static_cast<int>(i)) + ": child index " + std::to_string(c) + " out of range");
+                    fail("node index " + std::to_string(c) + " out of range (a child of " + nodeName(static_cast<int>(i)) + ")");
                 if (c == static_cast<int>(i)) fail(nodeName(c) + " is its own child (cycle)");
                 if (parentOf[static_cast<std::size_t>(c)] >= 0)
                     fail(nodeName(c) + " has two parents (nodes " + std::to_string(parentOf[static_cast<std::size_t>(c)]) + " and " +
