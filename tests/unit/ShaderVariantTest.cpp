@@ -41,9 +41,12 @@ TEST(ShaderVariant, PreambleDefinesEverySwitchTheSourcesTest) {
 TEST(ShaderSource, IncludesExpandWithLineDirectivesPerFile) {
     const gl::AssembledSource s = gl::assembleShader("lighting.frag", "#define X 1\n");
     EXPECT_EQ(s.text.rfind("#version 450 core\n#define X 1\n", 0), 0u);
-    ASSERT_EQ(s.files.size(), 3u);  // preamble, lighting.frag, shadowlab_shared.h
+    // preamble, lighting.frag, shadowlab_shared.h, light_reach.h and the
+    // shadowlab_shared.h it includes (its include guard leaves that copy empty).
+    ASSERT_EQ(s.files.size(), 5u);
     EXPECT_EQ(s.files[1], "lighting.frag");
     EXPECT_EQ(s.files[2], "shadowlab_shared.h");
+    EXPECT_EQ(s.files[3], "light_reach.h");
     EXPECT_NE(s.text.find("#line 1 2\n"), std::string::npos);
     EXPECT_EQ(s.text.find("#include \""), std::string::npos);  // quoted includes are all expanded
 }
