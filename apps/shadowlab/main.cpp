@@ -239,7 +239,7 @@ int runInfo() {
 int main(int argc, char** argv) {
     CLI::App app{"shadowlab: real-time shadows on OpenGL 4.5, measured against exact ray-traced shadows"};
     app.require_subcommand(1);
-    app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string("shadowlab: error: ") + e.what() + "\n"; });
+    app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + text::escapeControl(e.what()) + "\n"; });
 
     RenderArgs renderArgs;
     CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG image");

@@ -142,6 +142,20 @@ private:
                 parentOf[static_cast<std::size_t>(c)] = static_cast<int>(i);
             }
         }
+        // With one parent each, a cycle is a parent chain that returns to a
+        // node on the chain being walked: mark chains, each node once (O(n)).
+        enum : char { Unseen, OnChain, Done };
+        std::vector<char> state(gltf_.nodes.size(), Unseen);
+        std::vector<int> chain;
+        for (std::size_t start = 0; start < gltf_.nodes.size(); ++start) {
+            chain.clear();
+            for (int n = static_cast<int>(start); n >= 0 && state[static_cast<std::size_t>(n)] != Done; n = parentOf[static_cast<std::size_t>(n)]) {
+                if (state[static_cast<std::size_t>(n)] == OnChain) fail(nodeName(n) + " is referenced more than once (a cycle: it is its own ancestor)");
+                state[static_cast<std::size_t>(n)] = OnChain;
+                chain.push_back(n);
+            }
+            for (int n : chain) state[static_cast<std::size_t>(n)] = Done;
+        }
     }
 
     /// Every node's composed transform must be finite (a translation of

@@ -83,7 +83,7 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"glb", "repro-accessor-offset-wraps.glb", "accessor 0 (POSITION): byteOffset 18446744073709551604 and count 3 read past the end"},
         Case{"gltf", "repro-accessor-count-huge.gltf", "accessor 0 (POSITION): count 1537228672809129301 exceeds the limit of 16777216 elements"},
         Case{"gltf", "repro-view-offset-wraps.gltf", "bufferView"},
-        Case{"gltf", "repro-node-cycle.gltf", "cycle"},
+        Case{"gltf", "repro-node-cycle.gltf", "node 0 is referenced more than once (a cycle: it is its own ancestor)"},
         Case{"gltf", "repro-node-two-parents.gltf", "node 2 has two parents (nodes 0 and 1)"},
         Case{"gltf", "repro-translation-1e300.gltf", "node 0: transform values must be finite numbers of magnitude <= 3e38"},
         Case{"gltf", "repro-scale-overflows-composed.gltf", "node 1: transform is not finite after composing its parents'"},
