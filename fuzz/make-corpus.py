@@ -61,6 +61,10 @@ gltf_cases = {
 }
 for name, doc in gltf_cases.items():
     write("gltf", name, json.dumps(doc))
+# Found by fuzzing: a buffer URI naming a directory (tinygltf took its size as 2^63 - 1).
+write("gltf", "repro-buffer-uri-directory.gltf", json.dumps(gltf(uri=".")))
+write("gltf", "repro-buffer-uri-percent.gltf",
+      '{"asset": {"version": "2.0"}, "buffers": [{"byteLength": 36, "uri": "%%%ageAAAAAgD8AAAAA"}], "bufene": 0}')
 write("gltf", "repro-json-nested-10000.gltf", '{"asset":{"version":"2.0"},"extras":' + "[" * 10000 + "]" * 10000 + "}")
 write("gltf", "repro-texture-16385x1.gltf", json.dumps(gltf(extra={
     "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],

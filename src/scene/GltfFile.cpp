@@ -21,6 +21,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <map>
 
@@ -463,6 +464,33 @@ bool loadImageChecked(tinygltf::Image* image, const int index, std::string* err,
     return tinygltf::LoadImageData(image, index, err, warn, reqWidth, reqHeight, bytes, size, user);
 }
 
+/// tinygltf's file access for external URIs, limited to regular files: its
+/// own reader takes a directory's size as 2^63 - 1 and allocates that.
+bool fileExists(const std::string& path, void*) {
+    std::error_code ec;
+    return fs::exists(path, ec); // a directory exists; reading it is the error
+}
+
+bool readWholeFileChecked(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) {
+        if (err) *err += "'" + path + "' is not a regular file\n";
+        return false;
+    }
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec || size > kMaxExternalFileBytes) {
+        if (err) *err += "'" + path + "': " + (ec ? ec.message() : "larger than " + std::to_string(kMaxExternalFileBytes) + " bytes") + "\n";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out->resize(static_cast<std::size_t>(size));
+    if (!in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+        if (err) *err += "'" + path + "': read error\n";
+        return false;
+    }
+    return true;
+}
+
 std::uint32_t readLittleEndian32(const std::string& bytes, std::size_t at) {
     std::uint32_t v = 0;
     for (int k = 3; k >= 0; --k) v = v << 8 | static_cast<std::uint8_t>(bytes[at + static_cast<std::size_t>(k)]);
@@ -498,6 +526,7 @@ ImportedModel parseGltf(const std::string& bytes, const std::string& file, const
         throw Error(file + ": JSON nested deeper than " + std::to_string(text::kMaxJsonDepth) + " levels");
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&loadImageChecked, nullptr);
+    loader.SetFsCallbacks({&fileExists, &tinygltf::ExpandFilePath, &readWholeFileChecked, &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string err, warn;
     const auto length = static_cast<unsigned int>(bytes.size());

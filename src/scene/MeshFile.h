@@ -54,6 +54,8 @@ ImportedModel parseGltf(const std::string& bytes, const std::string& name, const
 constexpr std::size_t kMaxAccessorElements = std::size_t(1) << 24;
 constexpr std::size_t kMaxImagePixels = std::size_t(1) << 26;
 constexpr int kMaxImageSide = 65536;
+/// Largest external file (glTF buffer or image URI) read: 1 GiB.
+constexpr std::uintmax_t kMaxExternalFileBytes = std::uintmax_t(1) << 30;
 
 namespace meshfile {
 // Shared by the OBJ and glTF loaders.

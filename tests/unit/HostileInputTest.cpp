@@ -88,6 +88,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"gltf", "repro-translation-1e300.gltf", "node 0: transform values must be finite numbers of magnitude <= 3e38"},
         Case{"gltf", "repro-scale-overflows-composed.gltf", "node 1: transform is not finite after composing its parents'"},
         Case{"gltf", "repro-json-nested-10000.gltf", "JSON nested deeper than 200 levels"},
+        // Found by fuzzing: a buffer URI that resolves to a directory.
+        Case{"gltf", "repro-buffer-uri-directory.gltf", "is not a regular file"},
+        Case{"gltf", "repro-buffer-uri-percent.gltf", "is not a regular file"},
         Case{"glb", "repro-json-nested-10000.glb", "JSON nested deeper than 200 levels"},
         // OBJ: control bytes in a quoted word are escaped.
         Case{"obj", "repro-control-bytes.obj", ":3: bad number '1\\v\\f\\r' after 'v'"},
