@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages shadowlab needs to build, test and render.
+# Installs the Debian packages shadowlab needs to build, test and render
+# (clang and its libFuzzer runtime build the fuzz targets, scripts/fuzz.sh).
 # Skips packages that are already installed; uses sudo when not root.
 # Usage: scripts/install-deps.sh [--no-browser]
 #   --no-browser  skip Chromium (only the report screenshot test needs it)
@@ -12,6 +13,7 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev libcli11-dev
   libimgui-dev libembree-dev
   googletest libgtest-dev
+  clang libclang-rt-14-dev
   glmark2-data xvfb xauth
 )
 if [[ "${1:-}" != "--no-browser" ]]; then

@@ -7,6 +7,8 @@
 #include <shadowlab/Renderer.h>
 #include <shadowlab/SceneFile.h>
 
+#include "core/Text.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -59,6 +61,52 @@ std::vector<std::vector<std::string>> combinations(const std::vector<Variation>&
     return out;
 }
 
+std::size_t countRuns(std::size_t sceneCount, const std::vector<Variation>& variations) {
+    std::size_t runs = sceneCount;
+    std::string product = std::to_string(sceneCount) + " scene" + (sceneCount == 1 ? "" : "s");
+    for (const Variation& v : variations) product += " x " + std::to_string(v.values.size());
+    for (const Variation& v : variations) {
+        // runs * size > limit, tested by division so that it cannot overflow.
+        if (!v.values.empty() && runs > kMaxBenchRuns / v.values.size())
+            throw Error("--vary: " + product + " values make more than " + std::to_string(kMaxBenchRuns) +
+                        " runs (the limit); vary fewer settings at a time");
+        runs *= v.values.size();
+    }
+    return runs;
+}
+
+StagingDirectory::StagingDirectory(fs::path target) : target_(std::move(target)) {
+    staging_ = target_;
+    staging_ += ".partial-" + std::to_string(getpid());
+    std::error_code ec;
+    fs::remove_all(staging_, ec);
+    fs::create_directories(staging_, ec);
+    if (ec) throw Error(staging_.string() + ": cannot create directory (" + ec.message() + ")");
+}
+
+StagingDirectory::~StagingDirectory() {
+    if (committed_) return;
+    std::error_code ec;
+    fs::remove_all(staging_, ec);
+}
+
+void StagingDirectory::commit() {
+    std::error_code ec;
+    if (!fs::exists(target_)) {
+        fs::rename(staging_, target_, ec);
+        if (ec) throw Error(target_.string() + ": cannot move the results into place (" + ec.message() + ")");
+    } else {
+        for (const fs::directory_entry& entry : fs::directory_iterator(staging_)) {
+            const fs::path destination = target_ / entry.path().filename();
+            fs::remove_all(destination, ec);
+            fs::rename(entry.path(), destination, ec);
+            if (ec) throw Error(destination.string() + ": cannot move into place (" + ec.message() + ")");
+        }
+        fs::remove_all(staging_, ec);
+    }
+    committed_ = true;
+}
+
 namespace {
 
 json stats(std::vector<double> values) {
@@ -78,7 +126,7 @@ public:
         const int filled = static_cast<int>(width * done / std::max<std::size_t>(total_, 1));
         std::string bar(static_cast<std::size_t>(filled), '#');
         bar.resize(width, '.');
-        std::fprintf(stderr, "%s[%s] %zu/%zu %s%s", tty_ ? "\r\033[K" : "", bar.c_str(), done, total_, what.c_str(),
+        std::fprintf(stderr, "%s[%s] %zu/%zu %s%s", tty_ ? "\r\033[K" : "", bar.c_str(), done, total_, text::escapeControl(what).c_str(),
                      tty_ ? "" : "\n");
         if (tty_ && done == total_) std::fputc('\n', stderr);
         std::fflush(stderr);
@@ -89,9 +137,12 @@ private:
     bool tty_;
 };
 
-std::string slug(const std::string& text) {
+// A file-name part from a label, at most kMaxSlug characters: a 300-character
+// scene name must not make a name past the file system's 255-byte limit.
+std::string slug(const std::string& label) {
+    constexpr std::size_t kMaxSlug = 80;
     std::string out;
-    for (char c : text) out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' ? c : '_';
+    for (char c : label.substr(0, kMaxSlug)) out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' ? c : '_';
     return out;
 }
 
@@ -102,9 +153,10 @@ json runBench(Context& context, const BenchArgs& args) {
     if (args.warmup < 0) throw Error("--warmup " + std::to_string(args.warmup) + ": expected 0 or more");
     std::vector<Variation> variations;
     for (const std::string& v : args.vary) variations.push_back(parseVariation(v));
-    const auto combos = combinations(variations);
     std::vector<std::string> scenes = args.scenes;
     if (scenes.empty()) scenes.push_back("");
+    const std::size_t runs = countRuns(scenes.size(), variations); // before building them: 10^7 would fill memory
+    const auto combos = combinations(variations);
 
     // Validate every scene and combination before the long run starts.
     for (const std::string& file : scenes)
@@ -122,6 +174,7 @@ json runBench(Context& context, const BenchArgs& args) {
             }
         }
 
+    std::fprintf(stderr, "bench: %zu run%s\n", runs, runs == 1 ? "" : "s");
     fs::create_directories(args.output / "images");
     const std::size_t total = scenes.size() * combos.size();
     Progress progress(total);

@@ -32,6 +32,33 @@ struct Variation {
     std::vector<std::string> values;
 };
 
+/// At most this many runs (scenes x combinations) per bench: each run renders
+/// warm-up and timed frames and traces a reference, a second or more, so
+/// 10,000 runs is already hours; past it is surely a mistake in --vary.
+constexpr std::size_t kMaxBenchRuns = 10000;
+
+/// Number of runs `sceneCount` scenes and `variations` make (the product of
+/// the value counts), computed without building them; throws Error naming
+/// --vary and the limit when it exceeds kMaxBenchRuns (without overflowing).
+std::size_t countRuns(std::size_t sceneCount, const std::vector<Variation>& variations);
+
+/// A directory beside `target` (`target.partial-PID`) that bench writes into;
+/// commit() moves its content into `target` (created if missing, same-named
+/// entries replaced). Destroyed without commit(), it is removed with its content.
+class StagingDirectory {
+public:
+    explicit StagingDirectory(std::filesystem::path target);
+    ~StagingDirectory();
+    StagingDirectory(const StagingDirectory&) = delete;
+    StagingDirectory& operator=(const StagingDirectory&) = delete;
+    const std::filesystem::path& path() const { return staging_; }
+    void commit();
+
+private:
+    std::filesystem::path target_, staging_;
+    bool committed_ = false;
+};
+
 /// Parses `key=v1,v2` (commas inside [] {} "" do not split). Throws Error naming the flag.
 Variation parseVariation(const std::string& text);
 /// Every combination of the variations' values as `key=value` overrides (cartesian product).

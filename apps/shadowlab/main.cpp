@@ -16,7 +16,11 @@
 #include <shadowlab/SceneFile.h>
 #include <shadowlab/Techniques.h>
 
+#include "core/Text.h"
+
 #include <CLI/CLI.hpp>
+
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -44,12 +48,37 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
 // Checks an output path before any work is done, so bad paths fail fast.
 fs::path checkOutput(const std::string& output, const std::string& flag) {
     const fs::path path(output);
+    if (fs::is_directory(path)) throw Error(flag + " " + output + ": is a directory (expected a .png file name)");
     if (path.extension() != ".png" && path.extension() != ".PNG")
         throw Error(flag + " " + output + ": expected a .png file name");
     const fs::path dir = path.parent_path();
     if (!dir.empty() && !fs::is_directory(dir))
         throw Error(flag + " " + output + ": directory " + dir.string() + " does not exist");
     return path;
+}
+
+// Bytes per output pixel, estimated: the colour, depth and G-buffer targets
+// on the GPU (llvmpipe keeps them in system memory), their read-backs and
+// CPU images, the reference's per-pixel buffers and the PNG encoder's copy.
+constexpr double kBytesPerPixelEstimate = 64.0;
+// Share of physical memory a frame may take.
+constexpr double kMemoryBudgetShare = 0.5;
+
+// Refuses a frame whose estimated memory exceeds the budget, before any GL
+// object is created (a 16384x16384 frame otherwise runs out of memory inside
+// the driver after a minute). Physical memory from sysconf.
+void checkMemory(int width, int height) {
+    const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES)), pageSize = static_cast<double>(sysconf(_SC_PAGE_SIZE));
+    if (pages <= 0 || pageSize <= 0) return; // unknown: the GPU limit check still applies
+    const double budget = kMemoryBudgetShare * pages * pageSize;
+    const double needed = kBytesPerPixelEstimate * static_cast<double>(width) * static_cast<double>(height);
+    if (needed <= budget) return;
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "--width %d --height %d: the frame needs about %.1f GiB (estimated %.0f bytes per pixel), more than the budget of "
+                  "%.1f GiB (half of this machine's memory)",
+                  width, height, needed / 1073741824.0, kBytesPerPixelEstimate, budget / 1073741824.0);
+    throw Error(text);
 }
 
 void checkSize(int width, int height, const GlInfo& info) {
@@ -67,6 +96,7 @@ int runRender(const RenderArgs& args) {
     const Scene scene = loadScene(args.scene, args.overrides);
     const std::string defaultName = (args.scene.empty() ? std::string("default") : fs::path(args.scene).stem().string()) + ".png";
     const fs::path output = checkOutput(args.output.empty() ? defaultName : args.output, "-o");
+    checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
     checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
@@ -118,6 +148,7 @@ std::string pct(double share) {
 int runCompare(const CompareArgs& args) {
     const Scene scene = loadScene(args.scene, args.overrides);
     const fs::path dir = checkOutputDirectory(args.output);
+    checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
     checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
@@ -175,17 +206,36 @@ int runCompare(const CompareArgs& args) {
 }
 
 int runBenchCommand(const tool::BenchArgs& args) {
-    for (const std::string& file : args.scenes)
-        if (!fs::is_regular_file(file)) throw Error(file + ": file not found");
+    for (const std::string& file : args.scenes) {
+        if (file.empty()) throw Error("bench: empty scene path");
+        if (text::invalidUtf8At(file) != std::string::npos)
+            throw Error(text::escapeControl(file) + ": file name is not valid UTF-8 (results.json is UTF-8)");
+        std::error_code ec;
+        const auto status = fs::status(file, ec);
+        if (!fs::exists(status)) throw Error(file + ": file not found");
+        if (!fs::is_regular_file(status)) throw Error(file + ": not a regular file (expected a scene file)");
+    }
     checkOutputDirectory(args.output.string());
+    checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
     checkSize(args.width, args.height, context.info());
-    const nlohmann::json results = tool::runBench(context, args);
+    // Everything is written into a staging directory beside the output and
+    // moved into place only when the whole run succeeded: a failure half way
+    // (a texture past the GPU limit in the third scene) leaves nothing behind.
+    tool::StagingDirectory staging(args.output);
+    tool::BenchArgs staged = args;
+    staged.output = staging.path();
+    const nlohmann::json results = tool::runBench(context, staged);
     requireNoGlErrors(context);
-    const fs::path json = args.output / "results.json";
-    tool::writeJsonAtomically(json, results);
-    tool::writeReport(results, args.output);
-    std::cout << json.string() << "\n" << (args.output / "report.html").string() << "\n";
+    const fs::path json = staged.output / "results.json";
+    {
+        std::ofstream out(json);
+        out << results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+        if (!out) throw Error((args.output / "results.json").string() + ": cannot write");
+    }
+    tool::writeReport(results, staged.output);
+    staging.commit();
+    std::cout << (args.output / "results.json").string() << "\n" << (args.output / "report.html").string() << "\n";
     return 0;
 }
 
@@ -203,6 +253,11 @@ int runTechniques(bool markdown) {
                       << OptionTable::rangeText(f) << (f.unit.empty() ? "" : " " + f.unit) << ") " << f.doc << "\n";
     }
     return 0;
+}
+
+// An empty path given on purpose is an error, not "use the default".
+void requireNonEmpty(const CLI::App* command, const char* option, const std::string& value, const std::string& what) {
+    if (command->get_option(option)->count() > 0 && value.empty()) throw Error(what + ": empty path");
 }
 
 int runInfo() {
@@ -233,7 +288,7 @@ int runInfo() {
 int main(int argc, char** argv) {
     CLI::App app{"shadowlab: real-time shadows on OpenGL 4.5, measured against exact ray-traced shadows"};
     app.require_subcommand(1);
-    app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string("shadowlab: error: ") + e.what() + "\n"; });
+    app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + text::escapeControl(e.what()) + "\n"; });
 
     RenderArgs renderArgs;
     CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG image");
@@ -287,6 +342,11 @@ int main(int argc, char** argv) {
         return app.exit(e);
     }
     try {
+        requireNonEmpty(render, "scene", renderArgs.scene, "render: scene");
+        requireNonEmpty(render, "--output", renderArgs.output, "-o");
+        requireNonEmpty(compare, "scene", compareArgs.scene, "compare: scene");
+        requireNonEmpty(compare, "--output", compareArgs.output, "-o");
+        requireNonEmpty(bench, "--output", benchOutput, "-o");
         if (*render) return runRender(renderArgs);
         if (*compare) return runCompare(compareArgs);
         if (*bench) {
@@ -295,11 +355,9 @@ int main(int argc, char** argv) {
         }
         if (*info) return runInfo();
         if (*techniquesCommand) return runTechniques(techniquesMarkdown);
-    } catch (const Error& e) {
-        std::cerr << "shadowlab: error: " << e.what() << "\n";
-        return 1;
     } catch (const std::exception& e) {
-        std::cerr << "shadowlab: error: " << e.what() << "\n";
+        // Escaped once more here: whatever a message quotes, it stays one line.
+        std::cerr << "shadowlab: error: " << text::escapeControl(e.what()) << "\n";
         return 1;
     }
     return 1;

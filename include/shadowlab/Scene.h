@@ -151,6 +151,7 @@ struct Scene {
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<ImageRGBA8> textures; ///< base-colour textures, sRGB-encoded
+    std::vector<std::string> textureSources; ///< per texture (when loaded from a file): file and JSON path, for messages
     std::vector<Node> nodes;          ///< parents come before their children
     std::vector<Light> lights;
 

@@ -26,7 +26,8 @@ void commit(const fs::path& tmp, const fs::path& path) {
     std::error_code ec;
     fs::rename(tmp, path, ec);
     if (ec) {
-        fs::remove(tmp, ec);
+        std::error_code ignored; // removing the temporary must not overwrite the rename's error
+        fs::remove(tmp, ignored);
         throw Error(path.string() + ": cannot write (" + ec.message() + ")");
     }
 }

@@ -52,8 +52,11 @@ GpuScene::GpuScene(const Scene& scene) {
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     for (const ImageRGBA8& image : scene.textures) {
+        const std::size_t i = textures_.size();
+        // Name where the texture came from (file and JSON path) when the scene says.
+        const std::string source = i < scene.textureSources.size() ? scene.textureSources[i] + ": " : std::string();
         if (image.width < 1 || image.height < 1 || image.width > maxSize || image.height > maxSize)
-            throw Error("texture " + std::to_string(textures_.size()) + " (" + std::to_string(image.width) + "x" +
+            throw Error(source + "texture " + std::to_string(i) + " (" + std::to_string(image.width) + "x" +
                         std::to_string(image.height) + "): expected 1.." + std::to_string(maxSize) +
                         " texels per side (this GPU's limit)");
         gl::Texture texture(GL_TEXTURE_2D);

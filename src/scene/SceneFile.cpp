@@ -4,6 +4,9 @@
 #include <shadowlab/SceneFile.h>
 
 #include "scene/MeshFile.h"
+#include "scene/Overrides.h"
+
+#include "core/Text.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/Shapes.h>
@@ -25,107 +28,9 @@ namespace shadowlab {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
+using overrides::Override, overrides::applyOverrides, overrides::typeName;
 
 namespace {
-
-const char* typeName(const json& j) {
-    switch (j.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::string: return "a string";
-    case json::value_t::array: return "an array";
-    case json::value_t::object: return "an object";
-    case json::value_t::discarded: return "nothing";
-    default: return "a number";
-    }
-}
-
-// --- JSON paths and --set overrides ----------------------------------------
-
-struct PathStep {
-    bool isIndex = false;
-    std::string key;
-    std::size_t index = 0;
-};
-
-// Parses `a.b[2].c` into steps; throws with `flag` on bad syntax.
-std::vector<PathStep> parsePath(const std::string& path, const std::string& flag) {
-    std::vector<PathStep> steps;
-    std::size_t i = 0;
-    auto bad = [&](const std::string& why) { throw Error(flag + ": bad JSON path '" + path + "': " + why); };
-    if (path.empty()) bad("empty");
-    while (i < path.size()) {
-        if (path[i] == '[') {
-            const auto close = path.find(']', i);
-            if (close == std::string::npos) bad("missing ']'");
-            const std::string digits = path.substr(i + 1, close - i - 1);
-            if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos)
-                bad("expected an index in [], got '" + digits + "'");
-            steps.push_back({true, {}, std::stoul(digits)});
-            i = close + 1;
-            if (i < path.size() && path[i] == '.') ++i;
-        } else {
-            const auto end = path.find_first_of(".[", i);
-            const std::string key = path.substr(i, end == std::string::npos ? std::string::npos : end - i);
-            if (key.empty()) bad("empty key");
-            steps.push_back({false, key, 0});
-            i = end == std::string::npos ? path.size() : end;
-            if (i < path.size() && path[i] == '.') {
-                ++i;
-                if (i == path.size()) bad("ends with '.'");
-            }
-        }
-    }
-    return steps;
-}
-
-std::string formatPath(const std::vector<PathStep>& steps) {
-    std::string out;
-    for (const PathStep& s : steps) {
-        if (s.isIndex) out += "[" + std::to_string(s.index) + "]";
-        else out += (out.empty() ? "" : ".") + s.key;
-    }
-    return out;
-}
-
-struct Override {
-    std::string flag;  // "--set a.b=1", for messages
-    std::string path;  // canonical JSON path
-};
-
-// Applies `key=value` overrides to the document; returns them for error attribution.
-std::vector<Override> applyOverrides(json& doc, const std::vector<std::string>& overrides) {
-    std::vector<Override> applied;
-    for (const std::string& text : overrides) {
-        const std::string flag = "--set " + text;
-        const auto eq = text.find('=');
-        if (eq == std::string::npos) throw Error(flag + ": expected key=value");
-        const auto steps = parsePath(text.substr(0, eq), flag);
-        const std::string valueText = text.substr(eq + 1);
-        json value = json::parse(valueText, nullptr, false);
-        if (value.is_discarded()) value = valueText;  // a bare word is a string
-        json* node = &doc;
-        for (std::size_t i = 0; i < steps.size(); ++i) {
-            const PathStep& step = steps[i];
-            const std::string where = formatPath({steps.begin(), steps.begin() + static_cast<long>(i)});
-            const std::string at = where.empty() ? "the scene" : "'" + where + "'";
-            if (step.isIndex) {
-                if (!node->is_array()) throw Error(flag + ": " + at + " is " + typeName(*node) + ", not an array");
-                if (step.index >= node->size())
-                    throw Error(flag + ": index " + std::to_string(step.index) + " out of range (" + at + " has " +
-                                std::to_string(node->size()) + " elements)");
-                node = &(*node)[step.index];
-            } else {
-                if (node->is_null() && i > 0) *node = json::object();
-                if (!node->is_object()) throw Error(flag + ": " + at + " is " + typeName(*node) + ", not an object");
-                node = &(*node)[step.key];
-            }
-        }
-        *node = value;
-        applied.push_back({flag, formatPath(steps)});
-    }
-    return applied;
-}
 
 // --- Reading values with their JSON path ------------------------------------
 
@@ -145,9 +50,11 @@ struct ParseContext {
                         (inner[outer.size()] == '.' || inner[outer.size()] == '['));
             };
             if (within(path, it->path) || within(it->path, path))
-                throw Error(it->flag + ": " + path + ": " + message);
+                throw Error(text::escapeControl(it->flag + ": " + path + ": " + message));
         }
-        throw Error(source + ": " + (path.empty() ? "" : path + ": ") + message);
+        // Keys, values and file names are quoted as written: escape them so
+        // the message stays on one line.
+        throw Error(text::escapeControl(source + ": " + (path.empty() ? "" : path + ": ") + message));
     }
 };
 
@@ -192,8 +99,11 @@ public:
     }
     int integer() const {
         if (!value_.is_number_integer()) fail(std::string("expected an integer, got ") + typeName(value_));
+        // Unsigned values past 2^63 would wrap to negative as long long.
+        if (value_.is_number_unsigned() && value_.get<unsigned long long>() > 1000000000ULL)
+            fail("integer out of range, got " + std::to_string(value_.get<unsigned long long>()));
         const auto v = value_.get<long long>();
-        if (v < -1000000000LL || v > 1000000000LL) fail("integer out of range");
+        if (v < -1000000000LL || v > 1000000000LL) fail("integer out of range, got " + std::to_string(v));
         return static_cast<int>(v);
     }
     bool boolean() const {
@@ -242,8 +152,13 @@ public:
     glm::vec3 direction(const std::string& key, glm::vec3 def) const {
         if (!has(key)) return def;
         const glm::vec3 d = child(key).vec3();
-        if (glm::length(d) < 1e-12f) child(key).fail("expected a non-zero direction, got [0, 0, 0]");
-        return glm::normalize(d);
+        // Scale by the largest component first: the length of [1e30, 1e30, 1e30]
+        // overflows a float and the plain normalisation would give [0, 0, 0].
+        const float largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+        if (!(largest > 0.0f)) child(key).fail("expected a non-zero direction, got [0, 0, 0]");
+        const glm::vec3 unit = glm::normalize(d / largest);
+        if (!std::isfinite(unit.x) || !std::isfinite(unit.y) || !std::isfinite(unit.z)) child(key).fail("cannot normalise this direction");
+        return unit;
     }
     std::string string(const std::string& key, const std::string& def) const { return has(key) ? child(key).string() : def; }
     bool boolean(const std::string& key, bool def) const { return has(key) ? child(key).boolean() : def; }
@@ -276,6 +191,8 @@ void readCamera(const Reader& r, Camera& cam) {
     if (cam.farPlane <= cam.nearPlane)
         (r.has("far") ? r.child("far") : r).fail("expected far > near (" + Reader::fmt(cam.nearPlane) + ")");
     const glm::vec3 forward = cam.target - cam.position;
+    if (!std::isfinite(glm::length(forward)))
+        r.fail("camera position and target are too far apart (their distance overflows a float)");
     if (glm::length(forward) < 1e-9f) r.fail("camera position and target coincide");
     if (glm::length(glm::cross(glm::normalize(forward), cam.up)) < 1e-6f)
         r.fail("camera up is parallel to the view direction");
@@ -379,8 +296,16 @@ Light readLight(const Reader& r) {
 
 ImageRGBA8 loadTexture(const Reader& r, const fs::path& file) {
     const std::string name = file.string();
-    if (!fs::is_regular_file(file)) r.fail("texture file not found: " + name);
+    std::error_code ec;
+    const auto status = fs::status(file, ec);
+    if (!fs::exists(status)) r.fail("texture file not found: " + name);
+    if (!fs::is_regular_file(status)) r.fail("texture " + name + " is not a regular file");
     int w = 0, h = 0, channels = 0;
+    // The header first: a small PNG may declare a size that cannot be allocated.
+    if (stbi_info(name.c_str(), &w, &h, &channels) &&
+        (w > kMaxImageSide || h > kMaxImageSide || static_cast<std::size_t>(w) * static_cast<std::size_t>(h) > kMaxImagePixels))
+        r.fail(name + ": " + std::to_string(w) + "x" + std::to_string(h) + " exceeds the limit of " + std::to_string(kMaxImageSide) +
+               " pixels per side and " + std::to_string(kMaxImagePixels) + " pixels");
     stbi_uc* data = stbi_load(name.c_str(), &w, &h, &channels, 4);
     if (!data) r.fail(name + ": not a readable image (" + std::string(stbi_failure_reason()) + ")");
     ImageRGBA8 image{w, h, std::vector<std::uint8_t>(data, data + static_cast<std::size_t>(w) * h * 4)};
@@ -407,6 +332,7 @@ public:
             if (m.has("baseColorTexture")) {
                 const Reader t = m.child("baseColorTexture");
                 scene_.textures.push_back(loadTexture(t, ctx_.baseDir / t.string()));
+                scene_.textureSources.push_back(ctx_.source + ": " + t.path() + " (" + (ctx_.baseDir / t.string()).string() + ")");
                 mat.baseColorTexture = static_cast<int>(scene_.textures.size()) - 1;
             }
             materialIndex_[name] = static_cast<int>(scene_.materials.size());
@@ -529,6 +455,7 @@ private:
         }
         const int index = static_cast<int>(scene_.nodes.size());
         scene_.nodes.push_back(node);
+        nodeSources_.push_back(r.path());
         if (r.has("mesh")) importMesh(r.child("mesh"), index, materialOverride, node);
         if (r.has("children")) readNodes(r.child("children"), index);
     }
@@ -551,6 +478,9 @@ private:
         const int materialBase = static_cast<int>(scene_.materials.size());
         for (Mesh& m : model.meshes) scene_.meshes.push_back(std::move(m));
         for (ImageRGBA8& t : model.textures) scene_.textures.push_back(std::move(t));
+        for (std::size_t t = 0; t < model.textures.size(); ++t)
+            scene_.textureSources.push_back(ctx_.source + ": " + r.path() + ": " + file.string() + ": " +
+                                            (t < model.textureSources.size() ? model.textureSources[t] : "texture " + std::to_string(t)));
         for (Material m : model.materials) {
             if (m.baseColorTexture >= 0) m.baseColorTexture += textureBase;
             scene_.materials.push_back(std::move(m));
@@ -568,6 +498,8 @@ private:
             node.receivesShadows = owner.receivesShadows;
             sceneIndex[i] = static_cast<int>(scene_.nodes.size());
             scene_.nodes.push_back(node);
+            const std::string source = r.path() + " (" + file.string() + ": node '" + in.name + "')";
+            nodeSources_.push_back(source);
             // One child node per primitive: a node draws one mesh with one material.
             for (const auto& prim : in.primitives) {
                 Node p;
@@ -578,20 +510,64 @@ private:
                 p.castsShadows = owner.castsShadows;
                 p.receivesShadows = owner.receivesShadows;
                 scene_.nodes.push_back(p);
+                nodeSources_.push_back(source);
             }
         }
     }
 
+public:
+    /// Every world transform and every transformed vertex must be finite:
+    /// translations near 3e38 in a parent and a child, or a large scale on a
+    /// large mesh, overflow only once composed.
+    void checkFinite() const {
+        const auto finite = [](const glm::vec4& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w); };
+        for (const DrawItem& item : scene_.drawItems()) {
+            const std::string& where = nodeSources_[static_cast<std::size_t>(item.node)];
+            for (int c = 0; c < 4; ++c)
+                if (!finite(item.worldFromObject[c])) ctx_.fail(where, "world transform is not finite (values overflow a float)");
+            for (const glm::vec3& p : scene_.meshes[static_cast<std::size_t>(item.mesh)].positions)
+                if (!finite(item.worldFromObject * glm::vec4(p, 1.0f)))
+                    ctx_.fail(where, "a vertex's world position is not finite (values overflow a float)");
+        }
+    }
+
+private:
     Scene& scene_;
     const ParseContext& ctx_;
     std::map<std::string, int> materialIndex_;
+    std::vector<std::string> nodeSources_; ///< JSON path (and mesh file node) per scene_.nodes entry
 };
+
+/// Every string and key must be valid UTF-8 (results.json and the messages
+/// are UTF-8); walked with an explicit stack, depth is bounded anyway.
+void checkUtf8(const ParseContext& ctx, const json& doc) {
+    std::vector<std::pair<const json*, std::string>> stack{{&doc, ""}};
+    const auto join = [](const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; };
+    while (!stack.empty()) {
+        auto [node, path] = std::move(stack.back());
+        stack.pop_back();
+        if (node->is_string()) {
+            if (text::invalidUtf8At(node->get_ref<const std::string&>()) != std::string::npos)
+                ctx.fail(path, "invalid UTF-8 in the string '" + node->get<std::string>() + "'");
+        } else if (node->is_object()) {
+            for (const auto& [key, value] : node->items()) {
+                if (text::invalidUtf8At(key) != std::string::npos) ctx.fail(join(path, key), "invalid UTF-8 in this key");
+                stack.emplace_back(&value, join(path, key));
+            }
+        } else if (node->is_array()) {
+            for (std::size_t i = 0; i < node->size(); ++i) stack.emplace_back(&(*node)[i], path + "[" + std::to_string(i) + "]");
+        }
+    }
+}
 
 } // namespace
 
 Scene parseScene(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir,
                  const std::vector<std::string>& overrides) {
     ParseContext ctx{sourceName, baseDir, {}};
+    // nlohmann::json copies and destroys recursively: refuse deep nesting first.
+    if (text::jsonDepth(jsonText) > text::kMaxJsonDepth)
+        throw Error(text::escapeControl(sourceName + ": JSON nested deeper than " + std::to_string(text::kMaxJsonDepth) + " levels"));
     json doc;
     try {
         doc = json::parse(jsonText);
@@ -602,10 +578,15 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
         const auto pos = what.find("] ");
         what = pos == std::string::npos ? what : what.substr(pos + 2);
         if (e.id == 406) what += " (numbers must be finite)";
-        throw Error(sourceName + ": invalid JSON: " + what);
+        throw Error(text::escapeControl(sourceName + ": invalid JSON: " + what));
     }
     if (!doc.is_object()) throw Error(sourceName + ": expected a JSON object at the top level, got " + typeName(doc));
-    ctx.overrides = applyOverrides(doc, overrides);
+    try {
+        ctx.overrides = applyOverrides(doc, overrides);
+    } catch (const Error& e) {
+        throw Error(text::escapeControl(e.what())); // the flag quotes the user's text
+    }
+    checkUtf8(ctx, doc);
 
     const Reader root(ctx, doc, "");
     root.checkKeys({"name", "camera", "ambient", "background", "materials", "lights", "nodes"});
@@ -619,6 +600,9 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
     if (root.has("lights")) {
         const Reader lights = root.child("lights");
         lights.requireArray();
+        if (lights.value().size() > kMaxLights)
+            lights.fail("expected at most " + std::to_string(kMaxLights) + " lights, got " + std::to_string(lights.value().size()) +
+                        " (render time grows with every light)");
         for (std::size_t i = 0; i < lights.value().size(); ++i) {
             const Reader l = lights.element(i);
             l.requireObject();
@@ -626,6 +610,7 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
         }
     }
     if (root.has("nodes")) builder.readNodes(root.child("nodes"), -1);
+    builder.checkFinite();
     return scene;
 }
 

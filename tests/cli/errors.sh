@@ -19,6 +19,8 @@ expect_error() {
   local stderr
   stderr=$(cd "$work" && env ${TOOL_ENV:-} "$tool" "$@" 2>&1 >/dev/null)
   local code=$?
+  # bench's progress lines (a bar per step) are not error output.
+  if [[ -n "${PROGRESS_OK:-}" ]]; then stderr=$(printf '%s\n' "$stderr" | grep -v '^\[[#.]*\] \|^bench: [0-9]* runs\?$'); fi
   local lines
   lines=$(printf '%s' "$stderr" | grep -c '')
   if [[ $code -eq 0 || $code -ge 128 ]]; then
@@ -94,6 +96,96 @@ expect_dir_error bench-vary-bad-value "--vary lights[0].intensity=abc: lights[0]
 expect_dir_error bench-vary-empty-value "--vary lights[0].intensity=1,,2: empty value" bench -o outdir --vary 'lights[0].intensity=1,,2'
 expect_dir_error bench-frames-zero "--frames" bench -o outdir --frames 0
 expect_dir_error bench-bad-scene "direction.json: lights[1].direction" bench direction.json -o outdir
+
+# --- Hostile input (issue 12): the reproducers, through the tool. -----------
+corpus="$src/fuzz/corpus"
+cp "$corpus"/files/* "$work/"
+cp "$corpus"/gltf/repro-*.gltf "$corpus"/scene/repro-*.json "$work/"
+scene_of() { printf '{"nodes": [{"mesh": "%s"}]}' "$1" > "$work/$2"; }
+scene_of repro-accessor-offset-wraps.gltf gltf-offset.json
+scene_of repro-accessor-count-huge.gltf gltf-count.json
+scene_of repro-node-cycle.gltf gltf-cycle.json
+scene_of repro-translation-1e300.gltf gltf-inf.json
+scene_of repro-texture-16385x1.gltf gltf-wide-texture.json
+printf '{"materials": {"m": {"baseColorTexture": "wide-16385x1.png"}}, "nodes": [{"shape": {"type": "box"}, "material": "m"}]}' > "$work/wide-texture.json"
+printf '{"lights": [{"type": "directional", "direction": [1e30, 1e30, 1e30]}], "nodes": [{"shape": {"type": "box"}}]}' > "$work/huge-direction.json"
+printf '{"nodes": [{"mesh": "a\\nb.obj"}]}' > "$work/newline-mesh.json"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1\v\f\r 2\nf 1 2 3\n' > "$work/control.obj"
+printf '{"nodes": [{"mesh": "control.obj"}]}' > "$work/control-obj.json"
+mkdir -p "$work/dir.png" "$work/scenedir"
+
+expect_error gltf-offset-wraps "gltf-offset.json: nodes[0].mesh: repro-accessor-offset-wraps.gltf: accessor 0 (POSITION): byteOffset 18446744073709551604" render gltf-offset.json -o out.png
+expect_error gltf-count-huge "count 1537228672809129301 exceeds the limit of 16777216 elements" render gltf-count.json -o out.png
+expect_error gltf-cycle "repro-node-cycle.gltf: node 0 is referenced more than once (a cycle" render gltf-cycle.json -o out.png
+expect_error cli-parse-newline '--width: Value 1\n2 not in range' render -o out.png --width $'1\n2'
+expect_error gltf-translation-1e300 "repro-translation-1e300.gltf: node 0: transform values must be finite" render gltf-inf.json -o out.png
+expect_error gltf-texture-past-gpu-limit "gltf-wide-texture.json: nodes[0].mesh: " render gltf-wide-texture.json -o out.png
+expect_error texture-past-gpu-limit "wide-texture.json: materials.m.baseColorTexture (" render wide-texture.json -o out.png
+expect_error children-nested-10000 "repro-children-nested-10000.json: JSON nested deeper than 200 levels" render repro-children-nested-10000.json -o out.png
+expect_error lights-past-limit "repro-lights-300.json: lights: expected at most 256 lights, got 300" render repro-lights-300.json -o out.png
+expect_error segments-2-64 "majorSegments: integer out of range, got 18446744073709551615" render 'repro-segments-2^64-1.json' -o out.png
+expect_error camera-3e38 "camera: camera position and target are too far apart" render repro-camera-3e38.json -o out.png
+expect_error texture-is-directory "materials.m.baseColorTexture: texture . is not a regular file" render repro-texture-is-directory.json -o out.png
+expect_error transform-overflows "nodes[0].children[0]: world transform is not finite" render repro-translation-overflows-composed.json -o out.png
+expect_error newline-in-key 'repro-newline-in-key.json: na\nme: unknown key' render repro-newline-in-key.json -o out.png
+expect_error newline-in-mesh-path 'a\nb.obj: file not found' render newline-mesh.json -o out.png
+expect_error obj-control-bytes "control.obj:3: bad number '1\\v\\f\\r' after 'v'" render control-obj.json -o out.png
+expect_error set-index-past-2-64 "index 99999999999999999999 is too large" render -o out.png --set 'lights[99999999999999999999].intensity=1'
+expect_error set-newline-in-value '--set camera.fovY=1\n2: camera.fovY: expected a number' render -o out.png --set $'camera.fovY=1\n2'
+expect_error set-invalid-utf8 "name: invalid UTF-8 in the string 'a\\xffb'" render -o out.png --set $'name=a\xffb'
+expect_error render-empty-scene "render: scene: empty path" render "" -o out.png
+expect_error render-empty-output "-o: empty path" render -o ""
+expect_error output-is-directory "-o dir.png: is a directory" render -o dir.png
+# The frame-memory estimate: 16384x16384 is 16 GiB at 64 bytes per pixel,
+# refused on any machine with less than 32 GiB (and 65536^2 on any machine).
+if (( $(awk '/MemTotal/ {print $2}' /proc/meminfo) < 32 * 1024 * 1024 )); then side=16384; else side=65536; fi
+expect_error frame-memory "--width $side --height $side: the frame needs about" render -o out.png --width $side --height $side
+expect_dir_error compare-frame-memory "--width 65536 --height 65536: the frame needs about" compare -o outdir --width 65536 --height 65536
+# A directional light of [1e30, 1e30, 1e30] is normalised, not zeroed: it renders.
+if (cd "$work" && "$tool" render huge-direction.json -o huge.png --width 32 --height 18 >/dev/null 2>&1) && [[ -s "$work/huge.png" ]]; then
+  echo "ok   huge-direction renders"; passed=$((passed + 1))
+else
+  echo "FAIL huge-direction: did not render"; failures=$((failures + 1))
+fi
+
+# bench: count first, and leave nothing behind on any failure.
+expect_no_leftovers() {
+  local name=$1
+  if compgen -G "$work/outdir*" >/dev/null; then
+    echo "FAIL $name: left $(cd "$work" && echo outdir*)"; failures=$((failures + 1)); passed=$((passed - 1))
+  fi
+}
+vary=()
+for k in 0 1 2 3 4 5 6; do vary+=(--vary "lights[0].intensity=1,2,3,4,5,6,7,8,9,10"); done
+expect_dir_error bench-too-many-runs "--vary: 1 scene x 10 x 10 x 10 x 10 x 10 x 10 x 10 values make more than 10000 runs" bench -o outdir "${vary[@]}"
+expect_no_leftovers bench-too-many-runs
+expect_dir_error bench-empty-scene "bench: empty scene path" bench "" -o outdir
+expect_dir_error bench-scene-is-directory "scenedir: not a regular file (expected a scene file)" bench scenedir -o outdir
+expect_dir_error bench-invalid-utf8-name "name: invalid UTF-8" bench -o outdir --set $'name=a\xffb'
+expect_no_leftovers bench-invalid-utf8-name
+printf '{}' > "$work/bad"$'\xff'".json"
+expect_dir_error bench-invalid-utf8-path "file name is not valid UTF-8" bench "bad"$'\xff'".json" -o outdir
+# The first scene renders and writes its images, the second fails at upload:
+# nothing of the first may remain.
+bench_small=(--frames 1 --warmup 0 --width 16 --height 16 --samples 1)
+PROGRESS_OK=1 expect_dir_error bench-texture-past-gpu-limit "wide-texture.json: materials.m.baseColorTexture (" bench huge-direction.json wide-texture.json -o outdir "${bench_small[@]}"
+expect_no_leftovers bench-texture-past-gpu-limit
+# An existing output directory keeps its other files and gets no partial results.
+mkdir -p "$work/keep" && echo mine > "$work/keep/notes.txt"
+(cd "$work" && "$tool" bench huge-direction.json wide-texture.json -o keep "${bench_small[@]}" >/dev/null 2>&1)
+if [[ "$(cd "$work/keep" && ls)" == "notes.txt" ]] && ! compgen -G "$work/keep.partial*" >/dev/null; then
+  echo "ok   bench-existing-output-untouched"; passed=$((passed + 1))
+else
+  echo "FAIL bench-existing-output-untouched: $(cd "$work" && ls keep keep.partial* 2>&1)"; failures=$((failures + 1))
+fi
+# A 300-character scene name: file names are shortened, the run succeeds.
+long=$(printf 'n%.0s' $(seq 300))
+if (cd "$work" && "$tool" bench huge-direction.json -o longname --set "name=$long" "${bench_small[@]}" >/dev/null 2>&1) &&
+   [[ -s "$work/longname/results.json" ]] && ! compgen -G "$work/longname.partial*" >/dev/null; then
+  echo "ok   bench-300-character-name"; passed=$((passed + 1))
+else
+  echo "FAIL bench-300-character-name"; failures=$((failures + 1))
+fi
 
 echo "$passed passed, $failures failed"
 [[ $failures -eq 0 ]]

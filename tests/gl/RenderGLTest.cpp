@@ -235,5 +235,7 @@ TEST_F(RenderGLTest, TextureWiderThanTheGpuLimitIsAnError) {
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("texture 0 (" + std::to_string(tooWide) + "x1)"), std::string::npos) << e.what();
+        // The message names where the texture came from: file and JSON path.
+        EXPECT_EQ(std::string(e.what()).rfind("test: materials.m.baseColorTexture (", 0), 0u) << e.what();
     }
 }

@@ -1,0 +1,30 @@
+#pragma once
+// Checks and escaping for text that comes from users and files: every quoted
+// user string goes through escapeControl() so an error stays one line, and
+// JSON is depth-checked before it reaches a recursive parser.
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace shadowlab::text {
+
+/// JSON nesting deeper than this is refused before parsing: nlohmann::json
+/// copies and tinygltf's conversion recurse once per level, and scene
+/// `children` nest two levels per hierarchy level (object, array), so this
+/// allows 100 levels of node hierarchy while keeping the recursion shallow.
+constexpr std::size_t kMaxJsonDepth = 200;
+
+/// `s` with control characters (bytes < 0x20 and 0x7f) written as \n, \r,
+/// \t, \v, \f or \xNN, and bytes that are not valid UTF-8 as \xNN. Other
+/// text, backslashes included, is unchanged, so escaping twice changes nothing.
+std::string escapeControl(std::string_view s);
+
+/// Byte offset of the first byte that is not part of valid UTF-8 (overlong
+/// forms, surrogates and code points past U+10FFFF are invalid), or npos.
+std::size_t invalidUtf8At(std::string_view s);
+
+/// Deepest nesting of [ and { in JSON text, outside strings. Stops counting
+/// at `limit` + 1, so a hostile file is scanned once and never more.
+std::size_t jsonDepth(std::string_view json, std::size_t limit = kMaxJsonDepth);
+
+} // namespace shadowlab::text
