@@ -207,6 +207,9 @@ std::string techniqueList() {
 // One technique's block, `lights[i].shadow.<name>`, read through its options
 // table: every key known, every value of its kind and within its range.
 std::any readOptions(const Reader& r, const OptionTable& table) {
+    r.requireObject();
+    if (table.fields.empty() && !r.value().empty())
+        r.child(r.value().begin().key()).fail("unknown key (technique '" + table.block + "' has no options)");
     std::vector<const char*> keys;
     for (const OptionField& f : table.fields) keys.push_back(f.key.c_str());
     r.checkKeys(keys);

@@ -80,7 +80,7 @@ TEST(SceneFileShadow, TechniqueNamesComeFromTheRegistry) {
     EXPECT_EQ(errorOf([] { parseScene(R"({"lights": [{"type": "directional", "shadow": {"mapp": {}}}]})", "s.json", "."); }),
               "s.json: lights[0].shadow.mapp: unknown key (expected one of: technique, " + names + ")");
     EXPECT_EQ(errorOf([] { parseScene(R"({"lights": [{"type": "directional", "shadow": {"none": {"size": 1}}}]})", "s.json", "."); }),
-              "s.json: lights[0].shadow.none.size: unknown key (expected one of: )");
+              "s.json: lights[0].shadow.none.size: unknown key (technique 'none' has no options)");
     EXPECT_EQ(errorOf([] { parseScene(R"({"lights": [{"type": "directional"}]})", "s.json", ".", {"lights[0].shadow.technique=mapp"}); }),
               "--set lights[0].shadow.technique=mapp: lights[0].shadow.technique: unknown technique 'mapp' (expected one of: " + names + ")");
 }
