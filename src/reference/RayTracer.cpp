@@ -291,9 +291,16 @@ glm::vec3 offsetRayOrigin(const glm::vec3& p, const glm::vec3& n) {
     constexpr float kIntScale = 256.0f;
     glm::vec3 o;
     for (int i = 0; i < 3; ++i) {
+        if (std::abs(p[i]) < kOrigin) {
+            o[i] = p[i] + kFloatScale * n[i];
+            continue;
+        }
+        // Away from zero the bits of |p| stay far from the sign bit and
+        // from wrapping, so the step is computed on unsigned bits (defined
+        // modular arithmetic; -0.0f, whose bits are INT_MIN, never gets here).
         const auto ulps = static_cast<std::int32_t>(kIntScale * n[i]);
-        const float stepped = std::bit_cast<float>(std::bit_cast<std::int32_t>(p[i]) + (p[i] < 0.0f ? -ulps : ulps));
-        o[i] = std::abs(p[i]) < kOrigin ? p[i] + kFloatScale * n[i] : stepped;
+        const std::uint32_t step = static_cast<std::uint32_t>(p[i] < 0.0f ? -ulps : ulps);
+        o[i] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(p[i]) + step);
     }
     // Plus a push along the normal for the rasterizer's error: p is a
     // position the GPU interpolated into an RGBA32F target, which can lie a
