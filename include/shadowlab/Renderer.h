@@ -13,6 +13,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
@@ -48,6 +49,8 @@ struct FrameStats {
     std::vector<PassTiming> passes;
     std::string clock = "off"; ///< "cpu-finish", "gpu-timestamp" or "off"
     int baseLight = -1;        ///< the light shaded inside the base pass (no "light[i]" of its own), -1 none
+    /// Numbers the techniques report per pass, e.g. {"shadow[0].triangles", 12}.
+    std::vector<std::pair<std::string, double>> counters;
     double cpuMs = 0.0;        ///< wall time of render() including glFinish, milliseconds
 };
 

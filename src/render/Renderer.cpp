@@ -73,6 +73,13 @@ struct Renderer::Impl final : TechniqueHost {
     std::optional<gl::PassClock> clock;
     LitMode litMode = LitMode::Shade;
     const Light* currentLight = nullptr;
+    std::string currentPass;  // for count()
+    std::vector<std::pair<std::string, double>> counters;
+
+    // Techniques bind samplers to their units; none may leak into another's pass.
+    static void resetTechniqueSamplers() {
+        for (GLuint unit = SL_UNIT_SHADOW_FIRST; unit < SL_UNIT_SHADOW_FIRST + 8; ++unit) glBindSampler(unit, 0);
+    }
 
     explicit Impl(Context& c) : context(c), programs(*c.impl().programs) {
         glNamedBufferStorage(frameUbo.id(), sizeof(shared::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -141,6 +148,7 @@ struct Renderer::Impl final : TechniqueHost {
     }
 
     gl::ScopedPass timeScope(const std::string& name) override { return gl::ScopedPass(*clock, name); }
+    void count(const std::string& name, double value) override { counters.emplace_back(currentPass + "." + name, value); }
     const GlInfo& glInfo() const override { return context.info(); }
 
     // --- The renderer's own work --------------------------------------------------
@@ -287,6 +295,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     beginFrame(s, size, options.timeSeconds);
     clock.emplace(clockKind(options.clock, gl));
     litMode = LitMode::Shade;
+    counters.clear();
 
     // Techniques in use, each with its lights; they prepare their resources.
     std::map<std::string, std::vector<int>> lightsOf;
@@ -298,7 +307,8 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
         Technique& t = technique(s.lights[i].shadow.technique);
         if (!t.hasShadowPass(s.lights[i])) continue;
         setLight(i);
-        const gl::ScopedPass scope(*clock, "shadow[" + std::to_string(i) + "]");
+        currentPass = "shadow[" + std::to_string(i) + "]";
+        const gl::ScopedPass scope(*clock, currentPass);
         t.renderShadowPass(*this, *info, view(i));
     }
 
@@ -308,7 +318,9 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     for (std::size_t i = 0; i < s.lights.size() && baseLight < 0; ++i)
         if (screenVisibility || technique(s.lights[i].shadow.technique).sharesBasePass(s.lights[i])) baseLight = static_cast<int>(i);
     {
-        const gl::ScopedPass scope(*clock, "base");
+        currentPass = "base";
+        resetTechniqueSamplers();
+        const gl::ScopedPass scope(*clock, currentPass);
         ShaderVariant variant;
         variant.writeSurfaces = options.surfaces;
         if (baseLight >= 0) {
@@ -344,7 +356,9 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         if (static_cast<int>(i) == baseLight) continue;
         setLight(i);
-        const gl::ScopedPass scope(*clock, "light[" + std::to_string(i) + "]");
+        currentPass = "light[" + std::to_string(i) + "]";
+        const gl::ScopedPass scope(*clock, currentPass);
+        resetTechniqueSamplers();
         bindFrameTarget();
         if (screenVisibility) {
             litMode = LitMode::ScreenVisibility;
@@ -356,9 +370,11 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
         }
     }
     gl::apply(gl::RenderState{});
+    resetTechniqueSamplers();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     FrameStats stats;
+    stats.counters = counters;
     for (auto& [name, ms] : clock->results()) stats.passes.push_back({name, ms});
     stats.clock = gl::toString(clock->kind());
     stats.baseLight = baseLight;
@@ -401,6 +417,8 @@ std::vector<glm::vec3> Renderer::readVisibilityRgb(const Scene& scene, std::size
     d.clock.emplace(gl::ClockKind::Off);
     d.setLight(lightIndex);
     d.litMode = LitMode::OutputVisibility;
+    d.currentPass = "visibility";
+    Impl::resetTechniqueSamplers();
     d.bindFrameTarget();
     gl::apply(gl::RenderState{});
     const float zero[4] = {0, 0, 0, 0};
@@ -413,6 +431,7 @@ std::vector<glm::vec3> Renderer::readVisibilityRgb(const Scene& scene, std::size
     }
     d.litMode = LitMode::Shade;
     gl::apply(gl::RenderState{});
+    Impl::resetTechniqueSamplers();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     const auto rgba = readTexture<float>(t.visibilityOut, t.size, GL_RGBA, GL_FLOAT, 4);
     std::vector<glm::vec3> out(rgba.size() / 4);

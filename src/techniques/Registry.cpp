@@ -2,6 +2,7 @@
 #include "techniques/Registry.h"
 
 #include "gl/ShaderSource.h"
+#include "techniques/Map.h"
 #include "techniques/None.h"
 
 #include <shadowlab/Error.h>
@@ -17,6 +18,7 @@ namespace {
 std::vector<TechniqueEntry> builtIn() {
     return {
         noneTechnique(),
+        mapTechnique(),
     };
 }
 

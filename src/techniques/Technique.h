@@ -92,6 +92,9 @@ public:
     virtual const gl::Buffer& adjacencyIndices(int mesh) = 0;
     /// Times a nested scope of the current pass: "shadow[2]" + "blur".
     virtual gl::ScopedPass timeScope(const std::string& name) = 0;
+    /// Records a number for the current pass, e.g. count("triangles", n) in
+    /// shadow pass 2 gives FrameStats::counters "shadow[2].triangles".
+    virtual void count(const std::string& name, double value) = 0;
     virtual const GlInfo& glInfo() const = 0;
 };
 

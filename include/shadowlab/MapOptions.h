@@ -1,0 +1,59 @@
+#pragma once
+/// @file MapOptions.h
+/// Options of technique "map": a shadow map per light (lecture 000, 002
+/// §8.2-8.4, 004), the block `lights[i].shadow.map` of a scene file.
+/// Directional lights get an orthographic light camera, spot lights a
+/// perspective one; point lights (cube maps) are not supported yet.
+/// Every field's JSON key, unit, range and default is in its OptionTable
+/// (mapOptionTable(), and docs/scene-format.md).
+#include <shadowlab/Options.h>
+
+namespace shadowlab {
+
+enum class MapFormat {
+    Depth16,  ///< "depth16": DEPTH_COMPONENT16
+    Depth24,  ///< "depth24": DEPTH_COMPONENT24
+    Depth32F, ///< "depth32f": DEPTH_COMPONENT32F (default)
+    Rgba8,    ///< "rgba8": depth packed into an RGBA8 colour target (002 §8.3.1), compared in the shader
+};
+
+enum class MapFit {
+    Tight, ///< "tight": the casters that can shadow what the camera sees (default)
+    Scene, ///< "scene": the lecture's box around the whole scene (directional) / the whole cone (spot)
+};
+
+enum class MapFilter {
+    None,     ///< "none": one nearest sample
+    Hardware, ///< "hardware": one 2x2 bilinear hardware compare (default)
+    Grid,     ///< "grid": kernel x kernel samples (the lecture's PCF, up to 64)
+    Dither4,  ///< "dither4": the lecture's 4-sample dithered PCF (000)
+    Poisson,  ///< "poisson": a rotated Vogel disk of `samples` taps within `radius` texels
+};
+
+enum class MapPreset {
+    Default,     ///< "default": the fields as given
+    Lecture,     ///< "lecture": lecture 000's polygon offset (2, 4), dithered PCF, no normal offset
+    LearnOpenGL, ///< "learnopengl": LearnOpenGL 5.advanced_lighting/3.1.3's 1024^2, ortho camera and slope bias
+};
+
+struct MapOptions {
+    static constexpr const char* kTechnique = "map";
+    int size = 2048;                     ///< texels per side of the map, 16..16384; default 2048
+    MapFormat format = MapFormat::Depth32F;
+    MapFit fit = MapFit::Tight;
+    MapFilter filter = MapFilter::Hardware;
+    int kernel = 3;                      ///< grid: samples per side, 2..8; default 3
+    int samples = 16;                    ///< poisson: taps, 4..64; default 16
+    float radius = 1.5f;                 ///< poisson: disk radius, texels; default 1.5
+    float constantBias = 0.0f;           ///< light-space depth, shadow-map texels of the light's depth range; default 0
+    float slopeBias = 1.5f;              ///< glPolygonOffset factor in the shadow pass; default 1.5
+    float offsetUnits = 2.0f;            ///< glPolygonOffset units in the shadow pass; default 2
+    float normalBias = 1.0f;             ///< receiver moved along its normal by this many map texels (world size) times (1 - N.L); default 1
+    bool cullFront = false;              ///< draw back faces only into the map (closed meshes; 002 §8.4.1.1); default false
+    MapPreset preset = MapPreset::Default;
+};
+
+/// The options table of "map" (JSON keys, units, ranges, defaults, docs).
+const OptionTable& mapOptionTable();
+
+} // namespace shadowlab

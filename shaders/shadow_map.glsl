@@ -1,0 +1,71 @@
+// Technique "map": a shadow map per light (lecture 000, 002 §8.2-8.4).
+// The fragment goes to the light's texture space through one matrix (the
+// bias matrix times the light's projection and view) and is compared with
+// the map: in hardware through a sampler2DArrayShadow, or unpacked from
+// RGBA8 and compared here (MAP_RGBA8). Variants: MAP_FILTER
+// (SL_MAP_FILTER_*), MAP_KERNEL (grid side), MAP_RGBA8. Numbers are uniforms.
+#include "shadow_map_shared.h"
+
+#if MAP_RGBA8
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
+float unpackDepth(vec4 v) { return dot(v, vec4(1.0, 1.0 / 256.0, 1.0 / 65536.0, 1.0 / 16777216.0)); }
+// 1 where the receiver at depth `ref` is nearer than the map's occluder.
+float mapTap(vec2 uv, float ref) {
+    return ref <= unpackDepth(texture(mapPacked, vec3(uv, map.params.x))) ? 1.0 : 0.0;
+}
+#else
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
+float mapTap(vec2 uv, float ref) { return texture(mapDepth, vec4(uv, map.params.x, ref)); }
+#endif
+
+// Interleaved gradient noise (Jimenez 2014): a per-pixel rotation for the disk.
+float mapNoise(vec2 pixel) { return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715)))); }
+
+vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
+    // Normal offset (scene units): one texel's world size at this point,
+    // scaled by 1 - N.L, so grazing receivers move farther off their surface.
+    vec3 toLight = map.params.w > 0.5 ? normalize(map.light.xyz - worldPosition) : map.light.xyz;
+    float NdotL = clamp(dot(worldNormal, toLight), 0.0, 1.0);
+    float texel = map.params.z;
+    if (map.params.w > 0.5) texel *= max(dot(worldPosition - map.light.xyz, normalize(light.direction.xyz)), 0.0);
+    vec3 p = worldPosition + worldNormal * (texel * (1.0 - NdotL));
+    vec4 s = map.shadowFromWorld * vec4(p, 1.0);
+    if (s.w <= 0.0) return vec3(1.0);
+    s.xyz /= s.w;
+    // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
+    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return vec3(1.0);
+    float ref = s.z - map.bias.x - max(map.bias.y * (1.0 - NdotL), map.bias.z);
+    float du = map.taps.x;
+#if MAP_FILTER == SL_MAP_FILTER_NONE || MAP_FILTER == SL_MAP_FILTER_HARDWARE
+    return vec3(mapTap(s.xy, ref));  // the sampler is nearest or bilinear
+#elif MAP_FILTER == SL_MAP_FILTER_GRID
+    // MAP_KERNEL x MAP_KERNEL taps one texel apart, centred on the point.
+    float sum = 0.0;
+    float start = -0.5 * float(MAP_KERNEL - 1);
+    for (int j = 0; j < MAP_KERNEL; ++j)
+        for (int i = 0; i < MAP_KERNEL; ++i)
+            sum += mapTap(s.xy + du * vec2(start + float(i), start + float(j)), ref);
+    return vec3(sum / float(MAP_KERNEL * MAP_KERNEL));
+#elif MAP_FILTER == SL_MAP_FILTER_DITHER4
+    // The lecture's 4-sample dithered PCF (000): one of four patterns from
+    // gl_FragCoord mod 2, taps `spread` texels apart.
+    float w = map.taps.w * du;
+    vec2 o = mod(floor(gl_FragCoord.xy), 2.0) * w;
+    float sum = mapTap(s.xy + vec2(-1.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(s.xy + vec2(-1.5 * w + o.x, -0.5 * w - o.y), ref) +
+                mapTap(s.xy + vec2(0.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(s.xy + vec2(0.5 * w + o.x, -0.5 * w - o.y), ref);
+    return vec3(0.25 * sum);
+#elif MAP_FILTER == SL_MAP_FILTER_POISSON
+    // A Vogel disk (golden-angle spiral, uniform by area) rotated per pixel.
+    int taps = int(map.taps.z);
+    float rotation = 6.2831853 * mapNoise(gl_FragCoord.xy);
+    float sum = 0.0;
+    for (int k = 0; k < taps; ++k) {
+        float r = sqrt((float(k) + 0.5) / float(taps)) * map.taps.y;
+        float a = float(k) * 2.3999632 + rotation;
+        sum += mapTap(s.xy + du * r * vec2(cos(a), sin(a)), ref);
+    }
+    return vec3(sum / float(taps));
+#else
+#error unknown MAP_FILTER
+#endif
+}

@@ -1,0 +1,163 @@
+#include "core/LightCamera.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box) {
+    if (box.empty()) return false;
+    int outside[6] = {0, 0, 0, 0, 0, 0};
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z);
+        const glm::vec4 p = clipFromWorld * glm::vec4(corner, 1.0f);
+        outside[0] += p.x < -p.w;
+        outside[1] += p.x > p.w;
+        outside[2] += p.y < -p.w;
+        outside[3] += p.y > p.w;
+        outside[4] += p.z < -p.w;
+        outside[5] += p.z > p.w;
+    }
+    for (int plane = 0; plane < 6; ++plane)
+        if (outside[plane] == 8) return false;
+    return true;
+}
+
+namespace {
+
+glm::vec3 upFor(const glm::vec3& axis) {
+    return std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+Bounds all(const FitInput& in) {
+    Bounds b;
+    for (const Bounds& item : in.itemBounds) b.add(item);
+    return b;
+}
+
+// Bounds (in `to` space) of the receivers the camera may see.
+Bounds visibleReceivers(const FitInput& in, const glm::mat4& to) {
+    Bounds b;
+    for (std::size_t i = 0; i < in.items.size(); ++i)
+        if (in.items[i].receivesShadows && mayIntersect(in.cameraClipFromWorld, in.itemBounds[i]))
+            b.add(in.itemBounds[i].transformed(to));
+    return b;
+}
+
+// The camera frustum's eight corners in `to` space (NDC cube corners unprojected).
+Bounds frustumBounds(const glm::mat4& cameraClipFromWorld, const glm::mat4& to) {
+    const glm::mat4 worldFromClip = glm::inverse(cameraClipFromWorld);
+    Bounds b;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 ndc((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? 1.0f : -1.0f, 1.0f);
+        const glm::vec4 w = worldFromClip * ndc;
+        b.add(glm::vec3(to * glm::vec4(glm::vec3(w) / w.w, 1.0f)));
+    }
+    return b;
+}
+
+} // namespace
+
+LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInput& in) {
+    LightCamera cam;
+    const Bounds scene = all(in);
+    const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
+    const float diagonal = scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f);
+    // Light view: looking along `direction`, origin at the scene's centre
+    // moved back by the diagonal so every depth is negative in view space.
+    cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, upFor(direction));
+    Bounds region; // light view space: x, y across the light, z = -distance from the eye
+    if (fit == MapFit::Scene) {
+        // The lecture's box: sides equal to the diagonal, centred on the scene.
+        const float h = 0.5f * diagonal;
+        region.add(glm::vec3(-h, -h, -diagonal - h));
+        region.add(glm::vec3(h, h, -diagonal + h));
+    } else {
+        const Bounds receivers = visibleReceivers(in, cam.viewFromWorld);
+        const Bounds frustum = frustumBounds(in.cameraClipFromWorld, cam.viewFromWorld);
+        region = receivers;
+        if (!region.empty()) {
+            region.lo = glm::max(region.lo, frustum.lo);
+            region.hi = glm::min(region.hi, frustum.hi);
+        }
+        if (region.empty()) {  // nothing visible receives: any small valid box
+            region = Bounds{};
+            region.add(glm::vec3(-1.0f, -1.0f, -diagonal - 1.0f));
+            region.add(glm::vec3(1.0f, 1.0f, -diagonal + 1.0f));
+        }
+        // Only where a caster lies between the light and a receiver can a
+        // shadow fall: the region shrinks to the casters' footprint over it
+        // (receivers outside the map are lit, which is then exact), and the
+        // casters over it raise its near side (towards the light).
+        Bounds casters;
+        for (std::size_t i = 0; i < in.items.size(); ++i) {
+            if (!in.items[i].castsShadows) continue;
+            const Bounds c = in.itemBounds[i].transformed(cam.viewFromWorld);
+            if (c.empty() || c.hi.x < region.lo.x || c.lo.x > region.hi.x || c.hi.y < region.lo.y || c.lo.y > region.hi.y) continue;
+            casters.add(c);
+        }
+        if (!casters.empty()) {
+            region.lo.x = std::max(region.lo.x, casters.lo.x);
+            region.lo.y = std::max(region.lo.y, casters.lo.y);
+            region.hi.x = std::min(region.hi.x, casters.hi.x);
+            region.hi.y = std::min(region.hi.y, casters.hi.y);
+            region.hi.z = std::max(region.hi.z, casters.hi.z);
+        }
+    }
+    // Pad by the filter's footprint, in texels of the final size.
+    const float extent = std::max(region.hi.x - region.lo.x, region.hi.y - region.lo.y);
+    const float pad = extent * in.paddingTexels / static_cast<float>(std::max(in.size, 1));
+    region.lo -= glm::vec3(pad, pad, 0.0f);
+    region.hi += glm::vec3(pad, pad, 0.0f);
+    const float depthPad = 1e-3f * diagonal;
+    cam.nearPlane = -region.hi.z - depthPad;
+    cam.farPlane = -region.lo.z + depthPad;
+    cam.clipFromView = glm::ortho(region.lo.x, region.hi.x, region.lo.y, region.hi.y, cam.nearPlane, cam.farPlane);
+    cam.texelSize = std::max(region.hi.x - region.lo.x, region.hi.y - region.lo.y) / static_cast<float>(std::max(in.size, 1));
+    cam.perspective = false;
+    return cam;
+}
+
+LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
+    LightCamera cam;
+    const glm::vec3 axis = glm::normalize(light.direction);
+    cam.viewFromWorld = glm::lookAt(light.position, light.position + axis, upFor(axis));
+    cam.perspective = true;
+    // Far: the farthest projection on the axis of what must be covered.
+    Bounds covered;
+    if (fit == MapFit::Scene) covered = all(in);
+    else covered = visibleReceivers(in, glm::mat4(1.0f));
+    if (covered.empty()) covered = all(in);
+    float far = 0.0f;
+    for (int c = 0; c < 8 && !covered.empty(); ++c) {
+        const glm::vec3 corner((c & 1) ? covered.hi.x : covered.lo.x, (c & 2) ? covered.hi.y : covered.lo.y,
+                               (c & 4) ? covered.hi.z : covered.lo.z);
+        far = std::max(far, glm::dot(corner - light.position, axis));
+    }
+    if (light.range > 0.0f) far = std::min(far, light.range);
+    far = std::max(far, 1e-3f);
+    // The field of view just contains the outer cone, plus the padding.
+    const float halfAngle = glm::radians(light.outerConeDeg);
+    const float tanHalf = std::tan(halfAngle) * (1.0f + 2.0f * in.paddingTexels / static_cast<float>(std::max(in.size, 1)));
+    const float fovY = 2.0f * std::atan(tanHalf);
+    // Near: as far out as the casters inside the cone allow.
+    float near = far;
+    const glm::mat4 probe = glm::perspective(fovY, 1.0f, far * 1e-4f, far) * cam.viewFromWorld;
+    for (std::size_t i = 0; i < in.items.size(); ++i) {
+        if (!in.items[i].castsShadows || !mayIntersect(probe, in.itemBounds[i])) continue;
+        const Bounds& b = in.itemBounds[i];
+        const glm::vec3 c = b.centre(), e = 0.5f * b.size();
+        const float nearest = glm::dot(c - light.position, axis) - glm::dot(e, glm::abs(axis));
+        near = std::min(near, nearest);
+    }
+    near = std::clamp(near * 0.99f, far * 1e-4f, far * 0.999f);
+    cam.nearPlane = near;
+    cam.farPlane = far;
+    cam.clipFromView = glm::perspective(fovY, 1.0f, near, far);
+    cam.texelSize = 2.0f * tanHalf / static_cast<float>(std::max(in.size, 1));
+    return cam;
+}
+
+} // namespace shadowlab

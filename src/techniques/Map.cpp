@@ -1,0 +1,362 @@
+// Technique "map": shadow maps for directional and spot lights, the lecture's
+// two passes (000, 002 §8.2-8.4, 004). Shadow pass: the casters that can
+// reach the light's frustum, drawn from the light camera (src/core/
+// LightCamera) into one layer of a texture array shared by every light with
+// the same format and size, colour writes off (or depth packed into RGBA8).
+// Light pass: shaders/shadow_map.glsl compares the fragment's depth in the
+// light's texture space with the map, filtered as the light asks.
+#include "techniques/Map.h"
+
+#include "core/LightCamera.h"
+
+#include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
+
+#include "shadow_map_shared.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace shadowlab {
+
+const OptionTable& mapOptionTable() {
+    static const OptionTable table =
+        OptionTableFor<MapOptions>("map")
+            .integer(&MapOptions::size, "size", 16, 16384, "texels", "side of the square shadow map")
+            .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8"},
+                    "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1)")
+            .choice(&MapOptions::fit, "fit", {"tight", "scene"},
+                    "light camera: around what the viewer sees and the casters over it, or around the whole scene")
+            .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson"},
+                    "one nearest tap; one bilinear hardware compare; kernel x kernel taps; the lecture's dithered 4 taps; a rotated disk")
+            .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
+            .integer(&MapOptions::samples, "samples", 4, 64, "taps", "poisson filter: taps on the disk")
+            .number(&MapOptions::radius, "radius", 0.0, 32.0, "texels", "poisson filter: disk radius")
+            .number(&MapOptions::constantBias, "constantBias", 0.0, 0.1, "depth (0..1)", "subtracted from the receiver's map depth")
+            .number(&MapOptions::slopeBias, "slopeBias", 0.0, 16.0, "polygon offset factor", "shadow pass: depth offset per unit of depth slope")
+            .number(&MapOptions::offsetUnits, "offsetUnits", 0.0, 1024.0, "polygon offset units", "shadow pass: constant depth offset in the format's smallest steps")
+            .number(&MapOptions::normalBias, "normalBias", 0.0, 16.0, "texels",
+                    "receiver moved along its normal by this many map texels (their world size) times 1 - N.L")
+            .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws back faces only (closed meshes; lecture 002 §8.4.1.1)")
+            .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl"},
+                    "replace the settings with the lecture's or LearnOpenGL's (docs/techniques.md)")
+            .build();
+    return table;
+}
+
+namespace {
+
+GLenum depthFormat(MapFormat f) {
+    switch (f) {
+    case MapFormat::Depth16: return GL_DEPTH_COMPONENT16;
+    case MapFormat::Depth24: return GL_DEPTH_COMPONENT24;
+    case MapFormat::Depth32F: return GL_DEPTH_COMPONENT32F;
+    case MapFormat::Rgba8: return GL_DEPTH_COMPONENT24;  // the depth test's own buffer; the map is the colour
+    }
+    return GL_DEPTH_COMPONENT32F;
+}
+
+// Texels around the fitted region that the filter may read.
+float footprint(const MapOptions& o) {
+    switch (o.filter) {
+    case MapFilter::None: return 1.0f;
+    case MapFilter::Hardware: return 1.5f;
+    case MapFilter::Grid: return 0.5f * static_cast<float>(o.kernel) + 1.0f;
+    case MapFilter::Dither4: return 3.0f;
+    case MapFilter::Poisson: return o.radius + 1.0f;
+    }
+    return 1.0f;
+}
+
+// The light's options with its preset applied (docs/techniques.md cites each value).
+MapOptions effective(const Light& light) {
+    MapOptions o = light.shadow.get<MapOptions>();
+    if (o.preset == MapPreset::Lecture) {
+        // Lecture 000: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map,
+        // the 4-sample dithered PCF; no normal offset, no constant bias.
+        o.slopeBias = 2.0f;
+        o.offsetUnits = 4.0f;
+        o.normalBias = 0.0f;
+        o.constantBias = 0.0f;
+        o.format = MapFormat::Depth32F;
+        o.filter = MapFilter::Dither4;
+        o.fit = MapFit::Scene;
+    } else if (o.preset == MapPreset::LearnOpenGL) {
+        // LearnOpenGL 5.advanced_lighting/3.1.3: 1024^2 DEPTH_COMPONENT
+        // (float), 3x3 PCF of nearest taps, bias max(0.05 (1 - N.L), 0.005),
+        // no polygon offset or normal offset; the light camera is fixed (Map.cpp: learnOpenGlCamera).
+        o.size = 1024;
+        o.format = MapFormat::Depth32F;
+        o.filter = MapFilter::Grid;
+        o.kernel = 3;
+        o.slopeBias = 0.0f;
+        o.offsetUnits = 0.0f;
+        o.normalBias = 0.0f;
+        o.constantBias = 0.0f;
+        o.cullFront = false;
+    }
+    return o;
+}
+
+// LearnOpenGL's light camera: lookAt((-2, 4, -1), origin, +Y) with
+// ortho(-10, 10, -10, 10, 1, 7.5). Its light position is minus the light's
+// direction scaled to that length, so the scene file keeps one direction.
+LightCamera learnOpenGlCamera(const Light& light, int size) {
+    LightCamera cam;
+    const glm::vec3 eye = -glm::normalize(light.direction) * std::sqrt(21.0f);
+    cam.viewFromWorld = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    cam.nearPlane = 1.0f;
+    cam.farPlane = 7.5f;
+    cam.clipFromView = glm::ortho(-10.0f, 10.0f, -10.0f, 10.0f, cam.nearPlane, cam.farPlane);
+    cam.texelSize = 20.0f / static_cast<float>(size);
+    return cam;
+}
+
+// Texture space from clip space: the lecture's bias matrix (scale and offset by 0.5).
+const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+
+struct Group {
+    MapFormat format = MapFormat::Depth32F;
+    int size = 0;
+    int layers = 0;
+    gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, or the depth test's buffer for rgba8
+    gl::Texture packed{gl::NoCreate}; ///< RGBA8 array: the map for rgba8
+};
+
+struct PerLight {
+    MapOptions options;
+    LightCamera camera;
+    std::size_t group = 0;
+    int layer = 0;
+    gl::Framebuffer fbo{gl::NoCreate};
+};
+
+gl::Sampler makeSampler(GLenum filter, bool compare) {
+    gl::Sampler s;
+    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, filter);
+    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, filter);
+    // Outside the map: the border, depth 1 (lit).
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glSamplerParameterfv(s.id(), GL_TEXTURE_BORDER_COLOR, one);
+    if (compare) {
+        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    }
+    return s;
+}
+
+class ShadowMap final : public Technique {
+public:
+    void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
+        if (!compareNearest_) {
+            compareNearest_ = makeSampler(GL_NEAREST, true);
+            compareLinear_ = makeSampler(GL_LINEAR, true);
+            plainNearest_ = makeSampler(GL_NEAREST, false);
+            ubo_ = gl::Buffer();
+            glNamedBufferStorage(ubo_.id(), sizeof(shared::MapUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        }
+        // Lights with the same format and size share one texture array.
+        std::map<std::pair<int, int>, int> layersWanted;
+        for (int index : lights) {
+            const MapOptions o = effective(frame.scene.lights[static_cast<std::size_t>(index)]);
+            const int limit = host.glInfo().maxTextureSize;
+            if (o.size > limit)
+                throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
+                            " texels is past this GPU's limit of " + std::to_string(limit));
+            ++layersWanted[{static_cast<int>(o.format), o.size}];
+        }
+        std::vector<Group> groups;
+        for (const auto& [key, layers] : layersWanted) {
+            // Keep an existing array when it still fits, so maps are not reallocated every frame.
+            auto same = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) {
+                return static_cast<int>(g.format) == key.first && g.size == key.second && g.layers == layers;
+            });
+            if (same != groups_.end()) {
+                groups.push_back(std::move(*same));
+                continue;
+            }
+            Group g;
+            g.format = static_cast<MapFormat>(key.first);
+            g.size = key.second;
+            g.layers = layers;
+            g.depth = gl::Texture(GL_TEXTURE_2D_ARRAY);
+            glTextureStorage3D(g.depth.id(), 1, depthFormat(g.format), g.size, g.size, layers);
+            if (g.format == MapFormat::Rgba8) {
+                g.packed = gl::Texture(GL_TEXTURE_2D_ARRAY);
+                glTextureStorage3D(g.packed.id(), 1, GL_RGBA8, g.size, g.size, layers);
+            }
+            groups.push_back(std::move(g));
+        }
+        groups_ = std::move(groups);
+        std::map<std::size_t, int> nextLayer;
+        std::map<int, PerLight> perLight;
+        for (int index : lights) {
+            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+            PerLight p;
+            p.options = effective(light);
+            for (std::size_t g = 0; g < groups_.size(); ++g)
+                if (groups_[g].format == p.options.format && groups_[g].size == p.options.size) p.group = g;
+            p.layer = nextLayer[p.group]++;
+            const FitInput in{frame.itemBounds, frame.items, frame.clipFromWorld, p.options.size, footprint(p.options)};
+            if (p.options.preset == MapPreset::LearnOpenGL && light.type == LightType::Directional)
+                p.camera = learnOpenGlCamera(light, p.options.size);
+            else if (light.type == LightType::Spot)
+                p.camera = fitSpot(light, p.options.fit, in);
+            else
+                p.camera = fitDirectional(glm::normalize(light.direction), p.options.fit, in);
+            auto old = lights_.find(index);
+            if (old != lights_.end()) p.fbo = std::move(old->second.fbo);
+            if (!p.fbo) p.fbo = gl::Framebuffer();
+            perLight.emplace(index, std::move(p));
+        }
+        lights_ = std::move(perLight);
+    }
+
+    bool hasShadowPass(const Light&) const override { return true; }
+
+    void renderShadowPass(TechniqueHost& host, const FrameInfo& frame, const LightView& view) override {
+        const PerLight& p = lights_.at(view.index);
+        const Group& g = groups_[p.group];
+        const bool packed = g.format == MapFormat::Rgba8;
+        glNamedFramebufferTextureLayer(p.fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, p.layer);
+        if (packed) {
+            glNamedFramebufferTextureLayer(p.fbo.id(), GL_COLOR_ATTACHMENT0, g.packed.id(), 0, p.layer);
+            glNamedFramebufferDrawBuffer(p.fbo.id(), GL_COLOR_ATTACHMENT0);
+        } else {
+            glNamedFramebufferDrawBuffer(p.fbo.id(), GL_NONE);
+        }
+        glNamedFramebufferReadBuffer(p.fbo.id(), GL_NONE);
+        gl::checkFramebuffer(p.fbo, "shadow map framebuffer");
+        glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
+        glViewport(0, 0, g.size, g.size);
+        gl::RenderState state;  // all writes on for the clears
+        host.apply(state);
+        const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        glClearNamedFramebufferfv(p.fbo.id(), GL_DEPTH, 0, one);
+        if (packed) glClearNamedFramebufferfv(p.fbo.id(), GL_COLOR, 0, one);
+        if (!packed) state.noColor();
+        state.polygonOffset = p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f;
+        state.offsetFactor = p.options.slopeBias;
+        state.offsetUnits = p.options.offsetUnits;
+        state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
+        // An orthographic light pancakes casters nearer than its near plane onto it.
+        state.depthClamp = !p.camera.perspective;
+        host.apply(state);
+        upload(view);
+        const gl::Program& program = host.program(
+            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
+             std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_SPOT " + (p.camera.perspective ? "1" : "0") + "\n"});
+        // Casters that cannot reach the light's frustum are not drawn.
+        const glm::mat4 lightClip = p.camera.clipFromWorld();
+        std::size_t drawn = 0;
+        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+            const bool inside = !p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
+            if (inside) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+            return inside;
+        });
+        host.count("triangles", static_cast<double>(drawn));
+    }
+
+    std::string lightPassDefines(const Light& light) const override {
+        const MapOptions o = effective(light);
+        return "#define MAP_FILTER " + std::to_string(static_cast<int>(o.filter)) + "\n#define MAP_KERNEL " +
+               std::to_string(o.kernel) + "\n#define MAP_RGBA8 " + (o.format == MapFormat::Rgba8 ? "1" : "0") + "\n";
+    }
+
+    void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
+        const PerLight& p = lights_.at(view.index);
+        const Group& g = groups_[p.group];
+        upload(view);
+        if (g.format == MapFormat::Rgba8) {
+            glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
+            glBindSampler(SL_UNIT_SHADOW_FIRST, plainNearest_.id());
+        } else {
+            glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
+            glBindSampler(SL_UNIT_SHADOW_FIRST,
+                          p.options.filter == MapFilter::Hardware ? compareLinear_.id() : compareNearest_.id());
+        }
+    }
+
+    void debugImages(TechniqueHost&, const FrameInfo&, const LightView& view, std::vector<DebugImage>& out) override {
+        const PerLight& p = lights_.at(view.index);
+        const Group& g = groups_[p.group];
+        const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
+        std::vector<float> depth(n);
+        if (g.format == MapFormat::Rgba8) {
+            std::vector<std::uint8_t> rgba(n * 4);
+            glGetTextureSubImage(g.packed.id(), 0, 0, 0, p.layer, g.size, g.size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                                 static_cast<GLsizei>(rgba.size()), rgba.data());
+            for (std::size_t i = 0; i < n; ++i)
+                depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65280.0f + rgba[4 * i + 2] / 16711680.0f + rgba[4 * i + 3] / 4278190080.0f;
+        } else {
+            glGetTextureSubImage(g.depth.id(), 0, 0, 0, p.layer, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                                 static_cast<GLsizei>(n * sizeof(float)), depth.data());
+        }
+        ImageRGBA8 image{g.size, g.size, std::vector<std::uint8_t>(n * 4, 255)};
+        const float nearP = p.camera.nearPlane, farP = p.camera.farPlane;
+        for (int y = 0; y < g.size; ++y)
+            for (int x = 0; x < g.size; ++x) {
+                float d = depth[static_cast<std::size_t>(y) * g.size + x];
+                if (p.camera.perspective && d < 1.0f) {
+                    // Perspective depth linearised: eye distance from window depth, then 0..1 over near..far.
+                    const float z = 2.0f * d - 1.0f;
+                    const float eye = 2.0f * nearP * farP / (farP + nearP - z * (farP - nearP));
+                    d = (eye - nearP) / (farP - nearP);
+                }
+                const auto v = static_cast<std::uint8_t>(std::clamp(d, 0.0f, 1.0f) * 255.0f + 0.5f);
+                // Rows top to bottom: the map's v = 1 at the top.
+                std::uint8_t* px = &image.pixels[(static_cast<std::size_t>(g.size - 1 - y) * g.size + x) * 4];
+                px[0] = px[1] = px[2] = v;
+            }
+        out.push_back({"map", std::move(image)});
+    }
+
+private:
+    // Directional lights clamp depth, so only the four side planes cull.
+    static bool mayIntersectSides(const glm::mat4& clipFromWorld, const Bounds& box) {
+        glm::mat4 flattened = clipFromWorld;
+        for (int c = 0; c < 4; ++c) flattened[c][2] = 0.0f;  // z' = 0: never beyond near or far
+        return mayIntersect(flattened, box);
+    }
+
+    void upload(const LightView& view) {
+        const PerLight& p = lights_.at(view.index);
+        const Group& g = groups_[p.group];
+        shared::MapUniforms u{};
+        u.lightClipFromWorld = p.camera.clipFromWorld();
+        u.shadowFromWorld = kBias * u.lightClipFromWorld;
+        u.params = glm::vec4(static_cast<float>(p.layer), 0.0f, p.options.normalBias * p.camera.texelSize, p.camera.perspective ? 1.0f : 0.0f);
+        u.bias = glm::vec4(p.options.constantBias, 0.0f, 0.0f, 0.0f);
+        if (p.options.preset == MapPreset::LearnOpenGL) u.bias = glm::vec4(0.0f, 0.05f, 0.005f, 0.0f);
+        // Dither spread: one texel (the lecture's 2.5 x 0.001 uv at 1024 texels, about 2.5 texels, with preset lecture).
+        const float spread = p.options.preset == MapPreset::Lecture ? 2.5f * 0.001f * static_cast<float>(g.size) : 1.0f;
+        u.taps = glm::vec4(1.0f / static_cast<float>(g.size), p.options.radius, static_cast<float>(p.options.samples), spread);
+        const Light& light = view.light;
+        u.light = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), 0.0f)
+                                                         : glm::vec4(light.position, 0.0f);
+        glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
+        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
+    }
+
+    std::vector<Group> groups_;
+    std::map<int, PerLight> lights_;
+    gl::Sampler compareNearest_{gl::NoCreate}, compareLinear_{gl::NoCreate}, plainNearest_{gl::NoCreate};
+    gl::Buffer ubo_{gl::NoCreate};
+};
+
+} // namespace
+
+TechniqueEntry mapTechnique() {
+    return {"map", "a shadow map per light: orthographic for directional, perspective for spot lights", &mapOptionTable(),
+            "shadow_map.glsl", [] { return std::make_unique<ShadowMap>(); }, [](const Light& light) {
+                return light.type == LightType::Point ? std::string("map: point lights need cube maps, which are not implemented yet (use none)")
+                                                      : std::string();
+            }};
+}
+
+} // namespace shadowlab
