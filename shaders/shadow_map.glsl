@@ -8,7 +8,8 @@
 
 #if MAP_RGBA8
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
-float unpackDepth(vec4 v) { return dot(v, vec4(1.0, 1.0 / 256.0, 1.0 / 65536.0, 1.0 / 16777216.0)); }
+// The inverse of shadow_map_depth.frag's packDepth (base 255).
+float unpackDepth(vec4 v) { return dot(v, vec4(1.0, 1.0 / 255.0, 1.0 / 65025.0, 1.0 / 16581375.0)); }
 // 1 where the receiver at depth `ref` is nearer than the map's occluder.
 float mapTap(vec2 uv, float ref) {
     return ref <= unpackDepth(texture(mapPacked, vec3(uv, map.params.x))) ? 1.0 : 0.0;
@@ -22,13 +23,23 @@ float mapTap(vec2 uv, float ref) { return texture(mapDepth, vec4(uv, map.params.
 float mapNoise(vec2 pixel) { return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715)))); }
 
 vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
-    // Normal offset (scene units): one texel's world size at this point,
-    // scaled by 1 - N.L, so grazing receivers move farther off their surface.
+    // Normal offset: the receiver moves off its surface by `normalBias`
+    // texels (their world size at this point) times 1 - N.L, so grazing
+    // receivers move farther.
     vec3 toLight = map.params.w > 0.5 ? normalize(map.light.xyz - worldPosition) : map.light.xyz;
     float NdotL = clamp(dot(worldNormal, toLight), 0.0, 1.0);
     float texel = map.params.z;
     if (map.params.w > 0.5) texel *= max(dot(worldPosition - map.light.xyz, normalize(light.direction.xyz)), 0.0);
-    vec3 p = worldPosition + worldNormal * (texel * (1.0 - NdotL));
+    vec3 p = worldPosition + worldNormal * (map.bias.w * texel * (1.0 - NdotL));
+    // A filter compares the receiver's depth at its centre with occluders up
+    // to `reach` texels away; on a receiver tilted by theta from the light
+    // the surface itself is tan(theta) x that distance nearer there. Moving
+    // the receiver towards the light by as much keeps wide kernels free of
+    // acne (a conservative receiver-plane bias).
+    // sin(theta) from the cross product: accurate at small angles, where
+    // 1 - (N.L)^2 rounds to 0 in single precision.
+    float tanTheta = min(length(cross(worldNormal, toLight)) / max(NdotL, 1e-4), 10.0);
+    p += toLight * (map.params.y * texel * tanTheta);
     vec4 s = map.shadowFromWorld * vec4(p, 1.0);
     if (s.w <= 0.0) return vec3(1.0);
     s.xyz /= s.w;

@@ -71,6 +71,20 @@ float footprint(const MapOptions& o) {
     return 1.0f;
 }
 
+// Texels from a filter's centre to its farthest tap (the receiver-plane
+// bias covers that distance; the presets keep their own biases instead).
+float reach(const MapOptions& o) {
+    if (o.preset != MapPreset::Default) return 0.0f;
+    switch (o.filter) {
+    case MapFilter::None: return 0.0f;
+    case MapFilter::Hardware: return 1.0f;  // the 2x2 bilinear footprint
+    case MapFilter::Grid: return 0.5f * static_cast<float>(o.kernel - 1) * 1.41421356f;
+    case MapFilter::Dither4: return 1.5f * 1.41421356f;
+    case MapFilter::Poisson: return o.radius;
+    }
+    return 0.0f;
+}
+
 // The light's options with its preset applied (docs/techniques.md cites each value).
 MapOptions effective(const Light& light) {
     MapOptions o = light.shadow.get<MapOptions>();
@@ -292,7 +306,7 @@ public:
             glGetTextureSubImage(g.packed.id(), 0, 0, 0, p.layer, g.size, g.size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
                                  static_cast<GLsizei>(rgba.size()), rgba.data());
             for (std::size_t i = 0; i < n; ++i)
-                depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65280.0f + rgba[4 * i + 2] / 16711680.0f + rgba[4 * i + 3] / 4278190080.0f;
+                depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65025.0f + rgba[4 * i + 2] / 16581375.0f;  // base 255 (the 4th digit is below float precision here)
         } else {
             glGetTextureSubImage(g.depth.id(), 0, 0, 0, p.layer, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                                  static_cast<GLsizei>(n * sizeof(float)), depth.data());
@@ -330,8 +344,8 @@ private:
         shared::MapUniforms u{};
         u.lightClipFromWorld = p.camera.clipFromWorld();
         u.shadowFromWorld = kBias * u.lightClipFromWorld;
-        u.params = glm::vec4(static_cast<float>(p.layer), 0.0f, p.options.normalBias * p.camera.texelSize, p.camera.perspective ? 1.0f : 0.0f);
-        u.bias = glm::vec4(p.options.constantBias, 0.0f, 0.0f, 0.0f);
+        u.params = glm::vec4(static_cast<float>(p.layer), reach(p.options), p.camera.texelSize, p.camera.perspective ? 1.0f : 0.0f);
+        u.bias = glm::vec4(p.options.constantBias, 0.0f, 0.0f, p.options.normalBias);
         if (p.options.preset == MapPreset::LearnOpenGL) u.bias = glm::vec4(0.0f, 0.05f, 0.005f, 0.0f);
         // Dither spread: one texel (the lecture's 2.5 x 0.001 uv at 1024 texels, about 2.5 texels, with preset lecture).
         const float spread = p.options.preset == MapPreset::Lecture ? 2.5f * 0.001f * static_cast<float>(g.size) : 1.0f;

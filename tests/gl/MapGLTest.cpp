@@ -1,0 +1,280 @@
+// Technique "map" (shadow maps for directional and spot lights) against the
+// ray-traced reference: accuracy on every bundled scene, no acne, no
+// peter-panning, the map's outside, the cone, the filters' penumbrae,
+// several lights in one frame, and the RGBA8 packing.
+#include "GLTestContext.h"
+#include "ImageArtifacts.h"
+
+#include <shadowlab/Compare.h>
+#include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
+#include <shadowlab/SceneFile.h>
+
+#include <filesystem>
+
+using namespace shadowlab;
+using shadowlab::test::GLTest;
+namespace fs = std::filesystem;
+
+namespace {
+
+// `--set` lines that give every directional and spot light of `scene` the
+// map technique with `extra` options (each "key=value").
+std::vector<std::string> mapOverrides(const Scene& scene, const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        if (scene.lights[i].type == LightType::Point) continue;
+        const std::string at = "lights[" + std::to_string(i) + "].shadow.";
+        out.push_back(at + "technique=map");
+        for (const std::string& e : extra) out.push_back(at + "map." + e);
+    }
+    return out;
+}
+
+Comparison compareScene(const Scene& scene, int width = 960, int height = 540) {
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    CompareOptions options;
+    options.width = width;
+    options.height = height;
+    return compareWithReference(renderer, scene, options);
+}
+
+double awayFromEdges(const LightComparison& l) { return l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges; }
+
+std::vector<fs::path> bundledScenes() {
+    std::vector<fs::path> out;
+    for (const auto& entry : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes"))
+        if (entry.path().extension() == ".json") out.push_back(entry.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// A plane seen from above under one light; `nodes` adds more nodes.
+Scene planeScene(const std::string& light, const std::string& nodes = "", const std::string& camera = R"({"position": [0, 9, 6], "target": [0, 0, 0]})") {
+    return parseScene(R"({"camera": )" + camera + R"(, "lights": [)" + light + R"(],
+      "nodes": [{"name": "ground", "shape": {"type": "plane", "size": [40, 40]}})" + nodes + "]}",
+                      "test", ".");
+}
+
+} // namespace
+
+class MapGLTest : public GLTest {};
+
+// The issue's bar: at the default 2048^2 with filter "none", at most 0.05 %
+// of the receivers misclassified outside the 1-pixel edge band, for every
+// directional and spot light of every bundled scene. (Measured: at most
+// 0.025 %, the bunny's thin ears.)
+TEST_F(MapGLTest, EveryBundledSceneMatchesTheReferenceAwayFromEdges) {
+    int lights = 0;
+    for (const fs::path& file : bundledScenes()) {
+        const Scene plain = loadSceneFile(file);
+        const auto overrides = mapOverrides(plain, {"filter=\"none\""});
+        if (overrides.empty()) continue;
+        SCOPED_TRACE(file.filename().string());
+        const Scene scene = loadSceneFile(file, overrides);
+        const Comparison c = compareScene(scene);
+        for (std::size_t i = 0; i < c.lights.size(); ++i) {
+            if (scene.lights[i].type == LightType::Point) continue;
+            EXPECT_LE(awayFromEdges(c.lights[i]), 0.0005) << c.lights[i].name;
+            ++lights;
+        }
+        if (HasFailure()) test::saveImagesIfFailed(file.stem().string(), c.technique, c.reference);
+    }
+    EXPECT_GE(lights, 6);
+}
+
+// LearnOpenGL's own settings on its own scene, and ours, against the
+// 0.023 % its demo misclassifies outside the band (measured by the issue).
+TEST_F(MapGLTest, LearnOpenGlSceneBeatsTheDemo) {
+    const fs::path file = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "learnopengl-shadow-mapping.json";
+    const Comparison theirs = compareScene(loadSceneFile(file, {"lights[0].shadow.technique=map", "lights[0].shadow.map.preset=learnopengl"}), 800, 600);
+    const Comparison ours = compareScene(loadSceneFile(file, {"lights[0].shadow.technique=map"}), 800, 600);
+    EXPECT_LT(awayFromEdges(theirs.lights[0]), 0.00023);
+    EXPECT_LE(awayFromEdges(ours.lights[0]), awayFromEdges(theirs.lights[0]));
+    EXPECT_GT(theirs.lights[0].referenceShadowedPixels, 10000u) << "the cubes' shadows are in view";
+}
+
+// Acne: a plane lit from 0 to 80 degrees off its normal must not shadow
+// itself anywhere with the default bias (all receivers, edge band included:
+// there is no true shadow edge to excuse a pixel).
+TEST_F(MapGLTest, NoAcneOnALitPlaneFromZeroToEightyDegrees) {
+    for (int degrees = 0; degrees <= 80; degrees += 10) {
+        SCOPED_TRACE(std::to_string(degrees) + " degrees");
+        const float a = glm::radians(static_cast<float>(degrees));
+        const std::string dir = "[" + std::to_string(std::sin(a)) + ", " + std::to_string(-std::cos(a)) + ", 0.1]";
+        for (const char* type : {"directional", "spot"}) {
+            SCOPED_TRACE(type);
+            const std::string light = std::string(type) == "directional"
+                ? R"({"type": "directional", "direction": )" + dir + R"(, "shadow": {"technique": "map"}})"
+                : R"({"type": "spot", "position": [)" + std::to_string(-6.0f * std::sin(a)) + ", " + std::to_string(6.0f * std::cos(a)) +
+                      R"(, 0], "direction": )" + dir + R"(, "outerCone": 45, "innerCone": 40, "shadow": {"technique": "map"}})";
+            const Comparison c = compareScene(planeScene(light), 320, 180);
+            EXPECT_GT(c.lights[0].receiverPixels, 10000u);
+            EXPECT_EQ(c.lights[0].falseShadow, 0.0);
+        }
+    }
+}
+
+// Peter-panning: a box standing on the plane; its shadow must start at its
+// base. Any gap of more than a pixel would be false lit outside the band.
+TEST_F(MapGLTest, NoPeterPanningUnderABoxOnThePlane) {
+    for (const char* light : {R"({"type": "directional", "direction": [0.5, -1, 0.3], "shadow": {"technique": "map"}})",
+                              R"({"type": "spot", "position": [-3, 6, -2], "direction": [0.5, -1, 0.3], "outerCone": 40, "shadow": {"technique": "map"}})"}) {
+        SCOPED_TRACE(light);
+        const Comparison c = compareScene(planeScene(light, R"(, {"shape": {"type": "box", "size": [1, 1, 1]}, "translation": [0, 0.5, 0]})"), 640, 360);
+        EXPECT_GT(c.lights[0].referenceShadowedPixels, 1000u);
+        EXPECT_EQ(c.lights[0].falseLitAwayFromEdges, 0.0);
+        EXPECT_EQ(c.lights[0].falseShadowAwayFromEdges, 0.0);
+        test::saveImagesIfFailed("box", c.technique, c.reference);
+    }
+}
+
+// Receivers outside the light camera are lit, not shadowed by the border:
+// the scene fit and a map whose tight box covers only the casters both
+// leave the far ground lit. Spot: outside the cone the point is unlit by
+// the light itself (reach), and the map does not change that.
+TEST_F(MapGLTest, OutsideTheMapIsLitAndOutsideTheConeIsUnlit) {
+    // A small caster far to one side: the tight map covers its footprint only.
+    const Scene dir = planeScene(R"({"type": "directional", "direction": [0.3, -1, 0.2], "shadow": {"technique": "map"}})",
+                                 R"(, {"shape": {"type": "box", "size": [0.5, 0.5, 0.5]}, "translation": [-8, 0.25, -8]})");
+    Renderer renderer(test::glContext());
+    renderer.upload(dir);
+    renderer.render(dir, {320, 180});
+    const std::vector<float> vis = renderer.readVisibility(dir, 0);
+    std::size_t lit = 0, ground = 0;
+    for (float v : vis) {
+        ground += v > 0.0f;
+        lit += v == 1.0f;
+    }
+    // Everything but the small box's shadow (and the box) is lit.
+    EXPECT_GT(lit, ground * 95 / 100);
+    const Comparison c = compareScene(dir, 320, 180);
+    EXPECT_EQ(c.lights[0].falseShadow, 0.0);
+
+    const Scene spot = planeScene(R"({"type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "outerCone": 15, "innerCone": 10,
+                                      "shadow": {"technique": "map"}})");
+    renderer.upload(spot);
+    renderer.render(spot, {160, 90});
+    const ImageRGBA8 image = renderer.readColor();
+    const Scene ambientOnly = planeScene(R"({"type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "outerCone": 15, "innerCone": 10, "intensity": 0})");
+    renderer.upload(ambientOnly);
+    renderer.render(ambientOnly, {160, 90});
+    const ImageRGBA8 dark = renderer.readColor();
+    // The corners lie far outside the 15 degree cone: exactly the ambient colour.
+    for (std::size_t corner : {std::size_t(0), std::size_t(159), std::size_t(89 * 160), std::size_t(89 * 160 + 159)})
+        for (int ch = 0; ch < 3; ++ch) EXPECT_EQ(image.pixels[corner * 4 + ch], dark.pixels[corner * 4 + ch]) << corner;
+}
+
+// PCF: across a straight shadow edge visibility rises monotonically from 0
+// to 1, over a width that grows with the kernel; dither4 stays within the
+// values four taps can give.
+TEST_F(MapGLTest, FilteredEdgesRiseMonotonicallyAndWidenWithTheKernel) {
+    // A slab's straight shadow edge across the view: the slab hangs above
+    // the camera (which looks straight down, so it does not see it) and
+    // covers x > 0; the sun shines straight down. Fit "scene" over the 40 m
+    // plane at 256^2 makes one texel ~0.22 m, ~20 pixels here, so every
+    // kernel's penumbra spans many pixels of the row.
+    auto edgeProfile = [](const std::string& filterJson) {
+        const Scene scene = planeScene(R"({"type": "directional", "direction": [0, -1, 0.0001],
+                                          "shadow": {"technique": "map", "map": {"size": 256, "fit": "scene", )" + filterJson + R"(}}})",
+                                       R"(, {"shape": {"type": "box", "size": [20, 0.2, 20]}, "translation": [10, 5, 0]})",
+                                       R"({"position": [0, 2, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fovY": 20})");
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        renderer.render(scene, {256, 64});
+        const std::vector<float> vis = renderer.readVisibility(scene, 0);
+        return std::vector<float>(vis.begin() + 32 * 256, vis.begin() + 33 * 256);  // one row across the edge
+    };
+    auto width = [](const std::vector<float>& row) {  // pixels strictly between 0 and 1
+        int n = 0;
+        for (float v : row) n += v > 0.0f && v < 1.0f;
+        return n;
+    };
+    int previous = -1;
+    for (int kernel : {2, 3, 5, 8}) {
+        SCOPED_TRACE("kernel " + std::to_string(kernel));
+        const std::vector<float> row = edgeProfile(R"("filter": "grid", "kernel": )" + std::to_string(kernel));
+        EXPECT_EQ(row.front(), 1.0f);  // x < 0: lit
+        EXPECT_EQ(row.back(), 0.0f);   // under the slab
+        for (std::size_t x = 1; x < row.size(); ++x) EXPECT_LE(row[x], row[x - 1] + 1e-6f) << "x " << x;  // lit to shadowed: never rises
+        EXPECT_GT(width(row), previous) << "a wider kernel, a wider penumbra";
+        previous = width(row);
+    }
+    const std::vector<float> dither = edgeProfile(R"("filter": "dither4")");
+    for (float v : dither) {
+        const float quarters = v * 4.0f;  // four taps: 0, 1/4, ... 1
+        EXPECT_NEAR(quarters, std::round(quarters), 1e-4f) << v;
+    }
+    EXPECT_GT(width(dither), 0);
+    const std::vector<float> poisson = edgeProfile(R"("filter": "poisson", "samples": 16, "radius": 2)");
+    EXPECT_GT(width(poisson), 0);
+}
+
+// Four shadowed lights, two directional and two spot, in one frame.
+TEST_F(MapGLTest, FourLightsInOneFrameEachMatchTheReference) {
+    const Scene scene = parseScene(R"({
+      "camera": {"position": [0, 10, 10], "target": [0, 0, 0], "fovY": 50},
+      "lights": [
+        {"name": "sun a", "type": "directional", "direction": [0.5, -1, 0.2], "intensity": 0.3, "shadow": {"technique": "map"}},
+        {"name": "sun b", "type": "directional", "direction": [-0.4, -1, -0.3], "intensity": 0.3, "shadow": {"technique": "map", "map": {"size": 1024}}},
+        {"name": "spot a", "type": "spot", "position": [4, 6, 0], "direction": [-0.6, -1, 0], "outerCone": 40, "intensity": 0.3, "shadow": {"technique": "map"}},
+        {"name": "spot b", "type": "spot", "position": [-4, 6, 3], "direction": [0.6, -1, -0.4], "outerCone": 40, "intensity": 0.3, "shadow": {"technique": "map", "map": {"format": "depth24"}}}
+      ],
+      "nodes": [
+        {"name": "ground", "shape": {"type": "plane", "size": [30, 30]}},
+        {"name": "box", "shape": {"type": "box", "size": [1, 2, 1]}, "translation": [-1, 1, 0]},
+        {"name": "ball", "shape": {"type": "sphere", "radius": 0.8}, "translation": [1.5, 1.2, 0.5]},
+        {"name": "torus", "shape": {"type": "torus", "majorRadius": 0.8, "minorRadius": 0.25}, "translation": [0, 0.6, 2.5], "rotation": [30, 0, 0]}
+      ]
+    })", "four-lights", ".");
+    const Comparison c = compareScene(scene);
+    ASSERT_EQ(c.lights.size(), 4u);
+    for (const LightComparison& l : c.lights) {
+        SCOPED_TRACE(l.name);
+        EXPECT_GT(l.referenceShadowedPixels, 1000u);
+        EXPECT_LE(awayFromEdges(l), 0.0005);
+    }
+    test::saveImagesIfFailed("four-lights", c.technique, c.reference);
+}
+
+// RGBA8 packing (lecture 002 §8.3.1) classifies like depth32f on at least
+// 99.9 % of the receivers of every directional and spot scene.
+TEST_F(MapGLTest, Rgba8PackingClassifiesLikeDepth32f) {
+    for (const fs::path& file : bundledScenes()) {
+        const Scene plain = loadSceneFile(file);
+        const auto base = mapOverrides(plain, {"filter=\"none\""});
+        if (base.empty()) continue;
+        SCOPED_TRACE(file.filename().string());
+        const Scene packed = loadSceneFile(file, mapOverrides(plain, {"filter=\"none\"", "format=\"rgba8\""}));
+        const Scene depth = loadSceneFile(file, base);
+        Renderer renderer(test::glContext());
+        renderer.upload(depth);
+        renderer.render(depth, {480, 270});
+        std::vector<std::vector<float>> a, b;
+        for (std::size_t i = 0; i < depth.lights.size(); ++i) a.push_back(renderer.readVisibility(depth, i));
+        renderer.render(packed, {480, 270});
+        for (std::size_t i = 0; i < packed.lights.size(); ++i) b.push_back(renderer.readVisibility(packed, i));
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            if (depth.lights[i].type == LightType::Point) continue;
+            std::size_t same = 0, counted = 0;
+            for (std::size_t p = 0; p < a[i].size(); ++p) {
+                // Both 0: background, or shadowed in both (agreeing); leaving
+                // them out only makes the share stricter.
+                if (a[i][p] == 0.0f && b[i][p] == 0.0f) continue;
+                ++counted;
+                same += (a[i][p] >= 0.5f) == (b[i][p] >= 0.5f);
+            }
+            EXPECT_GE(static_cast<double>(same), 0.999 * static_cast<double>(counted)) << "light " << i;
+        }
+    }
+}
+
+TEST_F(MapGLTest, APointLightWithMapIsANamedError) {
+    try {
+        parseScene(R"({"lights": [{"type": "point", "position": [0, 2, 0], "shadow": {"technique": "map"}}]})", "p.json", ".");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("p.json: lights[0].shadow.technique: map: point lights need cube maps"), std::string::npos) << e.what();
+    }
+}
