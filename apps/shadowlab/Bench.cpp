@@ -109,12 +109,17 @@ void StagingDirectory::commit() {
 
 namespace {
 
-json stats(std::vector<double> values) {
-    if (values.empty()) return json{{"median", 0.0}, {"min", 0.0}, {"max", 0.0}};
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
-    const double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    return json{{"median", median}, {"min", values.front()}, {"max", values.back()}};
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+json stats(std::vector<double> values) {
+    if (values.empty()) return json{{"median", 0.0}, {"min", 0.0}, {"max", 0.0}};
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    return json{{"median", median(values)}, {"min", *lo}, {"max", *hi}};
 }
 
 // One line per step when stderr is not a terminal, an updating bar when it is.
@@ -200,19 +205,28 @@ json runBench(Context& context, const BenchArgs& args) {
             plain.height = args.height;
             RenderOptions clocked = plain;
             clocked.clock = args.clock;
-            for (int i = 0; i < args.warmup; ++i) renderer.render(scene, plain);
-            std::map<std::string, std::vector<double>> passTimes;
-            std::vector<double> frameTimes, passTotal;
+            clocked.measureFloors = true;
+            // The same scene unshadowed: every technique's ratio rests on it.
+            Scene unshadowed = scene;
+            for (Light& light : unshadowed.lights) light.shadow.technique = "none";
+            for (int i = 0; i < args.warmup; ++i) {
+                renderer.render(scene, plain);
+                renderer.render(unshadowed, plain);
+            }
+            std::map<std::string, std::vector<double>> passTimes, counters;
+            std::vector<double> frameTimes, unshadowedTimes, passTotal;
             std::string clockName = "off";
             int baseLight = -1;
             for (int i = 0; i < args.frames; ++i) {
                 frameTimes.push_back(renderer.render(scene, plain).cpuMs);
+                unshadowedTimes.push_back(renderer.render(unshadowed, plain).cpuMs);
                 const FrameStats frame = renderer.render(scene, clocked);
                 double sum = 0.0;
                 for (const PassTiming& p : frame.passes) {
                     passTimes[p.name].push_back(p.ms);
                     if (p.name.find('.') == std::string::npos) sum += p.ms;  // nested scopes are inside their pass
                 }
+                for (const auto& [name, value] : frame.counters) counters[name].push_back(value);
                 passTotal.push_back(sum);
                 clockName = frame.clock;
                 baseLight = frame.baseLight;
@@ -233,7 +247,22 @@ json runBench(Context& context, const BenchArgs& args) {
                 const LightComparison& c = comparison.lights[l];
                 const std::string errorName = stem + "-error-" + std::to_string(l) + ".png";
                 writePng(images / errorName, c.errorImage);
-                lights.push_back(lightRecord(scene.lights[l], c, {{"errorImage", "images/" + errorName}}));
+                json record = lightRecord(scene.lights[l], c, {{"errorImage", "images/" + errorName}});
+                // The shadow pass beside its floor (a bare depth-only draw of
+                // the same casters into a target of the same size), which it
+                // contains as a nested scope.
+                const std::string pass = "shadow[" + std::to_string(l) + "]";
+                if (passTimes.count(pass)) {
+                    const double whole = median(passTimes[pass]);
+                    const double floor = passTimes.count(pass + ".floor") ? median(passTimes[pass + ".floor"]) : 0.0;
+                    record["shadowPassMs"] = whole - floor;
+                    if (floor > 0.0) {
+                        record["shadowFloorMs"] = floor;
+                        record["shadowPassOverFloor"] = (whole - floor) / floor;
+                    }
+                }
+                if (counters.count(pass + ".triangles")) record["shadowTriangles"] = median(counters[pass + ".triangles"]);
+                lights.push_back(std::move(record));
             }
             json passes = json::object();
             for (const auto& [name, times] : passTimes) passes[name] = stats(times);
@@ -254,6 +283,8 @@ json runBench(Context& context, const BenchArgs& args) {
                                {"passMs", passes},
                                {"passTotalMs", stats(passTotal)},
                                {"frameMs", stats(frameTimes)},
+                               {"unshadowedFrameMs", stats(unshadowedTimes)},
+                               {"frameOverUnshadowed", median(frameTimes) / std::max(median(unshadowedTimes), 1e-9)},
                                {"referenceMs", comparison.referenceMs},
                                {"lights", lights},
                                {"techniqueImage", "images/" + stem + "-technique.png"},

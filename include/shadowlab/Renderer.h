@@ -38,6 +38,10 @@ struct RenderOptions {
     /// Seconds since the start of an animation, handed to techniques and
     /// animated lights. Default 0.
     double timeSeconds = 0.0;
+    /// Techniques also time the floor of their passes (e.g. a bare
+    /// depth-only draw of the same casters into a target of the same size),
+    /// as nested "floor" scopes: what a pass cannot beat. Default off (bench turns it on).
+    bool measureFloors = false;
 };
 
 struct PassTiming {

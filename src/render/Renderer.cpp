@@ -293,6 +293,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     const glm::ivec2 size(options.width, options.height);
     if (!targets || targets->size != size || (options.surfaces && !targets->surfaces)) targets.emplace(size, options.surfaces);
     beginFrame(s, size, options.timeSeconds);
+    info->measureFloors = options.measureFloors;
     clock.emplace(clockKind(options.clock, gl));
     litMode = LitMode::Shade;
     counters.clear();

@@ -274,6 +274,7 @@ public:
             return inside;
         });
         host.count("triangles", static_cast<double>(drawn));
+        if (frame.measureFloors) drawFloor(host, frame, p, program);
     }
 
     std::string lightPassDefines(const Light& light) const override {
@@ -331,6 +332,43 @@ public:
     }
 
 private:
+    // The floor of a shadow pass: the same casters, depth only, into a
+    // scratch target of the same size and format, with no bias, culling or
+    // packing: what the pass itself costs at least.
+    void drawFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p, const gl::Program&) {
+        const Group& g = groups_[p.group];
+        if (!floorTarget_ || floorSize_ != g.size || floorFormat_ != g.format) {
+            floorTarget_ = gl::Texture(GL_TEXTURE_2D);
+            glTextureStorage2D(floorTarget_.id(), 1, depthFormat(g.format), g.size, g.size);
+            floorFbo_ = gl::Framebuffer();
+            glNamedFramebufferTexture(floorFbo_.id(), GL_DEPTH_ATTACHMENT, floorTarget_.id(), 0);
+            glNamedFramebufferDrawBuffer(floorFbo_.id(), GL_NONE);
+            floorSize_ = g.size;
+            floorFormat_ = g.format;
+        }
+        const gl::Program& bare = host.program(
+            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n"});
+        const auto scope = host.timeScope("floor");
+        glBindFramebuffer(GL_FRAMEBUFFER, floorFbo_.id());
+        glViewport(0, 0, g.size, g.size);
+        gl::RenderState state;
+        host.apply(state);
+        const float one = 1.0f;
+        glClearNamedFramebufferfv(floorFbo_.id(), GL_DEPTH, 0, &one);
+        state.noColor();
+        state.depthClamp = !p.camera.perspective;
+        host.apply(state);
+        const glm::mat4 lightClip = p.camera.clipFromWorld();
+        host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) {
+            return !p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
+        });
+    }
+
+    gl::Texture floorTarget_{gl::NoCreate};
+    gl::Framebuffer floorFbo_{gl::NoCreate};
+    int floorSize_ = 0;
+    MapFormat floorFormat_ = MapFormat::Depth32F;
+
     // Directional lights clamp depth, so only the four side planes cull.
     static bool mayIntersectSides(const glm::mat4& clipFromWorld, const Bounds& box) {
         glm::mat4 flattened = clipFromWorld;

@@ -38,6 +38,7 @@ struct FrameInfo {
     glm::mat4 clipFromWorld{1.0f};
     double timeSeconds = 0.0;                ///< RenderOptions::timeSeconds (animated lights)
     std::uint64_t frameIndex = 0;            ///< frames this Renderer has drawn before this one
+    bool measureFloors = false;              ///< RenderOptions::measureFloors: time a bare "floor" draw beside each pass
 };
 
 /// One light of the frame.
