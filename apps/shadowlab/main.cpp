@@ -39,7 +39,20 @@ struct RenderArgs {
     int height = 720;
     std::vector<std::string> overrides;
     std::string debugImages;  ///< directory for the techniques' debug images; empty = none
+    int viewFromLight = -1;   ///< --view-from-light: the light whose view replaces the camera; -1 none
 };
+
+// --view-from-light I: the scene seen from light I (lecture 002 exercise 8.6.1-1).
+void applyViewFromLight(Scene& scene, int light) {
+    if (light < 0) return;
+    if (static_cast<std::size_t>(light) >= scene.lights.size())
+        throw Error("--view-from-light " + std::to_string(light) + ": the scene has " + std::to_string(scene.lights.size()) + " light(s)");
+    try {
+        scene.camera = cameraFromLight(scene, scene.lights[static_cast<std::size_t>(light)]);
+    } catch (const Error& e) {
+        throw Error("--view-from-light " + std::to_string(light) + ": " + e.what());
+    }
+}
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
     return path.empty() ? defaultScene(overrides) : loadSceneFile(path, overrides);
@@ -93,7 +106,8 @@ void requireNoGlErrors(const Context& context) {
 }
 
 int runRender(const RenderArgs& args) {
-    const Scene scene = loadScene(args.scene, args.overrides);
+    Scene scene = loadScene(args.scene, args.overrides);
+    applyViewFromLight(scene, args.viewFromLight);
     const std::string defaultName = (args.scene.empty() ? std::string("default") : fs::path(args.scene).stem().string()) + ".png";
     const fs::path output = checkOutput(args.output.empty() ? defaultName : args.output, "-o");
     checkMemory(args.width, args.height);
@@ -297,6 +311,8 @@ int main(int argc, char** argv) {
     render->add_option("--width", renderArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     render->add_option("--height", renderArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     render->add_option("--set", renderArgs.overrides, "Override a scene value by JSON path, e.g. lights[0].intensity=2")->take_all();
+    render->add_option("--view-from-light", renderArgs.viewFromLight, "See the scene from light I's camera (spot: along its cone; directional: along its direction)")
+        ->check(CLI::NonNegativeNumber);
     render->add_option("--debug-images", renderArgs.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
 
     CompareArgs compareArgs;

@@ -161,6 +161,13 @@ struct Scene {
     std::pair<glm::vec3, glm::vec3> worldBounds() const;
 };
 
+/// The light's own view as a camera (lecture 002 exercise 8.6.1-1): a spot
+/// light looks along its axis with a field of view of twice its outer cone;
+/// a directional light looks along its direction from outside the scene's
+/// bounds, with a field of view just containing them. Near and far enclose
+/// the scene. Throws shadowlab::Error for a point light (it has six views).
+Camera cameraFromLight(const Scene& scene, const Light& light);
+
 /// The scene file's name of a light type: "directional", "spot", "point".
 const char* toString(LightType t);
 

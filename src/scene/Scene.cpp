@@ -1,7 +1,11 @@
 #include <shadowlab/Scene.h>
 
+#include <shadowlab/Error.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace shadowlab {
@@ -52,6 +56,33 @@ std::pair<glm::vec3, glm::vec3> Scene::worldBounds() const {
         }
     }
     return {lo, hi};
+}
+
+Camera cameraFromLight(const Scene& scene, const Light& light) {
+    if (light.type == LightType::Point) throw Error("light '" + light.name + "': a point light has no single view (it has six)");
+    const glm::vec3 axis = glm::normalize(light.direction);
+    auto [lo, hi] = scene.worldBounds();
+    if (!(lo.x <= hi.x)) lo = hi = glm::vec3(0.0f);
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+    Camera cam;
+    cam.up = std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    if (light.type == LightType::Spot) {
+        cam.position = light.position;
+        cam.fovYDeg = std::min(2.0f * light.outerConeDeg, 170.0f);
+        const float distance = glm::length(centre - light.position);
+        cam.farPlane = distance + radius;
+        cam.nearPlane = std::max(cam.farPlane * 1e-4f, 1e-3f);
+    } else {
+        // From outside the bounds, a narrow view that just contains them.
+        const float distance = 4.0f * radius;
+        cam.position = centre - axis * distance;
+        cam.fovYDeg = glm::degrees(2.0f * std::asin(std::min(radius / distance, 1.0f)));
+        cam.nearPlane = distance - radius;
+        cam.farPlane = distance + radius;
+    }
+    cam.target = cam.position + axis;
+    return cam;
 }
 
 const char* toString(LightType t) {

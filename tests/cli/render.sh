@@ -23,4 +23,12 @@ out=$("$tool" render "$src/scenes/torus-resting.json" -o t.png --width 64 --heig
 out=$("$tool" render "$src/scenes/torus-resting.json" -o d.png --width 64 --height 48 --set lights[0].intensity=0.5 --debug-images dbg)
 [[ "$out" == "d.png" && -d dbg && -z "$(ls dbg)" ]] || { echo "debug images: '$out'"; exit 1; }
 cmp -s d.png t.png || { echo "--debug-images changed the image"; exit 1; }
-echo "5 passed, 0 failed"
+# --view-from-light: the light's own view; a point light or a missing light is a one-line error.
+out=$("$tool" render "$src/scenes/spot-objects.json" -o v.png --width 64 --height 48 --view-from-light 0)
+[[ "$out" == "v.png" && -s v.png ]] || { echo "view from light wrote '$out'"; exit 1; }
+cmp -s v.png d.png && { echo "--view-from-light changed nothing"; exit 1; }
+if "$tool" render "$src/scenes/room-point.json" -o p.png --view-from-light 0 2>err.txt; then echo "point light view accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--view-from-light 0: light" err.txt && [[ ! -e p.png ]] || { echo "point light view: $(cat err.txt)"; exit 1; }
+if "$tool" render "$src/scenes/spot-objects.json" -o p.png --view-from-light 7 2>err.txt; then echo "light 7 accepted"; exit 1; fi
+grep -q -- "--view-from-light 7: the scene has 1 light" err.txt && [[ ! -e p.png ]] || { echo "missing light: $(cat err.txt)"; exit 1; }
+echo "6 passed, 0 failed"

@@ -1,4 +1,5 @@
 // Camera and node transforms: the math every pass and the reference share.
+#include <shadowlab/Error.h>
 #include <shadowlab/Scene.h>
 
 #include <gtest/gtest.h>
@@ -77,4 +78,20 @@ TEST(Camera, InfiniteFarIsTheLimitOfFarPlanes) {
     const glm::mat4 big = cam.clipFromView(1.5f), inf = cam.clipFromViewInfiniteFar(1.5f);
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) EXPECT_NEAR(big[c][r], inf[c][r], 1e-6f) << c << "," << r;
+}
+
+TEST(Camera, FromASpotLightLooksAlongItsAxisThroughItsCone) {
+    Scene scene;
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {1, 5, 2};
+    spot.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.1f));
+    spot.outerConeDeg = 25.0f;
+    const Camera cam = cameraFromLight(scene, spot);
+    EXPECT_EQ(cam.position, spot.position);
+    EXPECT_NEAR(glm::length(glm::normalize(cam.target - cam.position) - spot.direction), 0.0f, 1e-6f);
+    EXPECT_FLOAT_EQ(cam.fovYDeg, 50.0f);
+    Light point;
+    point.type = LightType::Point;
+    EXPECT_THROW(cameraFromLight(scene, point), Error);
 }
