@@ -185,7 +185,9 @@ public:
             ++layersWanted[{static_cast<int>(o.format), o.size}];
         }
         std::vector<Group> groups;
-        for (const auto& [key, layers] : layersWanted) {
+        for (const auto& wanted : layersWanted) {
+            const std::pair<int, int> key = wanted.first;
+            const int layers = wanted.second;
             // Keep an existing array when it still fits, so maps are not reallocated every frame.
             auto same = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) {
                 return static_cast<int>(g.format) == key.first && g.size == key.second && g.layers == layers;
