@@ -299,7 +299,7 @@ public:
         }
     }
 
-    void debugImages(TechniqueHost&, const FrameInfo&, const LightView& view, std::vector<DebugImage>& out) override {
+    void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, std::vector<DebugImage>& out) override {
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
         const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
@@ -331,9 +331,40 @@ public:
                 px[0] = px[1] = px[2] = v;
             }
         out.push_back({"map", std::move(image)});
+        out.push_back({"texel-density", texelDensity(host, frame, view)});
     }
 
 private:
+    // The frame from the camera, coloured by shadow-map texels per screen
+    // pixel (shaders/shadow_map_density.frag).
+    ImageRGBA8 texelDensity(TechniqueHost& host, const FrameInfo& frame, const LightView& view) {
+        const glm::ivec2 size = frame.viewport;
+        gl::Texture colour(GL_TEXTURE_2D), depth(GL_TEXTURE_2D);
+        glTextureStorage2D(colour.id(), 1, GL_RGBA8, size.x, size.y);
+        glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT24, size.x, size.y);
+        gl::Framebuffer fbo;
+        glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
+        glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+        gl::checkFramebuffer(fbo, "texel-density framebuffer");
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, size.x, size.y);
+        host.apply(gl::RenderState{});
+        const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f}, one = 1.0f;
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, background);
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+        upload(view);
+        host.drawItems(ItemFilter::All, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_density.frag"}}, ""}));
+        ImageRGBA8 image{size.x, size.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size.x) * size.y * 4)};
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glGetTextureImage(colour.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());
+        // GL's rows go bottom to top; images top to bottom.
+        const std::size_t row = static_cast<std::size_t>(size.x) * 4;
+        for (int y = 0; y < size.y / 2; ++y)
+            std::swap_ranges(image.pixels.begin() + static_cast<long>(y * row), image.pixels.begin() + static_cast<long>((y + 1) * row),
+                             image.pixels.begin() + static_cast<long>((size.y - 1 - y) * row));
+        return image;
+    }
+
     // The floor of a shadow pass: the same casters, depth only, into a
     // scratch target of the same size and format, with no bias, culling or
     // packing: what the pass itself costs at least.
