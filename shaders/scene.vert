@@ -1,6 +1,10 @@
 // Transforms scene geometry to clip space and passes world-space position,
 // normal and texture coordinates on. Shared by every pass that draws meshes.
 #include "shadowlab_shared.h"
+// A technique's per-vertex part (its light-space coordinates, say): a file
+// that defines SHADOW_VERTEX_HOOK and void shadowVertex(vec3 worldPosition,
+// vec3 worldNormal), writing its own outputs. Empty for most variants.
+#include "@shadow_vertex?"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -18,4 +22,7 @@ void main() {
     vWorldNormal = mat3(draw.normalFromObject) * inNormal;
     vUv = inUv;
     gl_Position = frame.clipFromWorld * world;
+#ifdef SHADOW_VERTEX_HOOK
+    shadowVertex(world.xyz, normalize(vWorldNormal));
+#endif
 }

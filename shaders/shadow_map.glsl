@@ -1,6 +1,8 @@
 // Technique "map": a shadow map per light (lecture 000, 002 §8.2-8.4).
-// The fragment goes to the light's texture space through one matrix (the
-// bias matrix times the light's projection and view) and is compared with
+// The vertex goes to the light's texture space through one matrix (the
+// bias matrix times the light's projection and view; shadow_map_vertex.glsl,
+// which also applies the normal offset and the filter's receiver-plane
+// bias), and the fragment, after the perspective divide, is compared with
 // the map: in hardware through a sampler2DArrayShadow, or unpacked from
 // RGBA8 and compared here (MAP_RGBA8). Variants: MAP_FILTER
 // (SL_MAP_FILTER_*), MAP_KERNEL (grid side), MAP_RGBA8. Numbers are uniforms.
@@ -22,25 +24,12 @@ float mapTap(vec2 uv, float ref) { return texture(mapDepth, vec4(uv, map.params.
 // Interleaved gradient noise (Jimenez 2014): a per-pixel rotation for the disk.
 float mapNoise(vec2 pixel) { return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715)))); }
 
+in vec4 vShadowCoord;   // from shadow_map_vertex.glsl: the offset point in texture space
+in float vShadowNdotL;
+
 vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
-    // Normal offset: the receiver moves off its surface by `normalBias`
-    // texels (their world size at this point) times 1 - N.L, so grazing
-    // receivers move farther.
-    vec3 toLight = map.params.w > 0.5 ? normalize(map.light.xyz - worldPosition) : map.light.xyz;
-    float NdotL = clamp(dot(worldNormal, toLight), 0.0, 1.0);
-    float texel = map.params.z;
-    if (map.params.w > 0.5) texel *= max(dot(worldPosition - map.light.xyz, normalize(light.direction.xyz)), 0.0);
-    vec3 p = worldPosition + worldNormal * (map.bias.w * texel * (1.0 - NdotL));
-    // A filter compares the receiver's depth at its centre with occluders up
-    // to `reach` texels away; on a receiver tilted by theta from the light
-    // the surface itself is tan(theta) x that distance nearer there. Moving
-    // the receiver towards the light by as much keeps wide kernels free of
-    // acne (a conservative receiver-plane bias).
-    // sin(theta) from the cross product: accurate at small angles, where
-    // 1 - (N.L)^2 rounds to 0 in single precision.
-    float tanTheta = min(length(cross(worldNormal, toLight)) / max(NdotL, 1e-4), 10.0);
-    p += toLight * (map.params.y * texel * tanTheta);
-    vec4 s = map.shadowFromWorld * vec4(p, 1.0);
+    vec4 s = vShadowCoord;
+    float NdotL = vShadowNdotL;
     if (s.w <= 0.0) return vec3(1.0);
     s.xyz /= s.w;
     // Outside the map or beyond its far plane: lit, never falsely shadowed (004).

@@ -54,9 +54,14 @@ struct Assembly {
 void appendFile(std::string_view requested, AssembledSource& out, std::vector<std::string>& stack, const Assembly& how) {
     std::string_view name = requested;
     if (!requested.empty() && requested.front() == '@') {
-        const auto it = std::find_if(how.aliases.begin(), how.aliases.end(), [&](const auto& a) { return a.first == requested; });
-        if (it == how.aliases.end())
+        // "@slot?" is an optional slot: nothing when the variant leaves it empty.
+        const bool optional = requested.back() == '?';
+        const std::string_view slot = optional ? requested.substr(0, requested.size() - 1) : requested;
+        const auto it = std::find_if(how.aliases.begin(), how.aliases.end(), [&](const auto& a) { return a.first == slot; });
+        if (it == how.aliases.end()) {
+            if (optional) return;
             throw Error(stack.back() + ": #include \"" + std::string(requested) + "\": the variant fills no such slot");
+        }
         name = it->second;
     }
     const auto text = stack.empty() && how.inlineText ? how.inlineText : shaderFile(name);

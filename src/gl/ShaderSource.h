@@ -30,6 +30,7 @@ struct AssembledSource {
 
 /// `#include "@name"` lines resolve through these (alias, file) pairs: a
 /// variant chooses which file fills a slot, e.g. "@shadow" -> "shadow_none.glsl".
+/// `#include "@name?"` is optional: it expands to nothing when no pair names it.
 using IncludeAliases = std::vector<std::pair<std::string, std::string>>;
 
 /// Assembles `fileName` with `preamble` (lines of #define). When

@@ -170,6 +170,7 @@ struct Renderer::Impl final : TechniqueHost {
     void setTechnique(ShaderVariant& variant, const Light& light) {
         const TechniqueEntry* entry = findTechniqueEntry(light.shadow.technique);
         variant.techniqueFile = entry->shaderFile;
+        variant.techniqueVertexFile = entry->vertexShaderFile;
         variant.techniqueDefines = technique(light.shadow.technique).lightPassDefines(light);
     }
 

@@ -30,9 +30,11 @@ std::string ShaderVariant::preamble() const {
 
 gl::ProgramKey ShaderVariant::program() const {
     const bool technique = light && !screenVisibility;
-    return {{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}},
-            preamble(),
-            {{"@shadow", technique ? techniqueFile : std::string("shadow_none.glsl")}}};
+    gl::ProgramKey key{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}},
+                       preamble(),
+                       {{"@shadow", technique ? techniqueFile : std::string("shadow_none.glsl")}}};
+    if (technique && !techniqueVertexFile.empty()) key.aliases.emplace_back("@shadow_vertex", techniqueVertexFile);
+    return key;
 }
 
 std::vector<ShaderVariant> ShaderVariant::all() {

@@ -16,6 +16,7 @@ struct ShaderVariant {
     LightType lightType = LightType::Directional; ///< with `light`
     std::string techniqueFile = "shadow_none.glsl"; ///< with `light`: fills "@shadow"
     std::string techniqueDefines;   ///< with `light`: the technique's own `#define` lines
+    std::string techniqueVertexFile; ///< with `light`: fills "@shadow_vertex?" in scene.vert; empty for none
     bool baseColorTexture = false;
     bool writeSurfaces = false;     ///< world position and geometric normal (compare)
     bool screenVisibility = false;  ///< with `light`: visibility from a per-pixel texture (the reference)

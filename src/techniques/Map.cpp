@@ -441,7 +441,8 @@ TechniqueEntry mapTechnique() {
             "shadow_map.glsl", [] { return std::make_unique<ShadowMap>(); }, [](const Light& light) {
                 return light.type == LightType::Point ? std::string("map: point lights need cube maps, which are not implemented yet (use none)")
                                                       : std::string();
-            }};
+            },
+            "shadow_map_vertex.glsl"};
 }
 
 } // namespace shadowlab

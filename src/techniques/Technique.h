@@ -143,6 +143,11 @@ struct TechniqueEntry {
     std::function<std::unique_ptr<Technique>()> create;
     /// Why the technique cannot shadow this light, or "" (default: it can).
     std::function<std::string(const Light&)> unsupported = {};
+    /// Optional GLSL for scene.vert's "@shadow_vertex?" slot: defines
+    /// SHADOW_VERTEX_HOOK and `void shadowVertex(vec3 worldPosition, vec3
+    /// worldNormal)`, which writes outputs the fragment file reads (e.g.
+    /// light-space coordinates computed per vertex instead of per fragment).
+    std::string vertexShaderFile = {};
 };
 
 } // namespace shadowlab

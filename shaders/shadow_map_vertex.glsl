@@ -1,0 +1,32 @@
+// Technique "map", per vertex (scene.vert's "@shadow_vertex?" slot): the
+// receiver's offset point in the light's texture space, so the fragment
+// only divides, compares and filters (lecture 002 Listing 8.3 computes
+// vShadowPosition in the vertex shader too). Offsets are linear in the
+// position over a flat triangle, so interpolating them is exact there.
+#include "shadow_map_shared.h"
+#define SHADOW_VERTEX_HOOK 1
+
+out vec4 vShadowCoord;  // map.shadowFromWorld times the offset point
+out float vShadowNdotL; // N.L at the vertex, for the learnopengl preset's bias
+
+void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
+    vec3 toLight = map.params.w > 0.5 ? normalize(map.light.xyz - worldPosition) : map.light.xyz;
+    // The side of the surface the camera sees, as lighting.frag's two-sided
+    // lighting turns it (gl_FrontFacing there, the view direction here).
+    vec3 n = dot(worldNormal, frame.cameraPosition.xyz - worldPosition) < 0.0 ? -worldNormal : worldNormal;
+    float NdotL = clamp(dot(n, toLight), 0.0, 1.0);
+    // World size of one map texel here.
+    float texel = map.params.z;
+    if (map.params.w > 0.5) texel *= max(dot(worldPosition - map.light.xyz, normalize(light.direction.xyz)), 0.0);
+    // Normal offset: `normalBias` texels times 1 - N.L, along the normal.
+    vec3 p = worldPosition + n * (map.bias.w * texel * (1.0 - NdotL));
+    // Receiver-plane bias for filters: a filter compares the centre's depth
+    // with occluders up to `reach` texels away, where the surface tilted by
+    // theta is tan(theta) x that distance nearer the light; move the point
+    // towards the light by as much. sin(theta) from the cross product stays
+    // accurate at small angles, where 1 - (N.L)^2 rounds to 0.
+    float tanTheta = min(length(cross(n, toLight)) / max(NdotL, 1e-4), 10.0);
+    p += toLight * (map.params.y * texel * tanTheta);
+    vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);
+    vShadowNdotL = NdotL;
+}
