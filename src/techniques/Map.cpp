@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace shadowlab {
@@ -183,6 +184,26 @@ public:
                 throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
                             " texels is past this GPU's limit of " + std::to_string(limit));
             ++layersWanted[{static_cast<int>(o.format), o.size}];
+        }
+        // Stated limits, before anything is allocated: layers per array, and
+        // all maps together within kMapBudgetBytes (a 16384^2 depth32f map is
+        // 1 GiB; more than that is almost always a typo, and on llvmpipe it
+        // would take system memory and seconds per frame).
+        constexpr double kMapBudgetBytes = 1024.0 * 1024.0 * 1024.0;
+        double bytes = 0.0;
+        for (const auto& wanted : layersWanted) {
+            const auto format = static_cast<MapFormat>(wanted.first.first);
+            const double texel = format == MapFormat::Depth16 ? 2.0 : format == MapFormat::Rgba8 ? 8.0 : 4.0;
+            bytes += texel * static_cast<double>(wanted.first.second) * static_cast<double>(wanted.first.second) * wanted.second;
+            if (wanted.second > host.glInfo().maxArrayLayers)
+                throw Error("lights[" + std::to_string(lights[0]) + "].shadow.map: " + std::to_string(wanted.second) +
+                            " lights share one map array, past this GPU's limit of " + std::to_string(host.glInfo().maxArrayLayers) + " layers");
+        }
+        if (bytes > kMapBudgetBytes) {
+            char text[256];
+            std::snprintf(text, sizeof text, "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB (lower lights[i].shadow.map.size)",
+                          lights.size(), bytes / kMapBudgetBytes);
+            throw Error("lights[" + std::to_string(lights[0]) + "].shadow.map.size: " + text);
         }
         std::vector<Group> groups;
         for (const auto& wanted : layersWanted) {
