@@ -50,6 +50,7 @@ struct MapOptions {
     float offsetUnits = 2.0f;            ///< glPolygonOffset units in the shadow pass; default 2
     float normalBias = 1.0f;             ///< receiver moved along its normal by this many map texels (world size) times (1 - N.L); default 1
     bool cullFront = false;              ///< draw back faces only into the map (closed meshes; 002 §8.4.1.1); default false
+    bool mipmaps = false;                ///< mipmap the map and sample it with mipmapping (002 exercise 8.6.1-4); default false
     MapPreset preset = MapPreset::Default;
 };
 

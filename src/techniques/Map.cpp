@@ -42,6 +42,7 @@ const OptionTable& mapOptionTable() {
             .number(&MapOptions::normalBias, "normalBias", 0.0, 16.0, "texels",
                     "receiver moved along its normal by this many map texels (their world size) times 1 - N.L")
             .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws back faces only (closed meshes; lecture 002 §8.4.1.1)")
+            .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (lecture 002 exercise 8.6.1-4; docs/techniques.md says what it does)")
             .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl"},
                     "replace the settings with the lecture's or LearnOpenGL's (docs/techniques.md)")
             .build();
@@ -133,8 +134,13 @@ LightCamera learnOpenGlCamera(const Light& light, int size) {
 // Texture space from clip space: the lecture's bias matrix (scale and offset by 0.5).
 const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
 
+// Group keys: the format's index, plus kMipmapped for a mipmapped array.
+constexpr int kMipmapped = 16;
+
 struct Group {
     MapFormat format = MapFormat::Depth32F;
+    bool mipmaps = false;
+    int key() const { return static_cast<int>(format) + (mipmaps ? kMipmapped : 0); }
     int size = 0;
     int layers = 0;
     gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, or the depth test's buffer for rgba8
@@ -149,10 +155,10 @@ struct PerLight {
     gl::Framebuffer fbo{gl::NoCreate};
 };
 
-gl::Sampler makeSampler(GLenum filter, bool compare) {
+gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
     gl::Sampler s;
-    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, filter);
-    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, filter);
+    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, minFilter);
+    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, magFilter);
     // Outside the map: the border, depth 1 (lit).
     glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
     glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
@@ -169,9 +175,12 @@ class ShadowMap final : public Technique {
 public:
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         if (!compareNearest_) {
-            compareNearest_ = makeSampler(GL_NEAREST, true);
-            compareLinear_ = makeSampler(GL_LINEAR, true);
-            plainNearest_ = makeSampler(GL_NEAREST, false);
+            compareNearest_ = makeSampler(GL_NEAREST, GL_NEAREST, true);
+            compareLinear_ = makeSampler(GL_LINEAR, GL_LINEAR, true);
+            plainNearest_ = makeSampler(GL_NEAREST, GL_NEAREST, false);
+            compareNearestMip_ = makeSampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, true);
+            compareLinearMip_ = makeSampler(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, true);
+            plainNearestMip_ = makeSampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, false);
             ubo_ = gl::Buffer();
             glNamedBufferStorage(ubo_.id(), sizeof(shared::MapUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
         }
@@ -183,7 +192,7 @@ public:
             if (o.size > limit)
                 throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
                             " texels is past this GPU's limit of " + std::to_string(limit));
-            ++layersWanted[{static_cast<int>(o.format), o.size}];
+            ++layersWanted[{static_cast<int>(o.format) + (o.mipmaps ? kMipmapped : 0), o.size}];
         }
         // Stated limits, before anything is allocated: layers per array, and
         // all maps together within kMapBudgetBytes (a 16384^2 depth32f map is
@@ -192,7 +201,7 @@ public:
         constexpr double kMapBudgetBytes = 1024.0 * 1024.0 * 1024.0;
         double bytes = 0.0;
         for (const auto& wanted : layersWanted) {
-            const auto format = static_cast<MapFormat>(wanted.first.first);
+            const auto format = static_cast<MapFormat>(wanted.first.first % kMipmapped);
             const double texel = format == MapFormat::Depth16 ? 2.0 : format == MapFormat::Rgba8 ? 8.0 : 4.0;
             bytes += texel * static_cast<double>(wanted.first.second) * static_cast<double>(wanted.first.second) * wanted.second;
             if (wanted.second > host.glInfo().maxArrayLayers)
@@ -211,21 +220,23 @@ public:
             const int layers = wanted.second;
             // Keep an existing array when it still fits, so maps are not reallocated every frame.
             auto same = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) {
-                return static_cast<int>(g.format) == key.first && g.size == key.second && g.layers == layers;
+                return g.key() == key.first && g.size == key.second && g.layers == layers;
             });
             if (same != groups_.end()) {
                 groups.push_back(std::move(*same));
                 continue;
             }
             Group g;
-            g.format = static_cast<MapFormat>(key.first);
+            g.format = static_cast<MapFormat>(key.first % kMipmapped);
+            g.mipmaps = key.first >= kMipmapped;
             g.size = key.second;
             g.layers = layers;
+            const int levels = g.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(g.size)))) : 1;
             g.depth = gl::Texture(GL_TEXTURE_2D_ARRAY);
-            glTextureStorage3D(g.depth.id(), 1, depthFormat(g.format), g.size, g.size, layers);
+            glTextureStorage3D(g.depth.id(), g.format == MapFormat::Rgba8 ? 1 : levels, depthFormat(g.format), g.size, g.size, layers);
             if (g.format == MapFormat::Rgba8) {
                 g.packed = gl::Texture(GL_TEXTURE_2D_ARRAY);
-                glTextureStorage3D(g.packed.id(), 1, GL_RGBA8, g.size, g.size, layers);
+                glTextureStorage3D(g.packed.id(), levels, GL_RGBA8, g.size, g.size, layers);
             }
             groups.push_back(std::move(g));
         }
@@ -237,7 +248,7 @@ public:
             PerLight p;
             p.options = effective(light);
             for (std::size_t g = 0; g < groups_.size(); ++g)
-                if (groups_[g].format == p.options.format && groups_[g].size == p.options.size) p.group = g;
+                if (groups_[g].format == p.options.format && groups_[g].mipmaps == p.options.mipmaps && groups_[g].size == p.options.size) p.group = g;
             p.layer = nextLayer[p.group]++;
             const FitInput in{frame.itemBounds, frame.items, frame.clipFromWorld, p.options.size, footprint(p.options)};
             if (p.options.preset == MapPreset::LearnOpenGL && light.type == LightType::Directional)
@@ -297,6 +308,11 @@ public:
             return inside;
         });
         host.count("triangles", static_cast<double>(drawn));
+        if (g.mipmaps) {
+            // Every level from the map: averaged depths (of all layers; each light's pass refreshes them).
+            const auto scope = host.timeScope("mipmaps");
+            glGenerateTextureMipmap(packed ? g.packed.id() : g.depth.id());
+        }
         if (frame.measureFloors) drawFloor(host, frame, p, program);
     }
 
@@ -312,11 +328,12 @@ public:
         upload(view);
         if (g.format == MapFormat::Rgba8) {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
-            glBindSampler(SL_UNIT_SHADOW_FIRST, plainNearest_.id());
+            glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? plainNearestMip_.id() : plainNearest_.id());
         } else {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
-            glBindSampler(SL_UNIT_SHADOW_FIRST,
-                          p.options.filter == MapFilter::Hardware ? compareLinear_.id() : compareNearest_.id());
+            const bool linear = p.options.filter == MapFilter::Hardware;
+            glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? (linear ? compareLinearMip_.id() : compareNearestMip_.id())
+                                                          : (linear ? compareLinear_.id() : compareNearest_.id()));
         }
     }
 
@@ -452,6 +469,7 @@ private:
     std::vector<Group> groups_;
     std::map<int, PerLight> lights_;
     gl::Sampler compareNearest_{gl::NoCreate}, compareLinear_{gl::NoCreate}, plainNearest_{gl::NoCreate};
+    gl::Sampler compareNearestMip_{gl::NoCreate}, compareLinearMip_{gl::NoCreate}, plainNearestMip_{gl::NoCreate};
     gl::Buffer ubo_{gl::NoCreate};
 };
 
