@@ -20,6 +20,9 @@ in vec2 vUv;
 #if HAS_BASE_COLOR_TEXTURE
 layout(binding = SL_UNIT_BASE_COLOR) uniform sampler2D baseColorTexture;
 #endif
+#if HAS_PROJECTOR
+layout(binding = SL_UNIT_PROJECTOR) uniform sampler2D projectorImage;
+#endif
 
 layout(location = SL_TARGET_COLOR) out vec4 outColor;
 #if WRITE_SURFACES
@@ -64,7 +67,17 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
     vec3 H = normalize(L + V);
     vec3 diffuse = draw.diffuse.rgb * base * NdotL;
     vec3 specular = draw.specular.rgb * pow(max(dot(N, H), 0.0), draw.specular.w);
-    return attenuation * light.radiance.rgb * (diffuse + specular);
+    vec3 radiance = light.radiance.rgb;
+#if HAS_PROJECTOR
+    // The slide projector (lecture 000): projective texture coordinates from
+    // the spot's camera; black outside the image. Image rows run top to
+    // bottom, so v is flipped.
+    vec4 c = light.projectorFromWorld * vec4(vWorldPosition, 1.0);
+    vec2 uv = c.xy / c.w * 0.5 + 0.5;
+    bool onSlide = c.w > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+    radiance *= onSlide ? texture(projectorImage, vec2(uv.x, 1.0 - uv.y)).rgb : vec3(0.0);
+#endif
+    return attenuation * radiance * (diffuse + specular);
 }
 #endif
 

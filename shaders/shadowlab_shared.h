@@ -19,6 +19,7 @@
 // Texture units.
 #define SL_UNIT_BASE_COLOR 0
 #define SL_UNIT_SCREEN_VISIBILITY 2   // per-pixel visibility from the ray-traced reference (R32F)
+#define SL_UNIT_PROJECTOR 3           // a spot light's projected image (slide projector)
 #define SL_UNIT_SHADOW_FIRST 4        // units a technique's textures use, from here up
 
 // Colour attachments of the frame's framebuffer.
@@ -51,6 +52,7 @@ SL_BLOCK(LightUniforms, SL_BINDING_LIGHT, light) {
     SL_VEC4 position;         // world space (spot, point)
     SL_VEC4 direction;        // world space unit vector the light travels (directional, spot)
     SL_VEC4 params;           // x range (0 = unlimited), y cos(inner), z cos(outer), w type
+    SL_MAT4 projectorFromWorld; // spot with a projected image: world -> the image's clip space (HAS_PROJECTOR)
 } SL_END_BLOCK(light)
 
 SL_BLOCK(DrawUniforms, SL_BINDING_DRAW, draw) {

@@ -97,6 +97,11 @@ struct Light {
     float innerConeDeg = 20.0f;        ///< spot: half-angle of full intensity, degrees, default 20
     float outerConeDeg = 30.0f;        ///< spot: half-angle where light reaches zero, degrees, default 30, >= inner, < 90
     float size = 0.0f;                 ///< soft reference only: radius (point/spot, scene units) or angular diameter (directional, degrees); 0 = hard
+    /// Spot only: index into Scene::textures of an image projected along the
+    /// cone (lecture 000's slide projector), multiplying the light's colour;
+    /// the image fills the square around the outer cone, its top towards the
+    /// light camera's up (+Y, or +X for a vertical spot). -1: none (default).
+    int projectorTexture = -1;
     ShadowSettings shadow;
 };
 

@@ -14,6 +14,8 @@
 
 #include "shadowlab_shared.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -33,6 +35,13 @@ shared::LightUniforms lightUniforms(const Light& light) {
                                                           : SL_LIGHT_POINT;
     u.params = glm::vec4(light.range, std::cos(glm::radians(light.innerConeDeg)),
                          std::cos(glm::radians(light.outerConeDeg)), static_cast<float>(type));
+    if (light.type == LightType::Spot && light.projectorTexture >= 0) {
+        // The spot's camera: along its axis, the image filling the square around the outer cone.
+        const glm::vec3 axis = glm::normalize(light.direction);
+        const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+        u.projectorFromWorld = glm::perspective(2.0f * glm::radians(light.outerConeDeg), 1.0f, 0.01f, 100.0f) *
+                               glm::lookAt(light.position, light.position + axis, up);
+    }
     return u;
 }
 
@@ -131,6 +140,7 @@ struct Renderer::Impl final : TechniqueHost {
         variant.lightType = light.type;
         variant.outputVisibility = litMode == LitMode::OutputVisibility;
         variant.screenVisibility = litMode == LitMode::ScreenVisibility;
+        variant.projector = hasProjector(light);
         setTechnique(variant, light);
         gl::apply(state);
         drawShaded(variant);
@@ -178,7 +188,10 @@ struct Renderer::Impl final : TechniqueHost {
         currentLight = &scene->lights[i];
         const shared::LightUniforms u = lightUniforms(*currentLight);
         glNamedBufferSubData(lightUbo.id(), 0, sizeof u, &u);
+        if (hasProjector(*currentLight)) glBindTextureUnit(SL_UNIT_PROJECTOR, gpu->texture(currentLight->projectorTexture).id());
     }
+
+    static bool hasProjector(const Light& light) { return light.type == LightType::Spot && light.projectorTexture >= 0; }
 
     LightView view(std::size_t i) const { return {scene->lights[i], static_cast<int>(i)}; }
 
@@ -329,6 +342,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
             setLight(static_cast<std::size_t>(baseLight));
             variant.light = true;
             variant.lightType = currentLight->type;
+            variant.projector = hasProjector(*currentLight);
             if (screenVisibility) {
                 variant.screenVisibility = true;
                 uploadVisibility(*targets, (*screenVisibility)[static_cast<std::size_t>(baseLight)]);

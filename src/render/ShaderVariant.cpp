@@ -21,6 +21,7 @@ std::string ShaderVariant::preamble() const {
     out += flag("LIGHT", light);
     out += std::string("#define LIGHT_TYPE ") + (light ? lightDefine(lightType) : "SL_LIGHT_DIRECTIONAL") + "\n";
     out += flag("HAS_BASE_COLOR_TEXTURE", baseColorTexture);
+    out += flag("HAS_PROJECTOR", light && projector && lightType == LightType::Spot);
     out += flag("WRITE_SURFACES", writeSurfaces);
     out += flag("SCREEN_VISIBILITY", light && screenVisibility);
     out += flag("OUTPUT_VISIBILITY", light && outputVisibility);
@@ -48,6 +49,7 @@ std::vector<ShaderVariant> ShaderVariant::all() {
             v.writeSurfaces = bits & 8;
             v.screenVisibility = bits & 16;
             v.outputVisibility = bits & 32;
+            v.projector = light == LightType::Spot && (bits & 1) && (bits & 2);  // one projector variant per ambient/light pair
             v.lightType = light;
             out.push_back(v);
         }

@@ -18,6 +18,7 @@ struct ShaderVariant {
     std::string techniqueDefines;   ///< with `light`: the technique's own `#define` lines
     std::string techniqueVertexFile; ///< with `light`: fills "@shadow_vertex?" in scene.vert; empty for none
     bool baseColorTexture = false;
+    bool projector = false;         ///< with a spot `light`: its projected image multiplies its colour
     bool writeSurfaces = false;     ///< world position and geometric normal (compare)
     bool screenVisibility = false;  ///< with `light`: visibility from a per-pixel texture (the reference)
     bool outputVisibility = false;  ///< with `light`: write the visibility term instead of light

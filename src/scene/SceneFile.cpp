@@ -265,7 +265,7 @@ void readShadow(const Reader& r, ShadowSettings& shadow, const Light& light) {
 
 Light readLight(const Reader& r) {
     r.checkKeys({"name", "type", "color", "intensity", "position", "direction", "range", "innerCone", "outerCone",
-                 "size", "shadow"});
+                 "size", "projector", "shadow"});
     Light light;
     if (!r.has("type")) r.fail("missing key 'type' (directional, spot or point)");
     const std::string type = r.child("type").string();
@@ -293,6 +293,7 @@ Light readLight(const Reader& r) {
     light.size = r.nonNegative("size", light.size);
     if (light.type == LightType::Directional && light.size >= 90.0f)
         r.child("size").fail("expected an angular diameter in degrees < 90, got " + Reader::fmt(light.size));
+    if (r.has("projector") && light.type != LightType::Spot) r.child("projector").fail("only spot lights project an image");
     if (r.has("shadow")) readShadow(r.child("shadow"), light.shadow, light);
     return light;
 }
@@ -610,6 +611,12 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
             const Reader l = lights.element(i);
             l.requireObject();
             scene.lights.push_back(readLight(l));
+            if (l.has("projector")) {  // the slide: an image file, relative to the scene
+                const Reader t = l.child("projector");
+                scene.textures.push_back(loadTexture(t, baseDir / t.string()));
+                scene.textureSources.push_back(ctx.source + ": " + t.path() + " (" + (baseDir / t.string()).string() + ")");
+                scene.lights.back().projectorTexture = static_cast<int>(scene.textures.size()) - 1;
+            }
         }
     }
     if (root.has("nodes")) builder.readNodes(root.child("nodes"), -1);

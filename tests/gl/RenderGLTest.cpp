@@ -239,3 +239,53 @@ TEST_F(RenderGLTest, TextureWiderThanTheGpuLimitIsAnError) {
         EXPECT_EQ(std::string(e.what()).rfind("test: materials.m.baseColorTexture (", 0), 0u) << e.what();
     }
 }
+
+TEST_F(RenderGLTest, ASpotProjectsItsImageTheRightWayUp) {
+    // A slide in four blocks: top-left red, top-right green, bottom-left
+    // blue, bottom-right white, projected straight down. A vertical spot's camera
+    // has +X as up, so the slide's top lands towards +X and its right
+    // towards +Z (cross(-Y, +X)). The camera above has -Z up: world +X is
+    // image right, +Z image down.
+    const fs::path png = fs::temp_directory_path() / ("shadowlab-slide-" + std::to_string(::getpid()) + ".png");
+    // 16x16 texels in four solid 8x8 blocks, so linear filtering blends
+    // colours only along the block borders.
+    ImageRGBA8 slide{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, 255)};
+    const std::uint8_t colours[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}};
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            std::copy_n(colours[(y / 8) * 2 + x / 8], 3, &slide.pixels[(static_cast<std::size_t>(y) * 16 + x) * 4]);
+    writePng(png, slide);
+    const Scene local = parseScene(R"({
+      "camera": {"position": [0, 5, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fovY": 40},
+      "ambient": [0, 0, 0],
+      "materials": {"m": {"baseColor": [1, 1, 1], "specular": [0, 0, 0]}},
+      "lights": [{"type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0], "innerCone": 30, "outerCone": 31,
+                  "projector": ")" + png.filename().string() + R"("}],
+      "nodes": [{"shape": {"type": "plane", "size": [100, 100]}, "material": "m"}]
+    })", "slide", png.parent_path());
+    fs::remove(png);
+    const ImageRGBA8 image = renderImage(local, 128, 128);
+    // Mean image position of the pixels each colour dominates.
+    struct Acc { double x = 0, y = 0, n = 0; } red, green, blue, white;
+    for (int y = 0; y < 128; ++y)
+        for (int x = 0; x < 128; ++x) {
+            const glm::vec3 c = pixel(image, x, y);
+            Acc* a = c.r > 0.5f && c.g > 0.5f && c.b > 0.5f ? &white
+                     : c.r > 0.5f && c.g < 0.2f ? &red : c.g > 0.5f && c.r < 0.2f ? &green : c.b > 0.5f && c.r < 0.2f ? &blue : nullptr;
+            if (!a) continue;
+            a->x += x;
+            a->y += y;
+            a->n += 1;
+        }
+    for (Acc* a : {&red, &green, &blue, &white}) {
+        ASSERT_GT(a->n, 200) << "every quadrant of the slide is on the floor";
+        a->x /= a->n;
+        a->y /= a->n;
+    }
+    // Top of the slide (red, green) towards +X: image right.
+    EXPECT_GT(red.x, blue.x + 10);
+    EXPECT_GT(green.x, white.x + 10);
+    // Right of the slide (green, white) towards +Z: image down.
+    EXPECT_GT(green.y, red.y + 10);
+    EXPECT_GT(white.y, blue.y + 10);
+}
