@@ -38,13 +38,38 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     float du = map.taps.x;
 #if MAP_FILTER == SL_MAP_FILTER_NONE || MAP_FILTER == SL_MAP_FILTER_HARDWARE
     return vec3(mapTap(s.xy, ref));  // the sampler is nearest or bilinear
-#elif MAP_FILTER == SL_MAP_FILTER_GRID
-    // MAP_KERNEL x MAP_KERNEL taps one texel apart, centred on the point.
+#elif MAP_FILTER == SL_MAP_FILTER_GRID && MAP_RGBA8
+    // MAP_KERNEL x MAP_KERNEL nearest taps one texel apart, centred on the point.
     float sum = 0.0;
     float start = -0.5 * float(MAP_KERNEL - 1);
     for (int j = 0; j < MAP_KERNEL; ++j)
         for (int i = 0; i < MAP_KERNEL; ++i)
             sum += mapTap(s.xy + du * vec2(start + float(i), start + float(j)), ref);
+    return vec3(sum / float(MAP_KERNEL * MAP_KERNEL));
+#elif MAP_FILTER == SL_MAP_FILTER_GRID
+    // The same MAP_KERNEL x MAP_KERNEL nearest taps, from as few bilinear
+    // hardware compares as the kernel allows: the nearest taps read the N
+    // consecutive texels from k0 = floor(t - (N - 1) / 2) on each axis (t:
+    // the point in texel units). A bilinear compare at the corner between two
+    // texels averages exactly those two, one at a texel's centre reads that
+    // texel alone; so pairs of texels take one tap of weight 2, an odd last
+    // texel one tap of weight 1: ceil(N / 2)^2 taps (4 for 3x3, 16 for 8x8)
+    // give the box average of the N^2 comparisons.
+    vec2 t = s.xy / du;
+    vec2 k0 = floor(t - 0.5 * float(MAP_KERNEL - 1));
+    const int taps = (MAP_KERNEL + 1) / 2;
+    float sum = 0.0;
+    for (int j = 0; j < taps; ++j) {
+        bool pairY = 2 * j + 1 < MAP_KERNEL;
+        float wy = pairY ? 2.0 : 1.0;
+        float y = k0.y + float(2 * j) + (pairY ? 1.0 : 0.5);
+        for (int i = 0; i < taps; ++i) {
+            bool pairX = 2 * i + 1 < MAP_KERNEL;
+            float wx = pairX ? 2.0 : 1.0;
+            float x = k0.x + float(2 * i) + (pairX ? 1.0 : 0.5);
+            sum += wx * wy * mapTap(vec2(x, y) * du, ref);
+        }
+    }
     return vec3(sum / float(MAP_KERNEL * MAP_KERNEL));
 #elif MAP_FILTER == SL_MAP_FILTER_DITHER4
     // The lecture's 4-sample dithered PCF (000): one of four patterns from

@@ -331,7 +331,8 @@ public:
             glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? plainNearestMip_.id() : plainNearest_.id());
         } else {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
-            const bool linear = p.options.filter == MapFilter::Hardware;
+            // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
+            const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Grid;
             glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? (linear ? compareLinearMip_.id() : compareNearestMip_.id())
                                                           : (linear ? compareLinear_.id() : compareNearest_.id()));
         }

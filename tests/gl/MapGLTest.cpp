@@ -200,6 +200,12 @@ TEST_F(MapGLTest, FilteredEdgesRiseMonotonicallyAndWidenWithTheKernel) {
         for (std::size_t x = 1; x < row.size(); ++x) EXPECT_LE(row[x], row[x - 1] + 1e-6f) << "x " << x;  // lit to shadowed: never rises
         EXPECT_GT(width(row), previous) << "a wider kernel, a wider penumbra";
         previous = width(row);
+        // The depth formats take the grid from ceil(N/2)^2 bilinear compares,
+        // rgba8 from N^2 nearest taps: the same box average of the same
+        // comparisons (to float rounding of the weights).
+        const std::vector<float> nearest =
+            edgeProfile(R"("filter": "grid", "format": "rgba8", "kernel": )" + std::to_string(kernel));
+        for (std::size_t x = 0; x < row.size(); ++x) EXPECT_NEAR(row[x], nearest[x], 1e-4f) << "x " << x;
     }
     const std::vector<float> dither = edgeProfile(R"("filter": "dither4")");
     for (float v : dither) {
