@@ -11,9 +11,11 @@ out float vShadowNdotL; // N.L at the vertex, for the learnopengl preset's bias
 
 void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     vec3 toLight = map.params.w > 0.5 ? normalize(map.light.xyz - worldPosition) : map.light.xyz;
-    // The side of the surface the camera sees, as lighting.frag's two-sided
-    // lighting turns it (gl_FrontFacing there, the view direction here).
-    vec3 n = dot(worldNormal, frame.cameraPosition.xyz - worldPosition) < 0.0 ? -worldNormal : worldNormal;
+    // The normal as modelled: turning it per vertex (towards the camera or
+    // the light) would flip it on some vertices of a silhouette triangle and
+    // not on others. A two-sided surface lit from its back gets no offset
+    // there (N.L is 0), only the depth and receiver-plane biases.
+    vec3 n = worldNormal;
     float NdotL = clamp(dot(n, toLight), 0.0, 1.0);
     // World size of one map texel here.
     float texel = map.params.z;
