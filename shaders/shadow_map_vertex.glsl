@@ -19,7 +19,10 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     float NdotL = clamp(dot(n, toLight), 0.0, 1.0);
     // World size of one map texel here.
     float texel = map.params.z;
-    if (map.params.w > 0.5) texel *= max(dot(worldPosition - map.light.xyz, normalize(light.direction.xyz)), 0.0);
+    // Perspective: texels grow with the depth along the light camera's axis,
+    // which is affine in the position, so it interpolates exactly across
+    // even a wall-sized triangle.
+    if (map.params.w > 0.5) texel *= max(dot(worldPosition - map.light.xyz, map.axis.xyz), 0.0);
     // Normal offset: `normalBias` texels times 1 - N.L, along the normal.
     vec3 p = worldPosition + n * (map.bias.w * texel * (1.0 - NdotL));
     // Receiver-plane bias for filters: a filter compares the centre's depth

@@ -254,13 +254,15 @@ void readShadow(const Reader& r, ShadowSettings& shadow, const Light& light) {
         shadow.technique = t.string();
         if (!findTechnique(shadow.technique))
             t.fail("unknown technique '" + shadow.technique + "' (expected one of: " + techniqueList() + ")");
-        const std::string reason = unsupportedReason(shadow.technique, light);
-        if (!reason.empty()) t.fail(reason);
     }
     // Every block is read and checked, the chosen technique's or not, so a
     // scene can carry several and switch between them.
     for (const TechniqueInfo& t : all)
         if (r.has(t.name)) shadow.options[t.name] = readOptions(r.child(t.name), *t.options);
+    // Whether the technique can shadow this light may depend on its options
+    // (a preset), so this comes after the blocks.
+    const std::string reason = unsupportedReason(shadow.technique, light);
+    if (!reason.empty()) (r.has("technique") ? r.child("technique") : r).fail(reason);
 }
 
 Light readLight(const Reader& r) {

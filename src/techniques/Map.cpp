@@ -91,8 +91,9 @@ float reach(const MapOptions& o) {
 MapOptions effective(const Light& light) {
     MapOptions o = light.shadow.get<MapOptions>();
     if (o.preset == MapPreset::Lecture) {
-        // Lecture 000: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map,
-        // the 4-sample dithered PCF; no normal offset, no constant bias.
+        // Lecture 000: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map
+        // of the window's size (prepare() sets it), the 4-sample dithered
+        // PCF; no normal offset, no constant bias.
         o.slopeBias = 2.0f;
         o.offsetUnits = 4.0f;
         o.normalBias = 0.0f;
@@ -131,6 +132,23 @@ LightCamera learnOpenGlCamera(const Light& light, int size) {
     return cam;
 }
 
+// Lecture 000's camera for its point light (the torus-and-pyramid scene):
+// lookAt(light, origin, +Y) and perspective(60 degrees, 0.1, 1000), one map
+// towards the origin instead of a cube.
+LightCamera lecturePointCamera(const Light& light, int size) {
+    LightCamera cam;
+    const glm::vec3 towards = -light.position;
+    const glm::vec3 up = glm::length(glm::cross(towards, glm::vec3(0.0f, 1.0f, 0.0f))) > 1e-6f * glm::length(towards)
+                             ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    cam.viewFromWorld = glm::lookAt(light.position, glm::vec3(0.0f), up);
+    cam.nearPlane = 0.1f;
+    cam.farPlane = 1000.0f;
+    cam.clipFromView = glm::perspective(glm::radians(60.0f), 1.0f, cam.nearPlane, cam.farPlane);
+    cam.perspective = true;
+    cam.texelSize = 2.0f * std::tan(glm::radians(30.0f)) / static_cast<float>(size);
+    return cam;
+}
+
 // Texture space from clip space: the lecture's bias matrix (scale and offset by 0.5).
 const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
 
@@ -149,6 +167,7 @@ struct Group {
 
 struct PerLight {
     MapOptions options;
+    bool spot = false;  ///< the shadow pass discards outside the cone
     LightCamera camera;
     std::size_t group = 0;
     int layer = 0;
@@ -186,8 +205,14 @@ public:
         }
         // Lights with the same format and size share one texture array.
         std::map<std::pair<int, int>, int> layersWanted;
+        const int windowSize = std::clamp(std::max(frame.viewport.x, frame.viewport.y), 16, host.glInfo().maxTextureSize);
+        auto effectiveHere = [&](const Light& light) {
+            MapOptions o = effective(light);
+            if (o.preset == MapPreset::Lecture) o.size = windowSize;  // 000: the map has the window's size
+            return o;
+        };
         for (int index : lights) {
-            const MapOptions o = effective(frame.scene.lights[static_cast<std::size_t>(index)]);
+            const MapOptions o = effectiveHere(frame.scene.lights[static_cast<std::size_t>(index)]);
             const int limit = host.glInfo().maxTextureSize;
             if (o.size > limit)
                 throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
@@ -246,13 +271,16 @@ public:
         for (int index : lights) {
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
             PerLight p;
-            p.options = effective(light);
+            p.options = effectiveHere(light);
             for (std::size_t g = 0; g < groups_.size(); ++g)
                 if (groups_[g].format == p.options.format && groups_[g].mipmaps == p.options.mipmaps && groups_[g].size == p.options.size) p.group = g;
             p.layer = nextLayer[p.group]++;
             const FitInput in{frame.itemBounds, frame.items, frame.clipFromWorld, p.options.size, footprint(p.options)};
+            p.spot = light.type == LightType::Spot;
             if (p.options.preset == MapPreset::LearnOpenGL && light.type == LightType::Directional)
                 p.camera = learnOpenGlCamera(light, p.options.size);
+            else if (light.type == LightType::Point)  // only with preset "lecture" (mapTechnique's unsupported)
+                p.camera = lecturePointCamera(light, p.options.size);
             else if (light.type == LightType::Spot)
                 p.camera = fitSpot(light, p.options.fit, in);
             else
@@ -298,7 +326,7 @@ public:
         upload(view);
         const gl::Program& program = host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
-             std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_SPOT " + (p.camera.perspective ? "1" : "0") + "\n"});
+             std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_SPOT " + (p.spot ? "1" : "0") + "\n"});
         // Casters that cannot reach the light's frustum are not drawn.
         const glm::mat4 lightClip = p.camera.clipFromWorld();
         std::size_t drawn = 0;
@@ -463,6 +491,9 @@ private:
         const Light& light = view.light;
         u.light = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), 0.0f)
                                                          : glm::vec4(light.position, 0.0f);
+        // The light camera's view direction: minus the view matrix's third row.
+        const glm::mat4& v = p.camera.viewFromWorld;
+        u.axis = glm::vec4(-glm::vec3(v[0][2], v[1][2], v[2][2]), 0.0f);
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
     }
@@ -479,8 +510,12 @@ private:
 TechniqueEntry mapTechnique() {
     return {"map", "a shadow map per light: orthographic for directional, perspective for spot lights", &mapOptionTable(),
             "shadow_map.glsl", [] { return std::make_unique<ShadowMap>(); }, [](const Light& light) {
-                return light.type == LightType::Point ? std::string("map: point lights need cube maps, which are not implemented yet (use none)")
-                                                      : std::string();
+                // Lecture 000 itself lights its torus and pyramid with a point light
+                // through one 60-degree map; preset "lecture" does the same.
+                const bool lecture = light.shadow.get<MapOptions>().preset == MapPreset::Lecture;
+                return light.type == LightType::Point && !lecture
+                           ? std::string("map: point lights need cube maps, which are not implemented yet (use none, or preset \"lecture\" for the lecture's single 60-degree map)")
+                           : std::string();
             },
             "shadow_map_vertex.glsl"};
 }
