@@ -39,6 +39,7 @@ struct RenderArgs {
     int height = 720;
     std::vector<std::string> overrides;
     std::string debugImages;  ///< directory for the techniques' debug images; empty = none
+    std::vector<std::string> debug; ///< --debug: which debug images to write beside the output (shadow-maps, texel-density, all)
     int viewFromLight = -1;   ///< --view-from-light: the light whose view replaces the camera; -1 none
 };
 
@@ -121,10 +122,25 @@ int runRender(const RenderArgs& args) {
     renderer.render(scene, options);
     const ImageRGBA8 image = renderer.readColor();
     std::vector<DebugImage> debug;
-    if (!args.debugImages.empty()) debug = renderer.debugImages(scene);
+    if (!args.debugImages.empty() || !args.debug.empty()) debug = renderer.debugImages(scene);
+    // --debug KIND: the images of that kind beside the output, <stem>-<image>.png.
+    std::vector<std::pair<fs::path, const ImageRGBA8*>> beside;
+    for (const DebugImage& d : debug) {
+        const bool isMap = d.name.size() >= 4 && d.name.compare(d.name.size() - 4, 4, "-map") == 0;
+        const bool isDensity = d.name.find("texel-density") != std::string::npos;
+        for (const std::string& kind : args.debug)
+            if (kind == "all" || (kind == "shadow-maps" && isMap) || (kind == "texel-density" && isDensity)) {
+                beside.emplace_back(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), &d.image);
+                break;
+            }
+    }
     requireNoGlErrors(context);  // before writing: no image from a failed frame
     writePng(output, image);
     std::cout << output.string() << "\n";
+    for (const auto& [path, debugImage] : beside) {
+        writePng(path, *debugImage);
+        std::cout << path.string() << "\n";
+    }
     if (!args.debugImages.empty()) {
         const fs::path dir(args.debugImages);
         fs::create_directories(dir);
@@ -313,6 +329,11 @@ int main(int argc, char** argv) {
     render->add_option("--set", renderArgs.overrides, "Override a scene value by JSON path, e.g. lights[0].intensity=2")->take_all();
     render->add_option("--view-from-light", renderArgs.viewFromLight, "See the scene from light I's camera (spot: along its cone; directional: along its direction)")
         ->check(CLI::NonNegativeNumber);
+    render->add_option("--debug", renderArgs.debug,
+                       "Also write debug images beside the output as <name>-<image>.png: shadow-maps (each light's map, "
+                       "perspective depth linearised), texel-density (map texels per pixel), all")
+        ->check(CLI::IsMember({"shadow-maps", "texel-density", "all"}))
+        ->delimiter(',');
     render->add_option("--debug-images", renderArgs.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
 
     CompareArgs compareArgs;

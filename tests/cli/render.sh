@@ -31,4 +31,9 @@ if "$tool" render "$src/scenes/room-point.json" -o p.png --view-from-light 0 2>e
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--view-from-light 0: light" err.txt && [[ ! -e p.png ]] || { echo "point light view: $(cat err.txt)"; exit 1; }
 if "$tool" render "$src/scenes/spot-objects.json" -o p.png --view-from-light 7 2>err.txt; then echo "light 7 accepted"; exit 1; fi
 grep -q -- "--view-from-light 7: the scene has 1 light" err.txt && [[ ! -e p.png ]] || { echo "missing light: $(cat err.txt)"; exit 1; }
-echo "6 passed, 0 failed"
+# --debug shadow-maps: the map beside the image; a kind it does not know is a one-line error.
+out=$("$tool" render "$src/scenes/spot-objects.json" -o s.png --width 64 --height 48 --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=64 --debug shadow-maps)
+[[ -s s.png && -s s-light0-map.png && ! -e s-light0-texel-density.png ]] || { echo "--debug shadow-maps wrote: $out"; exit 1; }
+if "$tool" render -o q.png --debug everything 2>err.txt; then echo "--debug everything accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 && ! -e q.png ]] && grep -q -- "--debug" err.txt || { echo "--debug everything: $(cat err.txt)"; exit 1; }
+echo "7 passed, 0 failed"
