@@ -5,7 +5,8 @@
 // bias), and the fragment, after the perspective divide, is compared with
 // the map: in hardware through a sampler2DArrayShadow, or unpacked from
 // RGBA8 and compared here (MAP_RGBA8). Variants: MAP_FILTER
-// (SL_MAP_FILTER_*), MAP_KERNEL (grid side), MAP_RGBA8. Numbers are uniforms.
+// (SL_MAP_FILTER_*), MAP_KERNEL (grid side), MAP_GRID_BILINEAR (the grid's
+// comparisons from bilinear fetches), MAP_RGBA8. Numbers are uniforms.
 #include "shadow_map_shared.h"
 
 #if MAP_RGBA8
@@ -38,7 +39,7 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     float du = map.taps.x;
 #if MAP_FILTER == SL_MAP_FILTER_NONE || MAP_FILTER == SL_MAP_FILTER_HARDWARE
     return vec3(mapTap(s.xy, ref));  // the sampler is nearest or bilinear
-#elif MAP_FILTER == SL_MAP_FILTER_GRID && MAP_RGBA8
+#elif MAP_FILTER == SL_MAP_FILTER_GRID && !MAP_GRID_BILINEAR
     // MAP_KERNEL x MAP_KERNEL nearest taps one texel apart, centred on the point.
     float sum = 0.0;
     float start = -0.5 * float(MAP_KERNEL - 1);

@@ -30,6 +30,12 @@ enum class MapFilter {
     Poisson,  ///< "poisson": a rotated Vogel disk of `samples` taps within `radius` texels
 };
 
+enum class MapGridTaps {
+    Auto,     ///< "auto": nearest on a software rasteriser (llvmpipe ...), bilinear on a GPU (default)
+    Bilinear, ///< "bilinear": ceil(kernel/2)^2 bilinear hardware compares
+    Nearest,  ///< "nearest": kernel^2 nearest compares
+};
+
 enum class MapPreset {
     Default,     ///< "default": the fields as given
     Lecture,     ///< "lecture": lecture 000's polygon offset (2, 4), dithered PCF, no normal offset
@@ -43,6 +49,7 @@ struct MapOptions {
     MapFit fit = MapFit::Tight;
     MapFilter filter = MapFilter::Hardware;
     int kernel = 3;                      ///< grid: samples per side, 2..8; default 3
+    MapGridTaps gridTaps = MapGridTaps::Auto; ///< grid: how the kernel^2 comparisons are fetched (same result); default auto
     int samples = 16;                    ///< poisson: taps, 4..64; default 16
     float radius = 1.5f;                 ///< poisson: disk radius, texels; default 1.5
     float constantBias = 0.0f;           ///< light-space depth, shadow-map texels of the light's depth range; default 0

@@ -34,6 +34,8 @@ const OptionTable& mapOptionTable() {
             .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson"},
                     "one nearest tap; one bilinear hardware compare; kernel x kernel taps; the lecture's dithered 4 taps; a rotated disk")
             .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
+            .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
+                    "grid filter: the same comparisons from ceil(kernel/2)^2 bilinear or kernel^2 nearest fetches; auto: nearest on a software rasteriser")
             .integer(&MapOptions::samples, "samples", 4, 64, "taps", "poisson filter: taps on the disk")
             .number(&MapOptions::radius, "radius", 0.0, 32.0, "texels", "poisson filter: disk radius")
             .number(&MapOptions::constantBias, "constantBias", 0.0, 0.1, "depth (0..1)", "subtracted from the receiver's map depth")
@@ -193,6 +195,9 @@ gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
 class ShadowMap final : public Technique {
 public:
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
+        // A software rasteriser compares four texels for a bilinear fetch,
+        // so there the grid's nearest fetches are faster (docs/techniques.md).
+        software_ = gl::clockFor(host.glInfo().renderer) == gl::ClockKind::CpuFinish;
         if (!compareNearest_) {
             compareNearest_ = makeSampler(GL_NEAREST, GL_NEAREST, true);
             compareLinear_ = makeSampler(GL_LINEAR, GL_LINEAR, true);
@@ -347,7 +352,8 @@ public:
     std::string lightPassDefines(const Light& light) const override {
         const MapOptions o = effective(light);
         return "#define MAP_FILTER " + std::to_string(static_cast<int>(o.filter)) + "\n#define MAP_KERNEL " +
-               std::to_string(o.kernel) + "\n#define MAP_RGBA8 " + (o.format == MapFormat::Rgba8 ? "1" : "0") + "\n";
+               std::to_string(o.kernel) + "\n#define MAP_RGBA8 " + (o.format == MapFormat::Rgba8 ? "1" : "0") +
+               "\n#define MAP_GRID_BILINEAR " + (bilinearGrid(o) ? "1" : "0") + "\n";
     }
 
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
@@ -360,7 +366,7 @@ public:
         } else {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
             // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
-            const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Grid;
+            const bool linear = p.options.filter == MapFilter::Hardware || (p.options.filter == MapFilter::Grid && bilinearGrid(p.options));
             glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? (linear ? compareLinearMip_.id() : compareNearestMip_.id())
                                                           : (linear ? compareLinear_.id() : compareNearest_.id()));
         }
@@ -402,6 +408,12 @@ public:
     }
 
 private:
+    bool bilinearGrid(const MapOptions& o) const {
+        return o.format != MapFormat::Rgba8 &&
+               (o.gridTaps == MapGridTaps::Bilinear || (o.gridTaps == MapGridTaps::Auto && !software_));
+    }
+    bool software_ = false;
+
     // The frame from the camera, coloured by shadow-map texels per screen
     // pixel (shaders/shadow_map_density.frag).
     ImageRGBA8 texelDensity(TechniqueHost& host, const FrameInfo& frame, const LightView& view) {

@@ -195,17 +195,16 @@ TEST_F(MapGLTest, FilteredEdgesRiseMonotonicallyAndWidenWithTheKernel) {
     int previous = -1;
     for (int kernel : {2, 3, 5, 8}) {
         SCOPED_TRACE("kernel " + std::to_string(kernel));
-        const std::vector<float> row = edgeProfile(R"("filter": "grid", "kernel": )" + std::to_string(kernel));
+        const std::vector<float> row = edgeProfile(R"("filter": "grid", "gridTaps": "bilinear", "kernel": )" + std::to_string(kernel));
         EXPECT_EQ(row.front(), 1.0f);  // x < 0: lit
         EXPECT_EQ(row.back(), 0.0f);   // under the slab
         for (std::size_t x = 1; x < row.size(); ++x) EXPECT_LE(row[x], row[x - 1] + 1e-6f) << "x " << x;  // lit to shadowed: never rises
         EXPECT_GT(width(row), previous) << "a wider kernel, a wider penumbra";
         previous = width(row);
-        // The depth formats take the grid from ceil(N/2)^2 bilinear compares,
-        // rgba8 from N^2 nearest taps: the same box average of the same
-        // comparisons (to float rounding of the weights).
+        // ceil(N/2)^2 bilinear compares and N^2 nearest ones: the same box
+        // average of the same comparisons (to float rounding of the weights).
         const std::vector<float> nearest =
-            edgeProfile(R"("filter": "grid", "format": "rgba8", "kernel": )" + std::to_string(kernel));
+            edgeProfile(R"("filter": "grid", "gridTaps": "nearest", "kernel": )" + std::to_string(kernel));
         for (std::size_t x = 0; x < row.size(); ++x) EXPECT_NEAR(row[x], nearest[x], 1e-4f) << "x " << x;
     }
     const std::vector<float> dither = edgeProfile(R"("filter": "dither4")");
