@@ -166,6 +166,11 @@ struct Scene {
     std::pair<glm::vec3, glm::vec3> worldBounds() const;
 };
 
+/// The up vector of a light's own camera looking along `axis` (unit): +Y,
+/// or +X when the axis is within about 8 degrees of vertical. Shadow maps,
+/// a spot's projected image and cameraFromLight all use it.
+glm::vec3 lightCameraUp(const glm::vec3& axis);
+
 /// The light's own view as a camera (lecture 002 exercise 8.6.1-1): a spot
 /// light looks along its axis with a field of view of twice its outer cone;
 /// a directional light looks along its direction from outside the scene's

@@ -27,10 +27,6 @@ bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box) {
 
 namespace {
 
-glm::vec3 upFor(const glm::vec3& axis) {
-    return std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-}
-
 Bounds all(const FitInput& in) {
     Bounds b;
     for (const Bounds& item : in.itemBounds) b.add(item);
@@ -67,7 +63,7 @@ LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInpu
     const float diagonal = scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f);
     // Light view: looking along `direction`, origin at the scene's centre
     // moved back by the diagonal so every depth is negative in view space.
-    cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, upFor(direction));
+    cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, lightCameraUp(direction));
     Bounds region; // light view space: x, y across the light, z = -distance from the eye
     if (fit == MapFit::Scene) {
         // The lecture's box: sides equal to the diagonal, centred on the scene.
@@ -123,7 +119,7 @@ LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInpu
 LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
     LightCamera cam;
     const glm::vec3 axis = glm::normalize(light.direction);
-    cam.viewFromWorld = glm::lookAt(light.position, light.position + axis, upFor(axis));
+    cam.viewFromWorld = glm::lookAt(light.position, light.position + axis, lightCameraUp(axis));
     cam.perspective = true;
     // Far: the farthest projection on the axis of what must be covered.
     Bounds covered;

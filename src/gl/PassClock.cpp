@@ -23,12 +23,16 @@ const char* toString(ClockKind kind) {
     return "?";
 }
 
-ClockKind clockFor(const std::string& glRenderer) {
+bool isSoftwareRasterizer(const std::string& glRenderer) {
     std::string r = glRenderer;
     std::transform(r.begin(), r.end(), r.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     for (const char* software : {"llvmpipe", "softpipe", "swr", "lavapipe", "software rasterizer"})
-        if (r.find(software) != std::string::npos) return ClockKind::CpuFinish;
-    return ClockKind::GpuTimestamp;
+        if (r.find(software) != std::string::npos) return true;
+    return false;
+}
+
+ClockKind clockFor(const std::string& glRenderer) {
+    return isSoftwareRasterizer(glRenderer) ? ClockKind::CpuFinish : ClockKind::GpuTimestamp;
 }
 
 void PassClock::begin(const std::string& name) {

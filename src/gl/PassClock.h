@@ -25,8 +25,10 @@ enum class ClockKind {
 
 /// "cpu-finish", "gpu-timestamp" or "off": the name results.json records.
 const char* toString(ClockKind kind);
-/// CpuFinish for a software rasteriser (llvmpipe, softpipe, swr, lavapipe),
-/// GpuTimestamp otherwise.
+/// Whether GL_RENDERER names a software rasteriser (llvmpipe, softpipe,
+/// swr, lavapipe), which rasterises on the CPU and defers the work.
+bool isSoftwareRasterizer(const std::string& glRenderer);
+/// CpuFinish for a software rasteriser, GpuTimestamp otherwise.
 ClockKind clockFor(const std::string& glRenderer);
 
 /// Times nested scopes of a frame: begin("shadow[0]") ... begin("blur") ...

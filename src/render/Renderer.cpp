@@ -38,9 +38,8 @@ shared::LightUniforms lightUniforms(const Light& light) {
     if (light.type == LightType::Spot && light.projectorTexture >= 0) {
         // The spot's camera: along its axis, the image filling the square around the outer cone.
         const glm::vec3 axis = glm::normalize(light.direction);
-        const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
         u.projectorFromWorld = glm::perspective(2.0f * glm::radians(light.outerConeDeg), 1.0f, 0.01f, 100.0f) *
-                               glm::lookAt(light.position, light.position + axis, up);
+                               glm::lookAt(light.position, light.position + axis, lightCameraUp(axis));
     }
     return u;
 }

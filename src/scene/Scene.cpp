@@ -58,6 +58,10 @@ std::pair<glm::vec3, glm::vec3> Scene::worldBounds() const {
     return {lo, hi};
 }
 
+glm::vec3 lightCameraUp(const glm::vec3& axis) {
+    return std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
 Camera cameraFromLight(const Scene& scene, const Light& light) {
     if (light.type == LightType::Point) throw Error("light '" + light.name + "': a point light has no single view (it has six)");
     const glm::vec3 axis = glm::normalize(light.direction);
@@ -66,7 +70,7 @@ Camera cameraFromLight(const Scene& scene, const Light& light) {
     const glm::vec3 centre = 0.5f * (lo + hi);
     const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
     Camera cam;
-    cam.up = std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    cam.up = lightCameraUp(axis);
     if (light.type == LightType::Spot) {
         cam.position = light.position;
         cam.fovYDeg = std::min(2.0f * light.outerConeDeg, 170.0f);

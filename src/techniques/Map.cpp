@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <map>
 
 namespace shadowlab {
@@ -163,6 +164,7 @@ struct Group {
     int key() const { return static_cast<int>(format) + (mipmaps ? kMipmapped : 0); }
     int size = 0;
     int layers = 0;
+    std::uint64_t generation = 0;     ///< unique per allocation: framebuffers attached to an older one are rebuilt
     gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, or the depth test's buffer for rgba8
     gl::Texture packed{gl::NoCreate}; ///< RGBA8 array: the map for rgba8
 };
@@ -173,7 +175,9 @@ struct PerLight {
     LightCamera camera;
     std::size_t group = 0;
     int layer = 0;
-    gl::Framebuffer fbo{gl::NoCreate};
+    gl::Framebuffer fbo{gl::NoCreate};  ///< the layer attached (at prepare, when the array or layer changes)
+    std::uint64_t attachedGeneration = 0;
+    int attachedLayer = -1;
 };
 
 gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
@@ -197,7 +201,7 @@ public:
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         // A software rasteriser compares four texels for a bilinear fetch,
         // so there the grid's nearest fetches are faster (docs/techniques.md).
-        software_ = gl::clockFor(host.glInfo().renderer) == gl::ClockKind::CpuFinish;
+        software_ = gl::isSoftwareRasterizer(host.glInfo().renderer);
         if (!compareNearest_) {
             compareNearest_ = makeSampler(GL_NEAREST, GL_NEAREST, true);
             compareLinear_ = makeSampler(GL_LINEAR, GL_LINEAR, true);
@@ -261,6 +265,7 @@ public:
             g.mipmaps = key.first >= kMipmapped;
             g.size = key.second;
             g.layers = layers;
+            g.generation = ++generations_;
             const int levels = g.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(g.size)))) : 1;
             g.depth = gl::Texture(GL_TEXTURE_2D_ARRAY);
             glTextureStorage3D(g.depth.id(), g.format == MapFormat::Rgba8 ? 1 : levels, depthFormat(g.format), g.size, g.size, layers);
@@ -291,8 +296,12 @@ public:
             else
                 p.camera = fitDirectional(glm::normalize(light.direction), p.options.fit, in);
             auto old = lights_.find(index);
-            if (old != lights_.end()) p.fbo = std::move(old->second.fbo);
-            if (!p.fbo) p.fbo = gl::Framebuffer();
+            if (old != lights_.end()) {
+                p.fbo = std::move(old->second.fbo);
+                p.attachedGeneration = old->second.attachedGeneration;
+                p.attachedLayer = old->second.attachedLayer;
+            }
+            attach(p);
             perLight.emplace(index, std::move(p));
         }
         lights_ = std::move(perLight);
@@ -304,15 +313,6 @@ public:
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
         const bool packed = g.format == MapFormat::Rgba8;
-        glNamedFramebufferTextureLayer(p.fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, p.layer);
-        if (packed) {
-            glNamedFramebufferTextureLayer(p.fbo.id(), GL_COLOR_ATTACHMENT0, g.packed.id(), 0, p.layer);
-            glNamedFramebufferDrawBuffer(p.fbo.id(), GL_COLOR_ATTACHMENT0);
-        } else {
-            glNamedFramebufferDrawBuffer(p.fbo.id(), GL_NONE);
-        }
-        glNamedFramebufferReadBuffer(p.fbo.id(), GL_NONE);
-        gl::checkFramebuffer(p.fbo, "shadow map framebuffer");
         glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
         glViewport(0, 0, g.size, g.size);
         gl::RenderState state;  // all writes on for the clears
@@ -346,7 +346,7 @@ public:
             const auto scope = host.timeScope("mipmaps");
             glGenerateTextureMipmap(packed ? g.packed.id() : g.depth.id());
         }
-        if (frame.measureFloors) drawFloor(host, frame, p, program);
+        if (frame.measureFloors) drawFloor(host, frame, p);
     }
 
     std::string lightPassDefines(const Light& light) const override {
@@ -408,6 +408,24 @@ public:
     }
 
 private:
+    // Attaches the light's layer to its framebuffer when the array or the
+    // layer changed (a new array gets a new framebuffer: the old one may
+    // still name the deleted texture).
+    void attach(PerLight& p) {
+        const Group& g = groups_[p.group];
+        if (p.fbo && p.attachedGeneration == g.generation && p.attachedLayer == p.layer) return;
+        if (!p.fbo || p.attachedGeneration != g.generation) p.fbo = gl::Framebuffer();
+        const bool packed = g.format == MapFormat::Rgba8;
+        glNamedFramebufferTextureLayer(p.fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, p.layer);
+        if (packed) glNamedFramebufferTextureLayer(p.fbo.id(), GL_COLOR_ATTACHMENT0, g.packed.id(), 0, p.layer);
+        glNamedFramebufferDrawBuffer(p.fbo.id(), packed ? GL_COLOR_ATTACHMENT0 : GL_NONE);
+        glNamedFramebufferReadBuffer(p.fbo.id(), GL_NONE);
+        gl::checkFramebuffer(p.fbo, "shadow map framebuffer");
+        p.attachedGeneration = g.generation;
+        p.attachedLayer = p.layer;
+    }
+    std::uint64_t generations_ = 0;
+
     bool bilinearGrid(const MapOptions& o) const {
         return o.format != MapFormat::Rgba8 &&
                (o.gridTaps == MapGridTaps::Bilinear || (o.gridTaps == MapGridTaps::Auto && !software_));
@@ -447,7 +465,7 @@ private:
     // The floor of a shadow pass: the same casters, depth only, into a
     // scratch target of the same size and format, with no bias, culling or
     // packing: what the pass itself costs at least.
-    void drawFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p, const gl::Program&) {
+    void drawFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p) {
         const Group& g = groups_[p.group];
         if (!floorTarget_ || floorSize_ != g.size || floorFormat_ != g.format) {
             floorTarget_ = gl::Texture(GL_TEXTURE_2D);
