@@ -61,6 +61,9 @@ gltf_cases = {
 }
 for name, doc in gltf_cases.items():
     write("gltf", name, json.dumps(doc))
+# Found by fuzzing: a buffer of byteLength 0 beside a 36-byte BIN chunk made
+# tinygltf throw std::out_of_range (vector::at) from inside its loader.
+write("glb", "repro-buffer-length-0-with-bin.glb", glb({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 0}]}, bytes(36)))
 # Found by fuzzing: a buffer URI naming a directory (tinygltf took its size as 2^63 - 1).
 write("gltf", "repro-buffer-uri-directory.gltf", json.dumps(gltf(uri=".")))
 write("gltf", "repro-buffer-uri-percent.gltf",
@@ -105,6 +108,8 @@ write("scene", "meshes-and-texture.json", scene({
     "nodes": [{"mesh": "triangle.obj", "material": "t", "children": [{"mesh": "triangle.gltf", "translation": [1, 0, 0]}]}]},
     "lights[0].intensity=2", "camera.fovY=60"))
 for path in sorted(os.listdir(os.path.join(root, "..", "..", "scenes"))):
+    if not path.endswith(".json"):
+        continue  # scenes/images/ holds what the scenes reference
     with open(os.path.join(root, "..", "..", "scenes", path)) as f:
         text = f.read()
     if "bunny" not in path:  # the bunny references a file outside the corpus

@@ -530,9 +530,17 @@ ImportedModel parseGltf(const std::string& bytes, const std::string& file, const
     tinygltf::Model model;
     std::string err, warn;
     const auto length = static_cast<unsigned int>(bytes.size());
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                         length, baseDir.string())
-                           : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), length, baseDir.string());
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), length,
+                                                  baseDir.string())
+                    : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), length, baseDir.string());
+    } catch (const std::exception& e) {
+        // tinygltf can throw from inside its loader (found by fuzzing: a
+        // buffer of byteLength 0 beside a BIN chunk reaches vector::at on
+        // an empty vector); every such failure is this file's named error.
+        throw Error(text::escapeControl(file + ": not a valid glTF file (the glTF loader failed: " + oneLine(e.what()) + ")"));
+    }
     if (!ok) throw Error(text::escapeControl(file + ": " + (err.empty() ? std::string("failed to load glTF") : oneLine(err))));
     return GltfImporter(file, model).run();
 }

@@ -92,6 +92,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"gltf", "repro-buffer-uri-directory.gltf", "is not a regular file"},
         Case{"gltf", "repro-buffer-uri-percent.gltf", "is not a regular file"},
         Case{"glb", "repro-json-nested-10000.glb", "JSON nested deeper than 200 levels"},
+        // Found by fuzzing: tinygltf throwing from inside its loader.
+        Case{"glb", "repro-buffer-length-0-with-bin.glb", "not a valid glTF file (the glTF loader failed: "},
         // OBJ: control bytes in a quoted word are escaped.
         Case{"obj", "repro-control-bytes.obj", ":3: bad number '1\\v\\f\\r' after 'v'"},
         Case{"obj", "repro-bad-number-cr.obj", ":2: bad number '1\\r5' after 'v'"},
