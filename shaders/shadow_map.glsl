@@ -28,17 +28,18 @@ float mapNoise(vec2 pixel) { return fract(52.9829189 * fract(dot(pixel, vec2(0.0
 in vec4 vShadowCoord;   // from shadow_map_vertex.glsl: the offset point in texture space
 in float vShadowNdotL;
 
-vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
+// The shadow test's visibility, 0 (shadowed) to 1 (lit).
+float mapVisibility() {
     vec4 s = vShadowCoord;
     float NdotL = vShadowNdotL;
-    if (s.w <= 0.0) return vec3(1.0);
+    if (s.w <= 0.0) return 1.0;
     s.xyz /= s.w;
     // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
-    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return vec3(1.0);
+    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return 1.0;
     float ref = s.z - map.bias.x - max(map.bias.y * (1.0 - NdotL), map.bias.z);
     float du = map.taps.x;
 #if MAP_FILTER == SL_MAP_FILTER_NONE || MAP_FILTER == SL_MAP_FILTER_HARDWARE
-    return vec3(mapTap(s.xy, ref));  // the sampler is nearest or bilinear
+    return mapTap(s.xy, ref);  // the sampler is nearest or bilinear
 #elif MAP_FILTER == SL_MAP_FILTER_GRID && !MAP_GRID_BILINEAR
     // MAP_KERNEL x MAP_KERNEL nearest taps one texel apart, centred on the point.
     float sum = 0.0;
@@ -46,7 +47,7 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     for (int j = 0; j < MAP_KERNEL; ++j)
         for (int i = 0; i < MAP_KERNEL; ++i)
             sum += mapTap(s.xy + du * vec2(start + float(i), start + float(j)), ref);
-    return vec3(sum / float(MAP_KERNEL * MAP_KERNEL));
+    return sum / float(MAP_KERNEL * MAP_KERNEL);
 #elif MAP_FILTER == SL_MAP_FILTER_GRID
     // The same MAP_KERNEL x MAP_KERNEL nearest taps, from as few bilinear
     // hardware compares as the kernel allows: the nearest taps read the N
@@ -71,7 +72,7 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
             sum += wx * wy * mapTap(vec2(x, y) * du, ref);
         }
     }
-    return vec3(sum / float(MAP_KERNEL * MAP_KERNEL));
+    return sum / float(MAP_KERNEL * MAP_KERNEL);
 #elif MAP_FILTER == SL_MAP_FILTER_DITHER4
     // The lecture's 4-sample dithered PCF (000): one of four patterns from
     // gl_FragCoord mod 2, taps `spread` texels apart.
@@ -79,7 +80,7 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     vec2 o = mod(floor(gl_FragCoord.xy), 2.0) * w;
     float sum = mapTap(s.xy + vec2(-1.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(s.xy + vec2(-1.5 * w + o.x, -0.5 * w - o.y), ref) +
                 mapTap(s.xy + vec2(0.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(s.xy + vec2(0.5 * w + o.x, -0.5 * w - o.y), ref);
-    return vec3(0.25 * sum);
+    return 0.25 * sum;
 #elif MAP_FILTER == SL_MAP_FILTER_POISSON
     // A Vogel disk (golden-angle spiral, uniform by area) rotated per pixel.
     int taps = int(map.taps.z);
@@ -90,8 +91,18 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
         float a = float(k) * 2.3999632 + rotation;
         sum += mapTap(s.xy + du * r * vec2(cos(a), sin(a)), ref);
     }
-    return vec3(sum / float(taps));
+    return sum / float(taps);
 #else
 #error unknown MAP_FILTER
 #endif
+}
+
+vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
+    float v = mapVisibility();
+#if !OUTPUT_VISIBILITY
+    // The look of lecture 002 listing 8.4 (color *= 0.6 in shadow) when
+    // shadowedLight > 0; compare reads the test itself (OUTPUT_VISIBILITY).
+    v = mix(map.light.w, 1.0, v);
+#endif
+    return vec3(v);
 }

@@ -28,7 +28,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     SL_MAP_VEC4 params;  // x array layer, y the filter's reach (texels from the centre to its farthest tap), z world size of a texel (spot: per unit of distance along the axis), w 1 perspective / 0 ortho
     SL_MAP_VEC4 bias;    // map depth units: x constant, y times (1 - N.L), z the least of the two (max(y (1 - N.L), z) + x); w normal bias, texels
     SL_MAP_VEC4 taps;    // x one texel in uv (1 / size), y poisson radius (texels), z poisson taps, w dither spread (texels)
-    SL_MAP_VEC4 light;   // xyz: spot position or -direction (towards the light), w unused
+    SL_MAP_VEC4 light;   // xyz: spot position or -direction (towards the light), w the light a shadowed point keeps (shadowedLight)
     SL_MAP_VEC4 axis;    // xyz: perspective light camera's unit view direction (texels grow along it), w unused
 #ifdef __cplusplus
 };

@@ -54,9 +54,10 @@ struct MapOptions {
     float radius = 1.5f;                 ///< poisson: disk radius, texels; default 1.5
     float constantBias = 0.0f;           ///< light-space depth, shadow-map texels of the light's depth range; default 0
     float slopeBias = 1.5f;              ///< glPolygonOffset factor in the shadow pass; default 1.5
-    float offsetUnits = 2.0f;            ///< glPolygonOffset units in the shadow pass; default 2
+    float offsetUnits = 8.0f;            ///< glPolygonOffset units in the shadow pass; default 8
     float normalBias = 1.0f;             ///< receiver moved along its normal by this many map texels (world size) times (1 - N.L); default 1
     bool cullFront = false;              ///< draw back faces only into the map (closed meshes; 002 §8.4.1.1); default false
+    float shadowedLight = 0.0f;          ///< share of the light's diffuse and specular a shadowed point keeps (a look; compare judges the test); default 0
     bool mipmaps = false;                ///< mipmap the map and sample it with mipmapping (002 exercise 8.6.1-4); default false
     MapPreset preset = MapPreset::Default;
 };

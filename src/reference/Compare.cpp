@@ -17,6 +17,52 @@ namespace {
 
 std::uint8_t toByte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
+#ifdef SHADOWLAB_WITH_EMBREE
+struct Extension {
+    std::size_t pixel = 0;  ///< the surface pixel whose plane is extended
+    std::size_t index = 0;  ///< into the traced extension samples
+    glm::vec3 position{0.0f};
+};
+
+// For each surface pixel and each 8-neighbour not on the same surface (no
+// surface, or one off the pixel's tangent plane or turned from it): the point
+// where the camera ray through the neighbour's centre meets the pixel's plane.
+std::vector<Extension> surfaceExtensions(const Scene& scene, const SurfaceBuffer& surfaces, const std::vector<reference::SurfaceSample>& samples) {
+    const int w = surfaces.width, h = surfaces.height;
+    const glm::mat4 worldFromClip = glm::inverse(scene.camera.clipFromView(static_cast<float>(w) / static_cast<float>(h)) * scene.camera.viewFromWorld());
+    const glm::vec3 eye = scene.camera.position;
+    std::vector<Extension> out;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            const reference::SurfaceSample& s = samples[i];
+            if (!s.valid) continue;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                    const reference::SurfaceSample& t = samples[static_cast<std::size_t>(ny) * w + nx];
+                    if (t.valid) {
+                        const glm::vec3 d = t.position - s.position;
+                        // Same surface: within about 6 degrees of the tangent plane, normals alike.
+                        if (std::fabs(glm::dot(d, s.normal)) <= 0.1f * glm::length(d) + 1e-6f && glm::dot(s.normal, t.normal) > 0.9f) continue;
+                    }
+                    // Rows are stored top first.
+                    const glm::vec4 ndc((static_cast<float>(nx) + 0.5f) / static_cast<float>(w) * 2.0f - 1.0f,
+                                        1.0f - (static_cast<float>(ny) + 0.5f) / static_cast<float>(h) * 2.0f, 0.0f, 1.0f);
+                    const glm::vec4 p = worldFromClip * ndc;
+                    const glm::vec3 dir = glm::normalize(glm::vec3(p) / p.w - eye);
+                    const float facing = glm::dot(dir, s.normal);
+                    if (std::fabs(facing) < 1e-4f) continue;
+                    const float along = glm::dot(s.position - eye, s.normal) / facing;
+                    if (!(along > 0.0f)) continue;
+                    out.push_back({i, out.size(), eye + along * dir});
+                }
+        }
+    return out;
+}
+#endif
+
 } // namespace
 
 #ifndef SHADOWLAB_WITH_EMBREE
@@ -50,13 +96,24 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
         samples[i].normal = samples[i].valid ? normal / len : glm::vec3(0.0f, 1.0f, 0.0f);
     }
 
+    // Points on each surface pixel's own plane under its neighbours' pixel
+    // centres, where a neighbour is on another surface (the edge band below).
+    const std::vector<Extension> extensions = surfaceExtensions(scene, surfaces, samples);
+    std::vector<reference::SurfaceSample> extensionSamples(extensions.size());
+    for (std::size_t k = 0; k < extensions.size(); ++k)
+        extensionSamples[k] = {extensions[k].position, samples[extensions[k].pixel].normal, true};
+
     const auto traceStart = std::chrono::steady_clock::now();
     const reference::RayTracer tracer(scene);
     reference::VisibilityOptions visibilityOptions;
     visibilityOptions.softSamples = options.softSamples;
     visibilityOptions.seed = options.seed;
     std::vector<std::vector<float>> truth;
-    for (const Light& light : scene.lights) truth.push_back(tracer.visibility(light, samples, visibilityOptions));
+    std::vector<std::vector<float>> extensionTruth;
+    for (const Light& light : scene.lights) {
+        truth.push_back(tracer.visibility(light, samples, visibilityOptions));
+        extensionTruth.push_back(tracer.visibility(light, extensionSamples, visibilityOptions));
+    }
     out.referenceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - traceStart).count();
 
     // The technique's own visibility per light, then the reference image
@@ -86,7 +143,13 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
             c.reach.pixels[i] = receiver[i] ? 255 : 0;
             exactLit[i] = receiver[i] && exact[i] >= options.litThreshold;
         }
-        // The edge band: receivers with an 8-neighbour receiver of the other true class.
+        // The edge band: receivers the exact shadow boundary passes within a
+        // pixel of. A receiver is in it when an 8-neighbour receiver has the
+        // other true class, or when a neighbour lies on another surface (a
+        // silhouette in between) and the pixel's own surface, extended under
+        // that neighbour's pixel centre, has the other true class there: the
+        // boundary then runs on past the pixel, hidden behind what is drawn
+        // next to it.
         std::vector<std::uint8_t> edge(n, 0);
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
@@ -100,6 +163,9 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
                         if (receiver[j] && exactLit[j] != exactLit[i]) { edge[i] = 1; break; }
                     }
             }
+        for (const Extension& e : extensions)
+            if (receiver[e.pixel] && !edge[e.pixel] && (extensionTruth[l][e.index] >= options.litThreshold) != (exactLit[e.pixel] != 0))
+                edge[e.pixel] = 1;
 
         std::size_t falseShadow = 0, falseLit = 0, falseShadowAway = 0, falseLitAway = 0;
         double absSum = 0.0, sqSum = 0.0;

@@ -45,6 +45,8 @@ const OptionTable& mapOptionTable() {
             .number(&MapOptions::normalBias, "normalBias", 0.0, 16.0, "texels",
                     "receiver moved along its normal by this many map texels (their world size) times 1 - N.L")
             .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws back faces only (closed meshes; lecture 002 §8.4.1.1)")
+            .number(&MapOptions::shadowedLight, "shadowedLight", 0.0, 1.0, "share of the light",
+                    "what a shadowed point keeps of the light (lecture 002 listing 8.4: 0.6); compare judges the shadow test, not this look")
             .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (lecture 002 exercise 8.6.1-4; docs/techniques.md says what it does)")
             .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl"},
                     "replace the settings with the lecture's or LearnOpenGL's (docs/techniques.md)")
@@ -104,6 +106,8 @@ MapOptions effective(const Light& light) {
         o.format = MapFormat::Depth32F;
         o.filter = MapFilter::Dither4;
         o.fit = MapFit::Scene;
+        // Lecture 002 listing 8.4: a shadowed point keeps 60 % (color *= 0.6).
+        o.shadowedLight = 0.6f;
     } else if (o.preset == MapPreset::LearnOpenGL) {
         // LearnOpenGL 5.advanced_lighting/3.1.3: 1024^2 DEPTH_COMPONENT
         // (float), 3x3 PCF of nearest taps, bias max(0.05 (1 - N.L), 0.005),
@@ -519,8 +523,8 @@ private:
         const float spread = p.options.preset == MapPreset::Lecture ? 2.5f * 0.001f * static_cast<float>(g.size) : 1.0f;
         u.taps = glm::vec4(1.0f / static_cast<float>(g.size), p.options.radius, static_cast<float>(p.options.samples), spread);
         const Light& light = view.light;
-        u.light = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), 0.0f)
-                                                         : glm::vec4(light.position, 0.0f);
+        u.light = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), p.options.shadowedLight)
+                                                         : glm::vec4(light.position, p.options.shadowedLight);
         // The light camera's view direction: minus the view matrix's third row.
         const glm::mat4& v = p.camera.viewFromWorld;
         u.axis = glm::vec4(-glm::vec3(v[0][2], v[1][2], v[2][2]), 0.0f);
