@@ -1,5 +1,7 @@
 #include "core/LightCamera.h"
 
+#include "core/Plane.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -56,6 +58,37 @@ Bounds frustumBounds(const glm::mat4& cameraClipFromWorld, const glm::mat4& to) 
 
 } // namespace
 
+std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const glm::mat4& lightView, const FitInput& in) {
+    std::vector<std::size_t> receivers;
+    for (std::size_t i = 0; i < in.items.size(); ++i)
+        if (in.items[i].receivesShadows && mayIntersect(in.cameraClipFromWorld, in.itemBounds[i])) receivers.push_back(i);
+    const float margin = 1e-5f * std::max(glm::length(all(in).size()), 1e-3f);
+    const bool directional = towardsLight.w == 0.0f;
+    std::vector<std::uint8_t> out(in.items.size(), 0);
+    for (std::size_t i = 0; i < in.items.size(); ++i) {
+        if (!in.items[i].castsShadows) continue;
+        const std::optional<glm::vec4>& plane = i < in.itemPlanes.size() ? in.itemPlanes[i] : std::nullopt;
+        if (!plane) {
+            // Other casters: the fit's footprint and the light's frustum decide.
+            out[i] = !receivers.empty();
+            continue;
+        }
+        // A planar caster shadows neither itself nor anything on the light's
+        // side of its plane; across a directional light it must also overlap.
+        const Bounds caster = directional ? in.itemBounds[i].transformed(lightView) : Bounds{};
+        for (std::size_t r : receivers) {
+            if (r == i || !reachesBehind(*plane, towardsLight, in.itemBounds[r], margin)) continue;
+            if (directional) {
+                const Bounds b = in.itemBounds[r].transformed(lightView);
+                if (caster.hi.x < b.lo.x || caster.lo.x > b.hi.x || caster.hi.y < b.lo.y || caster.lo.y > b.hi.y || caster.hi.z < b.lo.z) continue;
+            }
+            out[i] = 1;
+            break;
+        }
+    }
+    return out;
+}
+
 LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInput& in) {
     LightCamera cam;
     const Bounds scene = all(in);
@@ -64,6 +97,7 @@ LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInpu
     // Light view: looking along `direction`, origin at the scene's centre
     // moved back by the diagonal so every depth is negative in view space.
     cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, lightCameraUp(direction));
+    cam.casts = castersThatMatter(glm::vec4(-direction, 0.0f), cam.viewFromWorld, in);
     Bounds region; // light view space: x, y across the light, z = -distance from the eye
     if (fit == MapFit::Scene) {
         // The lecture's box: sides equal to the diagonal, centred on the scene.
@@ -89,7 +123,7 @@ LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInpu
         // casters over it raise its near side (towards the light).
         Bounds casters;
         for (std::size_t i = 0; i < in.items.size(); ++i) {
-            if (!in.items[i].castsShadows) continue;
+            if (!cam.casts[i]) continue;
             const Bounds c = in.itemBounds[i].transformed(cam.viewFromWorld);
             if (c.empty() || c.hi.x < region.lo.x || c.lo.x > region.hi.x || c.hi.y < region.lo.y || c.lo.y > region.hi.y) continue;
             casters.add(c);
@@ -121,6 +155,7 @@ LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
     const glm::vec3 axis = glm::normalize(light.direction);
     cam.viewFromWorld = glm::lookAt(light.position, light.position + axis, lightCameraUp(axis));
     cam.perspective = true;
+    cam.casts = castersThatMatter(glm::vec4(light.position, 1.0f), cam.viewFromWorld, in);
     // Far: the farthest projection on the axis of what must be covered.
     Bounds covered;
     if (fit == MapFit::Scene) covered = all(in);
@@ -142,7 +177,7 @@ LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
     float near = far;
     const glm::mat4 probe = glm::perspective(fovY, 1.0f, far * 1e-4f, far) * cam.viewFromWorld;
     for (std::size_t i = 0; i < in.items.size(); ++i) {
-        if (!in.items[i].castsShadows || !mayIntersect(probe, in.itemBounds[i])) continue;
+        if (!cam.casts[i] || !mayIntersect(probe, in.itemBounds[i])) continue;
         const Bounds& b = in.itemBounds[i];
         const glm::vec3 c = b.centre(), e = 0.5f * b.size();
         const float nearest = glm::dot(c - light.position, axis) - glm::dot(e, glm::abs(axis));

@@ -7,6 +7,8 @@
 #include <shadowlab/MapOptions.h>
 #include <shadowlab/Scene.h>
 
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -19,6 +21,9 @@ struct LightCamera {
     /// Orthographic: world size of one texel. Perspective: world size of one
     /// texel per unit of distance along the light's axis.
     float texelSize = 0.0f;
+    /// Per item: 1 when it may shadow a receiver the camera sees (drawn into
+    /// the map), 0 when it cannot; empty: every caster is drawn.
+    std::vector<std::uint8_t> casts;
     glm::mat4 clipFromWorld() const { return clipFromView * viewFromWorld; }
 };
 
@@ -28,6 +33,7 @@ struct LightCamera {
 struct FitInput {
     const std::vector<Bounds>& itemBounds;
     const std::vector<DrawItem>& items;
+    const std::vector<std::optional<glm::vec4>>& itemPlanes; ///< world plane of each planar item
     glm::mat4 cameraClipFromWorld{1.0f};
     int size = 2048;           ///< map texels per side
     float paddingTexels = 1.0f;///< extra texels around the fitted region (filter footprint)
@@ -37,6 +43,15 @@ struct FitInput {
 /// `clipFromWorld` (all eight corners beyond one of its six planes): a
 /// conservative test, a box it keeps may still be outside.
 bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box);
+
+/// Which casters may shadow a receiver the camera sees (LightCamera::casts)
+/// for a light `towardsLight` (position, w = 1; or the direction towards a
+/// directional light, w = 0), with `lightView` a view along the light for
+/// the footprint test of a directional light (ignored for w = 1). A caster
+/// counts when some visible receiver overlaps it across the light and is
+/// not entirely nearer the light than it; a planar caster (a floor) only
+/// when that receiver is another item reaching behind its plane.
+std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const glm::mat4& lightView, const FitInput& in);
 
 /// Directional light travelling along `direction` (unit).
 /// Tight: the region of the light's view plane covered by receivers the

@@ -1,6 +1,7 @@
 #include "render/GpuScene.h"
 
 #include "core/Adjacency.h"
+#include "core/Plane.h"
 
 #include <shadowlab/Error.h>
 
@@ -47,6 +48,7 @@ GpuScene::GpuScene(const Scene& scene) {
         describeVertices(gpu.vao, gpu.vertices, gpu.indices);
         gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
         for (const glm::vec3& p : mesh.positions) gpu.bounds.add(p);
+        gpu.plane = meshPlane(mesh);
         meshes_.push_back(std::move(gpu));
     }
     GLint maxSize = 0;

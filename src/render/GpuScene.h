@@ -5,6 +5,7 @@
 
 #include <shadowlab/Scene.h>
 
+#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -15,6 +16,7 @@ struct GpuMesh {
     gl::VertexArray vao;
     GLsizei indexCount = 0;
     Bounds bounds;                 ///< object space
+    std::optional<glm::vec4> plane; ///< object space, when the mesh is planar (core/Plane.h)
     gl::Buffer adjacency{gl::NoCreate}; ///< GL_TRIANGLES_ADJACENCY indices, built on first use
     gl::VertexArray adjacencyArray{gl::NoCreate};
 };
@@ -31,6 +33,8 @@ public:
     const gl::Buffer& adjacencyIndices(int mesh, const Mesh& source);
     /// Object-space bounds of Scene::meshes[mesh].
     const Bounds& bounds(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].bounds; }
+    /// Object-space plane of Scene::meshes[mesh] when it is planar.
+    const std::optional<glm::vec4>& plane(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].plane; }
     /// The texture for Scene::textures[i].
     const gl::Texture& texture(int i) const { return textures_[static_cast<std::size_t>(i)]; }
     std::size_t meshCount() const { return meshes_.size(); }

@@ -2,6 +2,7 @@
 // services the techniques get (TechniqueHost).
 #include <shadowlab/Renderer.h>
 
+#include "core/Plane.h"
 #include "gl/Debug.h"
 #include "render/DrawList.h"
 #include "render/FrameTargets.h"
@@ -77,6 +78,7 @@ struct Renderer::Impl final : TechniqueHost {
     const Scene* scene = nullptr;
     std::vector<DrawItem> items;
     std::vector<Bounds> itemBounds;
+    std::vector<std::optional<glm::vec4>> itemPlanes;
     std::optional<FrameInfo> info;
     std::optional<gl::PassClock> clock;
     LitMode litMode = LitMode::Shade;
@@ -230,9 +232,14 @@ struct Renderer::Impl final : TechniqueHost {
         scene = &s;
         items = s.drawItems();
         itemBounds.clear();
-        for (const DrawItem& item : items) itemBounds.push_back(gpu->bounds(item.mesh).transformed(item.worldFromObject));
+        itemPlanes.clear();
+        for (const DrawItem& item : items) {
+            itemBounds.push_back(gpu->bounds(item.mesh).transformed(item.worldFromObject));
+            const std::optional<glm::vec4>& plane = gpu->plane(item.mesh);
+            itemPlanes.push_back(plane ? std::optional<glm::vec4>(transformPlane(*plane, item.worldFromObject)) : std::nullopt);
+        }
         const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-        info.emplace(FrameInfo{s, items, itemBounds, size});
+        info.emplace(FrameInfo{s, items, itemBounds, itemPlanes, size});
         info->viewFromWorld = s.camera.viewFromWorld();
         info->clipFromView = infiniteFar ? s.camera.clipFromViewInfiniteFar(aspect) : s.camera.clipFromView(aspect);
         info->clipFromWorld = info->clipFromView * info->viewFromWorld;

@@ -289,7 +289,7 @@ public:
             for (std::size_t g = 0; g < groups_.size(); ++g)
                 if (groups_[g].format == p.options.format && groups_[g].mipmaps == p.options.mipmaps && groups_[g].size == p.options.size) p.group = g;
             p.layer = nextLayer[p.group]++;
-            const FitInput in{frame.itemBounds, frame.items, frame.clipFromWorld, p.options.size, footprint(p.options)};
+            const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.clipFromWorld, p.options.size, footprint(p.options)};
             p.spot = light.type == LightType::Spot;
             if (p.options.preset == MapPreset::LearnOpenGL && light.type == LightType::Directional)
                 p.camera = learnOpenGlCamera(light, p.options.size);
@@ -340,7 +340,7 @@ public:
         const glm::mat4 lightClip = p.camera.clipFromWorld();
         std::size_t drawn = 0;
         host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
-            const bool inside = !p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
+            const bool inside = mayCast(p.camera, i) && (!p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]));
             if (inside) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
             return inside;
         });
@@ -494,7 +494,7 @@ private:
         host.apply(state);
         const glm::mat4 lightClip = p.camera.clipFromWorld();
         host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) {
-            return !p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
+            return mayCast(p.camera, i) && (!p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]));
         });
     }
 
@@ -502,6 +502,9 @@ private:
     gl::Framebuffer floorFbo_{gl::NoCreate};
     int floorSize_ = 0;
     MapFormat floorFormat_ = MapFormat::Depth32F;
+
+    // Casters the fit found unable to shadow anything visible are skipped.
+    static bool mayCast(const LightCamera& camera, std::size_t item) { return camera.casts.empty() || camera.casts[item] != 0; }
 
     // Directional lights clamp depth, so only the four side planes cull.
     static bool mayIntersectSides(const glm::mat4& clipFromWorld, const Bounds& box) {

@@ -19,6 +19,8 @@
 #include <shadowlab/Renderer.h>
 #include <shadowlab/Scene.h>
 
+#include <optional>
+
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -32,6 +34,7 @@ struct FrameInfo {
     const Scene& scene;
     const std::vector<DrawItem>& items;      ///< every mesh instance, world transforms resolved
     const std::vector<Bounds>& itemBounds;   ///< world-space bounds of each item
+    const std::vector<std::optional<glm::vec4>>& itemPlanes; ///< world-space plane (n, d) of each planar item (core/Plane.h)
     glm::ivec2 viewport{0};                  ///< the frame's size, pixels
     glm::mat4 viewFromWorld{1.0f};           ///< the camera's
     glm::mat4 clipFromView{1.0f};
