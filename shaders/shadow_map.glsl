@@ -1,18 +1,31 @@
-// Technique "map": a shadow map per light (lecture 000, 002 §8.2-8.4).
-// The vertex goes to the light's texture space through one matrix (the
-// bias matrix times the light's projection and view; shadow_map_vertex.glsl,
-// which also applies the normal offset and the filter's receiver-plane
-// bias), and the fragment, after the perspective divide, is compared with
-// the map: in hardware through a sampler2DArrayShadow, or unpacked from
-// RGBA8 and compared here (MAP_RGBA8). Variants: MAP_FILTER
-// (SL_MAP_FILTER_*), MAP_KERNEL (grid side), MAP_GRID_BILINEAR (the grid's
-// comparisons from bilinear fetches), MAP_RGBA8. Numbers are uniforms.
+// Technique "map": a shadow map per light (lecture 000, 002 §8.2-8.4), a
+// cube map per point light (001).
+// 2D maps: the vertex goes to the light's texture space through one matrix
+// (the bias matrix times the light's projection and view;
+// shadow_map_vertex.glsl, which also applies the normal offset and the
+// filter's receiver-plane bias), and the fragment, after the perspective
+// divide, is compared with the map: in hardware through a
+// sampler2DArrayShadow, or unpacked from RGBA8 and compared here
+// (MAP_RGBA8). Cube maps (MAP_CUBE): the fragment's vector from the light
+// looks the map up, its distance over the far plane is the reference (all
+// per fragment). Variants: MAP_CUBE, MAP_FILTER (SL_MAP_FILTER_*),
+// MAP_KERNEL (grid side), MAP_GRID_BILINEAR (the grid's comparisons from
+// bilinear fetches), MAP_RGBA8. Numbers are uniforms.
 #include "shadow_map_shared.h"
 
+#if MAP_CUBE
+#if MAP_RGBA8
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePacked;
+float cubeTap(vec3 direction, float ref) {
+    return ref <= unpackDepth(texture(mapCubePacked, vec4(direction, map.params.x))) ? 1.0 : 0.0;
+}
+#else
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
+float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.params.x), ref); }
+#endif
+#else
 #if MAP_RGBA8
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
-// The inverse of shadow_map_depth.frag's packDepth (base 255).
-float unpackDepth(vec4 v) { return dot(v, vec4(1.0, 1.0 / 255.0, 1.0 / 65025.0, 1.0 / 16581375.0)); }
 // 1 where the receiver at depth `ref` is nearer than the map's occluder.
 float mapTap(vec2 uv, float ref) {
     return ref <= unpackDepth(texture(mapPacked, vec3(uv, map.params.x))) ? 1.0 : 0.0;
@@ -21,15 +34,98 @@ float mapTap(vec2 uv, float ref) {
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
 float mapTap(vec2 uv, float ref) { return texture(mapDepth, vec4(uv, map.params.x, ref)); }
 #endif
+#endif
 
 // Interleaved gradient noise (Jimenez 2014): a per-pixel rotation for the disk.
 float mapNoise(vec2 pixel) { return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715)))); }
 
+#if MAP_CUBE
+// The lecture's 20 offset directions (001): far apart, none along the ray.
+const vec3 kPcf20[20] = vec3[](
+    vec3(1, 1, 1), vec3(1, -1, 1), vec3(-1, -1, 1), vec3(-1, 1, 1),
+    vec3(1, 1, -1), vec3(1, -1, -1), vec3(-1, -1, -1), vec3(-1, 1, -1),
+    vec3(1, 1, 0), vec3(1, -1, 0), vec3(-1, -1, 0), vec3(-1, 1, 0),
+    vec3(1, 0, 1), vec3(-1, 0, 1), vec3(1, 0, -1), vec3(-1, 0, -1),
+    vec3(0, 1, 1), vec3(0, -1, 1), vec3(0, -1, -1), vec3(0, 1, -1));
+
+// The shadow test's visibility, 0 (shadowed) to 1 (lit).
+float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
+    vec3 toLight = map.light.xyz - worldPosition;
+    float d = length(toLight);
+    if (d <= 0.0) return 1.0;
+    vec3 L = toLight / d;
+    vec3 n = worldNormal;
+    float NdotL = clamp(dot(n, L), 0.0, 1.0);
+    // World size of one texel at this distance (largest at a face's centre).
+    float texel = d * map.cube.z;
+    // Filter radius at the fragment, growing with the viewer's distance (001).
+    float radius = map.cube.w * (1.0 + map.cubeMore.x * length(frame.cameraPosition.xyz - worldPosition) / map.cube.x);
+#if MAP_FILTER == SL_MAP_FILTER_NONE
+    float reachWorld = 0.0;
+#elif MAP_FILTER == SL_MAP_FILTER_HARDWARE
+    float reachWorld = texel;
+#elif MAP_FILTER == SL_MAP_FILTER_GRID
+    float reachWorld = radius * 1.7320508;  // the grid's corners
+#elif MAP_FILTER == SL_MAP_FILTER_PCF20
+    float reachWorld = radius * 1.7320508;  // |(1, 1, 1)| x radius
+#else
+    float reachWorld = radius;
+#endif
+    vec3 p = worldPosition;
+    float ref;
+    if (map.cubeMore.z > 0.5) {
+        // The presets: their constant bias only (in stored-depth units).
+        ref = length(p - map.light.xyz) / map.cube.x - map.bias.x;
+    } else {
+        // Normal offset: `normalBias` texels times 1 - N.L, along the normal;
+        // then the receiver-plane bias for the filter's reach (as for 2D maps).
+        p += n * (map.bias.w * texel * (1.0 - NdotL));
+        float tanTheta = min(length(cross(n, L)) / max(NdotL, 1e-4), 10.0);
+        ref = (length(p - map.light.xyz) - reachWorld * tanTheta) / map.cube.x - map.bias.x;
+    }
+    vec3 v = p - map.light.xyz;
+    // Beyond the far plane: lit (004).
+    if (length(v) > map.cube.x) return 1.0;
+#if MAP_FILTER == SL_MAP_FILTER_NONE || MAP_FILTER == SL_MAP_FILTER_HARDWARE
+    return cubeTap(v, ref);  // the sampler is nearest or bilinear (seamless)
+#elif MAP_FILTER == SL_MAP_FILTER_GRID
+    // The lecture's 3-D grid (001): MAP_KERNEL^3 offsets evenly from -radius
+    // to +radius on each axis (64 for kernel 4).
+    float sum = 0.0;
+    float step = MAP_KERNEL > 1 ? 2.0 * radius / float(MAP_KERNEL - 1) : 0.0;
+    for (int z = 0; z < MAP_KERNEL; ++z)
+        for (int y = 0; y < MAP_KERNEL; ++y)
+            for (int x = 0; x < MAP_KERNEL; ++x)
+                sum += cubeTap(v + (vec3(x, y, z) * step - vec3(MAP_KERNEL > 1 ? radius : 0.0)), ref);
+    return sum / float(MAP_KERNEL * MAP_KERNEL * MAP_KERNEL);
+#elif MAP_FILTER == SL_MAP_FILTER_PCF20
+    float sum = 0.0;
+    for (int k = 0; k < 20; ++k) sum += cubeTap(v + kPcf20[k] * radius, ref);
+    return sum / 20.0;
+#elif MAP_FILTER == SL_MAP_FILTER_POISSON
+    // A Vogel disk across the ray (no taps wasted along it), rotated per pixel.
+    vec3 axis = normalize(v);
+    vec3 t = normalize(abs(axis.y) < 0.99 ? cross(axis, vec3(0.0, 1.0, 0.0)) : cross(axis, vec3(1.0, 0.0, 0.0)));
+    vec3 b = cross(axis, t);
+    int taps = int(map.taps.z);
+    float rotation = 6.2831853 * mapNoise(gl_FragCoord.xy);
+    float sum = 0.0;
+    for (int k = 0; k < taps; ++k) {
+        float r = sqrt((float(k) + 0.5) / float(taps)) * radius;
+        float a = float(k) * 2.3999632 + rotation;
+        sum += cubeTap(v + r * (cos(a) * t + sin(a) * b), ref);
+    }
+    return sum / float(taps);
+#else
+#error this MAP_FILTER is for 2D maps
+#endif
+}
+#else
 in vec4 vShadowCoord;   // from shadow_map_vertex.glsl: the offset point in texture space
 in float vShadowNdotL;
 
 // The shadow test's visibility, 0 (shadowed) to 1 (lit).
-float mapVisibility() {
+float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
     vec4 s = vShadowCoord;
     float NdotL = vShadowNdotL;
     if (s.w <= 0.0) return 1.0;
@@ -96,9 +192,10 @@ float mapVisibility() {
 #error unknown MAP_FILTER
 #endif
 }
+#endif
 
 vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
-    float v = mapVisibility();
+    float v = mapVisibility(worldPosition, worldNormal);
 #if !OUTPUT_VISIBILITY
     // The look of lecture 002 listing 8.4 (color *= 0.6 in shadow) when
     // shadowedLight > 0; compare reads the test itself (OUTPUT_VISIBILITY).

@@ -11,6 +11,7 @@
 #define SL_MAP_FILTER_GRID 2
 #define SL_MAP_FILTER_DITHER4 3
 #define SL_MAP_FILTER_POISSON 4
+#define SL_MAP_FILTER_PCF20 5
 
 #ifdef __cplusplus
 #include <glm/glm.hpp>
@@ -25,11 +26,14 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
 #endif
     SL_MAP_MAT4 lightClipFromWorld; // the light camera (shadow pass)
     SL_MAP_MAT4 shadowFromWorld;    // bias matrix * lightClipFromWorld: map uv in xy, depth in z (after /w)
+    SL_MAP_MAT4 faceClipFromWorld[6]; // cube maps: each face's camera (+X, -X, +Y, -Y, +Z, -Z)
     SL_MAP_VEC4 params;  // x array layer, y the filter's reach (texels from the centre to its farthest tap), z world size of a texel (spot: per unit of distance along the axis), w 1 perspective / 0 ortho
     SL_MAP_VEC4 bias;    // map depth units: x constant, y times (1 - N.L), z the least of the two (max(y (1 - N.L), z) + x); w normal bias, texels
     SL_MAP_VEC4 taps;    // x one texel in uv (1 / size), y poisson radius (texels), z poisson taps, w dither spread (texels)
     SL_MAP_VEC4 light;   // xyz: spot position or -direction (towards the light), w the light a shadowed point keeps (shadowedLight)
     SL_MAP_VEC4 axis;    // xyz: perspective light camera's unit view direction (texels grow along it), w unused
+    SL_MAP_VEC4 cube;    // cube maps: x far (stored depth = distance / far), y slope bias (shadow pass), z world size of a texel per unit of distance (2 / size), w filter radius (world units)
+    SL_MAP_VEC4 cubeMore;// cube maps: x radius growth per (viewer distance / far), y constant offset (stored depth units, shadow pass), z 1 when the bias is the presets' constant only, w unused
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared
@@ -38,4 +42,22 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
 #endif
 #undef SL_MAP_VEC4
 #undef SL_MAP_MAT4
+
+#ifndef __cplusplus
+// d in [0, 1) as four base-255 digits (lecture 002 §8.3.1, Listing 8.2).
+// The lecture uses base 256, but an 8-bit UNORM channel stores x as
+// round(255 x) / 255, so a digit k / 256 comes back as about k / 255: up to
+// 0.4 % of the depth range wrong. With base 255 every digit is an exact
+// UNORM step and the four channels give 32 bits of depth.
+vec4 packDepth(float d) {
+    if (d >= 1.0) return vec4(1.0);
+    const vec4 shift = vec4(1.0, 255.0, 255.0 * 255.0, 255.0 * 255.0 * 255.0);
+    const vec4 mask = vec4(1.0 / 255.0, 1.0 / 255.0, 1.0 / 255.0, 0.0);
+    vec4 res = fract(d * shift);
+    res -= res.yzww * mask;
+    return res;
+}
+// Its inverse.
+float unpackDepth(vec4 v) { return dot(v, vec4(1.0, 1.0 / 255.0, 1.0 / 65025.0, 1.0 / 16581375.0)); }
+#endif
 #endif

@@ -6,6 +6,12 @@
 #include "shadow_map_shared.h"
 #define SHADOW_VERTEX_HOOK 1
 
+#if MAP_CUBE
+// Cube maps work per fragment (shadow_map.glsl): a point light's texel size
+// and N.L change too much across a wall-sized triangle to interpolate.
+void shadowVertex(vec3 worldPosition, vec3 worldNormal) {}
+#else
+
 out vec4 vShadowCoord;  // map.shadowFromWorld times the offset point
 out float vShadowNdotL; // N.L at the vertex, for the learnopengl preset's bias
 
@@ -35,3 +41,4 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);
     vShadowNdotL = NdotL;
 }
+#endif

@@ -27,7 +27,8 @@ enum class MapFilter {
     Hardware, ///< "hardware": one 2x2 bilinear hardware compare (default)
     Grid,     ///< "grid": kernel x kernel samples (the lecture's PCF, up to 64)
     Dither4,  ///< "dither4": the lecture's 4-sample dithered PCF (000)
-    Poisson,  ///< "poisson": a rotated Vogel disk of `samples` taps within `radius` texels
+    Poisson,  ///< "poisson": a rotated Vogel disk of `samples` taps within `radius` texels (point lights: within `diskRadius`, across the light's ray)
+    Pcf20,    ///< "pcf20": point lights only: the lecture's 20 offset directions times `diskRadius` (001)
 };
 
 enum class MapGridTaps {
@@ -39,7 +40,13 @@ enum class MapGridTaps {
 enum class MapPreset {
     Default,     ///< "default": the fields as given
     Lecture,     ///< "lecture": lecture 000's polygon offset (2, 4), dithered PCF, no normal offset
-    LearnOpenGL, ///< "learnopengl": LearnOpenGL 5.advanced_lighting/3.1.3's 1024^2, ortho camera and slope bias
+    LearnOpenGL, ///< "learnopengl": LearnOpenGL 5.advanced_lighting/3.1.3's 1024^2, ortho camera and slope bias (point: 3.2.2's cube)
+    Lecture000,  ///< "lecture-000": point lights: lecture 000's one 60-degree map towards the origin instead of a cube
+};
+
+enum class MapCubePasses {
+    One, ///< "one": each caster drawn once, a geometry shader sends each triangle to the faces it touches (default)
+    Six, ///< "six": one pass per face, the face attached as the target
 };
 
 struct MapOptions {
@@ -60,6 +67,11 @@ struct MapOptions {
     float shadowedLight = 0.0f;          ///< share of the light's diffuse and specular a shadowed point keeps (a look; compare judges the test); default 0
     bool mipmaps = false;                ///< mipmap the map and sample it with mipmapping (002 exercise 8.6.1-4); default false
     MapPreset preset = MapPreset::Default;
+    // Point lights (cube maps) only.
+    MapCubePasses cubePasses = MapCubePasses::One;
+    bool faceCulling = true;             ///< draw a caster only into the faces it can touch (false: all six, as LearnOpenGL does); default true
+    float diskRadius = 0.04f;            ///< point-light grid, pcf20 and poisson: filter radius at the fragment, world units; default 0.04 (1/25, 001)
+    float diskGrowth = 1.0f;             ///< the radius grows by this times (viewer distance / far); default 1 (001: (1 + d/far)/25)
 };
 
 /// The options table of "map" (JSON keys, units, ranges, defaults, docs).

@@ -69,6 +69,10 @@ struct SurfaceBuffer {
 struct DebugImage {
     std::string name;   ///< file-name friendly, e.g. "light0-depth"
     ImageRGBA8 image;
+    /// The exact values behind the picture where a technique has them (a
+    /// cube map's stored depths: its six faces, +X..-Z, one after another,
+    /// rows as GL stores them); empty otherwise. Not written by the CLI.
+    std::vector<float> values;
 };
 
 class Renderer {

@@ -68,6 +68,17 @@ std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const
     for (std::size_t i = 0; i < in.items.size(); ++i) {
         if (!in.items[i].castsShadows) continue;
         const std::optional<glm::vec4>& plane = i < in.itemPlanes.size() ? in.itemPlanes[i] : std::nullopt;
+        const std::vector<glm::vec4>* convex = i < in.itemConvex.size() && !in.itemConvex[i].empty() ? &in.itemConvex[i] : nullptr;
+        if (!directional && convex && strictlyInside(*convex, glm::vec3(towardsLight), margin)) {
+            // From inside a convex mesh every point inside it is seen
+            // directly: only receivers reaching outside can be shadowed.
+            for (std::size_t r : receivers)
+                if (r != i && !boxInside(*convex, in.itemBounds[r], margin)) {
+                    out[i] = 1;
+                    break;
+                }
+            continue;
+        }
         if (!plane) {
             // Other casters: the fit's footprint and the light's frustum decide.
             out[i] = !receivers.empty();
@@ -188,6 +199,44 @@ LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
     cam.farPlane = far;
     cam.clipFromView = glm::perspective(fovY, 1.0f, near, far);
     cam.texelSize = 2.0f * tanHalf / static_cast<float>(std::max(in.size, 1));
+    return cam;
+}
+
+glm::mat4 cubeFaceView(const glm::vec3& position, int face) {
+    // GL's cube-map faces: the direction each looks along and its up vector
+    // (the t axis of a face runs down its image, hence the negative ups).
+    static const glm::vec3 directions[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    const auto f = static_cast<std::size_t>(std::clamp(face, 0, 5));
+    return glm::lookAt(position, position + directions[f], ups[f]);
+}
+
+CubeCamera fitCube(const Light& light, MapFit fit, const FitInput& in, float nearPlane, float farPlane) {
+    CubeCamera cam;
+    cam.position = light.position;
+    Bounds covered = fit == MapFit::Scene ? all(in) : visibleReceivers(in, glm::mat4(1.0f));
+    if (covered.empty()) covered = all(in);
+    float far = 0.0f;
+    for (int c = 0; c < 8 && !covered.empty(); ++c) {
+        const glm::vec3 corner((c & 1) ? covered.hi.x : covered.lo.x, (c & 2) ? covered.hi.y : covered.lo.y,
+                               (c & 4) ? covered.hi.z : covered.lo.z);
+        far = std::max(far, glm::length(corner - light.position));
+    }
+    if (light.range > 0.0f) far = std::min(far, light.range);
+    far = std::max(far * 1.001f, 1e-3f);
+    cam.farPlane = farPlane > 0.0f ? farPlane : far;
+    cam.nearPlane = nearPlane > 0.0f ? nearPlane : cam.farPlane * 1e-4f;
+    const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, cam.nearPlane, cam.farPlane);
+    for (int f = 0; f < 6; ++f) cam.faceClipFromWorld[static_cast<std::size_t>(f)] = projection * cubeFaceView(light.position, f);
+    const std::vector<std::uint8_t> casts = castersThatMatter(glm::vec4(light.position, 1.0f), glm::mat4(1.0f), in);
+    cam.faceMasks.assign(in.items.size(), 0);
+    for (std::size_t i = 0; i < in.items.size(); ++i) {
+        if (!casts[i]) continue;
+        std::uint8_t mask = 0;
+        for (int f = 0; f < 6; ++f)
+            if (mayIntersect(cam.faceClipFromWorld[static_cast<std::size_t>(f)], in.itemBounds[i])) mask = static_cast<std::uint8_t>(mask | (1u << f));
+        cam.faceMasks[i] = mask;
+    }
     return cam;
 }
 

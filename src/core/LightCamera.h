@@ -7,6 +7,7 @@
 #include <shadowlab/MapOptions.h>
 #include <shadowlab/Scene.h>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -34,6 +35,7 @@ struct FitInput {
     const std::vector<Bounds>& itemBounds;
     const std::vector<DrawItem>& items;
     const std::vector<std::optional<glm::vec4>>& itemPlanes; ///< world plane of each planar item
+    const std::vector<std::vector<glm::vec4>>& itemConvex;   ///< world planes of each convex item (empty: not known convex)
     glm::mat4 cameraClipFromWorld{1.0f};
     int size = 2048;           ///< map texels per side
     float paddingTexels = 1.0f;///< extra texels around the fitted region (filter footprint)
@@ -50,7 +52,9 @@ bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box);
 /// the footprint test of a directional light (ignored for w = 1). A caster
 /// counts when some visible receiver overlaps it across the light and is
 /// not entirely nearer the light than it; a planar caster (a floor) only
-/// when that receiver is another item reaching behind its plane.
+/// when that receiver is another item reaching behind its plane; a convex
+/// caster with a point or spot light inside it (a room) only when a visible
+/// receiver reaches outside it.
 std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const glm::mat4& lightView, const FitInput& in);
 
 /// Directional light travelling along `direction` (unit).
@@ -60,6 +64,27 @@ std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const
 /// the near plane still occlude). Scene: the lecture's cube around the
 /// scene's bounds, sides equal to their diagonal.
 LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInput& in);
+
+/// A point light's cube: six 90-degree cameras from its position with the
+/// cube-map convention's directions and up vectors (+X, -X, +Y, -Y, +Z, -Z).
+struct CubeCamera {
+    glm::vec3 position{0.0f};
+    float nearPlane = 0.01f, farPlane = 1.0f;  ///< scene units; stored depth is distance / farPlane
+    std::array<glm::mat4, 6> faceClipFromWorld{};
+    /// Per item: bit f set when the item may touch face f (and may shadow a
+    /// visible receiver); 0 for items that are not drawn.
+    std::vector<std::uint8_t> faceMasks;
+};
+
+/// The cube-map convention's view of face f (0..5: +X, -X, +Y, -Y, +Z, -Z)
+/// from `position`.
+glm::mat4 cubeFaceView(const glm::vec3& position, int face);
+
+/// Point light: far at the farthest corner of what must be covered (tight:
+/// the receivers the camera sees; scene: everything), within the light's
+/// range; near proportional to far (far / 10^4). `nearPlane`/`farPlane` > 0
+/// replace the fitted values (the presets' fixed planes).
+CubeCamera fitCube(const Light& light, MapFit fit, const FitInput& in, float nearPlane = 0.0f, float farPlane = 0.0f);
 
 /// Spot light: perspective along its axis, field of view just containing
 /// the outer cone (plus the padding), far at the farthest projection of the

@@ -49,6 +49,7 @@ GpuScene::GpuScene(const Scene& scene) {
         gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
         for (const glm::vec3& p : mesh.positions) gpu.bounds.add(p);
         gpu.plane = meshPlane(mesh);
+        gpu.convex = convexPlanes(mesh);
         meshes_.push_back(std::move(gpu));
     }
     GLint maxSize = 0;

@@ -17,6 +17,7 @@ struct GpuMesh {
     GLsizei indexCount = 0;
     Bounds bounds;                 ///< object space
     std::optional<glm::vec4> plane; ///< object space, when the mesh is planar (core/Plane.h)
+    std::vector<glm::vec4> convex;  ///< object space, the planes of a convex mesh (core/Plane.h); empty otherwise
     gl::Buffer adjacency{gl::NoCreate}; ///< GL_TRIANGLES_ADJACENCY indices, built on first use
     gl::VertexArray adjacencyArray{gl::NoCreate};
 };
@@ -35,6 +36,8 @@ public:
     const Bounds& bounds(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].bounds; }
     /// Object-space plane of Scene::meshes[mesh] when it is planar.
     const std::optional<glm::vec4>& plane(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].plane; }
+    /// Object-space planes of Scene::meshes[mesh] when it is convex (small meshes only), else empty.
+    const std::vector<glm::vec4>& convex(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].convex; }
     /// The texture for Scene::textures[i].
     const gl::Texture& texture(int i) const { return textures_[static_cast<std::size_t>(i)]; }
     std::size_t meshCount() const { return meshes_.size(); }

@@ -79,6 +79,7 @@ struct Renderer::Impl final : TechniqueHost {
     std::vector<DrawItem> items;
     std::vector<Bounds> itemBounds;
     std::vector<std::optional<glm::vec4>> itemPlanes;
+    std::vector<std::vector<glm::vec4>> itemConvex;
     std::optional<FrameInfo> info;
     std::optional<gl::PassClock> clock;
     LitMode litMode = LitMode::Shade;
@@ -233,13 +234,16 @@ struct Renderer::Impl final : TechniqueHost {
         items = s.drawItems();
         itemBounds.clear();
         itemPlanes.clear();
+        itemConvex.clear();
         for (const DrawItem& item : items) {
+            std::vector<glm::vec4>& convex = itemConvex.emplace_back();
+            for (const glm::vec4& plane : gpu->convex(item.mesh)) convex.push_back(transformPlane(plane, item.worldFromObject));
             itemBounds.push_back(gpu->bounds(item.mesh).transformed(item.worldFromObject));
             const std::optional<glm::vec4>& plane = gpu->plane(item.mesh);
             itemPlanes.push_back(plane ? std::optional<glm::vec4>(transformPlane(*plane, item.worldFromObject)) : std::nullopt);
         }
         const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-        info.emplace(FrameInfo{s, items, itemBounds, itemPlanes, size});
+        info.emplace(FrameInfo{s, items, itemBounds, itemPlanes, itemConvex, size});
         info->viewFromWorld = s.camera.viewFromWorld();
         info->clipFromView = infiniteFar ? s.camera.clipFromViewInfiniteFar(aspect) : s.camera.clipFromView(aspect);
         info->clipFromWorld = info->clipFromView * info->viewFromWorld;

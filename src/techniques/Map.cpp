@@ -1,8 +1,10 @@
 // Technique "map": shadow maps for directional and spot lights, the lecture's
-// two passes (000, 002 §8.2-8.4, 004). Shadow pass: the casters that can
-// reach the light's frustum, drawn from the light camera (src/core/
-// LightCamera) into one layer of a texture array shared by every light with
-// the same format and size, colour writes off (or depth packed into RGBA8).
+// two passes (000, 002 §8.2-8.4, 004), and cube maps for point lights (001).
+// Shadow pass: the casters that can reach the light's frustum, drawn from
+// the light camera (src/core/LightCamera) into one layer of a texture array
+// shared by every light with the same format and size, colour writes off
+// (or depth packed into RGBA8); a point light's six faces are six layers of
+// a cube-map array, filled in one geometry-shader pass or six passes.
 // Light pass: shaders/shadow_map.glsl compares the fragment's depth in the
 // light's texture space with the map, filtered as the light asks.
 #include "techniques/Map.h"
@@ -32,8 +34,8 @@ const OptionTable& mapOptionTable() {
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene"},
                     "light camera: around what the viewer sees and the casters over it, or around the whole scene")
-            .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson"},
-                    "one nearest tap; one bilinear hardware compare; kernel x kernel taps; the lecture's dithered 4 taps; a rotated disk")
+            .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson", "pcf20"},
+                    "one nearest tap; one bilinear hardware compare; kernel x kernel taps (point lights: kernel^3 in a cube of side 2 diskRadius); the lecture's dithered 4 taps (2D maps); a rotated disk; the lecture's 20 directions (point lights)")
             .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
                     "grid filter: the same comparisons from ceil(kernel/2)^2 bilinear or kernel^2 nearest fetches; auto: nearest on a software rasteriser")
@@ -48,8 +50,16 @@ const OptionTable& mapOptionTable() {
             .number(&MapOptions::shadowedLight, "shadowedLight", 0.0, 1.0, "share of the light",
                     "what a shadowed point keeps of the light (lecture 002 listing 8.4: 0.6); compare judges the shadow test, not this look")
             .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (lecture 002 exercise 8.6.1-4; docs/techniques.md says what it does)")
-            .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl"},
-                    "replace the settings with the lecture's or LearnOpenGL's (docs/techniques.md)")
+            .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl", "lecture-000"},
+                    "replace the settings with the lecture's or LearnOpenGL's (docs/techniques.md); lecture-000: a point light through lecture 000's one 60-degree map")
+            .choice(&MapOptions::cubePasses, "cubePasses", {"one", "six"},
+                    "point lights: each caster drawn once through a geometry shader that picks its faces, or one pass per face (the same map)")
+            .boolean(&MapOptions::faceCulling, "faceCulling",
+                     "point lights: each caster drawn only into the cube faces its bounds (and, in one pass, each triangle) can touch; false: into all six")
+            .number(&MapOptions::diskRadius, "diskRadius", 0.0, 10.0, "world units",
+                    "point lights, filters grid, pcf20 and poisson: the filter's radius at the fragment")
+            .number(&MapOptions::diskGrowth, "diskGrowth", 0.0, 100.0, "per viewer distance / far",
+                    "point lights: the radius times 1 + diskGrowth x (viewer distance / far)")
             .build();
     return table;
 }
@@ -74,6 +84,7 @@ float footprint(const MapOptions& o) {
     case MapFilter::Grid: return 0.5f * static_cast<float>(o.kernel) + 1.0f;
     case MapFilter::Dither4: return 3.0f;
     case MapFilter::Poisson: return o.radius + 1.0f;
+    case MapFilter::Pcf20: return 1.0f;  // point lights only
     }
     return 1.0f;
 }
@@ -88,6 +99,7 @@ float reach(const MapOptions& o) {
     case MapFilter::Grid: return 0.5f * static_cast<float>(o.kernel - 1) * 1.41421356f;
     case MapFilter::Dither4: return 1.5f * 1.41421356f;
     case MapFilter::Poisson: return o.radius;
+    case MapFilter::Pcf20: return 0.0f;  // point lights only (shadow_map.glsl computes theirs)
     }
     return 0.0f;
 }
@@ -95,7 +107,38 @@ float reach(const MapOptions& o) {
 // The light's options with its preset applied (docs/techniques.md cites each value).
 MapOptions effective(const Light& light) {
     MapOptions o = light.shadow.get<MapOptions>();
-    if (o.preset == MapPreset::Lecture) {
+    const bool cube = light.type == LightType::Point && o.preset != MapPreset::Lecture000;
+    if (cube && o.preset == MapPreset::Lecture) {
+        // Lecture 001's cube: near 1, far 25 (cubeNearFar), the 20 offset
+        // directions with a fixed disk radius of 0.05 and a constant bias of
+        // 0.15 (upload() turns world units into stored depth), no other bias.
+        o.format = MapFormat::Depth32F;
+        o.filter = MapFilter::Pcf20;
+        o.diskRadius = 0.05f;
+        o.diskGrowth = 0.0f;
+        o.constantBias = 0.15f;
+        o.slopeBias = 0.0f;
+        o.offsetUnits = 0.0f;
+        o.normalBias = 0.0f;
+        o.cullFront = false;
+        return o;
+    }
+    if (cube && o.preset == MapPreset::LearnOpenGL) {
+        // LearnOpenGL 5.advanced_lighting/3.2.2: a 1024^2 cube, near 1, far
+        // 25, bias 0.15, 20 offset directions with radius (1 + d/far)/25.
+        o.size = 1024;
+        o.format = MapFormat::Depth32F;
+        o.filter = MapFilter::Pcf20;
+        o.diskRadius = 0.04f;
+        o.diskGrowth = 1.0f;
+        o.constantBias = 0.15f;
+        o.slopeBias = 0.0f;
+        o.offsetUnits = 0.0f;
+        o.normalBias = 0.0f;
+        o.cullFront = false;
+        return o;
+    }
+    if (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000) {
         // Lecture 000: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map
         // of the window's size (prepare() sets it), the 4-sample dithered
         // PCF; no normal offset, no constant bias.
@@ -156,21 +199,39 @@ LightCamera lecturePointCamera(const Light& light, int size) {
     return cam;
 }
 
+// A point light's map is a cube unless preset lecture-000 asks for 000's single map.
+bool isCube(const Light& light) {
+    return light.type == LightType::Point && light.shadow.get<MapOptions>().preset != MapPreset::Lecture000;
+}
+// Lecture 000's 2D settings (the window-sized map, the dither spread).
+bool isLecture2D(const MapOptions& o, const Light& light) {
+    return !isCube(light) && (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000);
+}
+// The presets' fixed near and far planes for a cube (001 and LearnOpenGL: 1 and 25); 0: fitted.
+std::pair<float, float> cubeNearFar(const MapOptions& o) {
+    return o.preset == MapPreset::Lecture || o.preset == MapPreset::LearnOpenGL ? std::pair{1.0f, 25.0f} : std::pair{0.0f, 0.0f};
+}
+
 // Texture space from clip space: the lecture's bias matrix (scale and offset by 0.5).
 const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
 
-// Group keys: the format's index, plus kMipmapped for a mipmapped array.
+// Group keys: the format's index, plus kMipmapped for a mipmapped array,
+// plus kCube for a cube-map array.
 constexpr int kMipmapped = 16;
+constexpr int kCube = 32;
 
 struct Group {
     MapFormat format = MapFormat::Depth32F;
     bool mipmaps = false;
-    int key() const { return static_cast<int>(format) + (mipmaps ? kMipmapped : 0); }
+    bool cube = false;  ///< a cube-map array: six layers per light
+    int key() const { return static_cast<int>(format) + (mipmaps ? kMipmapped : 0) + (cube ? kCube : 0); }
     int size = 0;
     int layers = 0;
     std::uint64_t generation = 0;     ///< unique per allocation: framebuffers attached to an older one are rebuilt
     gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, or the depth test's buffer for rgba8
     gl::Texture packed{gl::NoCreate}; ///< RGBA8 array: the map for rgba8
+    GLenum target() const { return cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY; }
+    int layersPerLight() const { return cube ? 6 : 1; }
 };
 
 struct PerLight {
@@ -179,9 +240,17 @@ struct PerLight {
     LightCamera camera;
     std::size_t group = 0;
     int layer = 0;
-    gl::Framebuffer fbo{gl::NoCreate};  ///< the layer attached (at prepare, when the array or layer changes)
+    gl::Framebuffer fbo{gl::NoCreate};  ///< the layer attached (at prepare, when the array or layer changes); cube: the whole array, layered
     std::uint64_t attachedGeneration = 0;
     int attachedLayer = -1;
+    // Point lights.
+    bool cube = false;
+    CubeCamera cubeCamera;
+    std::array<gl::Framebuffer, 6> faceFbos{gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate},
+                                            gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}};
+    /// Faces that may hold casters' depths from an earlier frame (cleared
+    /// again only then or when drawn into); all of them after (re)attaching.
+    std::array<bool, 6> faceDirty{true, true, true, true, true, true};
 };
 
 gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
@@ -221,7 +290,7 @@ public:
         const int windowSize = std::clamp(std::max(frame.viewport.x, frame.viewport.y), 16, host.glInfo().maxTextureSize);
         auto effectiveHere = [&](const Light& light) {
             MapOptions o = effective(light);
-            if (o.preset == MapPreset::Lecture) o.size = windowSize;  // 000: the map has the window's size
+            if (isLecture2D(o, light)) o.size = windowSize;  // 000: the map has the window's size
             return o;
         };
         for (int index : lights) {
@@ -230,7 +299,8 @@ public:
             if (o.size > limit)
                 throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
                             " texels is past this GPU's limit of " + std::to_string(limit));
-            ++layersWanted[{static_cast<int>(o.format) + (o.mipmaps ? kMipmapped : 0), o.size}];
+            const bool cube = isCube(frame.scene.lights[static_cast<std::size_t>(index)]);
+            ++layersWanted[{static_cast<int>(o.format) + (o.mipmaps ? kMipmapped : 0) + (cube ? kCube : 0), o.size}];
         }
         // Stated limits, before anything is allocated: layers per array, and
         // all maps together within kMapBudgetBytes (a 16384^2 depth32f map is
@@ -240,11 +310,13 @@ public:
         double bytes = 0.0;
         for (const auto& wanted : layersWanted) {
             const auto format = static_cast<MapFormat>(wanted.first.first % kMipmapped);
+            const int perLight = wanted.first.first >= kCube ? 6 : 1;
             const double texel = format == MapFormat::Depth16 ? 2.0 : format == MapFormat::Rgba8 ? 8.0 : 4.0;
-            bytes += texel * static_cast<double>(wanted.first.second) * static_cast<double>(wanted.first.second) * wanted.second;
-            if (wanted.second > host.glInfo().maxArrayLayers)
-                throw Error("lights[" + std::to_string(lights[0]) + "].shadow.map: " + std::to_string(wanted.second) +
-                            " lights share one map array, past this GPU's limit of " + std::to_string(host.glInfo().maxArrayLayers) + " layers");
+            bytes += texel * static_cast<double>(wanted.first.second) * static_cast<double>(wanted.first.second) * wanted.second * perLight;
+            if (wanted.second * perLight > host.glInfo().maxArrayLayers)
+                throw Error("lights[" + std::to_string(lights[0]) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
+                            " map layers in one array (" + std::to_string(wanted.second) + " light(s)" + (perLight == 6 ? ", six per point light" : "") +
+                            "), past this GPU's limit of " + std::to_string(host.glInfo().maxArrayLayers) + " layers");
         }
         if (bytes > kMapBudgetBytes) {
             char text[256];
@@ -266,16 +338,17 @@ public:
             }
             Group g;
             g.format = static_cast<MapFormat>(key.first % kMipmapped);
-            g.mipmaps = key.first >= kMipmapped;
+            g.mipmaps = key.first % kCube >= kMipmapped;
+            g.cube = key.first >= kCube;
             g.size = key.second;
             g.layers = layers;
             g.generation = ++generations_;
             const int levels = g.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(g.size)))) : 1;
-            g.depth = gl::Texture(GL_TEXTURE_2D_ARRAY);
-            glTextureStorage3D(g.depth.id(), g.format == MapFormat::Rgba8 ? 1 : levels, depthFormat(g.format), g.size, g.size, layers);
+            g.depth = gl::Texture(g.target());
+            glTextureStorage3D(g.depth.id(), g.format == MapFormat::Rgba8 ? 1 : levels, depthFormat(g.format), g.size, g.size, layers * g.layersPerLight());
             if (g.format == MapFormat::Rgba8) {
-                g.packed = gl::Texture(GL_TEXTURE_2D_ARRAY);
-                glTextureStorage3D(g.packed.id(), levels, GL_RGBA8, g.size, g.size, layers);
+                g.packed = gl::Texture(g.target());
+                glTextureStorage3D(g.packed.id(), levels, GL_RGBA8, g.size, g.size, layers * g.layersPerLight());
             }
             groups.push_back(std::move(g));
         }
@@ -286,15 +359,24 @@ public:
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
             PerLight p;
             p.options = effectiveHere(light);
+            p.cube = isCube(light);
             for (std::size_t g = 0; g < groups_.size(); ++g)
-                if (groups_[g].format == p.options.format && groups_[g].mipmaps == p.options.mipmaps && groups_[g].size == p.options.size) p.group = g;
+                if (groups_[g].format == p.options.format && groups_[g].mipmaps == p.options.mipmaps && groups_[g].cube == p.cube &&
+                    groups_[g].size == p.options.size)
+                    p.group = g;
             p.layer = nextLayer[p.group]++;
-            const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.clipFromWorld, p.options.size, footprint(p.options)};
+            const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld, p.options.size, footprint(p.options)};
             p.spot = light.type == LightType::Spot;
+            if (p.cube) {
+                const auto [nearPlane, farPlane] = cubeNearFar(p.options);
+                p.cubeCamera = fitCube(light, p.options.fit, in, nearPlane, farPlane);
+            }
             if (p.options.preset == MapPreset::LearnOpenGL && light.type == LightType::Directional)
                 p.camera = learnOpenGlCamera(light, p.options.size);
-            else if (light.type == LightType::Point)  // only with preset "lecture" (mapTechnique's unsupported)
+            else if (light.type == LightType::Point && !p.cube)  // preset "lecture-000"
                 p.camera = lecturePointCamera(light, p.options.size);
+            else if (p.cube)
+                ;  // the cube's cameras above
             else if (light.type == LightType::Spot)
                 p.camera = fitSpot(light, p.options.fit, in);
             else
@@ -304,6 +386,8 @@ public:
                 p.fbo = std::move(old->second.fbo);
                 p.attachedGeneration = old->second.attachedGeneration;
                 p.attachedLayer = old->second.attachedLayer;
+                p.faceFbos = std::move(old->second.faceFbos);
+                p.faceDirty = old->second.faceDirty;
             }
             attach(p);
             perLight.emplace(index, std::move(p));
@@ -314,6 +398,10 @@ public:
     bool hasShadowPass(const Light&) const override { return true; }
 
     void renderShadowPass(TechniqueHost& host, const FrameInfo& frame, const LightView& view) override {
+        if (lights_.at(view.index).cube) {
+            renderCubePass(host, frame, view, lights_.at(view.index));
+            return;
+        }
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
         const bool packed = g.format == MapFormat::Rgba8;
@@ -357,13 +445,21 @@ public:
         const MapOptions o = effective(light);
         return "#define MAP_FILTER " + std::to_string(static_cast<int>(o.filter)) + "\n#define MAP_KERNEL " +
                std::to_string(o.kernel) + "\n#define MAP_RGBA8 " + (o.format == MapFormat::Rgba8 ? "1" : "0") +
-               "\n#define MAP_GRID_BILINEAR " + (bilinearGrid(o) ? "1" : "0") + "\n";
+               "\n#define MAP_GRID_BILINEAR " + (bilinearGrid(o) ? "1" : "0") + "\n#define MAP_CUBE " + (isCube(light) ? "1" : "0") + "\n";
     }
 
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
         upload(view);
+        if (p.cube) {
+            // Filters read across face edges (the test with a plane over the seams).
+            glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+            const bool packed = g.format == MapFormat::Rgba8;
+            glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
+            glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? plainNearest_.id() : p.options.filter == MapFilter::Hardware ? compareLinear_.id() : compareNearest_.id());
+            return;
+        }
         if (g.format == MapFormat::Rgba8) {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
             glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? plainNearestMip_.id() : plainNearest_.id());
@@ -379,6 +475,12 @@ public:
     void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, std::vector<DebugImage>& out) override {
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
+        if (p.cube) {
+            std::vector<float> values;
+            ImageRGBA8 cross = cubeCross(p, values);
+            out.push_back({"cube", std::move(cross), std::move(values)});
+            return;
+        }
         const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
         std::vector<float> depth(n);
         if (g.format == MapFormat::Rgba8) {
@@ -407,11 +509,62 @@ public:
                 std::uint8_t* px = &image.pixels[(static_cast<std::size_t>(g.size - 1 - y) * g.size + x) * 4];
                 px[0] = px[1] = px[2] = v;
             }
-        out.push_back({"map", std::move(image)});
-        out.push_back({"texel-density", texelDensity(host, frame, view)});
+        out.push_back({"map", std::move(image), {}});
+        out.push_back({"texel-density", texelDensity(host, frame, view), {}});
     }
 
 private:
+    // A point light's six faces as a horizontal cross (+Y above; -X, +Z, +X,
+    // -Z across; -Y below: neighbouring edges touch), each face's rows as GL
+    // stores them (t down), tiles of at most 512 texels. Stored depth is
+    // distance / far, already linear: stretched over its range for
+    // contrast; white where no caster was drawn.
+    ImageRGBA8 cubeCross(const PerLight& p, std::vector<float>& values) const {
+        const Group& g = groups_[p.group];
+        const int tile = std::min(g.size, 512);
+        const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
+        std::array<std::vector<float>, 6> faces;
+        float lo = 1.0f, hi = 0.0f;
+        for (int f = 0; f < 6; ++f) {
+            std::vector<float>& depth = faces[static_cast<std::size_t>(f)];
+            depth.resize(n);
+            if (g.format == MapFormat::Rgba8) {
+                std::vector<std::uint8_t> rgba(n * 4);
+                glGetTextureSubImage(g.packed.id(), 0, 0, 0, 6 * p.layer + f, g.size, g.size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                                     static_cast<GLsizei>(rgba.size()), rgba.data());
+                for (std::size_t i = 0; i < n; ++i) depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65025.0f + rgba[4 * i + 2] / 16581375.0f;
+            } else {
+                glGetTextureSubImage(g.depth.id(), 0, 0, 0, 6 * p.layer + f, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                                     static_cast<GLsizei>(n * sizeof(float)), depth.data());
+            }
+            for (float d : depth)
+                if (d < 1.0f) {
+                    lo = std::min(lo, d);
+                    hi = std::max(hi, d);
+                }
+        }
+        ImageRGBA8 image{4 * tile, 3 * tile, std::vector<std::uint8_t>(static_cast<std::size_t>(12 * tile * tile) * 4, 0)};
+        for (std::size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
+        // Face index at (column, row) of the cross.
+        const int place[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}};
+        for (int f = 0; f < 6; ++f) {
+            const std::vector<float>& depth = faces[static_cast<std::size_t>(f)];
+            for (int y = 0; y < tile; ++y)
+                for (int x = 0; x < tile; ++x) {
+                    const int sx = x * g.size / tile, sy = y * g.size / tile;
+                    const float d = depth[static_cast<std::size_t>(sy) * g.size + sx];
+                    const float v = d >= 1.0f ? 1.0f : 0.1f + 0.8f * (hi > lo ? (d - lo) / (hi - lo) : 0.0f);
+                    const auto grey = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
+                    const std::size_t px = (static_cast<std::size_t>(place[f][1] * tile + y) * static_cast<std::size_t>(4 * tile) +
+                                            static_cast<std::size_t>(place[f][0] * tile + x)) * 4;
+                    image.pixels[px] = image.pixels[px + 1] = image.pixels[px + 2] = grey;
+                }
+        }
+        values.clear();
+        for (const std::vector<float>& depth : faces) values.insert(values.end(), depth.begin(), depth.end());
+        return image;
+    }
+
     // Attaches the light's layer to its framebuffer when the array or the
     // layer changed (a new array gets a new framebuffer: the old one may
     // still name the deleted texture).
@@ -420,11 +573,29 @@ private:
         if (p.fbo && p.attachedGeneration == g.generation && p.attachedLayer == p.layer) return;
         if (!p.fbo || p.attachedGeneration != g.generation) p.fbo = gl::Framebuffer();
         const bool packed = g.format == MapFormat::Rgba8;
-        glNamedFramebufferTextureLayer(p.fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, p.layer);
-        if (packed) glNamedFramebufferTextureLayer(p.fbo.id(), GL_COLOR_ATTACHMENT0, g.packed.id(), 0, p.layer);
-        glNamedFramebufferDrawBuffer(p.fbo.id(), packed ? GL_COLOR_ATTACHMENT0 : GL_NONE);
-        glNamedFramebufferReadBuffer(p.fbo.id(), GL_NONE);
-        gl::checkFramebuffer(p.fbo, "shadow map framebuffer");
+        auto attachOne = [&](gl::Framebuffer& fbo, int layer, const char* what) {
+            if (layer < 0) {  // the whole array, layered (gl_Layer picks)
+                glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0);
+                if (packed) glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, g.packed.id(), 0);
+            } else {
+                glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, layer);
+                if (packed) glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.packed.id(), 0, layer);
+            }
+            glNamedFramebufferDrawBuffer(fbo.id(), packed ? GL_COLOR_ATTACHMENT0 : GL_NONE);
+            glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
+            gl::checkFramebuffer(fbo, what);
+        };
+        if (p.cube) {
+            attachOne(p.fbo, -1, "cube shadow map framebuffer (layered)");
+            for (int f = 0; f < 6; ++f) {
+                gl::Framebuffer& face = p.faceFbos[static_cast<std::size_t>(f)];
+                face = gl::Framebuffer();
+                attachOne(face, 6 * p.layer + f, "cube shadow map framebuffer (one face)");
+            }
+            p.faceDirty.fill(true);  // a new array or layer: its contents are undefined
+        } else {
+            attachOne(p.fbo, p.layer, "shadow map framebuffer");
+        }
         p.attachedGeneration = g.generation;
         p.attachedLayer = p.layer;
     }
@@ -469,8 +640,7 @@ private:
     // The floor of a shadow pass: the same casters, depth only, into a
     // scratch target of the same size and format, with no bias, culling or
     // packing: what the pass itself costs at least.
-    void drawFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p) {
-        const Group& g = groups_[p.group];
+    void ensureFloorTarget(const Group& g) {
         if (!floorTarget_ || floorSize_ != g.size || floorFormat_ != g.format) {
             floorTarget_ = gl::Texture(GL_TEXTURE_2D);
             glTextureStorage2D(floorTarget_.id(), 1, depthFormat(g.format), g.size, g.size);
@@ -480,6 +650,11 @@ private:
             floorSize_ = g.size;
             floorFormat_ = g.format;
         }
+    }
+
+    void drawFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p) {
+        const Group& g = groups_[p.group];
+        ensureFloorTarget(g);
         const gl::Program& bare = host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n"});
         const auto scope = host.timeScope("floor");
@@ -503,6 +678,110 @@ private:
     int floorSize_ = 0;
     MapFormat floorFormat_ = MapFormat::Depth32F;
 
+    // A point light's cube: its faces cleared where they hold or will hold
+    // casters, then the casters drawn once through the geometry shader
+    // (each triangle to the faces it touches) or once per face they touch.
+    void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView& view, PerLight& p) {
+        const Group& g = groups_[p.group];
+        const bool packed = g.format == MapFormat::Rgba8;
+        std::array<bool, 6> used{};
+        std::array<double, 6> faceTriangles{};
+        std::size_t drawn = 0;
+        for (std::size_t i = 0; i < frame.items.size(); ++i) {
+            const std::uint8_t mask = faceMask(p, i);
+            if (!mask || !frame.items[i].castsShadows) continue;
+            const auto triangles = static_cast<double>(frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount());
+            drawn += static_cast<std::size_t>(triangles);
+            for (std::size_t f = 0; f < 6; ++f)
+                if (mask & (1u << f)) {
+                    used[f] = true;
+                    faceTriangles[f] += triangles;
+                }
+        }
+        upload(view);
+        gl::RenderState state;  // all writes on for the clears
+        host.apply(state);
+        {
+            const auto scope = host.timeScope("clear");
+            const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+            for (int f = 0; f < 6; ++f) {
+                const auto face = static_cast<std::size_t>(f);
+                // A face that was clear and stays empty needs nothing.
+                if (!used[face] && !p.faceDirty[face]) continue;
+                glClearTexSubImage(g.depth.id(), 0, 0, 0, 6 * p.layer + f, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT, one);
+                if (packed) glClearTexSubImage(g.packed.id(), 0, 0, 0, 6 * p.layer + f, g.size, g.size, 1, GL_RGBA, GL_FLOAT, one);
+                p.faceDirty[face] = used[face];
+            }
+        }
+        if (!packed) state.noColor();
+        state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
+        host.apply(state);
+        const bool onePass = p.options.cubePasses == MapCubePasses::One;
+        const std::string defines = std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_CUBE_ONE_PASS " + (onePass ? "1" : "0") +
+                                    "\n#define MAP_CUBE_CULL " + (p.options.faceCulling ? "1" : "0") + "\n";
+        glViewport(0, 0, g.size, g.size);
+        if (onePass) {
+            const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"},
+                                                        {GL_GEOMETRY_SHADER, "shadow_map_cube.geom"},
+                                                        {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}},
+                                                       defines});
+            glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
+            host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+                if (!faceMask(p, i)) return false;
+                glProgramUniform1ui(program.id(), 0, faceMask(p, i));
+                return true;
+            });
+        } else {
+            const gl::Program& program = host.program(
+                {{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}}, defines});
+            for (int f = 0; f < 6; ++f) {
+                if (!used[static_cast<std::size_t>(f)]) continue;
+                glBindFramebuffer(GL_FRAMEBUFFER, p.faceFbos[static_cast<std::size_t>(f)].id());
+                glProgramUniform1i(program.id(), 1, f);
+                host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return (faceMask(p, i) & (1u << f)) != 0; });
+            }
+        }
+        static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+        host.count("triangles", static_cast<double>(drawn));
+        for (std::size_t f = 0; f < 6; ++f) host.count(std::string("faceTriangles.") + faceNames[f], faceTriangles[f]);
+        if (frame.measureFloors) drawCubeFloor(host, frame, p, used);
+    }
+
+    // The cube faces item i is drawn into: those its bounds touch, or all
+    // six without face culling; none for an item that cannot shadow anything seen.
+    static std::uint8_t faceMask(const PerLight& p, std::size_t i) {
+        const std::uint8_t mask = p.cubeCamera.faceMasks[i];
+        return p.options.faceCulling || !mask ? mask : std::uint8_t{0x3F};
+    }
+
+    // A cube's floor: per face it uses, a bare depth-only draw of that
+    // face's casters into a scratch target of the face's size and format.
+    void drawCubeFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p, const std::array<bool, 6>& used) {
+        const Group& g = groups_[p.group];
+        ensureFloorTarget(g);
+        const gl::Program& bare = host.program(
+            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n"});
+        const auto scope = host.timeScope("floor");
+        glBindFramebuffer(GL_FRAMEBUFFER, floorFbo_.id());
+        glViewport(0, 0, g.size, g.size);
+        for (int f = 0; f < 6; ++f) {
+            if (!used[static_cast<std::size_t>(f)]) continue;
+            gl::RenderState state;
+            host.apply(state);
+            const float one = 1.0f;
+            glClearNamedFramebufferfv(floorFbo_.id(), GL_DEPTH, 0, &one);
+            state.noColor();
+            host.apply(state);
+            // The bare vertex shader reads map.lightClipFromWorld: this face's camera.
+            shared::MapUniforms u = uniforms_;
+            u.lightClipFromWorld = p.cubeCamera.faceClipFromWorld[static_cast<std::size_t>(f)];
+            glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
+            host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return (faceMask(p, i) & (1u << f)) != 0; });
+        }
+        glNamedBufferSubData(ubo_.id(), 0, sizeof uniforms_, &uniforms_);
+        (void)frame;
+    }
+
     // Casters the fit found unable to shadow anything visible are skipped.
     static bool mayCast(const LightCamera& camera, std::size_t item) { return camera.casts.empty() || camera.casts[item] != 0; }
 
@@ -516,21 +795,33 @@ private:
     void upload(const LightView& view) {
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
+        const Light& light = view.light;
         shared::MapUniforms u{};
         u.lightClipFromWorld = p.camera.clipFromWorld();
         u.shadowFromWorld = kBias * u.lightClipFromWorld;
         u.params = glm::vec4(static_cast<float>(p.layer), reach(p.options), p.camera.texelSize, p.camera.perspective ? 1.0f : 0.0f);
         u.bias = glm::vec4(p.options.constantBias, 0.0f, 0.0f, p.options.normalBias);
-        if (p.options.preset == MapPreset::LearnOpenGL) u.bias = glm::vec4(0.0f, 0.05f, 0.005f, 0.0f);
+        if (p.options.preset == MapPreset::LearnOpenGL && !p.cube) u.bias = glm::vec4(0.0f, 0.05f, 0.005f, 0.0f);
         // Dither spread: one texel (the lecture's 2.5 x 0.001 uv at 1024 texels, about 2.5 texels, with preset lecture).
-        const float spread = p.options.preset == MapPreset::Lecture ? 2.5f * 0.001f * static_cast<float>(g.size) : 1.0f;
+        const float spread = isLecture2D(p.options, light) ? 2.5f * 0.001f * static_cast<float>(g.size) : 1.0f;
         u.taps = glm::vec4(1.0f / static_cast<float>(g.size), p.options.radius, static_cast<float>(p.options.samples), spread);
-        const Light& light = view.light;
         u.light = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), p.options.shadowedLight)
                                                          : glm::vec4(light.position, p.options.shadowedLight);
         // The light camera's view direction: minus the view matrix's third row.
         const glm::mat4& v = p.camera.viewFromWorld;
         u.axis = glm::vec4(-glm::vec3(v[0][2], v[1][2], v[2][2]), 0.0f);
+        if (p.cube) {
+            const CubeCamera& c = p.cubeCamera;
+            for (std::size_t f = 0; f < 6; ++f) u.faceClipFromWorld[f] = c.faceClipFromWorld[f];
+            const bool presetBias = p.options.preset != MapPreset::Default;
+            // The presets give their constant bias in world units (001, LearnOpenGL: 0.15).
+            u.bias.x = presetBias ? p.options.constantBias / c.farPlane : p.options.constantBias;
+            // The constant offset in the format's smallest steps.
+            const float step = g.format == MapFormat::Depth16 ? 1.0f / 65535.0f : g.format == MapFormat::Depth24 ? 1.0f / 16777215.0f : 1.0f / 16777216.0f;
+            u.cube = glm::vec4(c.farPlane, p.options.slopeBias, 2.0f / static_cast<float>(g.size), p.options.diskRadius);
+            u.cubeMore = glm::vec4(p.options.diskGrowth, p.options.offsetUnits * step, presetBias ? 1.0f : 0.0f, 0.0f);
+        }
+        uniforms_ = u;
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
     }
@@ -540,6 +831,7 @@ private:
     gl::Sampler compareNearest_{gl::NoCreate}, compareLinear_{gl::NoCreate}, plainNearest_{gl::NoCreate};
     gl::Sampler compareNearestMip_{gl::NoCreate}, compareLinearMip_{gl::NoCreate}, plainNearestMip_{gl::NoCreate};
     gl::Buffer ubo_{gl::NoCreate};
+    shared::MapUniforms uniforms_{};  ///< what upload() last wrote
 };
 
 } // namespace
@@ -547,12 +839,15 @@ private:
 TechniqueEntry mapTechnique() {
     return {"map", "a shadow map per light: orthographic for directional, perspective for spot lights", &mapOptionTable(),
             "shadow_map.glsl", [] { return std::make_unique<ShadowMap>(); }, [](const Light& light) {
-                // Lecture 000 itself lights its torus and pyramid with a point light
-                // through one 60-degree map; preset "lecture" does the same.
-                const bool lecture = light.shadow.get<MapOptions>().preset == MapPreset::Lecture;
-                return light.type == LightType::Point && !lecture
-                           ? std::string("map: point lights need cube maps, which are not implemented yet (use none, or preset \"lecture\" for the lecture's single 60-degree map)")
-                           : std::string();
+                const MapOptions& o = light.shadow.get<MapOptions>();
+                if (isCube(light)) {
+                    if (o.filter == MapFilter::Dither4)
+                        return std::string("map: filter \"dither4\" is for 2D maps (directional and spot lights); a point light's cube takes none, hardware, grid, poisson or pcf20");
+                    if (o.mipmaps) return std::string("map: mipmaps are for 2D maps (directional and spot lights), not a point light's cube");
+                } else if (o.filter == MapFilter::Pcf20 && o.preset == MapPreset::Default) {
+                    return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
+                }
+                return std::string();
             },
             "shadow_map_vertex.glsl"};
 }

@@ -35,6 +35,7 @@ struct FrameInfo {
     const std::vector<DrawItem>& items;      ///< every mesh instance, world transforms resolved
     const std::vector<Bounds>& itemBounds;   ///< world-space bounds of each item
     const std::vector<std::optional<glm::vec4>>& itemPlanes; ///< world-space plane (n, d) of each planar item (core/Plane.h)
+    const std::vector<std::vector<glm::vec4>>& itemConvex;   ///< world-space planes of each convex item (core/Plane.h), else empty
     glm::ivec2 viewport{0};                  ///< the frame's size, pixels
     glm::mat4 viewFromWorld{1.0f};           ///< the camera's
     glm::mat4 clipFromView{1.0f};

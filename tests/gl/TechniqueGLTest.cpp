@@ -187,7 +187,7 @@ public:
         ImageRGBA8 image{size_, size_, std::vector<std::uint8_t>(depth.size() * 4, 255)};
         for (std::size_t i = 0; i < depth.size(); ++i)
             image.pixels[4 * i] = image.pixels[4 * i + 1] = image.pixels[4 * i + 2] = static_cast<std::uint8_t>(depth[i] * 255.0f);
-        out.push_back({"depth", std::move(image)});
+        out.push_back({"depth", std::move(image), {}});
     }
 
 private:
@@ -316,7 +316,7 @@ public:
         for (int i = 0; i < 2; ++i) {
             ImageRGBA8 image{kSize, kSize, std::vector<std::uint8_t>(static_cast<std::size_t>(kSize) * kSize * 4)};
             glGetTextureImage(targets_[i].id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());
-            out.push_back({i == 0 ? "triangles" : "adjacency", std::move(image)});
+            out.push_back({i == 0 ? "triangles" : "adjacency", std::move(image), {}});
         }
     }
 

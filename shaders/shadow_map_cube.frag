@@ -1,0 +1,22 @@
+// Technique "map", a point light's cube-map pass: the stored depth is the
+// distance from the light over the far plane (lecture 001), written to
+// gl_FragDepth, plus the slope bias (the distance's largest change to a
+// neighbouring texel times `slopeBias`, what glPolygonOffset's factor does
+// for window depth, which a written depth bypasses) and the constant
+// offset. Variant MAP_RGBA8 packs it into colour (002 §8.3.1).
+#include "shadow_map_shared.h"
+
+in vec3 gCubeWorld;
+#if MAP_RGBA8
+layout(location = 0) out vec4 outPacked;
+#endif
+
+void main() {
+    float distance = length(gCubeWorld - map.light.xyz);
+    float slope = max(abs(dFdx(distance)), abs(dFdy(distance)));
+    float depth = (distance + map.cube.y * slope) / map.cube.x + map.cubeMore.y;
+    gl_FragDepth = clamp(depth, 0.0, 1.0);
+#if MAP_RGBA8
+    outPacked = packDepth(gl_FragDepth);
+#endif
+}

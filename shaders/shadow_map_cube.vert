@@ -1,0 +1,23 @@
+// Technique "map", a point light's cube-map pass (lecture 001): the casters'
+// world positions for the geometry shader (MAP_CUBE_ONE_PASS), or one face's
+// clip position for the six-pass path (that face in `face`).
+#include "shadow_map_shared.h"
+
+layout(location = 0) in vec3 inPosition;
+#if MAP_CUBE_ONE_PASS
+out vec3 vCubeWorld;
+#else
+layout(location = 1) uniform int face;
+out vec3 gCubeWorld;
+#endif
+
+void main() {
+    vec4 world = draw.worldFromObject * vec4(inPosition, 1.0);
+#if MAP_CUBE_ONE_PASS
+    vCubeWorld = world.xyz;
+    gl_Position = world;
+#else
+    gCubeWorld = world.xyz;
+    gl_Position = map.faceClipFromWorld[face] * world;
+#endif
+}

@@ -1,0 +1,248 @@
+// Technique "map" on point lights: depth cube maps (lecture 001) against the
+// ray-traced reference: every face of a room, the bundled point-light
+// scenes, LearnOpenGL's point-shadow scene, one pass against six, no seams,
+// and culling per face.
+#include "GLTestContext.h"
+#include "ImageArtifacts.h"
+
+#include <shadowlab/Compare.h>
+#include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
+#include <shadowlab/SceneFile.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <filesystem>
+#include <sstream>
+
+using namespace shadowlab;
+using shadowlab::test::GLTest;
+namespace fs = std::filesystem;
+
+namespace {
+
+Comparison compareScene(const Scene& scene, int width = 640, int height = 360) {
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    CompareOptions options;
+    options.width = width;
+    options.height = height;
+    return compareWithReference(renderer, scene, options);
+}
+
+double awayFromEdges(const LightComparison& l) { return l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges; }
+
+std::string vec(const glm::vec3& v) {
+    std::ostringstream s;
+    s << "[" << v.x << ", " << v.y << ", " << v.z << "]";
+    return s.str();
+}
+
+// A closed 10 m room seen from inside, a point light off its centre, and a
+// crate 2.5 m from the light along each axis, so each cube face holds a
+// caster whose shadow falls on the wall it faces.
+const glm::vec3 kLight(0.3f, 0.2f, 0.1f);
+const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+std::string roomNodes() {
+    std::string nodes = R"({"name": "room", "shape": {"type": "box", "size": [10, 10, 10]}})";
+    for (int f = 0; f < 6; ++f)
+        nodes += R"(, {"name": "crate )" + std::to_string(f) + R"(", "shape": {"type": "box", "size": [0.8, 0.8, 0.8]}, "translation": )" +
+                 vec(kLight + 2.5f * kAxes[f]) + R"(, "rotation": [10, 20, 30]})";
+    return nodes;
+}
+
+Scene roomScene(const glm::vec3& cameraPosition, const glm::vec3& target, const std::string& mapOptions) {
+    return parseScene(R"({"camera": {"position": )" + vec(cameraPosition) + R"(, "target": )" + vec(target) + R"(, "fovY": 100},
+      "lights": [{"type": "point", "position": )" + vec(kLight) + R"(, "shadow": {"technique": "map", "map": {)" + mapOptions + R"(}}}],
+      "nodes": [)" + roomNodes() + "]}",
+                      "room", ".");
+}
+
+std::vector<fs::path> pointLightScenes() {
+    std::vector<fs::path> out;
+    for (const auto& entry : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        for (const Light& light : loadSceneFile(entry.path()).lights)
+            if (light.type == LightType::Point) {
+                out.push_back(entry.path());
+                break;
+            }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+} // namespace
+
+class CubeMapGLTest : public GLTest {};
+
+// The issue's bar for each of the six face directions: filter "none" at
+// 1024^2 per face, at most 0.05 % of the receivers misclassified outside the
+// 1-pixel band. The camera stands beside the light looking along each axis
+// at the wall that face covers (the crate's shadow on it in view).
+TEST_F(CubeMapGLTest, APointLightInARoomShadowsAllSixWalls) {
+    for (int f = 0; f < 6; ++f) {
+        SCOPED_TRACE("face " + std::to_string(f));
+        const glm::vec3 d = kAxes[f];
+        const glm::vec3 side = std::abs(d.y) > 0.5f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+        const Scene scene = roomScene(kLight - 1.0f * d + 2.2f * side + 0.8f * glm::cross(d, side), kLight + 5.0f * d,
+                                      R"("filter": "none", "size": 1024)");
+        const Comparison c = compareScene(scene);
+        const LightComparison& l = c.lights[0];
+        const bool failedBefore = HasFailure();
+        EXPECT_GT(l.referenceShadowedPixels, 1000u) << "the crate's shadow on the wall is in view";
+        EXPECT_LE(awayFromEdges(l), 0.0005);
+        if (!failedBefore && HasFailure()) test::saveImagesIfFailed("room-face-" + std::to_string(f), c.technique, c.reference);
+    }
+}
+
+// Every bundled scene with a point light meets the same bound (filter none, 1024^2).
+TEST_F(CubeMapGLTest, EveryBundledPointLightSceneMatchesTheReference) {
+    int lights = 0;
+    for (const fs::path& file : pointLightScenes()) {
+        SCOPED_TRACE(file.filename().string());
+        const Scene plain = loadSceneFile(file);
+        std::vector<std::string> overrides;
+        for (std::size_t i = 0; i < plain.lights.size(); ++i) {
+            if (plain.lights[i].type != LightType::Point) continue;
+            const std::string at = "lights[" + std::to_string(i) + "].shadow.";
+            overrides.insert(overrides.end(), {at + "technique=map", at + "map.filter=\"none\"", at + "map.size=1024"});
+        }
+        const Scene scene = loadSceneFile(file, overrides);
+        const Comparison c = compareScene(scene, 960, 540);
+        for (std::size_t i = 0; i < c.lights.size(); ++i) {
+            if (scene.lights[i].type != LightType::Point) continue;
+            EXPECT_LE(awayFromEdges(c.lights[i]), 0.0005) << c.lights[i].name;
+            ++lights;
+        }
+        if (HasFailure()) {
+            test::saveImagesIfFailed(file.stem().string(), c.technique, c.reference);
+            break;
+        }
+    }
+    EXPECT_GE(lights, 4);
+}
+
+// LearnOpenGL's point-shadow demo on its own scene misclassifies 0.092 % of
+// the receivers outside the band (measured for the issue); its settings
+// here must do better, and our defaults better still or as well.
+TEST_F(CubeMapGLTest, LearnOpenGlPointSceneBeatsTheDemo) {
+    const fs::path file = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "learnopengl-point-shadows.json";
+    const Comparison theirs = compareScene(loadSceneFile(file, {"lights[0].shadow.technique=map", "lights[0].shadow.map.preset=\"learnopengl\""}), 800, 600);
+    const Comparison ours = compareScene(loadSceneFile(file, {"lights[0].shadow.technique=map"}), 800, 600);
+    EXPECT_GT(theirs.lights[0].referenceShadowedPixels, 5000u) << "the cubes' shadows are in view";
+    EXPECT_LT(awayFromEdges(theirs.lights[0]), 0.00092);
+    EXPECT_LE(awayFromEdges(ours.lights[0]), awayFromEdges(theirs.lights[0]));
+}
+
+// One geometry-shader pass and six passes store the same depth in every
+// texel of every face (the same fragment shader runs on the same fragments).
+TEST_F(CubeMapGLTest, OnePassAndSixPassesGiveTheSameMap) {
+    std::vector<float> maps[2];
+    const char* passes[2] = {"one", "six"};
+    for (int k = 0; k < 2; ++k) {
+        const Scene scene = roomScene(glm::vec3(-3.0f, 3.0f, 4.0f), kLight, std::string(R"("size": 256, "cubePasses": ")") + passes[k] + "\"");
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        RenderOptions options;
+        options.width = 320;
+        options.height = 180;
+        renderer.render(scene, options);
+        for (DebugImage& image : renderer.debugImages(scene))
+            if (image.name == "light0-cube") maps[k] = std::move(image.values);
+    }
+    ASSERT_EQ(maps[0].size(), 6u * 256u * 256u);
+    ASSERT_EQ(maps[0].size(), maps[1].size());
+    std::size_t covered = 0, different = 0;
+    for (std::size_t i = 0; i < maps[0].size(); ++i) {
+        covered += maps[0][i] < 1.0f;
+        different += maps[0][i] != maps[1][i];
+    }
+    EXPECT_GT(covered, 6u * 1000u) << "the crates are in every face";
+    EXPECT_EQ(different, 0u);
+}
+
+// A floor under a light crosses four cube-face edges (the -Y face's
+// boundary). Nothing shadows it, so a single falsely shadowed pixel, edge
+// band included, is a seam; with every filter. (A crate under the floor
+// keeps the floor in the map: it could shadow that crate.)
+TEST_F(CubeMapGLTest, NoSeamsWhereAFloorCrossesFaceEdges) {
+    for (const char* filter : {"none", "hardware", "grid", "poisson", "pcf20"}) {
+        SCOPED_TRACE(filter);
+        const Scene scene = parseScene(
+            std::string(R"({"camera": {"position": [0.2, 6, 0.3], "target": [0, 0, 0], "fovY": 100},
+              "lights": [{"type": "point", "position": [0, 1, 0], "shadow": {"technique": "map", "map": {"size": 256, "filter": ")") +
+                filter + R"("}}}],
+              "nodes": [{"name": "floor", "shape": {"type": "plane", "size": [30, 30]}},
+                        {"name": "under", "shape": {"type": "box", "size": [1, 1, 1]}, "translation": [0, -3, 0], "receivesShadows": false}]})",
+            "seams", ".");
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        RenderOptions options;
+        options.width = 480;
+        options.height = 270;
+        options.surfaces = true;
+        const FrameStats stats = renderer.render(scene, options);
+        double triangles = -1.0;
+        for (const auto& [name, value] : stats.counters)
+            if (name == "shadow[0].triangles") triangles = value;
+        EXPECT_GE(triangles, 2.0) << "the floor is drawn into the map";
+        const std::vector<float> visibility = renderer.readVisibility(scene, 0);
+        std::size_t shadowed = 0, floor = 0;
+        const SurfaceBuffer surfaces = renderer.readSurfaces();
+        for (std::size_t i = 0; i < visibility.size(); ++i) {
+            if (surfaces.position[i].w < 0.5f || std::abs(surfaces.position[i].y) > 1e-3f) continue;
+            ++floor;
+            shadowed += visibility[i] < 0.5f;
+        }
+        EXPECT_GT(floor, 100000u);
+        EXPECT_EQ(shadowed, 0u);
+    }
+}
+
+// Casters on one side of the light reach only the faces they touch: fewer
+// triangles sent than with faceCulling false (every caster to all six).
+TEST_F(CubeMapGLTest, CastersAreDrawnOnlyIntoTheFacesTheyTouch) {
+    double sent[2] = {0.0, 0.0};
+    const bool culling[2] = {true, false};
+    for (int k = 0; k < 2; ++k) {
+        const Scene scene = parseScene(std::string(R"({"camera": {"position": [0, 6, 8], "target": [0, 0, 0]},
+          "lights": [{"type": "point", "position": [0, 3, 0], "shadow": {"technique": "map", "map": {"size": 256, "faceCulling": )") +
+                                           (culling[k] ? "true" : "false") + R"(}}}],
+          "nodes": [{"name": "floor", "shape": {"type": "plane", "size": [20, 20]}},
+                    {"name": "ball", "shape": {"type": "sphere", "radius": 0.5}, "translation": [0.3, 1, 0.2]},
+                    {"name": "crate", "shape": {"type": "box", "size": [1, 1, 1]}, "translation": [-1, 0.5, 0.5]}]})",
+                                       "culling", ".");
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        RenderOptions options;
+        options.width = 320;
+        options.height = 180;
+        const FrameStats stats = renderer.render(scene, options);
+        for (const auto& [name, value] : stats.counters)
+            if (name.rfind("shadow[0].faceTriangles.", 0) == 0) sent[k] += value;
+    }
+    // Both casters lie below the light: only -Y (and no side face fully) sees them.
+    EXPECT_GT(sent[0], 0.0);
+    EXPECT_LT(sent[0], 0.5 * sent[1]);
+}
+
+// Point-light options that only make sense for 2D maps, and the reverse, are named errors.
+TEST_F(CubeMapGLTest, FiltersForTheOtherKindOfMapAreNamedErrors) {
+    auto load = [](const std::string& type, const std::string& options) {
+        return parseScene(R"({"lights": [{"type": ")" + type + R"(", "position": [0, 3, 0], "shadow": {"technique": "map", "map": {)" + options +
+                              "}}}], \"nodes\": []}",
+                          "scene.json", ".");
+    };
+    try {
+        load("point", R"("filter": "dither4")");
+        FAIL() << "dither4 on a cube";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("lights[0].shadow.technique"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("dither4"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(load("point", R"("mipmaps": true)"), Error);
+    EXPECT_THROW(load("directional", R"("filter": "pcf20")"), Error);
+    EXPECT_NO_THROW(load("point", R"("filter": "pcf20")"));
+}
