@@ -262,6 +262,11 @@ json runBench(Context& context, const BenchArgs& args) {
                     }
                 }
                 if (counters.count(pass + ".triangles")) record["shadowTriangles"] = median(counters[pass + ".triangles"]);
+                // Every other number the technique reported for this pass (a cube's triangles per face, ...).
+                json reported = json::object();
+                for (const auto& [name, values] : counters)
+                    if (name.rfind(pass + ".", 0) == 0 && name != pass + ".triangles") reported[name.substr(pass.size() + 1)] = median(values);
+                if (!reported.empty()) record["shadowCounters"] = std::move(reported);
                 lights.push_back(std::move(record));
             }
             json passes = json::object();
