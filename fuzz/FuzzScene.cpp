@@ -7,6 +7,7 @@
 #include <shadowlab/Error.h>
 #include <shadowlab/SceneFile.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -22,7 +23,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         at = next;
     }
     try {
-        shadowlab::parseScene(input.substr(0, nul), "fuzz.json", SHADOWLAB_FUZZ_FILES_DIR, overrides);
+        const shadowlab::Scene scene = shadowlab::parseScene(input.substr(0, nul), "fuzz.json", SHADOWLAB_FUZZ_FILES_DIR, overrides);
+        // Animated lights: a parsed path evaluates at any finite time without
+        // an error, and every position it reaches is finite.
+        for (const shadowlab::Light& light : scene.lights)
+            for (const double t : {-1e9, -1.5, 0.0, 0.25, 7.0, 1e9}) {
+                const glm::vec3 p = shadowlab::lightAtTime(light, t).position;
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
+            }
     } catch (const shadowlab::Error&) {
     }
     return 0;

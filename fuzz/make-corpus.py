@@ -107,6 +107,11 @@ write("scene", "meshes-and-texture.json", scene({
     "lights": [{"type": "spot", "position": [0, 3, 0], "direction": [0, -1, 0]}],
     "nodes": [{"mesh": "triangle.obj", "material": "t", "children": [{"mesh": "triangle.gltf", "translation": [1, 0, 0]}]}]},
     "lights[0].intensity=2", "camera.fovY=60"))
+write("scene", "light-paths.json", scene({
+    "lights": [{"type": "point", "position": [0, 2, 0], "path": {"type": "sine", "amplitude": [0, 0, 3], "angularFrequency": 0.5}},
+               {"type": "spot", "position": [0, 3, 0], "path": {"type": "keyframes", "times": [0, 1, 2],
+                                                                "positions": [[0, 3, 0], [1, 3, 0], [0, 3, 1]], "loop": True}}]},
+    "lights[0].path.phase=1"))
 for path in sorted(os.listdir(os.path.join(root, "..", "..", "scenes"))):
     if not path.endswith(".json"):
         continue  # scenes/images/ holds what the scenes reference

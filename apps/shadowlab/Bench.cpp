@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -156,6 +157,10 @@ std::string slug(const std::string& label) {
 json runBench(Context& context, const BenchArgs& args) {
     if (args.frames < 1) throw Error("--frames " + std::to_string(args.frames) + ": expected at least 1");
     if (args.warmup < 0) throw Error("--warmup " + std::to_string(args.warmup) + ": expected 0 or more");
+    if (!std::isfinite(args.timeSeconds)) throw Error("--time: expected a finite number of seconds");
+    if (!std::isfinite(args.fps) || !(args.fps > 0.0)) throw Error("--fps: expected a finite number of frames per second > 0");
+    if (!std::isfinite(args.timeSeconds + (args.frames - 1) / args.fps))
+        throw Error("--time, --fps: the last timed frame's time is not a finite number of seconds");
     std::vector<Variation> variations;
     for (const std::string& v : args.vary) variations.push_back(parseVariation(v));
     std::vector<std::string> scenes = args.scenes;
@@ -189,7 +194,9 @@ json runBench(Context& context, const BenchArgs& args) {
         for (const auto& combo : combos) {
             std::vector<std::string> overrides = args.overrides;
             overrides.insert(overrides.end(), combo.begin(), combo.end());
-            const Scene scene = file.empty() ? defaultScene(overrides) : loadSceneFile(file, overrides);
+            const Scene loaded = file.empty() ? defaultScene(overrides) : loadSceneFile(file, overrides);
+            // The scene at --time: the warm-up frames and the comparison.
+            Scene scene = sceneAtTime(loaded, args.timeSeconds);
             std::string label = scene.name;
             for (const std::string& c : combo) label += " " + c;
             progress.step(done, label);
@@ -203,6 +210,7 @@ json runBench(Context& context, const BenchArgs& args) {
             RenderOptions plain;
             plain.width = args.width;
             plain.height = args.height;
+            plain.timeSeconds = args.timeSeconds;
             RenderOptions clocked = plain;
             clocked.clock = args.clock;
             clocked.measureFloors = true;
@@ -217,7 +225,16 @@ json runBench(Context& context, const BenchArgs& args) {
             std::vector<double> frameTimes, unshadowedTimes, passTotal;
             std::string clockName = "off";
             int baseLight = -1;
+            // Timed frame i shows the animation at --time + i / --fps: the
+            // lights are moved (outside the timed render()) and the three
+            // frames of a step see them at the same place.
             for (int i = 0; i < args.frames; ++i) {
+                const double t = args.timeSeconds + i / args.fps;
+                for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+                    scene.lights[l].position = lightAtTime(loaded.lights[l], t).position;
+                    unshadowed.lights[l].position = scene.lights[l].position;
+                }
+                plain.timeSeconds = clocked.timeSeconds = t;
                 frameTimes.push_back(renderer.render(scene, plain).cpuMs);
                 unshadowedTimes.push_back(renderer.render(unshadowed, plain).cpuMs);
                 const FrameStats frame = renderer.render(scene, clocked);
@@ -232,7 +249,10 @@ json runBench(Context& context, const BenchArgs& args) {
                 baseLight = frame.baseLight;
             }
 
+            // The accuracy numbers at --time, as `compare --time` gives them.
+            for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l].position = lightAtTime(loaded.lights[l], args.timeSeconds).position;
             CompareOptions compareOptions;
+            compareOptions.timeSeconds = args.timeSeconds;
             compareOptions.width = args.width;
             compareOptions.height = args.height;
             compareOptions.softSamples = args.softSamples;
@@ -306,6 +326,8 @@ json runBench(Context& context, const BenchArgs& args) {
                 {"height", args.height},
                 {"frames", args.frames},
                 {"warmup", args.warmup},
+                {"time", args.timeSeconds},
+                {"fps", args.fps},
                 {"softSamples", args.softSamples},
                 {"overrides", args.overrides},
                 {"vary", args.vary},

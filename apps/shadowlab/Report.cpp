@@ -155,7 +155,9 @@ figcaption { font-size: 12px; color: #555; }
 )";
     h << "<p>" << escape(results["renderer"].get<std::string>()) << ", OpenGL " << escape(results["glVersion"].get<std::string>())
       << ". " << results["width"] << "&times;" << results["height"] << " pixels, " << results["frames"] << " timed frames after "
-      << results["warmup"] << " warm-up frames per row. Frame: wall time of a finished frame as users get it; passes: "
+      << results["warmup"] << " warm-up frames per row; animated lights at " << results.value("time", 0.0) << " s + k / "
+      << results.value("fps", 30.0) << " fps in timed frame k, at " << results.value("time", 0.0)
+      << " s in the warm-up and the accuracy comparison. Frame: wall time of a finished frame as users get it; passes: "
       << escape(records.empty() ? std::string("-") : records[0]["clock"].get<std::string>())
       << " clock (cpu-finish: glFinish around each pass on a software rasteriser; gpu-timestamp: GL_TIMESTAMP queries); "
          "medians, min&ndash;max in brackets. "

@@ -1,7 +1,8 @@
 // shadowlab: the command-line tool. Subcommands:
 //   render [SCENE.json] -o out.png [--width W --height H] [--set key=value ...]
-//   compare [SCENE.json] [-o DIR] [--set ...]      technique vs ray-traced reference
-//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [-o DIR]
+//          [--time T] [--frames N --fps F -o frame_%03d.png]
+//   compare [SCENE.json] [-o DIR] [--set ...] [--time T]  technique vs ray-traced reference
+//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [--time T --fps F] [-o DIR]
 //   info
 // Every failure prints one line `shadowlab: error: ...` and exits non-zero;
 // no output file is written unless the whole render succeeded.
@@ -22,10 +23,13 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <sstream>
+#include <string_view>
 
 namespace fs = std::filesystem;
 using namespace shadowlab;
@@ -41,7 +45,63 @@ struct RenderArgs {
     std::string debugImages;  ///< directory for the techniques' debug images; empty = none
     std::vector<std::string> debug; ///< --debug: which debug images to write beside the output (shadow-maps, texel-density, all)
     int viewFromLight = -1;   ///< --view-from-light: the light whose view replaces the camera; -1 none
+    double timeSeconds = 0.0; ///< --time: seconds since the start of the animation, of the first frame
+    int frames = 1;           ///< --frames: how many frames, each 1/fps seconds after the previous
+    double fps = 30.0;        ///< --fps: frames per second of the sequence, > 0
 };
+
+// --time and --fps: finite (CLI11 reads "nan" and "inf" as numbers).
+std::string numberText(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+void checkTime(double seconds, const std::string& flag) {
+    if (!std::isfinite(seconds)) throw Error(flag + " " + numberText(seconds) + ": expected a finite number of seconds");
+}
+void checkFps(double fps) {
+    if (!std::isfinite(fps) || !(fps > 0.0)) throw Error("--fps " + numberText(fps) + ": expected a finite number of frames per second > 0");
+}
+
+// An output name with a printf-style integer field (`frame_%03d.png`): one
+// `%[flags][width]d` (or `i`), `%%` for a literal percent sign, nothing else.
+struct FramePattern {
+    std::string before, field, after; ///< the name split around its integer field ("" when it has none)
+    bool hasField() const { return !field.empty(); }
+    std::string name(int frame) const {
+        if (!hasField()) return before;
+        char number[64];
+        std::snprintf(number, sizeof number, field.c_str(), frame);  // field was checked to be one integer conversion
+        return before + number + after;
+    }
+};
+
+FramePattern parseFramePattern(const std::string& output) {
+    FramePattern p;
+    std::string* part = &p.before;
+    for (std::size_t i = 0; i < output.size(); ++i) {
+        if (output[i] != '%') {
+            *part += output[i];
+            continue;
+        }
+        if (i + 1 < output.size() && output[i + 1] == '%') {
+            *part += '%';
+            ++i;
+            continue;
+        }
+        const std::size_t start = i++;
+        while (i < output.size() && std::string_view("-+ 0#").find(output[i]) != std::string_view::npos) ++i;
+        const std::size_t widthStart = i;
+        while (i < output.size() && std::isdigit(static_cast<unsigned char>(output[i]))) ++i;
+        if (i - widthStart > 3) throw Error("-o " + output + ": the frame number's width is too large");
+        if (i >= output.size() || (output[i] != 'd' && output[i] != 'i'))
+            throw Error("-o " + output + ": '%' starts a frame number field such as %d or %03d (write %% for a percent sign)");
+        if (p.hasField()) throw Error("-o " + output + ": more than one frame number field");
+        p.field = output.substr(start, i + 1 - start);
+        part = &p.after;
+    }
+    return p;
+}
 
 // --view-from-light I: the scene seen from light I (lecture 002 exercise 8.6.1-1).
 void applyViewFromLight(Scene& scene, int light) {
@@ -106,49 +166,112 @@ void requireNoGlErrors(const Context& context) {
         throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
 }
 
+// Images written under temporary names beside their targets and renamed
+// into place together by commit(): a failure at frame 7 of 10 leaves no
+// frame behind. Destroyed without commit(), the temporaries are removed.
+class PendingImages {
+public:
+    PendingImages() = default;
+    PendingImages(const PendingImages&) = delete;
+    PendingImages& operator=(const PendingImages&) = delete;
+    ~PendingImages() {
+        std::error_code ec;
+        for (const auto& [temporary, target] : files_) fs::remove(temporary, ec);
+    }
+    void write(const fs::path& target, const ImageRGBA8& image) {
+        fs::path temporary = target;
+        temporary += ".pending-" + std::to_string(getpid());
+        files_.emplace_back(temporary, target);  // first: removed even if writePng fails half way
+        writePng(temporary, image);
+    }
+    /// Renames every image into place, in the order written; returns their names.
+    std::vector<fs::path> commit() {
+        std::vector<fs::path> written;
+        for (const auto& [temporary, target] : files_) {
+            std::error_code ec;
+            fs::rename(temporary, target, ec);
+            if (ec) throw Error(target.string() + ": cannot write (" + ec.message() + ")");
+            written.push_back(target);
+        }
+        files_.clear();
+        return written;
+    }
+
+private:
+    std::vector<std::pair<fs::path, fs::path>> files_; ///< temporary, target
+};
+
 int runRender(const RenderArgs& args) {
-    Scene scene = loadScene(args.scene, args.overrides);
-    applyViewFromLight(scene, args.viewFromLight);
-    const std::string defaultName = (args.scene.empty() ? std::string("default") : fs::path(args.scene).stem().string()) + ".png";
-    const fs::path output = checkOutput(args.output.empty() ? defaultName : args.output, "-o");
+    checkTime(args.timeSeconds, "--time");
+    checkFps(args.fps);
+    const Scene loaded = loadScene(args.scene, args.overrides);
+    // Without -o: <scene>.png, or <scene>-%03d.png for a sequence.
+    std::string stem = args.scene.empty() ? std::string("default") : fs::path(args.scene).stem().string();
+    for (std::size_t at = stem.find('%'); at != std::string::npos; at = stem.find('%', at + 2)) stem.insert(at, "%");
+    const std::string defaultName = stem + (args.frames > 1 ? "-%03d" : "") + ".png";
+    const std::string outputName = args.output.empty() ? defaultName : args.output;
+    const FramePattern pattern = parseFramePattern(outputName);
+    if (args.frames > 1 && !pattern.hasField())
+        throw Error("-o " + outputName + ": --frames " + std::to_string(args.frames) +
+                    " needs a frame number field in the name, e.g. frame_%03d.png");
+    // Every name is checked before anything is rendered.
+    std::vector<fs::path> outputs;
+    for (int k = 0; k < args.frames; ++k) outputs.push_back(checkOutput(pattern.name(k), "-o"));
+    // Frame k at --time + k / --fps: the times are checked before the first frame too.
+    std::vector<double> times;
+    for (int k = 0; k < args.frames; ++k) {
+        times.push_back(args.timeSeconds + k / args.fps);
+        if (!std::isfinite(times.back()))
+            throw Error("--time " + numberText(args.timeSeconds) + " --fps " + numberText(args.fps) + ": frame " + std::to_string(k) +
+                        "'s time is not a finite number of seconds");
+    }
+    if (args.viewFromLight >= 0) {  // a missing light or a point light fails here, not after the first frame
+        Scene first = sceneAtTime(loaded, times[0]);
+        applyViewFromLight(first, args.viewFromLight);
+    }
     checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
     checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
-    renderer.upload(scene);
-    RenderOptions options;
-    options.width = args.width;
-    options.height = args.height;
-    renderer.render(scene, options);
-    const ImageRGBA8 image = renderer.readColor();
-    std::vector<DebugImage> debug;
-    if (!args.debugImages.empty() || !args.debug.empty()) debug = renderer.debugImages(scene);
-    // --debug KIND: the images of that kind beside the output, <stem>-<image>.png.
-    std::vector<std::pair<fs::path, const ImageRGBA8*>> beside;
-    for (const DebugImage& d : debug) {
-        const bool isMap = d.name.size() >= 4 && d.name.compare(d.name.size() - 4, 4, "-map") == 0;
-        const bool isDensity = d.name.find("texel-density") != std::string::npos;
-        for (const std::string& kind : args.debug)
-            if (kind == "all" || (kind == "shadow-maps" && isMap) || (kind == "texel-density" && isDensity)) {
-                beside.emplace_back(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), &d.image);
-                break;
-            }
-    }
-    requireNoGlErrors(context);  // before writing: no image from a failed frame
-    writePng(output, image);
-    std::cout << output.string() << "\n";
-    for (const auto& [path, debugImage] : beside) {
-        writePng(path, *debugImage);
-        std::cout << path.string() << "\n";
-    }
-    if (!args.debugImages.empty()) {
-        const fs::path dir(args.debugImages);
-        fs::create_directories(dir);
+    renderer.upload(loaded);
+    PendingImages pending;
+    Scene scene = loaded;
+    for (int k = 0; k < args.frames; ++k) {
+        const fs::path& output = outputs[static_cast<std::size_t>(k)];
+        // The lights where their paths put them at this frame's time, the
+        // camera from a light's view after it moved.
+        for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l] = lightAtTime(loaded.lights[l], times[static_cast<std::size_t>(k)]);
+        scene.camera = loaded.camera;
+        applyViewFromLight(scene, args.viewFromLight);
+        RenderOptions options;
+        options.width = args.width;
+        options.height = args.height;
+        options.timeSeconds = times[static_cast<std::size_t>(k)];
+        renderer.render(scene, options);
+        const ImageRGBA8 image = renderer.readColor();
+        std::vector<DebugImage> debug;
+        if (!args.debugImages.empty() || !args.debug.empty()) debug = renderer.debugImages(scene);
+        requireNoGlErrors(context);  // before writing: no image from a failed frame
+        pending.write(output, image);
+        // --debug KIND: the images of that kind beside the output, <stem>-<image>.png.
         for (const DebugImage& d : debug) {
-            writePng(dir / (d.name + ".png"), d.image);
-            std::cout << (dir / (d.name + ".png")).string() << "\n";
+            const bool isMap = d.name.size() >= 4 && d.name.compare(d.name.size() - 4, 4, "-map") == 0;
+            const bool isDensity = d.name.find("texel-density") != std::string::npos;
+            for (const std::string& kind : args.debug)
+                if (kind == "all" || (kind == "shadow-maps" && isMap) || (kind == "texel-density" && isDensity)) {
+                    pending.write(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), d.image);
+                    break;
+                }
+        }
+        // --debug-images DIR: <image>.png, or <frame stem>-<image>.png for a sequence.
+        if (!args.debugImages.empty()) {
+            const fs::path dir(args.debugImages);
+            fs::create_directories(dir);
+            for (const DebugImage& d : debug)
+                pending.write(dir / ((args.frames > 1 ? output.stem().string() + "-" : std::string()) + d.name + ".png"), d.image);
         }
     }
+    for (const fs::path& path : pending.commit()) std::cout << path.string() << "\n";
     return 0;
 }
 
@@ -159,6 +282,7 @@ struct CompareArgs {
     int height = 540;
     int softSamples = 256;
     std::vector<std::string> overrides;
+    double timeSeconds = 0.0; ///< --time: the lights where their paths put them at this time, seconds
 };
 
 fs::path checkOutputDirectory(const std::string& output) {
@@ -176,7 +300,9 @@ std::string pct(double share) {
 }
 
 int runCompare(const CompareArgs& args) {
-    const Scene scene = loadScene(args.scene, args.overrides);
+    checkTime(args.timeSeconds, "--time");
+    // Both sides, technique and reference, see the lights at --time.
+    const Scene scene = sceneAtTime(loadScene(args.scene, args.overrides), args.timeSeconds);
     const fs::path dir = checkOutputDirectory(args.output);
     checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
@@ -187,6 +313,7 @@ int runCompare(const CompareArgs& args) {
     options.width = args.width;
     options.height = args.height;
     options.softSamples = args.softSamples;
+    options.timeSeconds = args.timeSeconds;
     const Comparison c = compareWithReference(renderer, scene, options);
     requireNoGlErrors(context);
 
@@ -225,6 +352,7 @@ int runCompare(const CompareArgs& args) {
                                                {"width", args.width},
                                                {"height", args.height},
                                                {"softSamples", args.softSamples},
+                                               {"time", args.timeSeconds},
                                                {"referenceMs", c.referenceMs},
                                                {"techniqueImage", "technique.png"},
                                                {"referenceImage", "reference.png"},
@@ -335,6 +463,11 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"shadow-maps", "texel-density", "all"}))
         ->delimiter(',');
     render->add_option("--debug-images", renderArgs.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
+    render->add_option("--time", renderArgs.timeSeconds, "Seconds since the start of the animation: where light paths put the lights (the first frame's time)")
+        ->capture_default_str();
+    render->add_option("--frames", renderArgs.frames, "Render this many frames, frame k at --time + k / --fps; -o then needs a field such as %03d")
+        ->check(CLI::Range(1, 100000))->capture_default_str();
+    render->add_option("--fps", renderArgs.fps, "Frames per second of the sequence")->capture_default_str();
 
     CompareArgs compareArgs;
     CLI::App* compare = app.add_subcommand("compare", "Compare a scene's shadow techniques with exact ray-traced shadows");
@@ -345,6 +478,8 @@ int main(int argc, char** argv) {
     compare->add_option("--samples", compareArgs.softSamples, "Reference rays per pixel for lights with a size")
         ->check(CLI::Range(1, 65536))->capture_default_str();
     compare->add_option("--set", compareArgs.overrides, "Override a scene value by JSON path")->take_all();
+    compare->add_option("--time", compareArgs.timeSeconds, "Seconds since the start of the animation: where light paths put the lights")
+        ->capture_default_str();
 
     tool::BenchArgs benchArgs;
     std::string benchOutput = "bench";
@@ -352,7 +487,12 @@ int main(int argc, char** argv) {
     bench->add_option("scenes", benchArgs.scenes, "Scene files (JSON); the built-in default scene when omitted");
     bench->add_option("--set", benchArgs.overrides, "Override a scene value for every run")->take_all();
     bench->add_option("--vary", benchArgs.vary, "key=v1,v2,...: run once per value (several --vary: every combination)")->take_all();
-    bench->add_option("--frames", benchArgs.frames, "Timed frames per combination")->check(CLI::Range(1, 100000))->capture_default_str();
+    bench->add_option("--frames", benchArgs.frames, "Timed frames per combination; timed frame k at --time + k / --fps")
+        ->check(CLI::Range(1, 100000))->capture_default_str();
+    bench->add_option("--time", benchArgs.timeSeconds, "Seconds since the start of the animation: the first timed frame's time, and the "
+                                                        "time of the warm-up frames and the accuracy comparison")
+        ->capture_default_str();
+    bench->add_option("--fps", benchArgs.fps, "Frames per second of the timed sequence")->capture_default_str();
     bench->add_option("--warmup", benchArgs.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
     bench->add_option("--width", benchArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     bench->add_option("--height", benchArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
@@ -387,6 +527,8 @@ int main(int argc, char** argv) {
         if (*render) return runRender(renderArgs);
         if (*compare) return runCompare(compareArgs);
         if (*bench) {
+            checkTime(benchArgs.timeSeconds, "--time");
+            checkFps(benchArgs.fps);
             benchArgs.output = benchOutput;
             return runBenchCommand(benchArgs);
         }

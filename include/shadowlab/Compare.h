@@ -21,6 +21,11 @@ struct CompareOptions {
     /// Visibility at or above this counts as lit when pixels are classified
     /// (both sides). Default 0.5.
     float litThreshold = 0.5f;
+    /// Seconds since the start of an animation, handed to the techniques as
+    /// RenderOptions::timeSeconds. It does not move the lights: pass a scene
+    /// evaluated at this time (sceneAtTime), so both sides see the same
+    /// light positions. Default 0.
+    double timeSeconds = 0.0;
 };
 
 struct LightComparison {

@@ -35,8 +35,10 @@ struct RenderOptions {
     /// readSurfaces() and the ray-traced reference. Default off (it costs
     /// two float targets per frame).
     bool surfaces = false;
-    /// Seconds since the start of an animation, handed to techniques and
-    /// animated lights. Default 0.
+    /// Seconds since the start of an animation, handed to techniques
+    /// (FrameInfo::timeSeconds). render() draws each Light::position as it
+    /// is: move animated lights first with sceneAtTime() / lightAtTime()
+    /// (Scene.h) at the same time. Default 0.
     double timeSeconds = 0.0;
     /// Techniques also time the floor of their passes (e.g. a bare
     /// depth-only draw of the same casters into a target of the same size),

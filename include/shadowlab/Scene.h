@@ -85,13 +85,43 @@ struct ShadowSettings {
 
 enum class LightType { Directional, Spot, Point };
 
+/// How a spot or point light moves over time (the scene file's
+/// `lights[i].path`). Time is in seconds since the start of the animation
+/// (RenderOptions::timeSeconds, `render --time`). Only the position moves:
+/// a spot light keeps its direction. Evaluate it with lightAtTime() or
+/// sceneAtTime(); the Renderer itself draws Light::position as it is.
+struct LightPath {
+    enum class Type {
+        /// position(t) = Light::position + amplitude * sin(angularFrequency * t + phase),
+        /// per component: a closed-form oscillation around the light's position.
+        Sine,
+        /// Piecewise-linear between world-space keys: `positions[i]` at `times[i]`;
+        /// before the first time the first position, after the last the last
+        /// (or, with `loop`, wrapped into [times.front(), times.back())).
+        Keyframes,
+    };
+    Type type = Type::Sine;
+    // Sine.
+    glm::vec3 amplitude{0.0f};     ///< sine: scene units per axis, default 0
+    double angularFrequency = 1.0; ///< sine: radians per second, finite; default 1
+    double phase = 0.0;            ///< sine: radians, finite; default 0
+    // Keyframes.
+    std::vector<double> times;     ///< keyframes: seconds, finite, strictly increasing, at least one
+    std::vector<glm::vec3> positions; ///< keyframes: world space, one per time (replaces Light::position)
+    bool loop = false;             ///< keyframes: repeat with period times.back() - times.front(); default false
+
+    /// The position at `seconds` (finite) for a light whose Light::position
+    /// is `base` (used by Sine; Keyframes are world space).
+    glm::vec3 positionAt(const glm::vec3& base, double seconds) const;
+};
+
 /// A light. Fields that do not apply to a type are ignored for it.
 struct Light {
     std::string name;
     LightType type = LightType::Directional;
     glm::vec3 color{1.0f};             ///< linear RGB, default white
     float intensity = 1.0f;            ///< multiplies color, >= 0, default 1
-    glm::vec3 position{0.0f};          ///< world space; spot and point
+    glm::vec3 position{0.0f};          ///< world space; spot and point; with a sine `path`, its centre; a keyframe path replaces it when evaluated (as a glTF animation replaces a node's translation)
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; ///< world space, unit length, the way light travels; directional and spot
     float range = 0.0f;                ///< spot/point: distance beyond which the light has no effect; 0 = unlimited. No other falloff.
     float innerConeDeg = 20.0f;        ///< spot: half-angle of full intensity, degrees, default 20
@@ -102,8 +132,17 @@ struct Light {
     /// the image fills the square around the outer cone, its top towards the
     /// light camera's up (+Y, or +X for a vertical spot). -1: none (default).
     int projectorTexture = -1;
+    /// Spot and point: how the position moves over time; none (default) = static.
+    /// Evaluated by lightAtTime() / sceneAtTime().
+    std::optional<LightPath> path;
     ShadowSettings shadow;
 };
+
+/// `light` at `seconds` (finite; seconds since the start of the animation):
+/// its position evaluated along its path, and the path removed, so the result
+/// is a static light (evaluating it again changes nothing). A light without
+/// a path is returned unchanged. A spot light keeps its direction.
+Light lightAtTime(const Light& light, double seconds);
 
 /// Perspective camera.
 struct Camera {
@@ -165,6 +204,11 @@ struct Scene {
     /// World-space axis-aligned bounds of all drawn geometry ({+inf},{-inf} if none).
     std::pair<glm::vec3, glm::vec3> worldBounds() const;
 };
+
+/// `scene` at `seconds` (finite): every light replaced by lightAtTime(light,
+/// seconds). Copies the scene (meshes included); to step a scene through
+/// many frames, update a copy's lights with lightAtTime() instead.
+Scene sceneAtTime(const Scene& scene, double seconds);
 
 /// The up vector of a light's own camera looking along `axis` (unit): +Y,
 /// or +X when the axis is within about 8 degrees of vertical. Shadow maps,

@@ -79,6 +79,7 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
     renderOptions.height = options.height;
     renderOptions.clock = TimingClock::Auto;
     renderOptions.surfaces = true;  // the reference traces from the base pass's surface points
+    renderOptions.timeSeconds = options.timeSeconds;
     Comparison out;
     out.techniqueFrame = renderer.render(scene, renderOptions);
     out.technique = renderer.readColor();
@@ -123,6 +124,7 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
     RenderOptions referenceOptions;
     referenceOptions.width = options.width;
     referenceOptions.height = options.height;
+    referenceOptions.timeSeconds = options.timeSeconds;
     renderer.renderWithVisibility(scene, referenceOptions, truth);
     out.reference = renderer.readColor();
 

@@ -91,11 +91,13 @@ public:
     }
     bool has(const std::string& key) const { return value_.contains(key); }
 
-    float number() const {
+    float number() const { return static_cast<float>(real()); }
+    /// The same checks as number() (finite, within a float's range), kept in double.
+    double real() const {
         if (!value_.is_number()) fail(std::string("expected a number, got ") + typeName(value_));
         const double d = value_.get<double>();
         if (!std::isfinite(d) || std::fabs(d) > 3.0e38) fail("expected a finite number");
-        return static_cast<float>(d);
+        return d;
     }
     int integer() const {
         if (!value_.is_number_integer()) fail(std::string("expected an integer, got ") + typeName(value_));
@@ -165,7 +167,7 @@ public:
 
     const ParseContext& context() const { return ctx_; }
 
-    static std::string fmt(float v) {
+    static std::string fmt(double v) {
         std::ostringstream s;
         s << v;
         return s.str();
@@ -265,9 +267,59 @@ void readShadow(const Reader& r, ShadowSettings& shadow, const Light& light) {
     if (!reason.empty()) (r.has("technique") ? r.child("technique") : r).fail(reason);
 }
 
+// `lights[i].path`: how a spot or point light moves (LightPath in Scene.h).
+LightPath readPath(const Reader& r, const glm::vec3& base) {
+    r.requireObject();
+    if (!r.has("type")) r.fail("missing key 'type' (sine or keyframes)");
+    const std::string type = r.child("type").string();
+    LightPath path;
+    // Every position the path reaches must be a finite float, as a static light's is.
+    const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    if (type == "sine") {
+        r.checkKeys({"type", "amplitude", "angularFrequency", "phase"});
+        path.type = LightPath::Type::Sine;
+        path.amplitude = r.vec3("amplitude", path.amplitude);
+        if (!finite(base + path.amplitude) || !finite(base - path.amplitude))
+            r.child("amplitude").fail("position + amplitude overflows a float");
+        if (r.has("angularFrequency")) {
+            const Reader w = r.child("angularFrequency");
+            path.angularFrequency = w.real();
+            if (path.angularFrequency < 0.0)
+                w.fail("expected radians per second >= 0, got " + Reader::fmt(path.angularFrequency) +
+                       " (reverse the motion with a negative amplitude or a phase)");
+        }
+        if (r.has("phase")) path.phase = r.child("phase").real();
+        return path;
+    }
+    if (type == "keyframes") {
+        r.checkKeys({"type", "times", "positions", "loop"});
+        path.type = LightPath::Type::Keyframes;
+        if (!r.has("times")) r.fail("missing key 'times' (seconds, strictly increasing)");
+        if (!r.has("positions")) r.fail("missing key 'positions' (one [x, y, z] per time)");
+        const Reader times = r.child("times"), positions = r.child("positions");
+        times.requireArray();
+        positions.requireArray();
+        if (times.value().empty()) times.fail("expected at least one time");
+        for (std::size_t i = 0; i < times.value().size(); ++i) {
+            const Reader t = times.element(i);
+            const double seconds = t.real();
+            if (i > 0 && !(seconds > path.times.back()))
+                t.fail("expected times strictly increasing, got " + Reader::fmt(seconds) + " after " + Reader::fmt(path.times.back()));
+            path.times.push_back(seconds);
+        }
+        if (positions.value().size() != times.value().size())
+            positions.fail("expected one position per time (" + std::to_string(times.value().size()) + "), got " +
+                           std::to_string(positions.value().size()));
+        for (std::size_t i = 0; i < positions.value().size(); ++i) path.positions.push_back(positions.element(i).vec3());
+        path.loop = r.boolean("loop", path.loop);
+        return path;
+    }
+    r.child("type").fail("unknown path type '" + type + "' (expected sine or keyframes)");
+}
+
 Light readLight(const Reader& r) {
     r.checkKeys({"name", "type", "color", "intensity", "position", "direction", "range", "innerCone", "outerCone",
-                 "size", "projector", "shadow"});
+                 "size", "projector", "path", "shadow"});
     Light light;
     if (!r.has("type")) r.fail("missing key 'type' (directional, spot or point)");
     const std::string type = r.child("type").string();
@@ -296,6 +348,10 @@ Light readLight(const Reader& r) {
     if (light.type == LightType::Directional && light.size >= 90.0f)
         r.child("size").fail("expected an angular diameter in degrees < 90, got " + Reader::fmt(light.size));
     if (r.has("projector") && light.type != LightType::Spot) r.child("projector").fail("only spot lights project an image");
+    if (r.has("path")) {
+        if (!positional) r.child("path").fail("a directional light has no position to move (only spot and point lights have a path)");
+        light.path = readPath(r.child("path"), light.position);
+    }
     if (r.has("shadow")) readShadow(r.child("shadow"), light.shadow, light);
     return light;
 }

@@ -62,6 +62,24 @@ if "$tool" bench --clock sundial -o badclk >out.txt 2>err.txt; then fail "bench 
 [[ ! -e badclk ]] || fail "bad --clock left badclk behind"
 passed=$((passed + 1))
 
+# --time and --fps: results.json records them; the accuracy numbers are
+# those of `compare --time` (the room's light moved 3 units towards the
+# camera at t = pi), not those at t = 0.
+"$tool" bench "$src/scenes/room-point.json" --time 3.14159265 --fps 2 --frames 3 --warmup 0 --width 64 --height 36 -o anim >/dev/null 2>&1 \
+  || fail "bench --time --fps failed"
+"$tool" compare "$src/scenes/room-point.json" --time 3.14159265 --width 64 --height 36 -o cmp-t >/dev/null || fail "compare --time failed"
+"$tool" compare "$src/scenes/room-point.json" --width 64 --height 36 -o cmp-0 >/dev/null || fail "compare at time 0 failed"
+python3 - anim/results.json cmp-t/metrics.json cmp-0/metrics.json <<'PY' || fail "bench --time: results.json"
+import json, sys
+bench, at_t, at_0 = (json.load(open(p)) for p in sys.argv[1:])
+assert bench["time"] == 3.14159265 and bench["fps"] == 2 and bench["frames"] == 3, (bench["time"], bench["fps"])
+assert at_t["time"] == 3.14159265 and at_0["time"] == 0, (at_t["time"], at_0["time"])
+light, lt, l0 = bench["results"][0]["lights"][0], at_t["lights"][0], at_0["lights"][0]
+assert light["receiverPixels"] == lt["receiverPixels"], (light["receiverPixels"], lt["receiverPixels"])
+assert lt["receiverPixels"] != l0["receiverPixels"] or lt["falseLit"] != l0["falseLit"], "the light did not move"
+PY
+passed=$((passed + 1))
+
 # The report, rendered by a real browser from disk.
 if ! command -v chromium >/dev/null; then fail "chromium is not installed (scripts/install-deps.sh installs it)"; fi
 flags=(--headless --no-sandbox --disable-gpu --disable-background-networking --disable-component-update

@@ -77,6 +77,22 @@ expect_error output-not-png "-o out.jpg: expected a .png file name" render -o ou
 expect_error output-missing-dir "directory" render -o no/such/dir/out.png
 expect_error unknown-subcommand "shadowlab: error:" frobnicate
 expect_error unknown-flag "shadowlab: error:" render --frobnicate
+# Animated lights and frame sequences.
+expect_error frames-without-field "-o out.png: --frames 3 needs a frame number field in the name, e.g. frame_%03d.png" render -o out.png --frames 3
+expect_error frames-zero "--frames" render -o out.png --frames 0
+expect_error frames-bad-field "-o out%s.png: '%' starts a frame number field such as %d or %03d" render -o 'out%s.png' --frames 2
+expect_error frames-two-fields "-o out%d%d.png: more than one frame number field" render -o 'out%d%d.png' --frames 2
+expect_error time-nan "--time nan: expected a finite number of seconds" render -o out.png --time nan
+expect_error time-inf "--time inf: expected a finite number of seconds" render -o out.png --time inf
+expect_error time-text "--time" render -o out.png --time soon
+expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
+expect_error fps-negative "--fps -30: expected a finite number of frames per second > 0" render -o out.png --fps -30
+expect_error frame-time-overflows "--time 1.7e+308 --fps 1e-308: frame 1's time is not a finite number of seconds" render -o 'out%d.png' --frames 2 --time 1.7e308 --fps 1e-308
+expect_error compare-time-nan "--time nan: expected a finite number of seconds" compare -o out.png --time nan
+expect_error bench-fps-inf "--fps inf: expected a finite number of frames per second > 0" bench -o out.png --fps inf
+expect_error path-on-directional "--set lights[0].path.type=sine: lights[0].path: a directional light has no position to move" render -o out.png --set lights[0].path.type=sine
+expect_error path-unknown-type "--set lights[0].path.type=circle: lights[0].path.type: unknown path type 'circle' (expected sine or keyframes)" render "$src/scenes/room-point.json" -o out.png --set lights[0].path.type=circle
+expect_error path-times-decreasing "lights[0].path.times[1]: expected times strictly increasing, got 1 after 2" render "$src/scenes/room-point.json" -o out.png --set 'lights[0].path={"type":"keyframes","times":[2,1],"positions":[[0,1,0],[0,2,0]]}'
 
 # No OpenGL 4.5 core: Mesa can be told to offer only 4.1 (other drivers ignore this).
 if "$tool" info | grep -q "Mesa"; then

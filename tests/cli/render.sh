@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `shadowlab render` writes the image it names, for the default scene and
-# a scene file with --set, and `shadowlab info` reports OpenGL 4.5.
+# a scene file with --set, and a sequence of frames of an animated light;
+# `shadowlab info` reports OpenGL 4.5.
 set -eu
 tool=$1
 src=$2
@@ -36,4 +37,35 @@ out=$("$tool" render "$src/scenes/spot-objects.json" -o s.png --width 64 --heigh
 [[ -s s.png && -s s-light0-map.png && ! -e s-light0-texel-density.png ]] || { echo "--debug shadow-maps wrote: $out"; exit 1; }
 if "$tool" render -o q.png --debug everything 2>err.txt; then echo "--debug everything accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 && ! -e q.png ]] && grep -q -- "--debug" err.txt || { echo "--debug everything: $(cat err.txt)"; exit 1; }
-echo "7 passed, 0 failed"
+# --frames: the room's point light follows lecture 001's path (z = 3 sin(0.5 t));
+# at 1 frame per second, frames 0, 1 and 2 see it at z = 0, 1.44 and 2.52.
+mkdir seq
+out=$("$tool" render "$src/scenes/room-point.json" --frames 3 --fps 1 -o 'seq/frame_%03d.png' --width 64 --height 48)
+[[ "$out" == $'seq/frame_000.png\nseq/frame_001.png\nseq/frame_002.png' ]] || { echo "--frames 3 printed '$out'"; exit 1; }
+[[ "$(ls seq)" == $'frame_000.png\nframe_001.png\nframe_002.png' ]] || { echo "--frames 3 wrote: $(ls -a seq)"; exit 1; }
+for pair in "000 001" "001 002" "000 002"; do
+  set -- $pair
+  cmp -s "seq/frame_$1.png" "seq/frame_$2.png" && { echo "frames $1 and $2 are the same: the light did not move"; exit 1; }
+done
+# Frame k is --time + k / --fps: a single frame at --time 2 is frame 2 of the sequence.
+"$tool" render "$src/scenes/room-point.json" --time 2 -o at2.png --width 64 --height 48 >/dev/null
+cmp -s at2.png seq/frame_002.png || { echo "--time 2 differs from frame 2 at 1 fps"; exit 1; }
+# Without a frame number field: a one-line error before anything is rendered, no file.
+mkdir noseq
+if "$tool" render "$src/scenes/room-point.json" --frames 3 -o noseq/frame.png --width 64 --height 48 2>err.txt; then echo "--frames 3 without %d accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 && -z "$(ls -A noseq)" ]] && grep -q -- "-o noseq/frame.png: --frames 3 needs a frame number field" err.txt \
+  || { echo "--frames without %d: $(cat err.txt); wrote: $(ls -A noseq)"; exit 1; }
+# One bad frame name (frame 1's is a directory) fails before frame 0 is written.
+mkdir -p bad/f1.png
+if "$tool" render "$src/scenes/room-point.json" --frames 3 -o 'bad/f%d.png' --width 64 --height 48 2>err.txt; then echo "a directory as frame 1 accepted"; exit 1; fi
+[[ "$(ls -A bad)" == "f1.png" ]] && grep -q -- "-o bad/f1.png: is a directory" err.txt || { echo "bad frame name: $(cat err.txt); wrote: $(ls -A bad)"; exit 1; }
+# Without -o, a sequence is named <scene>-%03d.png; %% is a percent sign.
+out=$("$tool" render "$src/scenes/room-point.json" --frames 2 --width 32 --height 24)
+[[ "$out" == $'room-point-000.png\nroom-point-001.png' && -s room-point-001.png ]] || { echo "default sequence names: '$out'"; exit 1; }
+out=$("$tool" render --frames 2 -o 'p%%-%d.png' --width 32 --height 24)
+[[ "$out" == $'p%-0.png\np%-1.png' ]] || { echo "%% in a name: '$out'"; exit 1; }
+# A scene without a path renders the same at every time.
+"$tool" render "$src/scenes/torus-resting.json" -o t5.png --width 64 --height 48 --set lights[0].intensity=0.5 --time 5 >/dev/null
+cmp -s t5.png t.png || { echo "--time moved a static scene"; exit 1; }
+[[ -z "$(find . -name '*.pending*' -o -name '*.partial*')" ]] || { echo "temporaries left: $(find . -name '*.pending*' -o -name '*.partial*')"; exit 1; }
+echo "8 passed, 0 failed"
