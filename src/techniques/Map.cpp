@@ -234,6 +234,37 @@ struct Group {
     int layersPerLight() const { return cube ? 6 : 1; }
 };
 
+// A rectangle of a map's texels, [x0, x1) x [y0, y1); empty when x0 >= x1.
+struct TexelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    static TexelRect whole() { return {0, 0, 1 << 30, 1 << 30}; }
+    bool empty() const { return x0 >= x1 || y0 >= y1; }
+    TexelRect united(const TexelRect& o) const {
+        if (empty()) return o;
+        if (o.empty()) return *this;
+        return {std::min(x0, o.x0), std::min(y0, o.y0), std::max(x1, o.x1), std::max(y1, o.y1)};
+    }
+    TexelRect clamped(int size) const { return {std::max(x0, 0), std::max(y0, 0), std::min(x1, size), std::min(y1, size)}; }
+};
+
+// The texels of a `size`-texel face that `box` may cover through
+// `faceClip` (a texel of margin; the whole face when a corner is behind the
+// face's camera).
+TexelRect projectedRect(const glm::mat4& faceClip, const Bounds& box, int size) {
+    float lo[2] = {1.0f, 1.0f}, hi[2] = {-1.0f, -1.0f};
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z);
+        const glm::vec4 clip = faceClip * glm::vec4(corner, 1.0f);
+        if (!(clip.w > 1e-6f)) return TexelRect::whole().clamped(size);
+        for (int a = 0; a < 2; ++a) {
+            lo[a] = std::min(lo[a], clip[a] / clip.w);
+            hi[a] = std::max(hi[a], clip[a] / clip.w);
+        }
+    }
+    auto texel = [&](float ndc) { return static_cast<int>(std::floor((ndc * 0.5f + 0.5f) * static_cast<float>(size))); };
+    return TexelRect{texel(lo[0]) - 1, texel(lo[1]) - 1, texel(hi[0]) + 2, texel(hi[1]) + 2}.clamped(size);
+}
+
 struct PerLight {
     MapOptions options;
     bool spot = false;  ///< the shadow pass discards outside the cone
@@ -248,9 +279,11 @@ struct PerLight {
     CubeCamera cubeCamera;
     std::array<gl::Framebuffer, 6> faceFbos{gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate},
                                             gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}};
-    /// Faces that may hold casters' depths from an earlier frame (cleared
-    /// again only then or when drawn into); all of them after (re)attaching.
-    std::array<bool, 6> faceDirty{true, true, true, true, true, true};
+    /// Per face, the texels that may hold casters' depths from an earlier
+    /// frame (cleared again only there, and where casters are drawn now);
+    /// whole faces after (re)attaching.
+    std::array<TexelRect, 6> faceDirty{TexelRect::whole(), TexelRect::whole(), TexelRect::whole(),
+                                       TexelRect::whole(), TexelRect::whole(), TexelRect::whole()};
 };
 
 gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
@@ -592,7 +625,7 @@ private:
                 face = gl::Framebuffer();
                 attachOne(face, 6 * p.layer + f, "cube shadow map framebuffer (one face)");
             }
-            p.faceDirty.fill(true);  // a new array or layer: its contents are undefined
+            p.faceDirty.fill(TexelRect::whole());  // a new array or layer: its contents are undefined
         } else {
             attachOne(p.fbo, p.layer, "shadow map framebuffer");
         }
@@ -685,6 +718,7 @@ private:
         const Group& g = groups_[p.group];
         const bool packed = g.format == MapFormat::Rgba8;
         std::array<bool, 6> used{};
+        std::array<TexelRect, 6> covered{};
         std::array<double, 6> faceTriangles{};
         std::size_t drawn = 0;
         for (std::size_t i = 0; i < frame.items.size(); ++i) {
@@ -696,6 +730,7 @@ private:
                 if (mask & (1u << f)) {
                     used[f] = true;
                     faceTriangles[f] += triangles;
+                    covered[f] = covered[f].united(projectedRect(p.cubeCamera.faceClipFromWorld[f], frame.itemBounds[i], g.size));
                 }
         }
         upload(view);
@@ -706,11 +741,12 @@ private:
             const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
             for (int f = 0; f < 6; ++f) {
                 const auto face = static_cast<std::size_t>(f);
-                // A face that was clear and stays empty needs nothing.
-                if (!used[face] && !p.faceDirty[face]) continue;
-                glClearTexSubImage(g.depth.id(), 0, 0, 0, 6 * p.layer + f, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT, one);
-                if (packed) glClearTexSubImage(g.packed.id(), 0, 0, 0, 6 * p.layer + f, g.size, g.size, 1, GL_RGBA, GL_FLOAT, one);
-                p.faceDirty[face] = used[face];
+                // Only texels that held casters or will: the rest is still clear.
+                const TexelRect r = p.faceDirty[face].clamped(g.size).united(covered[face]);
+                p.faceDirty[face] = covered[face];
+                if (r.empty()) continue;
+                glClearTexSubImage(g.depth.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, one);
+                if (packed) glClearTexSubImage(g.packed.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_RGBA, GL_FLOAT, one);
             }
         }
         if (!packed) state.noColor();

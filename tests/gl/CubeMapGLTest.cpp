@@ -290,3 +290,38 @@ TEST_F(CubeMapGLTest, TwoPointLightsASpotAndASunInOneFrame) {
     for (std::size_t i = 0; i < visibility[0].size(); ++i) same += (visibility[0][i] >= 0.5f) == (visibility[1][i] >= 0.5f);
     EXPECT_GE(static_cast<double>(same), 0.999 * static_cast<double>(visibility[0].size()));
 }
+
+// A moving light (room-point's path): each face is cleared only where
+// casters were or are, so a map carried from frame to frame must equal one
+// drawn afresh, texel for texel.
+TEST_F(CubeMapGLTest, AMovingLightLeavesNoStaleDepths) {
+    const Scene animated = loadSceneFile(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "room-point.json",
+                                         {"lights[0].shadow.technique=map", "lights[0].shadow.map.size=256"});
+    ASSERT_TRUE(animated.lights[0].path.has_value());
+    RenderOptions options;
+    options.width = 320;
+    options.height = 180;
+    auto cube = [](Renderer& renderer, const Scene& scene) {
+        for (DebugImage& image : renderer.debugImages(scene))
+            if (image.name == "light0-cube") return std::move(image.values);
+        return std::vector<float>{};
+    };
+    Renderer carried(test::glContext());
+    carried.upload(animated);
+    std::vector<float> last;
+    for (double t : {0.0, 1.0, 2.5, 6.0}) {
+        const Scene at = sceneAtTime(animated, t);
+        carried.render(at, options);
+        last = cube(carried, at);
+    }
+    const Scene at = sceneAtTime(animated, 6.0);
+    Renderer fresh(test::glContext());
+    fresh.upload(at);
+    fresh.render(at, options);
+    const std::vector<float> expected = cube(fresh, at);
+    ASSERT_EQ(last.size(), expected.size());
+    ASSERT_FALSE(last.empty());
+    std::size_t different = 0;
+    for (std::size_t i = 0; i < last.size(); ++i) different += last[i] != expected[i];
+    EXPECT_EQ(different, 0u);
+}
