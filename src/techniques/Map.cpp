@@ -109,14 +109,25 @@ MapOptions effective(const Light& light) {
     MapOptions o = light.shadow.get<MapOptions>();
     const bool cube = light.type == LightType::Point && o.preset != MapPreset::Lecture000;
     if (cube && o.preset == MapPreset::Lecture) {
-        // Lecture 001's cube: near 1, far 25 (cubeNearFar), the 20 offset
-        // directions with a fixed disk radius of 0.05 and a constant bias of
-        // 0.15 (upload() turns world units into stored depth), no other bias.
+        // Lecture 001's cube: near 1, far 25 (cubeNearFar), no bias but a
+        // constant one in world units (upload() turns it into stored depth),
+        // and its three stages by the light's filter: "none", one sample with
+        // bias 0.05; "grid", the 64-sample 3-D grid (4 per axis, offsets to
+        // 0.1) with bias 0.05; anything else, the 20 offset directions with
+        // a fixed disk radius of 0.05 and bias 0.15.
         o.format = MapFormat::Depth32F;
-        o.filter = MapFilter::Pcf20;
-        o.diskRadius = 0.05f;
         o.diskGrowth = 0.0f;
-        o.constantBias = 0.15f;
+        if (o.filter == MapFilter::None) {
+            o.constantBias = 0.05f;
+        } else if (o.filter == MapFilter::Grid) {
+            o.kernel = 4;
+            o.diskRadius = 0.1f;
+            o.constantBias = 0.05f;
+        } else {
+            o.filter = MapFilter::Pcf20;
+            o.diskRadius = 0.05f;
+            o.constantBias = 0.15f;
+        }
         o.slopeBias = 0.0f;
         o.offsetUnits = 0.0f;
         o.normalBias = 0.0f;
