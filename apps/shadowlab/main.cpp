@@ -255,7 +255,11 @@ int runRender(const RenderArgs& args) {
         pending.write(output, image);
         // --debug KIND: the images of that kind beside the output, <stem>-<image>.png.
         for (const DebugImage& d : debug) {
-            const bool isMap = d.name.size() >= 4 && d.name.compare(d.name.size() - 4, 4, "-map") == 0;
+            auto endsWith = [&](const char* tail) {
+                const std::size_t n = std::char_traits<char>::length(tail);
+                return d.name.size() >= n && d.name.compare(d.name.size() - n, n, tail) == 0;
+            };
+            const bool isMap = endsWith("-map") || endsWith("-cube");  // a 2D map, or a cube's six faces as a cross
             const bool isDensity = d.name.find("texel-density") != std::string::npos;
             for (const std::string& kind : args.debug)
                 if (kind == "all" || (kind == "shadow-maps" && isMap) || (kind == "texel-density" && isDensity)) {
@@ -459,7 +463,7 @@ int main(int argc, char** argv) {
         ->check(CLI::NonNegativeNumber);
     render->add_option("--debug", renderArgs.debug,
                        "Also write debug images beside the output as <name>-<image>.png: shadow-maps (each light's map, "
-                       "perspective depth linearised), texel-density (map texels per pixel), all")
+                       "perspective depth linearised; a point light's cube as a cross), texel-density (map texels per pixel), all")
         ->check(CLI::IsMember({"shadow-maps", "texel-density", "all"}))
         ->delimiter(',');
     render->add_option("--debug-images", renderArgs.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");

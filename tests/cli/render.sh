@@ -35,6 +35,10 @@ grep -q -- "--view-from-light 7: the scene has 1 light" err.txt && [[ ! -e p.png
 # --debug shadow-maps: the map beside the image; a kind it does not know is a one-line error.
 out=$("$tool" render "$src/scenes/spot-objects.json" -o s.png --width 64 --height 48 --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=64 --debug shadow-maps)
 [[ -s s.png && -s s-light0-map.png && ! -e s-light0-texel-density.png ]] || { echo "--debug shadow-maps wrote: $out"; exit 1; }
+# A point light's cube: its six faces as one cross, 4 x 3 faces of 64 texels.
+out=$("$tool" render "$src/scenes/room-point.json" -o c.png --width 64 --height 48 --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=64 --debug shadow-maps)
+[[ -s c-light0-cube.png ]] || { echo "--debug shadow-maps on a point light wrote: $out"; exit 1; }
+[[ "$(head -c 24 c-light0-cube.png | tail -c 8 | od -An -tu1 | tr -s ' ')" == " 0 0 1 0 0 0 0 192" ]] || { echo "the cube cross is not 256x192"; exit 1; }
 if "$tool" render -o q.png --debug everything 2>err.txt; then echo "--debug everything accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 && ! -e q.png ]] && grep -q -- "--debug" err.txt || { echo "--debug everything: $(cat err.txt)"; exit 1; }
 # --frames: the room's point light follows lecture 001's path (z = 3 sin(0.5 t));
