@@ -19,6 +19,7 @@ enum class OptionKind {
     Integer, ///< int member; JSON integer within [minimum, maximum]
     Boolean, ///< bool member; JSON true/false
     Choice,  ///< enum member (0, 1, 2 ...); JSON string, one of `choices`
+    Text,    ///< std::string member; JSON string (e.g. a comma-separated list of node names)
 };
 
 struct OptionField {
@@ -27,12 +28,15 @@ struct OptionField {
     std::string unit;                 ///< e.g. "texels", "degrees"; empty for none
     double minimum = 0.0;             ///< Number, Integer: smallest allowed value
     double maximum = 0.0;             ///< Number, Integer: largest allowed value
-    std::vector<std::string> choices; ///< Choice: the names, in enum order
+    std::vector<std::string> choices; ///< Choice: the names, in enum order; Text: one line saying what it may hold
     std::string doc;                  ///< one line
     /// The member's value as a number (Choice: its index; Boolean: 0 or 1).
     std::function<double(const std::any&)> get;
     /// Sets the member from a number that is valid for the field.
     std::function<void(std::any&, double)> set;
+    /// Text: the member's value, and setting it.
+    std::function<std::string(const std::any&)> getText;
+    std::function<void(std::any&, const std::string&)> setText;
 };
 
 /// The fields of one options struct. Build it with OptionTableFor<T>.
@@ -89,6 +93,14 @@ public:
         add(key, OptionKind::Choice, noUnit, 0, last, std::move(names), doc,
             [member](const T& t) { return static_cast<double>(static_cast<int>(t.*member)); },
             [member](T& t, double v) { t.*member = static_cast<E>(static_cast<int>(v)); });
+        return *this;
+    }
+    OptionTableFor& text(std::string T::*member, std::string key, std::string allowed, std::string doc) {
+        std::string noUnit;
+        add(key, OptionKind::Text, noUnit, 0, 0, {std::move(allowed)}, doc, [](const T&) { return 0.0; }, [](T&, double) {});
+        OptionField& f = table_.fields.back();
+        f.getText = [member](const std::any& a) { return std::any_cast<const T&>(a).*member; };
+        f.setText = [member](std::any& a, const std::string& v) { std::any_cast<T&>(a).*member = v; };
         return *this;
     }
     OptionTable build() { return std::move(table_); }

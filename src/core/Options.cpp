@@ -17,6 +17,7 @@ const char* kindName(OptionKind kind) {
     case OptionKind::Integer: return "integer";
     case OptionKind::Boolean: return "boolean";
     case OptionKind::Choice: return "string";
+    case OptionKind::Text: return "string";
     }
     return "?";
 }
@@ -29,6 +30,14 @@ const OptionField* OptionTable::find(std::string_view key) const {
 }
 
 std::string OptionTable::valueText(const OptionField& field, const std::any& options) const {
+    if (field.kind == OptionKind::Text) {
+        std::string out = "\"";
+        for (char c : field.getText(options)) {
+            if (c == '"' || c == '\\') out += '\\';
+            out += c;
+        }
+        return out + "\"";
+    }
     const double v = field.get(options);
     switch (field.kind) {
     case OptionKind::Boolean: return v != 0.0 ? "true" : "false";
@@ -38,6 +47,7 @@ std::string OptionTable::valueText(const OptionField& field, const std::any& opt
     }
     case OptionKind::Integer: return std::to_string(static_cast<long long>(std::llround(v)));
     case OptionKind::Number: return number(v);
+    case OptionKind::Text: break;
     }
     return "?";
 }
@@ -52,6 +62,7 @@ std::string OptionTable::rangeText(const OptionField& field) {
     }
     case OptionKind::Integer:
     case OptionKind::Number: return number(field.minimum) + ".." + number(field.maximum);
+    case OptionKind::Text: return field.choices.empty() ? std::string("text") : field.choices[0];
     }
     return "?";
 }

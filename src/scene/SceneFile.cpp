@@ -241,6 +241,7 @@ std::any readOptions(const Reader& r, const OptionTable& table) {
             f.set(options, static_cast<double>(it - f.choices.begin()));
             break;
         }
+        case OptionKind::Text: f.setText(options, v.string()); break;
         }
     }
     return options;

@@ -4,6 +4,7 @@
 #include "gl/ShaderSource.h"
 #include "techniques/Map.h"
 #include "techniques/None.h"
+#include "techniques/Planar.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/Techniques.h>
@@ -19,6 +20,7 @@ std::vector<TechniqueEntry> builtIn() {
     return {
         noneTechnique(),
         mapTechnique(),
+        planarTechnique(),
     };
 }
 
