@@ -7,10 +7,13 @@ layout(triangles) in;
 layout(triangle_strip, max_vertices = 48) out;  // 3 x SL_PLANAR_MAX_PLANES
 
 in vec3 vPlanarWorld[];
+// The plane of the caster itself, if it is one of this draw's receivers (-1: none): not projected onto itself.
+layout(location = 2) uniform int skipPlane;
 
 void main() {
     int planes = int(planar.params.x);
     for (int p = 0; p < planes; ++p) {
+        if (p == skipPlane) continue;
         for (int k = 0; k < 3; ++k) {
             vec4 world = vec4(vPlanarWorld[k], 1.0);
             vec4 projected = planar.shadowFromWorld[p] * world;

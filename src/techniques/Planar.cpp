@@ -146,9 +146,14 @@ public:
             glEnable(GL_CLIP_DISTANCE0);
             glEnable(GL_CLIP_DISTANCE1);
             host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
-                for (const Receiver& r : planes)
-                    if (r.item != i && above(r.plane, frame.itemBounds[i])) return true;
-                return false;
+                bool any = false;
+                GLint self = -1;  // a receiver plane is not projected onto itself
+                for (std::size_t p = 0; p < planes.size(); ++p) {
+                    if (planes[p].item == i) self = static_cast<GLint>(p);
+                    else any = any || above(planes[p].plane, frame.itemBounds[i]);
+                }
+                if (any && geometry) glProgramUniform1i(program.id(), 2, self);
+                return any;
             });
             glDisable(GL_CLIP_DISTANCE0);
             glDisable(GL_CLIP_DISTANCE1);

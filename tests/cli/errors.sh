@@ -70,6 +70,8 @@ expect_error map-size-range "--set lights[0].shadow.map.size=16385: lights[0].sh
 expect_error map-bad-filter "--set lights[0].shadow.map.filter=pcf: lights[0].shadow.map.filter: expected one of \"none\", \"hardware\", \"grid\", \"dither4\", \"poisson\", \"pcf20\", got \"pcf\"" render -o out.png --set lights[0].shadow.map.filter=pcf
 expect_error map-point-dither "lights[0].shadow.technique: map: filter \"dither4\" is for 2D maps" render "$src/scenes/room-point.json" -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.filter=dither4
 expect_error map-spot-pcf20 "lights[0].shadow.technique: map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps" render "$src/scenes/spot-objects.json" -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.filter=pcf20
+expect_error planar-unknown-receiver "lights[0].shadow.planar.receivers: no node named 'nowhere'" render "$src/scenes/two-boxes-sun.json" -o out.png --set lights[0].shadow.technique=planar --set lights[0].shadow.planar.receivers=nowhere
+expect_error planar-receiver-type "--set lights[0].shadow.planar.receivers=5: lights[0].shadow.planar.receivers: expected a string" render "$src/scenes/two-boxes-sun.json" -o out.png --set lights[0].shadow.planar.receivers=5
 expect_error width-zero "--width" render -o out.png --width 0
 expect_error width-text "--width" render -o out.png --width wide
 expect_error width-past-gpu-limit "--width 100000: exceeds this GPU's limit" render -o out.png --width 100000
