@@ -28,6 +28,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string_view>
 
@@ -35,6 +36,14 @@ namespace fs = std::filesystem;
 using namespace shadowlab;
 
 namespace {
+
+// What the techniques noticed about the scene (FrameStats::notes), each once per run.
+void printNotes(const std::vector<std::string>& notes) {
+    static std::set<std::string> printed;
+    for (const std::string& note : notes)
+        if (printed.insert(note).second) std::cerr << "shadowlab: note: " << note << "\n";
+}
+
 
 struct RenderArgs {
     std::string scene;
@@ -247,7 +256,7 @@ int runRender(const RenderArgs& args) {
         options.width = args.width;
         options.height = args.height;
         options.timeSeconds = times[static_cast<std::size_t>(k)];
-        renderer.render(scene, options);
+        printNotes(renderer.render(scene, options).notes);
         const ImageRGBA8 image = renderer.readColor();
         std::vector<DebugImage> debug;
         if (!args.debugImages.empty() || !args.debug.empty()) debug = renderer.debugImages(scene);
@@ -319,6 +328,7 @@ int runCompare(const CompareArgs& args) {
     options.softSamples = args.softSamples;
     options.timeSeconds = args.timeSeconds;
     const Comparison c = compareWithReference(renderer, scene, options);
+    printNotes(c.techniqueFrame.notes);
     requireNoGlErrors(context);
 
     fs::create_directories(dir);

@@ -58,6 +58,9 @@ struct FrameStats {
     /// Numbers the techniques report per pass, e.g. {"shadow[0].triangles", 12}.
     std::vector<std::pair<std::string, double>> counters;
     double cpuMs = 0.0;        ///< wall time of render() including glFinish, milliseconds
+    /// What techniques noticed about the scene this frame, one line each
+    /// (e.g. a shadow-volume caster that is not a closed mesh); no repeats.
+    std::vector<std::string> notes;
 };
 
 /// What the base pass saw at each pixel, rows top to bottom.

@@ -17,6 +17,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -86,6 +87,7 @@ struct Renderer::Impl final : TechniqueHost {
     const Light* currentLight = nullptr;
     std::string currentPass;  // for count()
     std::vector<std::pair<std::string, double>> counters;
+    std::vector<std::string> notes;
 
     // Techniques bind samplers to their units; none may leak into another's pass.
     static void resetTechniqueSamplers() {
@@ -161,6 +163,9 @@ struct Renderer::Impl final : TechniqueHost {
 
     gl::ScopedPass timeScope(const std::string& name) override { return gl::ScopedPass(*clock, name); }
     void count(const std::string& name, double value) override { counters.emplace_back(currentPass + "." + name, value); }
+    void note(const std::string& text) override {
+        if (std::find(notes.begin(), notes.end(), text) == notes.end()) notes.push_back(text);
+    }
     const GlInfo& glInfo() const override { return context.info(); }
 
     // --- The renderer's own work --------------------------------------------------
@@ -321,6 +326,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     clock.emplace(clockKind(options.clock, gl));
     litMode = LitMode::Shade;
     counters.clear();
+    notes.clear();
 
     // Techniques in use, each with its lights; they prepare their resources.
     std::map<std::string, std::vector<int>> lightsOf;
@@ -401,6 +407,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
 
     FrameStats stats;
     stats.counters = counters;
+    stats.notes = notes;
     for (auto& [name, ms] : clock->results()) stats.passes.push_back({name, ms});
     stats.clock = gl::toString(clock->kind());
     stats.baseLight = baseLight;

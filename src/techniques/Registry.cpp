@@ -5,6 +5,7 @@
 #include "techniques/Map.h"
 #include "techniques/None.h"
 #include "techniques/Planar.h"
+#include "techniques/Volume.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/Techniques.h>
@@ -21,6 +22,7 @@ std::vector<TechniqueEntry> builtIn() {
         noneTechnique(),
         mapTechnique(),
         planarTechnique(),
+        volumeTechnique(),
     };
 }
 

@@ -100,6 +100,9 @@ public:
     /// Records a number for the current pass, e.g. count("triangles", n) in
     /// shadow pass 2 gives FrameStats::counters "shadow[2].triangles".
     virtual void count(const std::string& name, double value) = 0;
+    /// Something the user should know about the scene (FrameStats::notes;
+    /// the CLI prints each once).
+    virtual void note(const std::string& text) = 0;
     virtual const GlInfo& glInfo() const = 0;
 };
 

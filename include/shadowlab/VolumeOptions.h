@@ -1,0 +1,27 @@
+#pragma once
+// Options of technique "volume": stencil shadow volumes (lecture 002 §8.5),
+// under lights[i].shadow.volume in a scene file.
+#include <shadowlab/Options.h>
+
+namespace shadowlab {
+
+enum class VolumeMethod {
+    DepthFail, ///< "depth-fail": count the volume faces behind the visible surface (right with the camera inside a volume; default)
+    DepthPass, ///< "depth-pass": count the faces in front of it (no caps needed; wrong when the camera is inside a volume)
+};
+
+enum class VolumeOpenMeshes {
+    Facing,    ///< "facing": the light-facing triangles cast, their open edges extruded like silhouettes (default)
+    Triangles, ///< "triangles": every triangle its own closed volume (exact for any triangle soup; far more fill)
+};
+
+struct VolumeOptions {
+    static constexpr const char* kTechnique = "volume";
+    VolumeMethod method = VolumeMethod::DepthFail;
+    VolumeOpenMeshes openMeshes = VolumeOpenMeshes::Facing;
+};
+
+/// The options table of "volume".
+const OptionTable& volumeOptionTable();
+
+} // namespace shadowlab

@@ -1,0 +1,10 @@
+// Technique "volume": world positions for the extruding geometry shader.
+#include "shadow_volume_shared.h"
+
+layout(location = 0) in vec3 inPosition;
+out vec3 vVolumeWorld;
+
+void main() {
+    vVolumeWorld = (draw.worldFromObject * vec4(inPosition, 1.0)).xyz;
+    gl_Position = vec4(vVolumeWorld, 1.0);
+}

@@ -1,0 +1,170 @@
+// Technique "volume": stencil shadow volumes (lecture 002 §8.5). In the
+// light's own pass: every caster drawn over GL_TRIANGLES_ADJACENCY through
+// a geometry shader that extrudes its silhouette to infinity along the
+// light's rays and caps it (shaders/shadow_volume.geom), counted in the
+// stencil with two-sided operations, then the light added where the count
+// is zero. The frame uses a projection with the far plane at infinity
+// (needsInfiniteFar), so the back caps at infinity are never clipped.
+//   depth-fail (default, "Carmack's reverse"): where a volume face is
+//     behind the visible surface, back faces increment and front faces
+//     decrement (wrapping): right even with the camera inside a volume;
+//   depth-pass: where it is in front, front faces increment and back faces
+//     decrement; needs no caps, but misses the faces behind the near plane
+//     when the camera stands inside a volume.
+// A mesh that is not closed (open or non-manifold edges, core/Adjacency.h)
+// is noted once per frame (FrameStats::notes) and cast by its light-facing
+// triangles with their open edges extruded (openMeshes "facing"), or by
+// every triangle's own volume ("triangles").
+#include "techniques/Volume.h"
+
+#include "core/Adjacency.h"
+#include "core/LightCamera.h"
+
+#include <shadowlab/Error.h>
+#include <shadowlab/VolumeOptions.h>
+
+#include "shadow_volume_shared.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <map>
+
+namespace shadowlab {
+
+const OptionTable& volumeOptionTable() {
+    static const OptionTable table =
+        OptionTableFor<VolumeOptions>("volume")
+            .choice(&VolumeOptions::method, "method", {"depth-fail", "depth-pass"},
+                    "count the volume faces behind the visible surface (right with the camera in a shadow), or in front of it (no caps; wrong then)")
+            .choice(&VolumeOptions::openMeshes, "openMeshes", {"facing", "triangles"},
+                    "a caster that is not a closed mesh: its light-facing triangles with their open edges extruded, or every triangle its own volume")
+            .build();
+    return table;
+}
+
+namespace {
+
+class ShadowVolume final : public Technique {
+public:
+    bool sharesBasePass(const Light&) const override { return false; }  // the light goes after the stencil
+    bool needsInfiniteFar(const Light&) const override { return true; }
+
+    void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
+        if (!ubo_) {
+            ubo_ = gl::Buffer();
+            glNamedBufferStorage(ubo_.id(), sizeof(shared::VolumeUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        }
+        // Open or non-manifold edges per mesh, found once per mesh contents.
+        open_.resize(frame.scene.meshes.size(), Known{});
+        for (std::size_t m = 0; m < frame.scene.meshes.size(); ++m) {
+            const Mesh& mesh = frame.scene.meshes[m];
+            Known& k = open_[m];
+            if (k.positions != mesh.positions.data() || k.vertexCount != mesh.positions.size() || k.indexCount != mesh.indices.size()) {
+                k = {mesh.positions.data(), mesh.positions.size(), mesh.indices.size(), openEdges(mesh.positions, mesh.indices)};
+            }
+        }
+        // Per light, the casters that can shadow something the camera sees
+        // (as for shadow maps: a floor with nothing visible under it is not one).
+        casts_.clear();
+        std::vector<std::uint8_t> any(frame.items.size(), 0);
+        for (int index : lights) {
+            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+            const glm::vec4 towards = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), 0.0f)
+                                                                            : glm::vec4(light.position, 1.0f);
+            const glm::vec3 along = light.type == LightType::Directional ? glm::normalize(light.direction) : glm::vec3(0.0f, -1.0f, 0.0f);
+            const glm::mat4 lightView = glm::lookAt(glm::vec3(0.0f), along, lightCameraUp(along));
+            const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
+            std::vector<std::uint8_t>& casts = casts_[index] = castersThatMatter(towards, lightView, in);
+            for (std::size_t i = 0; i < casts.size(); ++i) any[i] = any[i] | casts[i];
+        }
+        for (std::size_t i = 0; i < frame.items.size(); ++i) {
+            const DrawItem& item = frame.items[i];
+            if (!any[i]) continue;
+            const std::size_t edges = open_[static_cast<std::size_t>(item.mesh)].edges;
+            if (edges == 0) continue;
+            const Mesh& mesh = frame.scene.meshes[static_cast<std::size_t>(item.mesh)];
+            host.note("volume: mesh '" + (mesh.name.empty() ? "#" + std::to_string(item.mesh) : mesh.name) + "' is not closed: " +
+                      std::to_string(edges) + " open or non-manifold edge(s); its shadow volume is built from " +
+                      "its light-facing triangles with those edges extruded (lights[i].shadow.volume.openMeshes)");
+        }
+    }
+
+    void renderLightPass(TechniqueHost& host, const FrameInfo& frame, const LightView& view) override {
+        const VolumeOptions& o = view.light.shadow.get<VolumeOptions>();
+        const bool depthFail = o.method == VolumeMethod::DepthFail;
+        shared::VolumeUniforms u{};
+        u.light = view.light.type == LightType::Directional ? glm::vec4(-glm::normalize(view.light.direction), 0.0f)
+                                                              : glm::vec4(view.light.position, 1.0f);
+        glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
+        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
+        const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_volume.vert"},
+                                                    {GL_GEOMETRY_SHADER, "shadow_volume.geom"},
+                                                    {GL_FRAGMENT_SHADER, "shadow_volume.frag"}},
+                                                   std::string("#define CAPS ") + (depthFail ? "1" : "0") + "\n"});
+        clearStencil(host);
+        gl::RenderState s;
+        s.depthFunc = GL_LESS;  // a front cap lying in the lit surface fails: it is counted with the faces behind
+        s.depthWrite = false;
+        s.noColor();
+        s.stencilTest = true;
+        if (depthFail) {
+            s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_INCR_WRAP, GL_KEEP};
+            s.stencilFront = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_DECR_WRAP, GL_KEEP};
+        } else {
+            s.stencilFront = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_INCR_WRAP};
+            s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_DECR_WRAP};
+        }
+        // Volume faces are pushed a hair away from the camera, so that a
+        // front cap never passes where it coincides with the lit surface.
+        s.polygonOffset = true;
+        s.offsetFactor = 0.0f;
+        s.offsetUnits = 1.0f;
+        host.apply(s);
+        const bool triangles = o.openMeshes == VolumeOpenMeshes::Triangles;
+        std::size_t drawn = 0;
+        host.drawItems(
+            ItemFilter::Casters, program,
+            [&](std::size_t i) {
+                if (!casts_[view.index][i]) return false;
+                const auto mesh = static_cast<std::size_t>(frame.items[i].mesh);
+                glProgramUniform1i(program.id(), 0, triangles && open_[mesh].edges > 0 ? 1 : 0);
+                drawn += frame.scene.meshes[mesh].triangleCount();
+                return true;
+            },
+            Topology::TrianglesAdjacency);
+        host.count("triangles", static_cast<double>(drawn));
+        gl::RenderState lit = host.litState();
+        lit.stencil({GL_EQUAL, 0, 0xFF, 0x00});
+        host.drawLit(lit);
+        clearStencil(host);  // as the next light expects it
+    }
+
+private:
+    static void clearStencil(TechniqueHost& host) {
+        gl::RenderState s;
+        s.depthWrite = false;
+        s.noColor();
+        s.stencil({GL_ALWAYS, 0, 0xFF, 0xFF});
+        host.apply(s);
+        const GLint zero = 0;
+        glClearBufferiv(GL_STENCIL, 0, &zero);
+    }
+
+    struct Known {
+        const glm::vec3* positions = nullptr;
+        std::size_t vertexCount = 0, indexCount = 0;
+        std::size_t edges = 0;
+    };
+    std::vector<Known> open_;
+    std::map<int, std::vector<std::uint8_t>> casts_;
+    gl::Buffer ubo_{gl::NoCreate};
+};
+
+} // namespace
+
+TechniqueEntry volumeTechnique() {
+    return {"volume", "stencil shadow volumes: silhouettes extruded to infinity and capped, counted depth-fail (or depth-pass)", &volumeOptionTable(),
+            "shadow_volume.glsl", [] { return std::make_unique<ShadowVolume>(); }};
+}
+
+} // namespace shadowlab
