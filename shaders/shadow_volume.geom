@@ -21,7 +21,12 @@ in vec3 vVolumeWorld[];
 
 vec3 towardsLight(vec3 p) { return volume.light.w > 0.5 ? volume.light.xyz - p : volume.light.xyz; }
 bool facesLight(vec3 a, vec3 b, vec3 c) { return dot(cross(b - a, c - a), towardsLight(a)) > 0.0; }
+#if BOOK
+// Lecture 002 §8.5: the silhouette swept to a finite distance, beyond the scene's box.
+vec4 atInfinity(vec3 p) { return frame.clipFromWorld * vec4(p - normalize(towardsLight(p)) * volume.params.x, 1.0); }
+#else
 vec4 atInfinity(vec3 p) { return frame.clipFromWorld * vec4(-towardsLight(p), 0.0); }
+#endif
 vec4 here(vec3 p) { return frame.clipFromWorld * vec4(p, 1.0); }
 
 void sideQuad(vec3 a, vec3 b) {

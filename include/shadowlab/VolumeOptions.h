@@ -8,6 +8,7 @@ namespace shadowlab {
 enum class VolumeMethod {
     DepthFail, ///< "depth-fail": count the volume faces behind the visible surface (right with the camera inside a volume; default)
     DepthPass, ///< "depth-pass": count the faces in front of it (no caps needed; wrong when the camera is inside a volume)
+    Book,      ///< "book": 002 §8.5's construction: extruded to a finite distance beyond the scene's box, depth-fail in two passes with face culling
 };
 
 enum class VolumeOpenMeshes {

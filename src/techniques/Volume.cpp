@@ -34,8 +34,8 @@ namespace shadowlab {
 const OptionTable& volumeOptionTable() {
     static const OptionTable table =
         OptionTableFor<VolumeOptions>("volume")
-            .choice(&VolumeOptions::method, "method", {"depth-fail", "depth-pass"},
-                    "count the volume faces behind the visible surface (right with the camera in a shadow), or in front of it (no caps; wrong then)")
+            .choice(&VolumeOptions::method, "method", {"depth-fail", "depth-pass", "book"},
+                    "count the volume faces behind the visible surface (right with the camera in a shadow), or in front of it (no caps; wrong then), or lecture 002 §8.5's finite extrusion counted in two culled passes")
             .choice(&VolumeOptions::openMeshes, "openMeshes", {"facing", "triangles"},
                     "a caster that is not a closed mesh: its light-facing triangles with their open edges extruded, or every triangle its own volume")
             .build();
@@ -91,16 +91,23 @@ public:
 
     void renderLightPass(TechniqueHost& host, const FrameInfo& frame, const LightView& view) override {
         const VolumeOptions& o = view.light.shadow.get<VolumeOptions>();
-        const bool depthFail = o.method == VolumeMethod::DepthFail;
+        const bool depthFail = o.method != VolumeMethod::DepthPass;
+        const bool book = o.method == VolumeMethod::Book;
         shared::VolumeUniforms u{};
         u.light = view.light.type == LightType::Directional ? glm::vec4(-glm::normalize(view.light.direction), 0.0f)
                                                               : glm::vec4(view.light.position, 1.0f);
+        // The book's extrusion: past every point of the scene seen from the light.
+        Bounds scene;
+        for (const Bounds& b : frame.itemBounds) scene.add(b);
+        const float diagonal = scene.empty() ? 1.0f : glm::length(scene.size());
+        const float fromLight = scene.empty() || u.light.w == 0.0f ? 0.0f : glm::length(scene.centre() - glm::vec3(u.light));
+        u.params = glm::vec4(2.0f * (diagonal + fromLight) + 1.0f, 0.0f, 0.0f, 0.0f);
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
         const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_volume.vert"},
                                                     {GL_GEOMETRY_SHADER, "shadow_volume.geom"},
                                                     {GL_FRAGMENT_SHADER, "shadow_volume.frag"}},
-                                                   std::string("#define CAPS ") + (depthFail ? "1" : "0") + "\n"});
+                                                   std::string("#define CAPS ") + (depthFail ? "1" : "0") + "\n#define BOOK " + (book ? "1" : "0") + "\n"});
         clearStencil(host);
         gl::RenderState s;
         s.depthFunc = GL_LESS;  // a front cap lying in the lit surface fails: it is counted with the faces behind
@@ -119,19 +126,36 @@ public:
         s.polygonOffset = true;
         s.offsetFactor = 0.0f;
         s.offsetUnits = 1.0f;
-        host.apply(s);
         const bool triangles = o.openMeshes == VolumeOpenMeshes::Triangles;
         std::size_t drawn = 0;
-        host.drawItems(
-            ItemFilter::Casters, program,
-            [&](std::size_t i) {
-                if (!casts_[view.index][i]) return false;
-                const auto mesh = static_cast<std::size_t>(frame.items[i].mesh);
-                glProgramUniform1i(program.id(), 0, triangles && open_[mesh].edges > 0 ? 1 : 0);
-                drawn += frame.scene.meshes[mesh].triangleCount();
-                return true;
-            },
-            Topology::TrianglesAdjacency);
+        auto drawVolumes = [&] {
+            host.drawItems(
+                ItemFilter::Casters, program,
+                [&](std::size_t i) {
+                    if (!casts_[view.index][i]) return false;
+                    const auto mesh = static_cast<std::size_t>(frame.items[i].mesh);
+                    glProgramUniform1i(program.id(), 0, triangles && open_[mesh].edges > 0 ? 1 : 0);
+                    drawn += frame.scene.meshes[mesh].triangleCount();
+                    return true;
+                },
+                Topology::TrianglesAdjacency);
+        };
+        if (book) {
+            // 002 §8.5's sequence: back faces (front faces culled) increment
+            // where they fail the depth test, then front faces (back faces
+            // culled) decrement there.
+            s.stencilFront = s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_INCR_WRAP, GL_KEEP};
+            s.cull = gl::Cull::Front;
+            host.apply(s);
+            drawVolumes();
+            s.stencilFront = s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_DECR_WRAP, GL_KEEP};
+            s.cull = gl::Cull::Back;
+            host.apply(s);
+            drawVolumes();
+        } else {
+            host.apply(s);
+            drawVolumes();
+        }
         host.count("triangles", static_cast<double>(drawn));
         gl::RenderState lit = host.litState();
         lit.stencil({GL_EQUAL, 0, 0xFF, 0x00});
