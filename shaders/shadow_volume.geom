@@ -17,17 +17,20 @@ layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 18) out;
 
 layout(location = 0) uniform int perTriangle;
+// The light in the item's object space: the facing test runs there, in
+// double precision, on the mesh's own coordinates, so that the CPU path
+// (Volume.cpp) takes the very same decisions for faces seen edge-on.
+layout(location = 1) uniform dvec4 lightInObject;
 in vec3 vVolumeWorld[];
+in vec3 vVolumeObject[];
 
-vec3 towardsLight(vec3 p) { return volume.light.w > 0.5 ? volume.light.xyz - p : volume.light.xyz; }
-bool facesLight(vec3 a, vec3 b, vec3 c) { return dot(cross(b - a, c - a), towardsLight(a)) > 0.0; }
-#if BOOK
-// Lecture 002 §8.5: the silhouette swept to a finite distance, beyond the scene's box.
-vec4 atInfinity(vec3 p) { return frame.clipFromWorld * vec4(p - normalize(towardsLight(p)) * volume.params.x, 1.0); }
-#else
-vec4 atInfinity(vec3 p) { return frame.clipFromWorld * vec4(-towardsLight(p), 0.0); }
-#endif
-vec4 here(vec3 p) { return frame.clipFromWorld * vec4(p, 1.0); }
+bool facesLight(int i, int j, int k) {
+    precise dvec3 a = dvec3(vVolumeObject[i]), b = dvec3(vVolumeObject[j]), c = dvec3(vVolumeObject[k]);
+    precise dvec3 towards = lightInObject.w > 0.5 ? lightInObject.xyz - a : lightInObject.xyz;
+    precise dvec3 n = cross(b - a, c - a);
+    precise double d = n.x * towards.x + n.y * towards.y + n.z * towards.z;
+    return d > 0.0;
+}
 
 void sideQuad(vec3 a, vec3 b) {
     gl_Position = here(a); EmitVertex();
@@ -40,7 +43,7 @@ void sideQuad(vec3 a, vec3 b) {
 void main() {
     vec3 v[6];
     for (int i = 0; i < 6; ++i) v[i] = vVolumeWorld[i];
-    bool lit = facesLight(v[0], v[2], v[4]);
+    bool lit = facesLight(0, 2, 4);
     if (perTriangle == 0 && !lit) return;
     // Wind the triangle towards the light (a back-facing one, perTriangle only, is turned).
     vec3 a = v[0], b = lit ? v[2] : v[4], c = lit ? v[4] : v[2];
@@ -50,9 +53,9 @@ void main() {
         sideQuad(c, a);
     } else {
         for (int e = 0; e < 3; ++e) {
-            vec3 p = v[2 * e], q = v[(2 * e + 2) % 6], n = v[2 * e + 1];
-            bool open = all(equal(n, v[(2 * e + 4) % 6]));
-            if (open || !facesLight(p, n, q)) sideQuad(p, q);
+            vec3 p = v[2 * e], q = v[(2 * e + 2) % 6];
+            bool open = all(equal(vVolumeObject[2 * e + 1], vVolumeObject[(2 * e + 4) % 6]));
+            if (open || !facesLight(2 * e, 2 * e + 1, (2 * e + 2) % 6)) sideQuad(p, q);
         }
     }
 #if CAPS

@@ -16,10 +16,16 @@ enum class VolumeOpenMeshes {
     Triangles, ///< "triangles": every triangle its own closed volume (exact for any triangle soup; far more fill)
 };
 
+enum class VolumeExtrusion {
+    Gpu, ///< "gpu": a geometry shader over GL_TRIANGLES_ADJACENCY finds the silhouettes and extrudes them (default)
+    Cpu, ///< "cpu": the same, on the CPU every frame, into a vertex buffer
+};
+
 struct VolumeOptions {
     static constexpr const char* kTechnique = "volume";
     VolumeMethod method = VolumeMethod::DepthFail;
     VolumeOpenMeshes openMeshes = VolumeOpenMeshes::Facing;
+    VolumeExtrusion extrusion = VolumeExtrusion::Gpu;
 };
 
 /// The options table of "volume".

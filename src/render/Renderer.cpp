@@ -120,6 +120,11 @@ struct Renderer::Impl final : TechniqueHost {
         }
     }
 
+    void bindItem(std::size_t i) override {
+        bindOwnBlocks();
+        drawList.bind(i);
+    }
+
     void drawFullscreenTriangle() override {
         glBindVertexArray(emptyVao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);

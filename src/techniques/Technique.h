@@ -86,6 +86,10 @@ public:
                            Topology topology = Topology::Triangles) = 0;
     /// A triangle covering the viewport (fullscreen.vert, no vertex input).
     virtual void drawFullscreenTriangle() = 0;
+    /// Binds the renderer's blocks and item i's own (its transforms at
+    /// SL_BINDING_DRAW), for a technique that draws its own geometry per
+    /// item (a shadow volume built on the CPU).
+    virtual void bindItem(std::size_t i) = 0;
     /// Draws the light's shading (or, when compare asks, its visibility)
     /// over the base pass's depth, with `state` (start from litState()).
     virtual void drawLit(const gl::RenderState& state) = 0;

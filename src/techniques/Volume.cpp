@@ -27,6 +27,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <chrono>
 #include <map>
 
 namespace shadowlab {
@@ -36,6 +37,8 @@ const OptionTable& volumeOptionTable() {
         OptionTableFor<VolumeOptions>("volume")
             .choice(&VolumeOptions::method, "method", {"depth-fail", "depth-pass", "book"},
                     "count the volume faces behind the visible surface (right with the camera in a shadow), or in front of it (no caps; wrong then), or lecture 002 §8.5's finite extrusion counted in two culled passes")
+            .choice(&VolumeOptions::extrusion, "extrusion", {"gpu", "cpu"},
+                    "silhouettes found and extruded by a geometry shader, or on the CPU each frame (the same volumes; bench reports the CPU's triangles per second)")
             .choice(&VolumeOptions::openMeshes, "openMeshes", {"facing", "triangles"},
                     "a caster that is not a closed mesh: its light-facing triangles with their open edges extruded, or every triangle its own volume")
             .build();
@@ -128,13 +131,30 @@ public:
         s.offsetUnits = 1.0f;
         const bool triangles = o.openMeshes == VolumeOpenMeshes::Triangles;
         std::size_t drawn = 0;
+        const bool cpu = o.extrusion == VolumeExtrusion::Cpu;
+        if (cpu) buildOnCpu(host, frame, view, triangles, depthFail);
+        const gl::Program& cpuProgram = host.program({{{GL_VERTEX_SHADER, "shadow_volume_cpu.vert"}, {GL_FRAGMENT_SHADER, "shadow_volume.frag"}},
+                                                      std::string("#define BOOK ") + (book ? "1" : "0") + "\n"});
         auto drawVolumes = [&] {
+            const auto scope = host.timeScope("volumes");
+            if (cpu) {
+                cpuProgram.use();
+                glBindVertexArray(cpuArray_.id());
+                for (const CpuRange& r : cpuRanges_) {
+                    host.bindItem(r.item);
+                    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(r.first), static_cast<GLsizei>(r.count));
+                    drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[r.item].mesh)].triangleCount();
+                }
+                return;
+            }
             host.drawItems(
                 ItemFilter::Casters, program,
                 [&](std::size_t i) {
                     if (!casts_[view.index][i]) return false;
                     const auto mesh = static_cast<std::size_t>(frame.items[i].mesh);
                     glProgramUniform1i(program.id(), 0, triangles && open_[mesh].edges > 0 ? 1 : 0);
+                    const glm::dvec4 l = lightInObject(frame.items[i], view.light);
+                    glProgramUniform4d(program.id(), 1, l.x, l.y, l.z, l.w);
                     drawn += frame.scene.meshes[mesh].triangleCount();
                     return true;
                 },
@@ -164,6 +184,108 @@ public:
     }
 
 private:
+    // The light (position with w = 1, or the direction towards it with w =
+    // 0) in the item's object space.
+    static glm::dvec4 lightInObject(const DrawItem& item, const Light& light) {
+        const glm::dvec4 L = light.type == LightType::Directional ? glm::dvec4(-glm::normalize(glm::dvec3(light.direction)), 0.0)
+                                                                    : glm::dvec4(glm::dvec3(light.position), 1.0);
+        return glm::inverse(glm::dmat4(item.worldFromObject)) * L;
+    }
+
+    struct CpuVertex {
+        glm::vec3 position;  ///< object space
+        float extruded;      ///< 1: the copy at infinity (or the book's distance)
+    };
+    struct CpuRange {
+        std::size_t item = 0, first = 0, count = 0;
+    };
+
+    // The geometry shader's work on the CPU (shaders/shadow_volume.geom says
+    // what is emitted): silhouettes from the welded adjacency, side quads as
+    // two triangles each (the strip's order), caps when counting depth-fail.
+    void buildOnCpu(TechniqueHost& host, const FrameInfo& frame, const LightView& view, bool perTriangleForOpen, bool caps) {
+        const auto start = std::chrono::steady_clock::now();
+        cpuVertices_.clear();
+        cpuRanges_.clear();
+        std::size_t triangles = 0;
+        for (std::size_t i = 0; i < frame.items.size(); ++i) {
+            const DrawItem& item = frame.items[i];
+            if (!item.castsShadows || !casts_[view.index][i]) continue;
+            const auto m = static_cast<std::size_t>(item.mesh);
+            const Mesh& mesh = frame.scene.meshes[m];
+            if (adjacency_.size() <= m) adjacency_.resize(frame.scene.meshes.size());
+            Adjacency& adj = adjacency_[m];
+            if (adj.positions != mesh.positions.data() || adj.indexCount != mesh.indices.size()) {
+                adj = {mesh.positions.data(), mesh.indices.size(), adjacencyIndices(mesh.positions, mesh.indices)};
+            }
+            const bool perTriangle = perTriangleForOpen && open_[m].edges > 0;
+            CpuRange range{i, cpuVertices_.size(), 0};
+            // The facing test in object space and double precision, as the geometry shader does it.
+            const glm::dvec4 lo = lightInObject(item, view.light);
+            auto faces = [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
+                const glm::dvec3 a(mesh.positions[i0]), b(mesh.positions[i1]), c(mesh.positions[i2]);
+                const glm::dvec3 towards = lo.w > 0.5 ? glm::dvec3(lo) - a : glm::dvec3(lo);
+                const glm::dvec3 n = glm::cross(b - a, c - a);
+                return n.x * towards.x + n.y * towards.y + n.z * towards.z > 0.0;
+            };
+            auto put = [&](std::uint32_t k, float extruded) { cpuVertices_.push_back({mesh.positions[k], extruded}); };
+            auto side = [&](std::uint32_t a, std::uint32_t b) {
+                put(a, 0.0f), put(a, 1.0f), put(b, 0.0f);
+                put(b, 0.0f), put(a, 1.0f), put(b, 1.0f);
+            };
+            const std::vector<std::uint32_t>& x = adj.indices;
+            for (std::size_t t = 0; t + 5 < x.size(); t += 6) {
+                const bool lit = faces(x[t], x[t + 2], x[t + 4]);
+                if (!perTriangle && !lit) continue;
+                const std::uint32_t a = x[t], b = lit ? x[t + 2] : x[t + 4], c = lit ? x[t + 4] : x[t + 2];
+                if (perTriangle) {
+                    side(a, b), side(b, c), side(c, a);
+                } else {
+                    for (int e = 0; e < 3; ++e) {
+                        const std::uint32_t p = x[t + 2 * e], q = x[t + (2 * e + 2) % 6], n = x[t + 2 * e + 1];
+                        const bool open = mesh.positions[n] == mesh.positions[x[t + (2 * e + 4) % 6]];
+                        if (open || !faces(p, n, q)) side(p, q);
+                    }
+                }
+                if (caps) {
+                    put(a, 0.0f), put(b, 0.0f), put(c, 0.0f);
+                    put(a, 1.0f), put(c, 1.0f), put(b, 1.0f);
+                }
+            }
+            triangles += x.size() / 6;
+            range.count = cpuVertices_.size() - range.first;
+            if (range.count) cpuRanges_.push_back(range);
+        }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        host.count("cpuTriangles", static_cast<double>(triangles));
+        if (seconds > 0.0) host.count("cpuTrianglesPerSecond", static_cast<double>(triangles) / seconds);
+        if (!cpuArray_) {
+            cpuArray_ = gl::VertexArray();
+            glVertexArrayAttribFormat(cpuArray_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+            glVertexArrayAttribFormat(cpuArray_.id(), 1, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec3));
+            glVertexArrayAttribBinding(cpuArray_.id(), 0, 0);
+            glVertexArrayAttribBinding(cpuArray_.id(), 1, 0);
+            glEnableVertexArrayAttrib(cpuArray_.id(), 0);
+            glEnableVertexArrayAttrib(cpuArray_.id(), 1);
+        }
+        // A fresh buffer each frame (the old one may still be read by the GPU).
+        cpuBuffer_ = gl::Buffer();
+        glNamedBufferData(cpuBuffer_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, cpuVertices_.size()) * sizeof(CpuVertex)),
+                          cpuVertices_.empty() ? nullptr : cpuVertices_.data(), GL_STREAM_DRAW);
+        glVertexArrayVertexBuffer(cpuArray_.id(), 0, cpuBuffer_.id(), 0, sizeof(CpuVertex));
+    }
+
+    struct Adjacency {
+        const glm::vec3* positions = nullptr;
+        std::size_t indexCount = 0;
+        std::vector<std::uint32_t> indices;
+    };
+    std::vector<Adjacency> adjacency_;
+    std::vector<CpuVertex> cpuVertices_;
+    std::vector<CpuRange> cpuRanges_;
+    gl::VertexArray cpuArray_{gl::NoCreate};
+    gl::Buffer cpuBuffer_{gl::NoCreate};
+
     static void clearStencil(TechniqueHost& host) {
         gl::RenderState s;
         s.depthWrite = false;
