@@ -24,7 +24,17 @@ layout(location = 1) uniform dvec4 lightInObject;
 in vec3 vVolumeWorld[];
 in vec3 vVolumeObject[];
 
+// Lexicographic order of positions.
+bool before(vec3 p, vec3 q) { return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && p.z < q.z))); }
+
+// A triangle's facing, computed from its lexicographically smallest corner
+// on (a cyclic turn, which keeps the orientation): the triangle itself and
+// its neighbour across an edge then round the very same expression, so two
+// nearly coplanar faces can never disagree about their shared edge (002
+// §8.5's "hole" in the volume).
 bool facesLight(int i, int j, int k) {
+    if (before(vVolumeObject[j], vVolumeObject[i]) && !before(vVolumeObject[k], vVolumeObject[j])) { int t = i; i = j; j = k; k = t; }
+    else if (before(vVolumeObject[k], vVolumeObject[i]) && before(vVolumeObject[k], vVolumeObject[j])) { int t = k; k = j; j = i; i = t; }
     precise dvec3 a = dvec3(vVolumeObject[i]), b = dvec3(vVolumeObject[j]), c = dvec3(vVolumeObject[k]);
     precise dvec3 towards = lightInObject.w > 0.5 ? lightInObject.xyz - a : lightInObject.xyz;
     precise dvec3 n = cross(b - a, c - a);

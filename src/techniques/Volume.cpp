@@ -28,6 +28,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <chrono>
+#include <tuple>
 #include <map>
 
 namespace shadowlab {
@@ -222,7 +223,14 @@ private:
             CpuRange range{i, cpuVertices_.size(), 0};
             // The facing test in object space and double precision, as the geometry shader does it.
             const glm::dvec4 lo = lightInObject(item, view.light);
+            auto before = [&](std::uint32_t p, std::uint32_t q) {
+                const glm::vec3 &u = mesh.positions[p], &v = mesh.positions[q];
+                return u.x < v.x || (u.x == v.x && (u.y < v.y || (u.y == v.y && u.z < v.z)));
+            };
             auto faces = [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
+                // From the smallest corner on, as shadow_volume.geom does.
+                if (before(i1, i0) && !before(i2, i1)) std::tie(i0, i1, i2) = std::tuple(i1, i2, i0);
+                else if (before(i2, i0) && before(i2, i1)) std::tie(i0, i1, i2) = std::tuple(i2, i0, i1);
                 const glm::dvec3 a(mesh.positions[i0]), b(mesh.positions[i1]), c(mesh.positions[i2]);
                 const glm::dvec3 towards = lo.w > 0.5 ? glm::dvec3(lo) - a : glm::dvec3(lo);
                 const glm::dvec3 n = glm::cross(b - a, c - a);

@@ -7,6 +7,8 @@
 #include <shadowlab/Compare.h>
 #include <shadowlab/SceneFile.h>
 
+#include "core/Adjacency.h"
+
 #include <filesystem>
 
 using namespace shadowlab;
@@ -157,5 +159,78 @@ TEST_F(VolumeGLTest, CpuAndGpuExtrusionGiveTheSameShadows) {
         }
         EXPECT_GT(shadowed, 2000u);
         EXPECT_LE(static_cast<double>(differ), 1e-4 * static_cast<double>(visibility[0].size()));
+    }
+}
+
+namespace {
+
+// A closed slab whose top is an n x n grid of faces lifted by up to 1e-6 at
+// random: nearly coplanar neighbours (002 §8.5's "hole" case).
+Mesh jitteredSlab(int n) {
+    Mesh m;
+    m.name = "jittered slab";
+    auto id = [n](int i, int j, int layer) { return static_cast<std::uint32_t>(layer * (n + 1) * (n + 1) + j * (n + 1) + i); };
+    std::uint32_t state = 12345u;
+    auto noise = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f - 0.5f;
+    };
+    for (int layer = 0; layer < 2; ++layer)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) {
+                const float x = -1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(n), z = -1.0f + 2.0f * static_cast<float>(j) / static_cast<float>(n);
+                const bool inner = i > 0 && j > 0 && i < n && j < n;
+                m.positions.push_back({x, layer == 1 ? 1.0f + (inner ? 2e-6f * noise() : 0.0f) : 0.8f, z});
+            }
+    auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {  // a b c d counter-clockwise seen from outside
+        m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+    };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            quad(id(i, j, 1), id(i, j + 1, 1), id(i + 1, j + 1, 1), id(i + 1, j, 1));  // top, seen from +y
+            quad(id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0));  // bottom, seen from -y
+        }
+    for (int k = 0; k < n; ++k) {
+        quad(id(k, 0, 0), id(k, 0, 1), id(k + 1, 0, 1), id(k + 1, 0, 0));          // z = -1
+        quad(id(k + 1, n, 0), id(k + 1, n, 1), id(k, n, 1), id(k, n, 0));          // z = +1
+        quad(id(0, k + 1, 0), id(0, k + 1, 1), id(0, k, 1), id(0, k, 0));          // x = -1
+        quad(id(n, k, 0), id(n, k, 1), id(n, k + 1, 1), id(n, k + 1, 0));          // x = +1
+    }
+    m.normals.assign(m.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
+    return m;
+}
+
+} // namespace
+
+// A light grazing the slab's top exactly: each face's facing is a coin
+// toss of rounding, and silhouettes run all over the top. The slab's shadow
+// on the wall behind must still be a clean band (0 misclassified away from
+// the edge band against the reference), so a face and its neighbour must
+// never disagree about their shared edge, on the GPU or the CPU.
+TEST_F(VolumeGLTest, NearlyCoplanarFacesMakeNoHoles) {
+    for (const char* extrusion : {"gpu", "cpu"}) {
+        SCOPED_TRACE(extrusion);
+        Scene scene = parseScene(std::string(R"({"camera": {"position": [-4, 2.5, 3], "target": [4, 0.9, 0]},
+          "lights": [{"type": "directional", "direction": [1, 0, 0.15], "shadow": {"technique": "volume", "volume": {"extrusion": ")") +
+                                     extrusion + R"("}}}],
+          "nodes": [{"name": "wall", "shape": {"type": "plane", "size": [4, 10]}, "translation": [5, 1, 0], "rotation": [0, 0, 90]}]})",
+                                 "coplanar", ".");
+        const Mesh slab = jitteredSlab(24);
+        ASSERT_EQ(openEdges(slab.positions, slab.indices), 0u) << "the slab is closed";
+        scene.meshes.push_back(slab);
+        Node node;
+        node.name = "slab";
+        node.mesh = static_cast<int>(scene.meshes.size()) - 1;
+        node.receivesShadows = false;
+        scene.nodes.push_back(node);
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        CompareOptions options;
+        options.width = 640;
+        options.height = 360;
+        const Comparison c = compareWithReference(renderer, scene, options);
+        EXPECT_GT(c.lights[0].referenceShadowedPixels, 800u) << "the slab's band on the wall is in view";
+        EXPECT_EQ(awayFromEdges(c.lights[0]), 0.0);
+        if (HasFailure()) test::saveImagesIfFailed(std::string("coplanar-") + extrusion, c.technique, c.reference);
     }
 }
