@@ -287,6 +287,12 @@ json runBench(Context& context, const BenchArgs& args) {
                 for (const auto& [name, values] : counters)
                     if (name.rfind(pass + ".", 0) == 0 && name != pass + ".triangles") reported[name.substr(pass.size() + 1)] = median(values);
                 if (!reported.empty()) record["shadowCounters"] = std::move(reported);
+                // And for the light's own pass (a stencil technique's work: the CPU's silhouettes, ...).
+                const std::string own = "light[" + std::to_string(l) + "].";
+                json lightReported = json::object();
+                for (const auto& [name, values] : counters)
+                    if (name.rfind(own, 0) == 0) lightReported[name.substr(own.size())] = median(values);
+                if (!lightReported.empty()) record["lightCounters"] = std::move(lightReported);
                 lights.push_back(std::move(record));
             }
             json passes = json::object();

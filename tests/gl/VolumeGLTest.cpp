@@ -10,6 +10,7 @@
 #include "core/Adjacency.h"
 
 #include <filesystem>
+#include <set>
 
 using namespace shadowlab;
 using shadowlab::test::GLTest;
@@ -33,14 +34,19 @@ double all(const LightComparison& l) { return l.falseLit + l.falseShadow; }
 
 class VolumeGLTest : public GLTest {};
 
-// Volumes are exact up to rasterisation: on scenes whose casters are closed
-// meshes, under a sun, a spot and a point light, no misclassified pixel
-// away from the 1-pixel edge band, and at most 0.1 % over all receivers.
+// Volumes are exact up to rasterisation: on every bundled scene (their
+// casters are closed meshes, and the planes among them are left out where
+// nothing visible is behind them), under suns, spots and point lights, no
+// misclassified pixel away from the 1-pixel edge band, and at most 0.1 %
+// over all receivers (measured: at most 0.002 %).
 TEST_F(VolumeGLTest, ClosedCastersAreExactUnderEveryKindOfLight) {
-    for (const char* name : {"two-boxes-sun", "spot-objects", "four-spheres-point", "learnopengl-point-shadows"}) {
+    std::set<LightType> kinds;
+    for (const auto& entry : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        const std::string name = entry.path().stem().string();
         SCOPED_TRACE(name);
-        const Scene scene = loadSceneFile(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / (std::string(name) + ".json"),
-                                          {"lights[0].shadow.technique=volume"});
+        const Scene scene = loadSceneFile(entry.path(), {"lights[0].shadow.technique=volume"});
+        kinds.insert(scene.lights[0].type);
         const Comparison c = compareScene(scene, 960, 540);
         const bool failedBefore = HasFailure();
         EXPECT_GT(c.lights[0].referenceShadowedPixels, 1000u);
@@ -48,6 +54,7 @@ TEST_F(VolumeGLTest, ClosedCastersAreExactUnderEveryKindOfLight) {
         EXPECT_LE(all(c.lights[0]), 0.001);
         if (!failedBefore && HasFailure()) test::saveImagesIfFailed(name, c.technique, c.reference);
     }
+    EXPECT_EQ(kinds.size(), 3u) << "suns, spots and point lights";
 }
 
 // The camera under a slab, inside its shadow volume, looking at the floor
