@@ -241,3 +241,25 @@ TEST_F(VolumeGLTest, NearlyCoplanarFacesMakeNoHoles) {
         if (HasFailure()) test::saveImagesIfFailed(std::string("coplanar-") + extrusion, c.technique, c.reference);
     }
 }
+
+// Several lights in one frame, each with its own volumes: the stencil is
+// cleared per light and each light is added where its own count is zero.
+TEST_F(VolumeGLTest, SeveralLightsEachCountTheirOwnVolumes) {
+    const Scene scene = parseScene(R"({"camera": {"position": [5, 6, 9], "target": [0, 0.8, 0]},
+      "lights": [
+        {"name": "sun", "type": "directional", "direction": [0.4, -1, -0.3], "intensity": 0.5, "shadow": {"technique": "volume"}},
+        {"name": "lamp", "type": "point", "position": [-2, 3, 1], "intensity": 0.5, "shadow": {"technique": "volume", "volume": {"extrusion": "cpu"}}},
+        {"name": "spot", "type": "spot", "position": [1, 5, 3], "direction": [0, -1, -0.5], "outerCone": 40, "innerCone": 35, "intensity": 0.5,
+         "shadow": {"technique": "volume", "volume": {"method": "book"}}}],
+      "nodes": [{"name": "floor", "shape": {"type": "plane", "size": [14, 14]}},
+                {"name": "ball", "shape": {"type": "sphere", "radius": 0.6}, "translation": [0, 1, 0]},
+                {"name": "crate", "shape": {"type": "box", "size": [1, 1.4, 1]}, "translation": [1.2, 0.7, 1.5], "rotation": [0, 30, 0]},
+                {"name": "ring", "shape": {"type": "torus", "majorRadius": 0.6, "minorRadius": 0.15}, "translation": [-1.2, 1.2, -1.5], "rotation": [60, 0, 0]}]})",
+                                   "three", ".");
+    const Comparison c = compareScene(scene, 800, 450);
+    ASSERT_EQ(c.lights.size(), 3u);
+    for (const LightComparison& l : c.lights) {
+        EXPECT_GT(l.referenceShadowedPixels, 1000u) << l.name;
+        EXPECT_EQ(awayFromEdges(l), 0.0) << l.name;
+    }
+}
