@@ -104,6 +104,17 @@ float reach(const MapOptions& o) {
     return 0.0f;
 }
 
+// What the lecture's and LearnOpenGL's presets share: a depth32f map and no
+// bias but the one they set themselves.
+void presetBase(MapOptions& o) {
+    o.format = MapFormat::Depth32F;
+    o.slopeBias = 0.0f;
+    o.offsetUnits = 0.0f;
+    o.normalBias = 0.0f;
+    o.constantBias = 0.0f;
+    o.cullFront = false;
+}
+
 // The light's options with its preset applied (docs/techniques.md cites each value).
 MapOptions effective(const Light& light) {
     MapOptions o = light.shadow.get<MapOptions>();
@@ -115,7 +126,7 @@ MapOptions effective(const Light& light) {
         // bias 0.05; "grid", the 64-sample 3-D grid (4 per axis, offsets to
         // 0.1) with bias 0.05; anything else, the 20 offset directions with
         // a fixed disk radius of 0.05 and bias 0.15.
-        o.format = MapFormat::Depth32F;
+        presetBase(o);
         o.diskGrowth = 0.0f;
         if (o.filter == MapFilter::None) {
             o.constantBias = 0.05f;
@@ -128,36 +139,27 @@ MapOptions effective(const Light& light) {
             o.diskRadius = 0.05f;
             o.constantBias = 0.15f;
         }
-        o.slopeBias = 0.0f;
-        o.offsetUnits = 0.0f;
-        o.normalBias = 0.0f;
-        o.cullFront = false;
         return o;
     }
     if (cube && o.preset == MapPreset::LearnOpenGL) {
         // LearnOpenGL 5.advanced_lighting/3.2.2: a 1024^2 cube, near 1, far
         // 25, bias 0.15, 20 offset directions with radius (1 + d/far)/25.
+        presetBase(o);
         o.size = 1024;
-        o.format = MapFormat::Depth32F;
         o.filter = MapFilter::Pcf20;
         o.diskRadius = 0.04f;
         o.diskGrowth = 1.0f;
         o.constantBias = 0.15f;
-        o.slopeBias = 0.0f;
-        o.offsetUnits = 0.0f;
-        o.normalBias = 0.0f;
-        o.cullFront = false;
         return o;
     }
     if (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000) {
         // Lecture 000: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map
         // of the window's size (prepare() sets it), the 4-sample dithered
         // PCF; no normal offset, no constant bias.
+        presetBase(o);
         o.slopeBias = 2.0f;
         o.offsetUnits = 4.0f;
-        o.normalBias = 0.0f;
-        o.constantBias = 0.0f;
-        o.format = MapFormat::Depth32F;
+        o.cullFront = light.shadow.get<MapOptions>().cullFront;  // 000 says nothing of it
         o.filter = MapFilter::Dither4;
         o.fit = MapFit::Scene;
         // Lecture 002 listing 8.4: a shadowed point keeps 60 % (color *= 0.6).
@@ -166,15 +168,10 @@ MapOptions effective(const Light& light) {
         // LearnOpenGL 5.advanced_lighting/3.1.3: 1024^2 DEPTH_COMPONENT
         // (float), 3x3 PCF of nearest taps, bias max(0.05 (1 - N.L), 0.005),
         // no polygon offset or normal offset; the light camera is fixed (Map.cpp: learnOpenGlCamera).
+        presetBase(o);
         o.size = 1024;
-        o.format = MapFormat::Depth32F;
         o.filter = MapFilter::Grid;
         o.kernel = 3;
-        o.slopeBias = 0.0f;
-        o.offsetUnits = 0.0f;
-        o.normalBias = 0.0f;
-        o.constantBias = 0.0f;
-        o.cullFront = false;
     }
     return o;
 }

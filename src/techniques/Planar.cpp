@@ -10,6 +10,8 @@
 // draws them dark over the lit scene with depth only instead (000's look).
 #include "techniques/Planar.h"
 
+#include "techniques/Stencil.h"
+
 #include <shadowlab/Error.h>
 #include <shadowlab/PlanarOptions.h>
 
@@ -220,15 +222,6 @@ private:
         return false;
     }
 
-    static void clearStencil(TechniqueHost& host) {
-        gl::RenderState s;
-        s.depthWrite = false;
-        s.noColor();
-        s.stencil({GL_ALWAYS, 0, 0xFF, 0xFF});
-        host.apply(s);
-        const GLint zero = 0;
-        glClearBufferiv(GL_STENCIL, 0, &zero);
-    }
 
     std::map<int, std::vector<Receiver>> receivers_;
     gl::Buffer ubo_{gl::NoCreate};

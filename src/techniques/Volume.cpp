@@ -17,6 +17,8 @@
 // every triangle's own volume ("triangles").
 #include "techniques/Volume.h"
 
+#include "techniques/Stencil.h"
+
 #include "core/Adjacency.h"
 #include "core/LightCamera.h"
 
@@ -296,15 +298,6 @@ private:
     gl::VertexArray cpuArray_{gl::NoCreate};
     gl::Buffer cpuBuffer_{gl::NoCreate};
 
-    static void clearStencil(TechniqueHost& host) {
-        gl::RenderState s;
-        s.depthWrite = false;
-        s.noColor();
-        s.stencil({GL_ALWAYS, 0, 0xFF, 0xFF});
-        host.apply(s);
-        const GLint zero = 0;
-        glClearBufferiv(GL_STENCIL, 0, &zero);
-    }
 
     struct Known {
         const glm::vec3* positions = nullptr;

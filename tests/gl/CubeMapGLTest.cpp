@@ -3,6 +3,7 @@
 // scenes, LearnOpenGL's point-shadow scene, one pass against six, no seams,
 // and culling per face.
 #include "GLTestContext.h"
+#include "Comparisons.h"
 #include "ImageArtifacts.h"
 
 #include <shadowlab/Compare.h>
@@ -16,21 +17,12 @@
 #include <sstream>
 
 using namespace shadowlab;
+using shadowlab::test::awayFromEdges;
+using shadowlab::test::compareScene;
 using shadowlab::test::GLTest;
 namespace fs = std::filesystem;
 
 namespace {
-
-Comparison compareScene(const Scene& scene, int width = 640, int height = 360) {
-    Renderer renderer(test::glContext());
-    renderer.upload(scene);
-    CompareOptions options;
-    options.width = width;
-    options.height = height;
-    return compareWithReference(renderer, scene, options);
-}
-
-double awayFromEdges(const LightComparison& l) { return l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges; }
 
 std::string vec(const glm::vec3& v) {
     std::ostringstream s;
@@ -88,7 +80,7 @@ TEST_F(CubeMapGLTest, APointLightInARoomShadowsAllSixWalls) {
         const glm::vec3 side = std::abs(d.y) > 0.5f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
         const Scene scene = roomScene(kLight - 1.0f * d + 2.2f * side + 0.8f * glm::cross(d, side), kLight + 5.0f * d,
                                       R"("filter": "none", "size": 1024)");
-        const Comparison c = compareScene(scene);
+        const Comparison c = compareScene(scene, 640, 360);
         const LightComparison& l = c.lights[0];
         const bool failedBefore = HasFailure();
         EXPECT_GT(l.referenceShadowedPixels, 1000u) << "the crate's shadow on the wall is in view";

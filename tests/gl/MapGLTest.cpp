@@ -3,6 +3,7 @@
 // peter-panning, the map's outside, the cone, the filters' penumbrae,
 // several lights in one frame, and the RGBA8 packing.
 #include "GLTestContext.h"
+#include "Comparisons.h"
 #include "ImageArtifacts.h"
 
 #include <shadowlab/Compare.h>
@@ -13,6 +14,8 @@
 #include <filesystem>
 
 using namespace shadowlab;
+using shadowlab::test::awayFromEdges;
+using shadowlab::test::compareScene;
 using shadowlab::test::GLTest;
 namespace fs = std::filesystem;
 
@@ -30,17 +33,6 @@ std::vector<std::string> mapOverrides(const Scene& scene, const std::vector<std:
     }
     return out;
 }
-
-Comparison compareScene(const Scene& scene, int width = 960, int height = 540) {
-    Renderer renderer(test::glContext());
-    renderer.upload(scene);
-    CompareOptions options;
-    options.width = width;
-    options.height = height;
-    return compareWithReference(renderer, scene, options);
-}
-
-double awayFromEdges(const LightComparison& l) { return l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges; }
 
 std::vector<fs::path> bundledScenes() {
     std::vector<fs::path> out;

@@ -2,6 +2,7 @@
 // ray-traced reference: closed casters under the three kinds of light, the
 // camera inside a volume (depth-fail right, depth-pass wrong), open meshes.
 #include "GLTestContext.h"
+#include "Comparisons.h"
 #include "ImageArtifacts.h"
 
 #include <shadowlab/Compare.h>
@@ -13,21 +14,13 @@
 #include <set>
 
 using namespace shadowlab;
+using shadowlab::test::awayFromEdges;
+using shadowlab::test::compareScene;
 using shadowlab::test::GLTest;
 namespace fs = std::filesystem;
 
 namespace {
 
-Comparison compareScene(const Scene& scene, int width = 640, int height = 360) {
-    Renderer renderer(test::glContext());
-    renderer.upload(scene);
-    CompareOptions options;
-    options.width = width;
-    options.height = height;
-    return compareWithReference(renderer, scene, options);
-}
-
-double awayFromEdges(const LightComparison& l) { return l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges; }
 double all(const LightComparison& l) { return l.falseLit + l.falseShadow; }
 
 } // namespace
@@ -70,8 +63,8 @@ TEST_F(VolumeGLTest, InsideAVolumeDepthFailIsRightAndDepthPassIsNot) {
                     {"name": "slab", "shape": {"type": "box", "size": [6, 0.3, 6]}, "translation": [0, 3, 0]}]})",
                           "inside", ".");
     };
-    const Comparison fail = compareScene(scene("depth-fail"));
-    const Comparison pass = compareScene(scene("depth-pass"));
+    const Comparison fail = compareScene(scene("depth-fail"), 640, 360);
+    const Comparison pass = compareScene(scene("depth-pass"), 640, 360);
     EXPECT_GT(fail.lights[0].referenceShadowedPixels, 10000u) << "the floor under the slab is in view";
     EXPECT_EQ(awayFromEdges(fail.lights[0]), 0.0);
     EXPECT_GT(awayFromEdges(pass.lights[0]), 0.1) << "depth-pass inside a volume";
@@ -99,7 +92,7 @@ TEST_F(VolumeGLTest, AnOpenCasterIsNotedAndStillCastsItsShadow) {
         bool named = false;
         for (const std::string& note : stats.notes) named = named || note.find("'plane") != std::string::npos || note.find("sheet") != std::string::npos;
         EXPECT_TRUE(named) << (stats.notes.empty() ? std::string("no notes") : stats.notes[0]);
-        const Comparison c = compareScene(scene);
+        const Comparison c = compareScene(scene, 640, 360);
         EXPECT_GT(c.lights[0].referenceShadowedPixels, 2000u);
         EXPECT_EQ(awayFromEdges(c.lights[0]), 0.0);
     }

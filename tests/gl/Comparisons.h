@@ -1,0 +1,22 @@
+#pragma once
+// What the technique tests share: one scene against the ray-traced
+// reference on a fresh renderer, and the misclassified share away from the
+// 1-pixel edge band.
+#include "GLTestContext.h"
+
+#include <shadowlab/Compare.h>
+
+namespace shadowlab::test {
+
+inline Comparison compareScene(const Scene& scene, int width = 960, int height = 540) {
+    Renderer renderer(glContext());
+    renderer.upload(scene);
+    CompareOptions options;
+    options.width = width;
+    options.height = height;
+    return compareWithReference(renderer, scene, options);
+}
+
+inline double awayFromEdges(const LightComparison& l) { return l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges; }
+
+} // namespace shadowlab::test
