@@ -7,6 +7,9 @@
 // Every failure prints one line `shadowlab: error: ...` and exits non-zero;
 // no output file is written unless the whole render succeeded.
 #include "Bench.h"
+#if SHADOWLAB_VIEWER
+#include "Viewer.h"
+#endif
 #include "Metrics.h"
 
 #include <shadowlab/Compare.h>
@@ -527,6 +530,18 @@ int main(int argc, char** argv) {
 
     CLI::App* info = app.add_subcommand("info", "Print the OpenGL implementation, its limits and the build options");
 
+#if SHADOWLAB_VIEWER
+    ViewArgs viewArgs;
+    CLI::App* view = app.add_subcommand("view", "Open a window on a scene with a panel of every light's technique and options (needs a display)");
+    view->add_option("scene", viewArgs.scene, "Scene file (JSON); the built-in default scene when omitted");
+    view->add_option("--set", viewArgs.overrides, "Override a scene value by JSON path, as for render")->take_all();
+    view->add_option("--width", viewArgs.width, "Window width")->check(CLI::Range(64, 16384))->capture_default_str();
+    view->add_option("--height", viewArgs.height, "Window height")->check(CLI::Range(64, 16384))->capture_default_str();
+    view->add_option("--frames", viewArgs.frames, "Quit after this many frames (0: run until closed)")->check(CLI::Range(0, 1000000))->capture_default_str();
+    view->add_option("--screenshot", viewArgs.screenshot, "With --frames: write the window's last frame (panel included) as this PNG");
+    view->add_option("--script", viewArgs.script, "Run a file of actions, one per frame: set KEY=VALUE, wait N, screenshot FILE, quit");
+#endif
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -547,6 +562,12 @@ int main(int argc, char** argv) {
             return runBenchCommand(benchArgs);
         }
         if (*info) return runInfo();
+#if SHADOWLAB_VIEWER
+        if (*view) {
+            if (!viewArgs.screenshot.empty() && viewArgs.frames == 0) throw Error("--screenshot: needs --frames N (the frame to take)");
+            return runView(viewArgs);
+        }
+#endif
         if (*techniquesCommand) return runTechniques(techniquesMarkdown);
     } catch (const std::exception& e) {
         // Escaped once more here: whatever a message quotes, it stays one line.

@@ -111,6 +111,10 @@ public:
     std::vector<DebugImage> debugImages(const Scene& scene);
     /// The last frame, 8-bit sRGB, rows top to bottom.
     ImageRGBA8 readColor() const;
+    /// Copies the last frame, sRGB-encoded as readColor() has it, into the
+    /// current context's default framebuffer at (0, 0), one pixel for one
+    /// (a window shows exactly what readColor() would return).
+    void blitToDefaultFramebuffer() const;
     /// The last frame's per-pixel surface data (for the ray-traced
     /// reference). Throws unless it was rendered with RenderOptions::surfaces.
     SurfaceBuffer readSurfaces() const;

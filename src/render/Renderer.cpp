@@ -505,6 +505,14 @@ std::vector<DebugImage> Renderer::debugImages(const Scene& scene) {
     return out;
 }
 
+void Renderer::blitToDefaultFramebuffer() const {
+    if (!impl_->targets) throw Error("Renderer::blitToDefaultFramebuffer: nothing rendered yet");
+    const FrameTargets& t = *impl_->targets;
+    gl::apply(gl::RenderState{});  // no sRGB conversion: the bytes as they are
+    glNamedFramebufferReadBuffer(t.frame.id(), GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(t.frame.id(), 0, 0, 0, t.size.x, t.size.y, 0, 0, t.size.x, t.size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
 SurfaceBuffer Renderer::readSurfaces() const {
     if (!impl_->targets) throw Error("Renderer::readSurfaces: nothing rendered yet");
     if (!impl_->lastFrameHadSurfaces)

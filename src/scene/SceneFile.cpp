@@ -222,8 +222,9 @@ std::any readOptions(const Reader& r, const OptionTable& table) {
         const std::string allowed = OptionTable::rangeText(f);
         switch (f.kind) {
         case OptionKind::Number: {
-            const double x = v.number();
-            if (x < f.minimum || x > f.maximum) v.fail("expected a number in " + allowed + ", got " + Reader::fmt(static_cast<float>(x)));
+            // Compared as the float the member stores, so that the range's own ends (0.1) are allowed.
+            const float x = v.number();
+            if (x < static_cast<float>(f.minimum) || x > static_cast<float>(f.maximum)) v.fail("expected a number in " + allowed + ", got " + Reader::fmt(static_cast<float>(x)));
             f.set(options, x);
             break;
         }

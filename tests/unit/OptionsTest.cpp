@@ -98,3 +98,21 @@ TEST(SceneFormatDoc, CarriesExactlyTheGeneratedTechniqueTables) {
     EXPECT_EQ(doc.substr(a + begin.size(), b - a - begin.size()), techniquesMarkdown())
         << "docs/scene-format.md disagrees with the options tables: paste `shadowlab techniques --markdown` between its markers";
 }
+
+// Every number option of every technique takes the ends of its own range,
+// as written in the docs (0.1 parsed to a float is a hair above the double
+// 0.1: the check compares in the member's own type).
+TEST(OptionsTest, EveryNumberOptionTakesTheEndsOfItsRange) {
+    for (const shadowlab::TechniqueInfo& t : shadowlab::techniques()) {
+        if (!t.options) continue;
+        for (const shadowlab::OptionField& f : t.options->fields) {
+            if (f.kind != shadowlab::OptionKind::Number) continue;
+            for (double end : {f.minimum, f.maximum}) {
+                std::ostringstream value;
+                value << end;
+                const std::string set = "lights[0].shadow." + t.name + "." + f.key + "=" + value.str();
+                EXPECT_NO_THROW(shadowlab::defaultScene({set})) << set;
+            }
+        }
+    }
+}

@@ -1,0 +1,427 @@
+// `shadowlab view`: a window on the renderer with a panel generated from the
+// techniques' options tables. Every change the panel (or a script) makes is
+// an override line, "key=value", the very path `--set` takes: the scene is
+// read again from its file with all of them, so a setting has one name
+// everywhere and a new option appears here without viewer code.
+#include "Viewer.h"
+
+#include <shadowlab/Context.h>
+#include <shadowlab/Error.h>
+#include <shadowlab/Image.h>
+#include <shadowlab/Renderer.h>
+#include <shadowlab/SceneFile.h>
+#include <shadowlab/Techniques.h>
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace shadowlab {
+
+namespace {
+
+constexpr float kPanelWidth = 340.0f;  ///< the panel's fixed place: x in [0, kPanelWidth)
+
+// The settings made in the viewer, in the order made (a later one of the
+// same key replaces an earlier one), after the command line's --set lines.
+struct Overrides {
+    std::vector<std::string> fromCommandLine;
+    std::vector<std::pair<std::string, std::string>> made;
+    void set(const std::string& key, const std::string& value) {
+        for (auto& [k, v] : made)
+            if (k == key) {
+                v = value;
+                return;
+            }
+        made.emplace_back(key, value);
+    }
+    std::vector<std::string> all() const {
+        std::vector<std::string> out = fromCommandLine;
+        for (const auto& [k, v] : made) out.push_back(k + "=" + v);
+        return out;
+    }
+};
+
+// One action of a --script file, one per line: "set KEY=VALUE", "wait N"
+// (frames), "screenshot FILE", "resize W H", "minimize", "restore", "quit";
+// "#" starts a comment.
+struct Action {
+    std::string verb, argument;
+    int line = 0;
+};
+
+std::vector<Action> readScript(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(path + ": cannot open the script");
+    std::vector<Action> out;
+    std::string text;
+    for (int line = 1; std::getline(in, text); ++line) {
+        const auto hash = text.find('#');
+        if (hash != std::string::npos) text.resize(hash);
+        std::istringstream words(text);
+        Action a;
+        a.line = line;
+        if (!(words >> a.verb)) continue;
+        std::getline(words, a.argument);
+        a.argument.erase(0, a.argument.find_first_not_of(" \t"));
+        while (!a.argument.empty() && (a.argument.back() == ' ' || a.argument.back() == '\t' || a.argument.back() == '\r')) a.argument.pop_back();
+        const std::string where = path + ":" + std::to_string(line) + ": ";
+        if (a.verb == "set") {
+            if (a.argument.find('=') == std::string::npos) throw Error(where + "set: expected KEY=VALUE, got '" + a.argument + "'");
+        } else if (a.verb == "wait") {
+            char* end = nullptr;
+            const long n = std::strtol(a.argument.c_str(), &end, 10);
+            if (a.argument.empty() || *end != '\0' || n < 0 || n > 100000) throw Error(where + "wait: expected a number of frames 0..100000, got '" + a.argument + "'");
+        } else if (a.verb == "screenshot") {
+            if (a.argument.empty()) throw Error(where + "screenshot: expected a file name");
+        } else if (a.verb == "resize") {
+            std::istringstream size(a.argument);
+            int w = 0, h = 0;
+            std::string rest;
+            if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
+                throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
+        } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore") {
+            throw Error(where + "unknown action '" + a.verb + "' (expected set, wait, screenshot, resize, minimize, restore or quit)");
+        }
+        out.push_back(a);
+    }
+    return out;
+}
+
+// The window's back buffer (panel included), rows top to bottom.
+ImageRGBA8 readWindow(int width, int height) {
+    ImageRGBA8 image{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+    const std::size_t row = static_cast<std::size_t>(width) * 4;
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(image.pixels.begin() + static_cast<long>(y * row), image.pixels.begin() + static_cast<long>((y + 1) * row),
+                         image.pixels.begin() + static_cast<long>((height - 1 - y) * row));
+    for (std::size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
+    return image;
+}
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+// An orbiting camera around the scene camera's target.
+struct Orbit {
+    glm::vec3 target{0.0f};
+    float distance = 10.0f, yaw = 0.0f, pitch = 0.3f;
+    void from(const Camera& c) {
+        target = c.target;
+        const glm::vec3 d = c.position - c.target;
+        distance = std::max(glm::length(d), 1e-3f);
+        yaw = std::atan2(d.x, d.z);
+        pitch = std::asin(std::clamp(d.y / distance, -1.0f, 1.0f));
+    }
+    glm::vec3 position() const {
+        return target + distance * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+    }
+};
+
+} // namespace
+
+int runView(const ViewArgs& args) {
+    const bool fromFile = !args.scene.empty();
+    std::vector<Action> script = args.script.empty() ? std::vector<Action>{} : readScript(args.script);
+    Overrides overrides;
+    overrides.fromCommandLine = args.overrides;
+    auto load = [&] { return fromFile ? loadSceneFile(args.scene, overrides.all()) : defaultScene(overrides.all()); };
+    Scene scene = load();  // a bad scene or --set is the command's error, before any window
+
+    Context context = Context::createWindow(args.width, args.height, "shadowlab view: " + scene.name);
+    GLFWwindow* window = context.window();
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 450");
+
+    Renderer renderer(context);
+    renderer.upload(scene);
+    Orbit orbit;
+    orbit.from(scene.camera);
+    bool cameraMoved = false;
+    std::string error;  // the last failed reload or setting, shown in the panel
+    fs::file_time_type fileTime = fromFile ? fs::last_write_time(args.scene) : fs::file_time_type{};
+    std::deque<float> frameTimes;
+    FrameStats stats;
+    double seconds = 0.0;
+    bool playing = false;
+    int frame = 0, waitFrames = 0;
+    std::size_t nextAction = 0;
+    bool quit = false;
+    std::map<int, bool> keysDown;
+    auto lastFrame = std::chrono::steady_clock::now();
+
+    // Reads the scene again with every override; on failure keeps the last good one.
+    auto reload = [&] {
+        try {
+            Scene next = load();
+            renderer.upload(next);
+            scene = std::move(next);
+            if (!cameraMoved) orbit.from(scene.camera);
+            error.clear();
+        } catch (const Error& e) {
+            error = e.what();
+        }
+    };
+    auto apply = [&](const std::string& key, const std::string& value) {
+        overrides.set(key, value);
+        reload();
+    };
+
+    while (!glfwWindowShouldClose(window) && !quit) {
+        glfwPollEvents();
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(window, &width, &height);
+        if (width <= 0 || height <= 0) {  // minimised: nothing to draw
+            glfwWaitEventsTimeout(0.1);
+            continue;
+        }
+        // The scene file changed on disk: read it again (a broken edit is shown, the last good scene kept).
+        if (fromFile && frame % 15 == 0) {
+            std::error_code ec;
+            const auto t = fs::last_write_time(args.scene, ec);
+            if (!ec && t != fileTime) {
+                fileTime = t;
+                reload();
+            }
+        }
+        // The script: one action per frame, "wait N" holds it N frames.
+        while (waitFrames == 0 && nextAction < script.size()) {
+            const Action& a = script[nextAction++];
+            if (a.verb == "set") {
+                const auto eq = a.argument.find('=');
+                apply(a.argument.substr(0, eq), a.argument.substr(eq + 1));
+                if (!error.empty()) throw Error(args.script + ":" + std::to_string(a.line) + ": " + error);
+            } else if (a.verb == "wait") {
+                waitFrames = std::stoi(a.argument);
+            } else if (a.verb == "screenshot") {
+                --nextAction;  // taken after this frame is drawn
+                break;
+            } else if (a.verb == "resize") {
+                std::istringstream size(a.argument);
+                int w = 0, h = 0;
+                size >> w >> h;
+                glfwSetWindowSize(window, w, h);
+            } else if (a.verb == "minimize") {
+                glfwIconifyWindow(window);
+            } else if (a.verb == "restore") {
+                glfwRestoreWindow(window);
+            } else if (a.verb == "quit") {
+                quit = true;
+            }
+        }
+
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        ImGuiIO& io = ImGui::GetIO();
+        // Camera: left drag orbits, right drag pans, the wheel zooms, R resets.
+        if (!io.WantCaptureMouse) {
+            if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+                orbit.yaw -= io.MouseDelta.x * 0.008f;
+                orbit.pitch = std::clamp(orbit.pitch + io.MouseDelta.y * 0.008f, -1.5f, 1.5f);
+                cameraMoved = true;
+            }
+            if (ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
+                const glm::vec3 forward = glm::normalize(orbit.target - orbit.position());
+                const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+                const glm::vec3 up = glm::cross(right, forward);
+                orbit.target += (-io.MouseDelta.x * right + io.MouseDelta.y * up) * orbit.distance * 0.002f;
+                cameraMoved = true;
+            }
+            if (io.MouseWheel != 0.0f) {
+                orbit.distance *= std::pow(0.9f, io.MouseWheel);
+                cameraMoved = true;
+            }
+        }
+        // Keys (ImGui 1.86 names only a few): pressed on this frame, not held.
+        auto pressed = [&](int key) {
+            const bool down = glfwGetKey(window, key) == GLFW_PRESS;
+            const bool was = keysDown[key];
+            keysDown[key] = down;
+            return down && !was && !io.WantCaptureKeyboard;
+        };
+        if (pressed(GLFW_KEY_R)) {
+            orbit.from(scene.camera);
+            cameraMoved = false;
+        }
+        if (pressed(GLFW_KEY_SPACE)) playing = !playing;
+        bool screenshotKey = pressed(GLFW_KEY_F12);
+
+        // The panel, at a fixed place on the left.
+        ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+        ImGui::SetNextWindowSize(ImVec2(kPanelWidth, static_cast<float>(height)));
+        ImGui::Begin("shadowlab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+        ImGui::TextUnformatted(scene.name.c_str());
+        if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", error.c_str());
+        ImGui::Text("%.1f ms a frame, t = %.2f s %s", frameTimes.empty() ? 0.0 : static_cast<double>(frameTimes.back()), seconds, playing ? "(playing)" : "");
+        if (!frameTimes.empty()) {
+            std::vector<float> values(frameTimes.begin(), frameTimes.end());
+            ImGui::PlotLines("##frames", values.data(), static_cast<int>(values.size()), 0, "frame ms", 0.0f, 60.0f, ImVec2(kPanelWidth - 20.0f, 50.0f));
+        }
+        for (const PassTiming& p : stats.passes) ImGui::Text("  %-22s %6.2f ms", p.name.c_str(), p.ms);
+        if (ImGui::Button("reset camera (R)")) {
+            orbit.from(scene.camera);
+            cameraMoved = false;
+        }
+        ImGui::SameLine();
+        if (ImGui::Button(playing ? "pause (space)" : "play (space)")) playing = !playing;
+        if (ImGui::Button("screenshot (F12)")) screenshotKey = true;
+        const std::vector<TechniqueInfo> all = techniques();
+        for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+            const Light& light = scene.lights[l];
+            const std::string at = "lights[" + std::to_string(l) + "]";
+            ImGui::PushID(static_cast<int>(l));
+            if (ImGui::CollapsingHeader((at + " " + light.name).c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+                // Its technique, then every option of it from its table.
+                if (ImGui::BeginCombo("technique", light.shadow.technique.c_str())) {
+                    for (const TechniqueInfo& t : all)
+                        if (ImGui::Selectable(t.name.c_str(), t.name == light.shadow.technique)) apply(at + ".shadow.technique", jsonString(t.name));
+                    ImGui::EndCombo();
+                }
+                const TechniqueInfo* technique = findTechnique(light.shadow.technique);
+                const OptionTable* table = technique ? technique->options : nullptr;
+                if (table) {
+                    const auto stored = light.shadow.options.find(table->block);
+                    const std::any current = stored != light.shadow.options.end() ? stored->second : table->makeDefault();
+                    for (const OptionField& f : table->fields) {
+                        const std::string key = at + ".shadow." + table->block + "." + f.key;
+                        switch (f.kind) {
+                        case OptionKind::Number: {
+                            float v = static_cast<float>(f.get(current));
+                            if (ImGui::SliderFloat(f.key.c_str(), &v, static_cast<float>(f.minimum), static_cast<float>(f.maximum), "%.4g")) {
+                                std::ostringstream s;
+                                s << v;
+                                apply(key, s.str());
+                            }
+                            break;
+                        }
+                        case OptionKind::Integer: {
+                            int v = static_cast<int>(f.get(current));
+                            if (ImGui::InputInt(f.key.c_str(), &v, 1, 100, ImGuiInputTextFlags_EnterReturnsTrue))
+                                apply(key, std::to_string(std::clamp(v, static_cast<int>(f.minimum), static_cast<int>(f.maximum))));
+                            break;
+                        }
+                        case OptionKind::Boolean: {
+                            bool v = f.get(current) != 0.0;
+                            if (ImGui::Checkbox(f.key.c_str(), &v)) apply(key, v ? "true" : "false");
+                            break;
+                        }
+                        case OptionKind::Choice: {
+                            const auto index = static_cast<std::size_t>(f.get(current));
+                            if (ImGui::BeginCombo(f.key.c_str(), index < f.choices.size() ? f.choices[index].c_str() : "?")) {
+                                for (std::size_t c = 0; c < f.choices.size(); ++c)
+                                    if (ImGui::Selectable(f.choices[c].c_str(), c == index)) apply(key, jsonString(f.choices[c]));
+                                ImGui::EndCombo();
+                            }
+                            break;
+                        }
+                        case OptionKind::Text: {
+                            char buffer[256] = {};
+                            const std::string v = f.getText(current);
+                            v.copy(buffer, sizeof buffer - 1);
+                            if (ImGui::InputText(f.key.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) apply(key, jsonString(buffer));
+                            break;
+                        }
+                        }
+                        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s%s%s", f.doc.c_str(), f.unit.empty() ? "" : "; ", f.unit.c_str());
+                    }
+                }
+                // Where the light is: point and spot lights move with the sliders.
+                if (light.type != LightType::Directional) {
+                    glm::vec3 p = light.position;
+                    if (ImGui::DragFloat3("position", &p.x, 0.05f)) {
+                        std::ostringstream s;
+                        s << "[" << p.x << ", " << p.y << ", " << p.z << "]";
+                        apply(at + ".position", s.str());
+                    }
+                }
+            }
+            ImGui::PopID();
+        }
+        ImGui::End();
+
+        // The frame: the scene where its light paths are at `seconds`, from the orbiting camera.
+        Scene shown = sceneAtTime(scene, seconds);
+        if (cameraMoved) {
+            shown.camera.position = orbit.position();
+            shown.camera.target = orbit.target;
+        }
+        RenderOptions options;
+        options.width = width;
+        options.height = height;
+        options.timeSeconds = seconds;
+        options.clock = TimingClock::Auto;
+        stats = renderer.render(shown, options);
+        renderer.blitToDefaultFramebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, width, height);
+        ImGui::Render();
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+        if (screenshotKey) {
+            const std::string name = "shadowlab-view-" + std::to_string(frame) + ".png";
+            writePng(name, readWindow(width, height));
+            std::cout << name << "\n";
+        }
+        if (waitFrames == 0 && nextAction < script.size() && script[nextAction].verb == "screenshot") {
+            writePng(script[nextAction].argument, readWindow(width, height));
+            std::cout << script[nextAction].argument << "\n";
+            ++nextAction;
+        }
+        ++frame;
+        if (waitFrames > 0) --waitFrames;
+        if (args.frames > 0 && frame >= args.frames) {
+            if (!args.screenshot.empty()) {
+                writePng(args.screenshot, readWindow(width, height));
+                std::cout << args.screenshot << "\n";
+            }
+            quit = true;
+        }
+        if (!args.script.empty() && nextAction >= script.size() && waitFrames == 0) quit = true;
+        glfwSwapBuffers(window);
+
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::chrono::duration<double>(now - lastFrame).count();
+        lastFrame = now;
+        frameTimes.push_back(static_cast<float>(dt * 1000.0));
+        if (frameTimes.size() > 120) frameTimes.pop_front();
+        if (playing) seconds += dt;
+    }
+
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    return 0;
+}
+
+} // namespace shadowlab

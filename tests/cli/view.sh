@@ -1,0 +1,46 @@
+#!/bin/bash
+# shadowlab view under a virtual display (run through xvfb-run): a script
+# changes the technique and a bias through the panel's own path (override
+# lines); the screenshots match `shadowlab render` with the same settings
+# pixel for pixel right of the panel, and differ from each other where the
+# bias moves the shadows. Then resizing, minimising, a broken scene file
+# and its repair: no crash.
+set -u
+tool=$1; src=$2; diff=$3
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT; cd "$work"
+panel=340  # Viewer.cpp: kPanelWidth
+cat > steps.txt <<'SCRIPT'
+set lights[0].shadow.technique="map"
+wait 2
+screenshot a.png
+set lights[0].shadow.map.constantBias=0.1
+wait 2
+screenshot b.png
+quit
+SCRIPT
+"$tool" view "$src/scenes/two-boxes-sun.json" --width 960 --height 540 --script steps.txt >out.txt 2>err.txt || { echo "view failed: $(cat err.txt)"; exit 1; }
+[[ -s a.png && -s b.png ]] || { echo "no screenshots: $(cat out.txt err.txt)"; exit 1; }
+"$tool" render "$src/scenes/two-boxes-sun.json" --width 960 --height 540 --set 'lights[0].shadow.technique="map"' -o ra.png >/dev/null || exit 1
+"$tool" render "$src/scenes/two-boxes-sun.json" --width 960 --height 540 --set 'lights[0].shadow.technique="map"' --set lights[0].shadow.map.constantBias=0.1 -o rb.png >/dev/null || exit 1
+[[ $("$diff" a.png ra.png --from-x $panel) == 0 ]] || { echo "view and render differ right of the panel: $("$diff" a.png ra.png --from-x $panel) pixels"; exit 1; }
+[[ $("$diff" b.png rb.png --from-x $panel) == 0 ]] || { echo "view and render differ with the bias: $("$diff" b.png rb.png --from-x $panel) pixels"; exit 1; }
+changed=$("$diff" a.png b.png --from-x $panel)
+(( changed > 100 )) || { echo "a constant bias of 0.1 moved only $changed pixels"; exit 1; }
+# Resize, minimise, restore.
+printf 'wait 2\nresize 500 300\nwait 3\nminimize\nwait 3\nrestore\nwait 3\nscreenshot c.png\nquit\n' > steps2.txt
+"$tool" view "$src/scenes/torus-floating.json" --width 640 --height 360 --script steps2.txt >/dev/null 2>err.txt || { echo "resize/minimise: $(cat err.txt)"; exit 1; }
+[[ -s c.png ]] || { echo "no screenshot after resize"; exit 1; }
+# A broken scene file while the viewer runs, then repaired: no crash, the error shown, the scene back.
+cp "$src/scenes/torus-floating.json" live.json
+printf 'wait 150\nscreenshot d.png\nquit\n' > steps3.txt
+"$tool" view live.json --width 640 --height 360 --script steps3.txt >/dev/null 2>err.txt &
+viewer=$!
+sleep 1; echo '{ "nodes": [ broken' > live.json
+sleep 1; cp "$src/scenes/torus-floating.json" live.json; touch live.json
+wait $viewer || { echo "the viewer died on a broken scene file: $(cat err.txt)"; exit 1; }
+[[ -s d.png ]] || { echo "no screenshot after the repair"; exit 1; }
+# A bad script is a one-line error before any window.
+printf 'jump 3\n' > bad.txt
+if "$tool" view --script bad.txt 2>err.txt; then echo "bad script accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q "bad.txt:1: unknown action 'jump'" err.txt || { echo "bad script: $(cat err.txt)"; exit 1; }
+echo ok
