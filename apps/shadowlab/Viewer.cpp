@@ -60,8 +60,8 @@ struct Overrides {
 };
 
 // One action of a --script file, one per line: "set KEY=VALUE", "wait N"
-// (frames), "screenshot FILE", "resize W H", "minimize", "restore", "quit";
-// "#" starts a comment.
+// (frames), "screenshot FILE", "save FILE" (the scene with the settings made,
+// as JSON), "resize W H", "minimize", "restore", "quit"; "#" starts a comment.
 struct Action {
     std::string verb, argument;
     int line = 0;
@@ -89,8 +89,8 @@ std::vector<Action> readScript(const std::string& path) {
             char* end = nullptr;
             const long n = std::strtol(a.argument.c_str(), &end, 10);
             if (a.argument.empty() || *end != '\0' || n < 0 || n > 100000) throw Error(where + "wait: expected a number of frames 0..100000, got '" + a.argument + "'");
-        } else if (a.verb == "screenshot") {
-            if (a.argument.empty()) throw Error(where + "screenshot: expected a file name");
+        } else if (a.verb == "screenshot" || a.verb == "save") {
+            if (a.argument.empty()) throw Error(where + a.verb + ": expected a file name");
         } else if (a.verb == "resize") {
             std::istringstream size(a.argument);
             int w = 0, h = 0;
@@ -98,7 +98,7 @@ std::vector<Action> readScript(const std::string& path) {
             if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
         } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore") {
-            throw Error(where + "unknown action '" + a.verb + "' (expected set, wait, screenshot, resize, minimize, restore or quit)");
+            throw Error(where + "unknown action '" + a.verb + "' (expected set, wait, screenshot, save, resize, minimize, restore or quit)");
         }
         out.push_back(a);
     }
@@ -192,6 +192,26 @@ int runView(const ViewArgs& args) {
             error = e.what();
         }
     };
+    // The scene with every setting made, as JSON that loads again (written
+    // whole to a temporary file, then renamed: never half a file).
+    auto save = [&](const fs::path& path) {
+        std::string text;
+        if (fromFile) {
+            std::ifstream in(args.scene, std::ios::binary);
+            std::stringstream s;
+            s << in.rdbuf();
+            text = s.str();
+        } else {
+            text = defaultSceneJson();
+        }
+        const std::string saved = sceneJsonWithOverrides(text, fromFile ? args.scene : std::string("<default scene>"), overrides.all());
+        const fs::path partial = path.string() + ".partial";
+        {
+            std::ofstream out(partial, std::ios::binary);
+            if (!(out << saved)) throw Error(path.string() + ": cannot write");
+        }
+        fs::rename(partial, path);
+    };
     auto apply = [&](const std::string& key, const std::string& value) {
         overrides.set(key, value);
         reload();
@@ -226,6 +246,9 @@ int runView(const ViewArgs& args) {
             } else if (a.verb == "screenshot") {
                 --nextAction;  // taken after this frame is drawn
                 break;
+            } else if (a.verb == "save") {
+                save(a.argument);
+                std::cout << a.argument << "\n";
             } else if (a.verb == "resize") {
                 std::istringstream size(a.argument);
                 int w = 0, h = 0;
@@ -296,6 +319,18 @@ int runView(const ViewArgs& args) {
         ImGui::SameLine();
         if (ImGui::Button(playing ? "pause (space)" : "play (space)")) playing = !playing;
         if (ImGui::Button("screenshot (F12)")) screenshotKey = true;
+        if (fromFile) {
+            ImGui::SameLine();
+            if (ImGui::Button("save scene")) {
+                // Into the scene file itself: it is read again, now with the settings in it.
+                try {
+                    save(args.scene);
+                    overrides.made.clear();
+                } catch (const Error& e) {
+                    error = e.what();
+                }
+            }
+        }
         const std::vector<TechniqueInfo> all = techniques();
         for (std::size_t l = 0; l < scene.lights.size(); ++l) {
             const Light& light = scene.lights[l];

@@ -33,4 +33,9 @@ Scene defaultScene(const std::vector<std::string>& overrides = {});
 /// The default scene's JSON text.
 const std::string& defaultSceneJson();
 
+/// Scene JSON text with `overrides` written into it (the `--set` lines, or
+/// the viewer's settings), pretty-printed: it loads again as the scene those
+/// overrides give. Throws shadowlab::Error as parseScene does.
+std::string sceneJsonWithOverrides(const std::string& jsonText, const std::string& sourceName, const std::vector<std::string>& overrides);
+
 } // namespace shadowlab

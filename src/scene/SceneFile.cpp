@@ -695,6 +695,14 @@ Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overri
     return parseScene(text.str(), name, path.parent_path(), overrides);
 }
 
+std::string sceneJsonWithOverrides(const std::string& jsonText, const std::string& sourceName, const std::vector<std::string>& overrides) {
+    // Checked the way a load checks it first (and the result loads again).
+    parseScene(jsonText, sourceName, fs::current_path(), overrides);
+    json doc = json::parse(jsonText);
+    applyOverrides(doc, overrides);
+    return doc.dump(2) + "\n";
+}
+
 const std::string& defaultSceneJson() {
     // The lecture's first scene: a torus floating above a ground plane under
     // a directional light, seen from above and to the side.

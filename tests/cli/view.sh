@@ -16,6 +16,7 @@ screenshot a.png
 set lights[0].shadow.map.constantBias=0.1
 wait 2
 screenshot b.png
+save saved.json
 quit
 SCRIPT
 "$tool" view "$src/scenes/two-boxes-sun.json" --width 960 --height 540 --script steps.txt >out.txt 2>err.txt || { echo "view failed: $(cat err.txt)"; exit 1; }
@@ -26,6 +27,9 @@ SCRIPT
 [[ $("$diff" b.png rb.png --from-x $panel) == 0 ]] || { echo "view and render differ with the bias: $("$diff" b.png rb.png --from-x $panel) pixels"; exit 1; }
 changed=$("$diff" a.png b.png --from-x $panel)
 (( changed > 100 )) || { echo "a constant bias of 0.1 moved only $changed pixels"; exit 1; }
+# "save" wrote the scene with both settings in it: it renders as render with the two --set lines.
+"$tool" render saved.json --width 960 --height 540 -o rs.png >/dev/null || { echo "the saved scene does not load"; exit 1; }
+cmp -s rs.png rb.png || { echo "the saved scene renders differently from the --set lines"; exit 1; }
 # Resize, minimise, restore.
 printf 'wait 2\nresize 500 300\nwait 3\nminimize\nwait 3\nrestore\nwait 3\nscreenshot c.png\nquit\n' > steps2.txt
 "$tool" view "$src/scenes/torus-floating.json" --width 640 --height 360 --script steps2.txt >/dev/null 2>err.txt || { echo "resize/minimise: $(cat err.txt)"; exit 1; }
