@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -97,8 +98,8 @@ std::vector<Action> readScript(const std::string& path) {
             std::string rest;
             if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
-        } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore") {
-            throw Error(where + "unknown action '" + a.verb + "' (expected set, wait, screenshot, save, resize, minimize, restore or quit)");
+        } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps") {
+            throw Error(where + "unknown action '" + a.verb + "' (expected set, wait, screenshot, save, show-maps, resize, minimize, restore or quit)");
         }
         out.push_back(a);
     }
@@ -178,6 +179,15 @@ int runView(const ViewArgs& args) {
     std::size_t nextAction = 0;
     bool quit = false;
     std::map<int, bool> keysDown;
+    int viewFromLight = -1;   // a light's own camera as the viewer's, -1: the orbit
+    bool showDebug = false;   // the techniques' debug images (maps, cube crosses) in the panel
+    std::vector<DebugImage> debugImages;
+    std::vector<GLuint> debugTextures;  // one per debug image, for ImGui::Image
+    Scene lastShown;                     // what the last frame drew (its debug images are read from it)
+    auto freeDebugTextures = [&] {
+        if (!debugTextures.empty()) glDeleteTextures(static_cast<GLsizei>(debugTextures.size()), debugTextures.data());
+        debugTextures.clear();
+    };
     auto lastFrame = std::chrono::steady_clock::now();
 
     // Reads the scene again with every override; on failure keeps the last good one.
@@ -254,6 +264,8 @@ int runView(const ViewArgs& args) {
                 int w = 0, h = 0;
                 size >> w >> h;
                 glfwSetWindowSize(window, w, h);
+            } else if (a.verb == "show-maps") {
+                showDebug = true;
             } else if (a.verb == "minimize") {
                 glfwIconifyWindow(window);
             } else if (a.verb == "restore") {
@@ -263,6 +275,25 @@ int runView(const ViewArgs& args) {
             }
         }
 
+        // The techniques' debug images of the last frame drawn, before this
+        // frame's panel names their textures.
+        if (showDebug && frame % 10 == 1) {
+            // The techniques' debug images as textures for the panel (read back: every tenth frame).
+            debugImages = renderer.debugImages(lastShown);
+            freeDebugTextures();
+            for (const DebugImage& d : debugImages) {
+                GLuint texture = 0;
+                glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+                glTextureStorage2D(texture, 1, GL_RGBA8, d.image.width, d.image.height);
+                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                glTextureSubImage2D(texture, 0, 0, 0, d.image.width, d.image.height, GL_RGBA, GL_UNSIGNED_BYTE, d.image.pixels.data());
+                glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+                debugTextures.push_back(texture);
+            }
+        } else if (!showDebug && !debugTextures.empty()) {
+            freeDebugTextures();
+            debugImages.clear();
+        }
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
@@ -298,6 +329,22 @@ int runView(const ViewArgs& args) {
             cameraMoved = false;
         }
         if (pressed(GLFW_KEY_SPACE)) playing = !playing;
+        // WASD (and Q/E down/up) fly: the orbit's centre moves with the camera.
+        if (!io.WantCaptureKeyboard) {
+            const glm::vec3 forward = glm::normalize(orbit.target - orbit.position());
+            const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+            glm::vec3 move(0.0f);
+            if (glfwGetKey(window, GLFW_KEY_W) == GLFW_PRESS) move += forward;
+            if (glfwGetKey(window, GLFW_KEY_S) == GLFW_PRESS) move -= forward;
+            if (glfwGetKey(window, GLFW_KEY_D) == GLFW_PRESS) move += right;
+            if (glfwGetKey(window, GLFW_KEY_A) == GLFW_PRESS) move -= right;
+            if (glfwGetKey(window, GLFW_KEY_E) == GLFW_PRESS) move.y += 1.0f;
+            if (glfwGetKey(window, GLFW_KEY_Q) == GLFW_PRESS) move.y -= 1.0f;
+            if (glm::length(move) > 0.0f) {
+                orbit.target += glm::normalize(move) * orbit.distance * 0.6f * std::max(io.DeltaTime, 1.0f / 240.0f);
+                cameraMoved = true;
+            }
+        }
         bool screenshotKey = pressed(GLFW_KEY_F12);
 
         // The panel, at a fixed place on the left.
@@ -319,6 +366,8 @@ int runView(const ViewArgs& args) {
         ImGui::SameLine();
         if (ImGui::Button(playing ? "pause (space)" : "play (space)")) playing = !playing;
         if (ImGui::Button("screenshot (F12)")) screenshotKey = true;
+        ImGui::Checkbox("show shadow maps", &showDebug);
+        ImGui::Text("GL objects: %ld", liveGlObjects());
         if (fromFile) {
             ImGui::SameLine();
             if (ImGui::Button("save scene")) {
@@ -391,6 +440,17 @@ int runView(const ViewArgs& args) {
                         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s%s%s", f.doc.c_str(), f.unit.empty() ? "" : "; ", f.unit.c_str());
                     }
                 }
+                bool fromThis = viewFromLight == static_cast<int>(l);
+                if (ImGui::Checkbox("view from this light", &fromThis)) viewFromLight = fromThis ? static_cast<int>(l) : -1;
+                // Its debug images (a map, a cube's cross), refreshed every few frames.
+                if (showDebug)
+                    for (std::size_t d = 0; d < debugImages.size() && d < debugTextures.size(); ++d)
+                        if (debugImages[d].name.rfind("light" + std::to_string(l) + "-", 0) == 0) {
+                            const float w = kPanelWidth - 30.0f;
+                            const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
+                            ImGui::TextUnformatted(debugImages[d].name.c_str());
+                            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(debugTextures[d])), ImVec2(w, h));
+                        }
                 // Where the light is: point and spot lights move with the sliders.
                 if (light.type != LightType::Directional) {
                     glm::vec3 p = light.position;
@@ -411,12 +471,21 @@ int runView(const ViewArgs& args) {
             shown.camera.position = orbit.position();
             shown.camera.target = orbit.target;
         }
+        if (viewFromLight >= 0 && static_cast<std::size_t>(viewFromLight) < shown.lights.size()) {
+            try {
+                shown.camera = cameraFromLight(shown, shown.lights[static_cast<std::size_t>(viewFromLight)]);
+            } catch (const Error& e) {
+                error = e.what();
+                viewFromLight = -1;
+            }
+        }
         RenderOptions options;
         options.width = width;
         options.height = height;
         options.timeSeconds = seconds;
         options.clock = TimingClock::Auto;
         stats = renderer.render(shown, options);
+        lastShown = std::move(shown);
         renderer.blitToDefaultFramebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, width, height);
@@ -453,6 +522,7 @@ int runView(const ViewArgs& args) {
         if (playing) seconds += dt;
     }
 
+    freeDebugTextures();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

@@ -34,6 +34,11 @@ struct GlInfo {
 /// environment variable SHADOWLAB_EGL_PLATFORM=surfaceless|device forces one.
 /// Throws shadowlab::Error when no OpenGL 4.5 core context can be made,
 /// naming the version that was found.
+/// GL objects (buffers, textures, framebuffers, programs ...) the library
+/// holds right now, over all contexts: for leak checks (a scene reloaded a
+/// hundred times must not grow it).
+long liveGlObjects();
+
 class Context {
 public:
     static Context createHeadless(const ContextOptions& options = {});

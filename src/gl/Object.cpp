@@ -1,5 +1,6 @@
 #include "gl/Object.h"
 
+#include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 
 #include <string>
@@ -16,3 +17,9 @@ void checkFramebuffer(const Framebuffer& fb, const char* what) {
 }
 
 } // namespace shadowlab::gl
+
+namespace shadowlab {
+
+long liveGlObjects() { return gl::liveObjects.load(); }
+
+} // namespace shadowlab

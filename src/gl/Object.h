@@ -4,9 +4,13 @@
 // object and does nothing for id 0 (a moved-from or NoCreate handle).
 #include <epoxy/gl.h>
 
+#include <atomic>
 #include <utility>
 
 namespace shadowlab::gl {
+
+/// GL objects owned by handles right now (shadowlab::liveGlObjects()).
+inline std::atomic<long> liveObjects{0};
 
 /// Tag for an empty handle that owns no GL object (Magnum's NoCreate).
 struct NoCreateT { explicit constexpr NoCreateT() = default; };
@@ -18,14 +22,16 @@ public:
     explicit Object(NoCreateT) noexcept {}
     /// Creates the object. Args go to Traits::create (e.g. a texture target).
     template <class... Args>
-    explicit Object(Args... args) : id_(Traits::create(args...)) {}
-    ~Object() { if (id_ != 0) Traits::destroy(id_); }
+    explicit Object(Args... args) : id_(Traits::create(args...)) {
+        if (id_ != 0) ++liveObjects;
+    }
+    ~Object() { release(); }
     Object(const Object&) = delete;
     Object& operator=(const Object&) = delete;
     Object(Object&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
     Object& operator=(Object&& other) noexcept {
         if (this != &other) {
-            if (id_ != 0) Traits::destroy(id_);
+            release();
             id_ = std::exchange(other.id_, 0);
         }
         return *this;
@@ -34,6 +40,12 @@ public:
     explicit operator bool() const noexcept { return id_ != 0; }
 
 private:
+    void release() {
+        if (id_ == 0) return;
+        Traits::destroy(id_);
+        --liveObjects;
+        id_ = 0;
+    }
     GLuint id_ = 0;
 };
 

@@ -289,3 +289,25 @@ TEST_F(RenderGLTest, ASpotProjectsItsImageTheRightWayUp) {
     EXPECT_GT(green.y, red.y + 10);
     EXPECT_GT(white.y, blue.y + 10);
 }
+
+// The viewer reads a scene again on every change (Renderer::upload, then
+// render): a hundred reloads must not leave GL objects behind. Counted by
+// the library's handles (liveGlObjects); a map, a cube and volumes all run.
+TEST_F(RenderGLTest, AHundredReloadsLeaveNoGlObjectsBehind) {
+    const Scene scene = loadSceneFile(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "room-point.json",
+                                      {"lights[0].shadow.technique=map", "lights[0].shadow.map.size=256"});
+    const Scene sun = defaultScene({"lights[0].shadow.technique=volume"});
+    Renderer renderer(test::glContext());
+    RenderOptions options;
+    options.width = 160;
+    options.height = 90;
+    long afterFirst = 0;
+    for (int i = 0; i < 100; ++i) {
+        const Scene& s = i % 2 ? sun : scene;
+        renderer.upload(s);
+        renderer.render(s, options);
+        if (i == 1) afterFirst = liveGlObjects();
+    }
+    EXPECT_GT(afterFirst, 10);
+    EXPECT_EQ(liveGlObjects(), afterFirst);
+}
