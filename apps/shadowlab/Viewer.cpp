@@ -5,6 +5,7 @@
 // everywhere and a new option appears here without viewer code.
 #include "Viewer.h"
 
+#include <shadowlab/Compare.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/Image.h>
@@ -98,8 +99,8 @@ std::vector<Action> readScript(const std::string& path) {
             std::string rest;
             if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
-        } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps") {
-            throw Error(where + "unknown action '" + a.verb + "' (expected set, wait, screenshot, save, show-maps, resize, minimize, restore or quit)");
+        } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "compare") {
+            throw Error(where + "unknown action '" + a.verb + "' (expected set, wait, screenshot, save, show-maps, compare, resize, minimize, restore or quit)");
         }
         out.push_back(a);
     }
@@ -184,6 +185,16 @@ int runView(const ViewArgs& args) {
     std::vector<DebugImage> debugImages;
     std::vector<GLuint> debugTextures;  // one per debug image, for ImGui::Image
     Scene lastShown;                     // what the last frame drew (its debug images are read from it)
+    // The error image against the ray-traced reference: asked for (C or the
+    // button), then traced on the next frame after "tracing ..." was shown.
+    enum class Reference { None, Asked, Tracing, Shown } reference = Reference::None;
+    std::vector<std::string> referenceLines;
+    std::vector<GLuint> referenceTextures;
+    std::vector<ImageRGBA8> referenceImages;
+    auto freeReferenceTextures = [&] {
+        if (!referenceTextures.empty()) glDeleteTextures(static_cast<GLsizei>(referenceTextures.size()), referenceTextures.data());
+        referenceTextures.clear();
+    };
     auto freeDebugTextures = [&] {
         if (!debugTextures.empty()) glDeleteTextures(static_cast<GLsizei>(debugTextures.size()), debugTextures.data());
         debugTextures.clear();
@@ -266,6 +277,8 @@ int runView(const ViewArgs& args) {
                 glfwSetWindowSize(window, w, h);
             } else if (a.verb == "show-maps") {
                 showDebug = true;
+            } else if (a.verb == "compare") {
+                reference = Reference::Asked;
             } else if (a.verb == "minimize") {
                 glfwIconifyWindow(window);
             } else if (a.verb == "restore") {
@@ -274,6 +287,41 @@ int runView(const ViewArgs& args) {
                 quit = true;
             }
         }
+
+        // The comparison asked for last frame (its "tracing" line is on
+        // screen now): the same frame against exact shadows, per light the
+        // misclassified shares and the error image (docs/metrics.md).
+        if (reference == Reference::Tracing) {
+            freeReferenceTextures();
+            referenceLines.clear();
+            referenceImages.clear();
+            try {
+                CompareOptions options;
+                options.width = width;
+                options.height = height;
+                options.timeSeconds = seconds;
+                const Comparison c = compareWithReference(renderer, lastShown, options);
+                for (const LightComparison& l : c.lights) {
+                    char line[200];
+                    std::snprintf(line, sizeof line, "%s: %.3f %% wrong away from edges, %.3f %% in all", l.name.c_str(),
+                                  100.0 * (l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges), 100.0 * (l.falseLit + l.falseShadow));
+                    referenceLines.push_back(line);
+                    referenceImages.push_back(l.errorImage);
+                    GLuint texture = 0;
+                    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+                    glTextureStorage2D(texture, 1, GL_RGBA8, l.errorImage.width, l.errorImage.height);
+                    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                    glTextureSubImage2D(texture, 0, 0, 0, l.errorImage.width, l.errorImage.height, GL_RGBA, GL_UNSIGNED_BYTE, l.errorImage.pixels.data());
+                    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+                    referenceTextures.push_back(texture);
+                }
+                reference = Reference::Shown;
+            } catch (const Error& e) {
+                error = e.what();
+                reference = Reference::None;
+            }
+        }
+        if (reference == Reference::Asked && frame > 0) reference = Reference::Tracing;  // shown once, traced next frame
 
         // The techniques' debug images of the last frame drawn, before this
         // frame's panel names their textures.
@@ -346,6 +394,7 @@ int runView(const ViewArgs& args) {
             }
         }
         bool screenshotKey = pressed(GLFW_KEY_F12);
+        if (pressed(GLFW_KEY_C)) reference = Reference::Asked;
 
         // The panel, at a fixed place on the left.
         ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
@@ -367,6 +416,21 @@ int runView(const ViewArgs& args) {
         if (ImGui::Button(playing ? "pause (space)" : "play (space)")) playing = !playing;
         if (ImGui::Button("screenshot (F12)")) screenshotKey = true;
         ImGui::Checkbox("show shadow maps", &showDebug);
+        ImGui::SameLine();
+        if (ImGui::Button("compare (C)")) reference = Reference::Asked;
+        if (reference == Reference::Asked || reference == Reference::Tracing) ImGui::TextUnformatted("tracing the reference ...");
+        if (reference == Reference::Shown) {
+            for (const std::string& line : referenceLines) ImGui::TextWrapped("%s", line.c_str());
+            for (std::size_t r = 0; r < referenceTextures.size(); ++r) {
+                const float w = kPanelWidth - 30.0f;
+                const float h = w * static_cast<float>(referenceImages[r].height) / static_cast<float>(std::max(referenceImages[r].width, 1));
+                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(referenceTextures[r])), ImVec2(w, h));
+            }
+            if (ImGui::Button("hide comparison")) {
+                reference = Reference::None;
+                freeReferenceTextures();
+            }
+        }
         ImGui::Text("GL objects: %ld", liveGlObjects());
         if (fromFile) {
             ImGui::SameLine();
@@ -523,6 +587,7 @@ int runView(const ViewArgs& args) {
     }
 
     freeDebugTextures();
+    freeReferenceTextures();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
