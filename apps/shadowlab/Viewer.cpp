@@ -99,8 +99,10 @@ std::vector<Action> readScript(const std::string& path) {
             std::string rest;
             if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
-        } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "compare") {
-            throw Error(where + "unknown action '" + a.verb + "' (expected set, wait, screenshot, save, show-maps, compare, resize, minimize, restore or quit)");
+        } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "show-light" &&
+                   a.verb != "compare") {
+            throw Error(where + "unknown action '" + a.verb +
+                        "' (expected set, wait, screenshot, save, show-maps, show-light, compare, resize, minimize, restore or quit)");
         }
         out.push_back(a);
     }
@@ -181,6 +183,8 @@ int runView(const ViewArgs& args) {
     bool quit = false;
     std::map<int, bool> keysDown;
     int viewFromLight = -1;   // a light's own camera as the viewer's, -1: the orbit
+    int selectedLight = 0;    // the light Shift + drag moves, and whose cone is drawn
+    bool showLight = false;   // the selected light in wireframe over the picture
     bool showDebug = false;   // the techniques' debug images (maps, cube crosses) in the panel
     std::vector<DebugImage> debugImages;
     std::vector<GLuint> debugTextures;  // one per debug image, for ImGui::Image
@@ -277,6 +281,8 @@ int runView(const ViewArgs& args) {
                 glfwSetWindowSize(window, w, h);
             } else if (a.verb == "show-maps") {
                 showDebug = true;
+            } else if (a.verb == "show-light") {
+                showLight = true;
             } else if (a.verb == "compare") {
                 reference = Reference::Asked;
             } else if (a.verb == "minimize") {
@@ -347,7 +353,23 @@ int runView(const ViewArgs& args) {
         ImGui::NewFrame();
         ImGuiIO& io = ImGui::GetIO();
         // Camera: left drag orbits, right drag pans, the wheel zooms, R resets.
-        if (!io.WantCaptureMouse) {
+        // Shift + left drag moves the selected point or spot light across the view.
+        const bool dragLight = io.KeyShift && selectedLight >= 0 && static_cast<std::size_t>(selectedLight) < scene.lights.size() &&
+                               scene.lights[static_cast<std::size_t>(selectedLight)].type != LightType::Directional;
+        if (!io.WantCaptureMouse && dragLight && ImGui::IsMouseDragging(ImGuiMouseButton_Left) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+            const Light& light = scene.lights[static_cast<std::size_t>(selectedLight)];
+            const glm::vec3 eye = cameraMoved ? orbit.position() : scene.camera.position;
+            const glm::vec3 at = cameraMoved ? orbit.target : scene.camera.target;
+            const glm::vec3 forward = glm::normalize(at - eye);
+            const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+            const glm::vec3 up = glm::cross(right, forward);
+            // A pixel moves the light by one pixel's width at its distance.
+            const float perPixel = 2.0f * glm::length(light.position - eye) * std::tan(glm::radians(scene.camera.fovYDeg) * 0.5f) / static_cast<float>(height);
+            const glm::vec3 p = light.position + (io.MouseDelta.x * right - io.MouseDelta.y * up) * perPixel;
+            std::ostringstream s;
+            s << "[" << p.x << ", " << p.y << ", " << p.z << "]";
+            apply("lights[" + std::to_string(selectedLight) + "].position", s.str());
+        } else if (!io.WantCaptureMouse) {
             if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
                 orbit.yaw -= io.MouseDelta.x * 0.008f;
                 orbit.pitch = std::clamp(orbit.pitch + io.MouseDelta.y * 0.008f, -1.5f, 1.5f);
@@ -416,6 +438,8 @@ int runView(const ViewArgs& args) {
         if (ImGui::Button(playing ? "pause (space)" : "play (space)")) playing = !playing;
         if (ImGui::Button("screenshot (F12)")) screenshotKey = true;
         ImGui::Checkbox("show shadow maps", &showDebug);
+        ImGui::SameLine();
+        ImGui::Checkbox("show light", &showLight);
         ImGui::SameLine();
         if (ImGui::Button("compare (C)")) reference = Reference::Asked;
         if (reference == Reference::Asked || reference == Reference::Tracing) ImGui::TextUnformatted("tracing the reference ...");
@@ -504,6 +528,7 @@ int runView(const ViewArgs& args) {
                         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s%s%s", f.doc.c_str(), f.unit.empty() ? "" : "; ", f.unit.c_str());
                     }
                 }
+                ImGui::RadioButton("selected (shift + drag moves it)", &selectedLight, static_cast<int>(l));
                 bool fromThis = viewFromLight == static_cast<int>(l);
                 if (ImGui::Checkbox("view from this light", &fromThis)) viewFromLight = fromThis ? static_cast<int>(l) : -1;
                 // Its debug images (a map, a cube's cross), refreshed every few frames.
@@ -553,6 +578,46 @@ int runView(const ViewArgs& args) {
         renderer.blitToDefaultFramebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, width, height);
+        // The selected light in wireframe over the picture: a spot's cone out
+        // to its reach (its map's frustum holds just that cone), a point
+        // light's position, a directional light's direction from the target.
+        if (showLight && selectedLight >= 0 && static_cast<std::size_t>(selectedLight) < lastShown.lights.size()) {
+            const Light& light = lastShown.lights[static_cast<std::size_t>(selectedLight)];
+            const float aspect = static_cast<float>(width) / static_cast<float>(height);
+            const glm::mat4 clip = lastShown.camera.clipFromView(aspect) * lastShown.camera.viewFromWorld();
+            ImDrawList* draw = ImGui::GetBackgroundDrawList();
+            const ImU32 colour = IM_COL32(255, 220, 90, 220);
+            auto toScreen = [&](const glm::vec3& p, ImVec2& out) {
+                const glm::vec4 c = clip * glm::vec4(p, 1.0f);
+                if (c.w <= 1e-4f) return false;
+                out = ImVec2((c.x / c.w * 0.5f + 0.5f) * static_cast<float>(width), (0.5f - c.y / c.w * 0.5f) * static_cast<float>(height));
+                return true;
+            };
+            auto line = [&](const glm::vec3& a, const glm::vec3& b) {
+                ImVec2 sa, sb;
+                if (toScreen(a, sa) && toScreen(b, sb)) draw->AddLine(sa, sb, colour, 1.5f);
+            };
+            if (light.type == LightType::Spot) {
+                const glm::vec3 axis = glm::normalize(light.direction);
+                const glm::vec3 side = glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+                const glm::vec3 other = glm::cross(axis, side);
+                const float reach = light.range > 0.0f ? light.range : 1.1f * glm::length(lastShown.camera.target - light.position);
+                const float radius = reach * std::tan(glm::radians(light.outerConeDeg));
+                glm::vec3 previous{};
+                for (int k = 0; k <= 24; ++k) {
+                    const float a = 6.2831853f * static_cast<float>(k) / 24.0f;
+                    const glm::vec3 rim = light.position + axis * reach + radius * (std::cos(a) * side + std::sin(a) * other);
+                    if (k % 6 == 0) line(light.position, rim);
+                    if (k > 0) line(previous, rim);
+                    previous = rim;
+                }
+            } else if (light.type == LightType::Point) {
+                for (const glm::vec3 d : {glm::vec3(0.3f, 0, 0), glm::vec3(0, 0.3f, 0), glm::vec3(0, 0, 0.3f)}) line(light.position - d, light.position + d);
+            } else {
+                const glm::vec3 target = lastShown.camera.target;
+                line(target - glm::normalize(light.direction) * 3.0f, target);
+            }
+        }
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 

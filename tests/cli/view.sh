@@ -31,7 +31,7 @@ changed=$("$diff" a.png b.png --from-x $panel)
 "$tool" render saved.json --width 960 --height 540 -o rs.png >/dev/null || { echo "the saved scene does not load"; exit 1; }
 cmp -s rs.png rb.png || { echo "the saved scene renders differently from the --set lines"; exit 1; }
 # Resize, minimise, restore.
-printf 'show-maps\ncompare\nwait 12\nresize 500 300\nwait 3\nminimize\nwait 3\nrestore\nwait 12\nscreenshot c.png\nquit\n' > steps2.txt
+printf 'show-maps\nshow-light\ncompare\nwait 12\nresize 500 300\nwait 3\nminimize\nwait 3\nrestore\nwait 12\nscreenshot c.png\nquit\n' > steps2.txt
 "$tool" view "$src/scenes/torus-floating.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' --set lights[0].shadow.map.size=256 --script steps2.txt >/dev/null 2>err.txt || { echo "resize/minimise: $(cat err.txt)"; exit 1; }
 [[ -s c.png ]] || { echo "no screenshot after resize"; exit 1; }
 # A broken scene file while the viewer runs, then repaired: no crash, the error shown, the scene back.
