@@ -282,17 +282,17 @@ json runBench(Context& context, const BenchArgs& args) {
                     }
                 }
                 if (counters.count(pass + ".triangles")) record["shadowTriangles"] = median(counters[pass + ".triangles"]);
-                // Every other number the technique reported for this pass (a cube's triangles per face, ...).
-                json reported = json::object();
-                for (const auto& [name, values] : counters)
-                    if (name.rfind(pass + ".", 0) == 0 && name != pass + ".triangles") reported[name.substr(pass.size() + 1)] = median(values);
-                if (!reported.empty()) record["shadowCounters"] = std::move(reported);
-                // And for the light's own pass (a stencil technique's work: the CPU's silhouettes, ...).
-                const std::string own = "light[" + std::to_string(l) + "].";
-                json lightReported = json::object();
-                for (const auto& [name, values] : counters)
-                    if (name.rfind(own, 0) == 0) lightReported[name.substr(own.size())] = median(values);
-                if (!lightReported.empty()) record["lightCounters"] = std::move(lightReported);
+                // Every other number the technique reported for its shadow pass
+                // (a cube's triangles per face) and for its light pass (a
+                // stencil technique's CPU silhouettes), by name, medians.
+                auto reportedUnder = [&](const std::string& prefix, const std::string& skip) {
+                    json out = json::object();
+                    for (const auto& [name, values] : counters)
+                        if (name.rfind(prefix, 0) == 0 && name != skip) out[name.substr(prefix.size())] = median(values);
+                    return out;
+                };
+                if (json r = reportedUnder(pass + ".", pass + ".triangles"); !r.empty()) record["shadowCounters"] = std::move(r);
+                if (json r = reportedUnder("light[" + std::to_string(l) + "].", ""); !r.empty()) record["lightCounters"] = std::move(r);
                 lights.push_back(std::move(record));
             }
             json passes = json::object();

@@ -13,6 +13,8 @@
 #include <shadowlab/SceneFile.h>
 #include <shadowlab/Techniques.h>
 
+#include "gl/Object.h"
+
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -133,6 +135,16 @@ std::string jsonString(const std::string& s) {
     return out + "\"";
 }
 
+// An image as a texture for ImGui::Image.
+gl::Texture textureOf(const ImageRGBA8& image) {
+    gl::Texture texture(GL_TEXTURE_2D);
+    glTextureStorage2D(texture.id(), 1, GL_RGBA8, image.width, image.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    return texture;
+}
+
 // An orbiting camera around the scene camera's target.
 struct Orbit {
     glm::vec3 target{0.0f};
@@ -187,22 +199,16 @@ int runView(const ViewArgs& args) {
     bool showLight = false;   // the selected light in wireframe over the picture
     bool showDebug = false;   // the techniques' debug images (maps, cube crosses) in the panel
     std::vector<DebugImage> debugImages;
-    std::vector<GLuint> debugTextures;  // one per debug image, for ImGui::Image
+    std::vector<gl::Texture> debugTextures;  // one per debug image, for ImGui::Image
     Scene lastShown;                     // what the last frame drew (its debug images are read from it)
     // The error image against the ray-traced reference: asked for (C or the
     // button), then traced on the next frame after "tracing ..." was shown.
     enum class Reference { None, Asked, Tracing, Shown } reference = Reference::None;
     std::vector<std::string> referenceLines;
-    std::vector<GLuint> referenceTextures;
+    std::vector<gl::Texture> referenceTextures;
     std::vector<ImageRGBA8> referenceImages;
-    auto freeReferenceTextures = [&] {
-        if (!referenceTextures.empty()) glDeleteTextures(static_cast<GLsizei>(referenceTextures.size()), referenceTextures.data());
-        referenceTextures.clear();
-    };
-    auto freeDebugTextures = [&] {
-        if (!debugTextures.empty()) glDeleteTextures(static_cast<GLsizei>(debugTextures.size()), debugTextures.data());
-        debugTextures.clear();
-    };
+    auto freeReferenceTextures = [&] { referenceTextures.clear(); };
+    auto freeDebugTextures = [&] { debugTextures.clear(); };
     auto lastFrame = std::chrono::steady_clock::now();
 
     // Reads the scene again with every override; on failure keeps the last good one.
@@ -313,13 +319,7 @@ int runView(const ViewArgs& args) {
                                   100.0 * (l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges), 100.0 * (l.falseLit + l.falseShadow));
                     referenceLines.push_back(line);
                     referenceImages.push_back(l.errorImage);
-                    GLuint texture = 0;
-                    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-                    glTextureStorage2D(texture, 1, GL_RGBA8, l.errorImage.width, l.errorImage.height);
-                    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                    glTextureSubImage2D(texture, 0, 0, 0, l.errorImage.width, l.errorImage.height, GL_RGBA, GL_UNSIGNED_BYTE, l.errorImage.pixels.data());
-                    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-                    referenceTextures.push_back(texture);
+                    referenceTextures.push_back(textureOf(l.errorImage));
                 }
                 reference = Reference::Shown;
             } catch (const Error& e) {
@@ -335,15 +335,7 @@ int runView(const ViewArgs& args) {
             // The techniques' debug images as textures for the panel (read back: every tenth frame).
             debugImages = renderer.debugImages(lastShown);
             freeDebugTextures();
-            for (const DebugImage& d : debugImages) {
-                GLuint texture = 0;
-                glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-                glTextureStorage2D(texture, 1, GL_RGBA8, d.image.width, d.image.height);
-                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                glTextureSubImage2D(texture, 0, 0, 0, d.image.width, d.image.height, GL_RGBA, GL_UNSIGNED_BYTE, d.image.pixels.data());
-                glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-                debugTextures.push_back(texture);
-            }
+            for (const DebugImage& d : debugImages) debugTextures.push_back(textureOf(d.image));
         } else if (!showDebug && !debugTextures.empty()) {
             freeDebugTextures();
             debugImages.clear();
@@ -448,7 +440,7 @@ int runView(const ViewArgs& args) {
             for (std::size_t r = 0; r < referenceTextures.size(); ++r) {
                 const float w = kPanelWidth - 30.0f;
                 const float h = w * static_cast<float>(referenceImages[r].height) / static_cast<float>(std::max(referenceImages[r].width, 1));
-                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(referenceTextures[r])), ImVec2(w, h));
+                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(referenceTextures[r].id())), ImVec2(w, h));
             }
             if (ImGui::Button("hide comparison")) {
                 reference = Reference::None;
@@ -538,7 +530,7 @@ int runView(const ViewArgs& args) {
                             const float w = kPanelWidth - 30.0f;
                             const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
                             ImGui::TextUnformatted(debugImages[d].name.c_str());
-                            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(debugTextures[d])), ImVec2(w, h));
+                            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(debugTextures[d].id())), ImVec2(w, h));
                         }
                 // Where the light is: point and spot lights move with the sliders.
                 if (light.type != LightType::Directional) {

@@ -58,6 +58,10 @@ Bounds frustumBounds(const glm::mat4& cameraClipFromWorld, const glm::mat4& to) 
 
 } // namespace
 
+glm::vec4 towardsLight(const Light& light) {
+    return light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), 0.0f) : glm::vec4(light.position, 1.0f);
+}
+
 std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const glm::mat4& lightView, const FitInput& in) {
     std::vector<std::size_t> receivers;
     for (std::size_t i = 0; i < in.items.size(); ++i)
@@ -166,7 +170,7 @@ LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
     const glm::vec3 axis = glm::normalize(light.direction);
     cam.viewFromWorld = glm::lookAt(light.position, light.position + axis, lightCameraUp(axis));
     cam.perspective = true;
-    cam.casts = castersThatMatter(glm::vec4(light.position, 1.0f), cam.viewFromWorld, in);
+    cam.casts = castersThatMatter(towardsLight(light), cam.viewFromWorld, in);
     // Far: the farthest projection on the axis of what must be covered.
     Bounds covered;
     if (fit == MapFit::Scene) covered = all(in);
@@ -228,7 +232,7 @@ CubeCamera fitCube(const Light& light, MapFit fit, const FitInput& in, float nea
     cam.nearPlane = nearPlane > 0.0f ? nearPlane : cam.farPlane * 1e-4f;
     const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, cam.nearPlane, cam.farPlane);
     for (int f = 0; f < 6; ++f) cam.faceClipFromWorld[static_cast<std::size_t>(f)] = projection * cubeFaceView(light.position, f);
-    const std::vector<std::uint8_t> casts = castersThatMatter(glm::vec4(light.position, 1.0f), glm::mat4(1.0f), in);
+    const std::vector<std::uint8_t> casts = castersThatMatter(towardsLight(light), glm::mat4(1.0f), in);
     cam.faceMasks.assign(in.items.size(), 0);
     for (std::size_t i = 0; i < in.items.size(); ++i) {
         if (!casts[i]) continue;

@@ -46,6 +46,11 @@ struct FitInput {
 /// conservative test, a box it keeps may still be outside.
 bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box);
 
+/// The light as one homogeneous vector: a point or spot light's position
+/// with w = 1, or the unit direction towards a directional light with w = 0
+/// (what castersThatMatter, the plane projection and the volumes take).
+glm::vec4 towardsLight(const Light& light);
+
 /// Which casters may shadow a receiver the camera sees (LightCamera::casts)
 /// for a light `towardsLight` (position, w = 1; or the direction towards a
 /// directional light, w = 0), with `lightView` a view along the light for

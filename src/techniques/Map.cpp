@@ -523,17 +523,7 @@ public:
             return;
         }
         const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
-        std::vector<float> depth(n);
-        if (g.format == MapFormat::Rgba8) {
-            std::vector<std::uint8_t> rgba(n * 4);
-            glGetTextureSubImage(g.packed.id(), 0, 0, 0, p.layer, g.size, g.size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
-                                 static_cast<GLsizei>(rgba.size()), rgba.data());
-            for (std::size_t i = 0; i < n; ++i)
-                depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65025.0f + rgba[4 * i + 2] / 16581375.0f;  // base 255 (the 4th digit is below float precision here)
-        } else {
-            glGetTextureSubImage(g.depth.id(), 0, 0, 0, p.layer, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
-                                 static_cast<GLsizei>(n * sizeof(float)), depth.data());
-        }
+        const std::vector<float> depth = readLayer(g, p.layer);
         ImageRGBA8 image{g.size, g.size, std::vector<std::uint8_t>(n * 4, 255)};
         const float nearP = p.camera.nearPlane, farP = p.camera.farPlane;
         for (int y = 0; y < g.size; ++y)
@@ -555,6 +545,24 @@ public:
     }
 
 private:
+    // One layer of a group's array (a 2D map, or one face of a cube) as
+    // stored depths in 0..1: read back, or unpacked from rgba8's base-255
+    // digits (the 4th is below float precision here).
+    std::vector<float> readLayer(const Group& g, int layer) const {
+        const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
+        std::vector<float> depth(n);
+        if (g.format == MapFormat::Rgba8) {
+            std::vector<std::uint8_t> rgba(n * 4);
+            glGetTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size, g.size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                                 static_cast<GLsizei>(rgba.size()), rgba.data());
+            for (std::size_t i = 0; i < n; ++i) depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65025.0f + rgba[4 * i + 2] / 16581375.0f;
+        } else {
+            glGetTextureSubImage(g.depth.id(), 0, 0, 0, layer, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                                 static_cast<GLsizei>(n * sizeof(float)), depth.data());
+        }
+        return depth;
+    }
+
     // A point light's six faces as a horizontal cross (+Y above; -X, +Z, +X,
     // -Z across; -Y below: neighbouring edges touch), each face's rows as GL
     // stores them (t down), tiles of at most 512 texels. Stored depth is
@@ -563,21 +571,11 @@ private:
     ImageRGBA8 cubeCross(const PerLight& p, std::vector<float>& values) const {
         const Group& g = groups_[p.group];
         const int tile = std::min(g.size, 512);
-        const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
         std::array<std::vector<float>, 6> faces;
         float lo = 1.0f, hi = 0.0f;
         for (int f = 0; f < 6; ++f) {
             std::vector<float>& depth = faces[static_cast<std::size_t>(f)];
-            depth.resize(n);
-            if (g.format == MapFormat::Rgba8) {
-                std::vector<std::uint8_t> rgba(n * 4);
-                glGetTextureSubImage(g.packed.id(), 0, 0, 0, 6 * p.layer + f, g.size, g.size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
-                                     static_cast<GLsizei>(rgba.size()), rgba.data());
-                for (std::size_t i = 0; i < n; ++i) depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65025.0f + rgba[4 * i + 2] / 16581375.0f;
-            } else {
-                glGetTextureSubImage(g.depth.id(), 0, 0, 0, 6 * p.layer + f, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
-                                     static_cast<GLsizei>(n * sizeof(float)), depth.data());
-            }
+            depth = readLayer(g, 6 * p.layer + f);
             for (float d : depth)
                 if (d < 1.0f) {
                     lo = std::min(lo, d);
@@ -693,21 +691,30 @@ private:
         }
     }
 
-    void drawFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p) {
-        const Group& g = groups_[p.group];
+    // The floor's target for `g`, bound, and its bare depth-only program.
+    const gl::Program& bindFloor(TechniqueHost& host, const Group& g) {
         ensureFloorTarget(g);
-        const gl::Program& bare = host.program(
-            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n"});
-        const auto scope = host.timeScope("floor");
         glBindFramebuffer(GL_FRAMEBUFFER, floorFbo_.id());
         glViewport(0, 0, g.size, g.size);
+        return host.program(
+            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n"});
+    }
+
+    // Clears the floor's target (all writes on), then leaves depth-only writes.
+    void clearFloor(TechniqueHost& host, bool depthClamp) {
         gl::RenderState state;
         host.apply(state);
         const float one = 1.0f;
         glClearNamedFramebufferfv(floorFbo_.id(), GL_DEPTH, 0, &one);
         state.noColor();
-        state.depthClamp = !p.camera.perspective;
+        state.depthClamp = depthClamp;
         host.apply(state);
+    }
+
+    void drawFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p) {
+        const auto scope = host.timeScope("floor");
+        const gl::Program& bare = bindFloor(host, groups_[p.group]);
+        clearFloor(host, !p.camera.perspective);
         const glm::mat4 lightClip = p.camera.clipFromWorld();
         host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) {
             return mayCast(p.camera, i) && (!p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]));
@@ -788,7 +795,7 @@ private:
         static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
         host.count("triangles", static_cast<double>(drawn));
         for (std::size_t f = 0; f < 6; ++f) host.count(std::string("faceTriangles.") + faceNames[f], faceTriangles[f]);
-        if (frame.measureFloors) drawCubeFloor(host, frame, p, used);
+        if (frame.measureFloors) drawCubeFloor(host, p, used);
     }
 
     // The cube faces item i is drawn into: those its bounds touch, or all
@@ -800,22 +807,12 @@ private:
 
     // A cube's floor: per face it uses, a bare depth-only draw of that
     // face's casters into a scratch target of the face's size and format.
-    void drawCubeFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p, const std::array<bool, 6>& used) {
-        const Group& g = groups_[p.group];
-        ensureFloorTarget(g);
-        const gl::Program& bare = host.program(
-            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n"});
+    void drawCubeFloor(TechniqueHost& host, const PerLight& p, const std::array<bool, 6>& used) {
         const auto scope = host.timeScope("floor");
-        glBindFramebuffer(GL_FRAMEBUFFER, floorFbo_.id());
-        glViewport(0, 0, g.size, g.size);
+        const gl::Program& bare = bindFloor(host, groups_[p.group]);
         for (int f = 0; f < 6; ++f) {
             if (!used[static_cast<std::size_t>(f)]) continue;
-            gl::RenderState state;
-            host.apply(state);
-            const float one = 1.0f;
-            glClearNamedFramebufferfv(floorFbo_.id(), GL_DEPTH, 0, &one);
-            state.noColor();
-            host.apply(state);
+            clearFloor(host, false);
             // The bare vertex shader reads map.lightClipFromWorld: this face's camera.
             shared::MapUniforms u = uniforms_;
             u.lightClipFromWorld = p.cubeCamera.faceClipFromWorld[static_cast<std::size_t>(f)];
@@ -823,7 +820,6 @@ private:
             host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return (faceMask(p, i) & (1u << f)) != 0; });
         }
         glNamedBufferSubData(ubo_.id(), 0, sizeof uniforms_, &uniforms_);
-        (void)frame;
     }
 
     // Casters the fit found unable to shadow anything visible are skipped.

@@ -10,6 +10,7 @@
 // draws them dark over the lit scene with depth only instead (000's look).
 #include "techniques/Planar.h"
 
+#include "core/LightCamera.h"
 #include "techniques/Stencil.h"
 
 #include <shadowlab/Error.h>
@@ -50,10 +51,6 @@ glm::mat4 planeProjection(const glm::vec4& n, const glm::vec4& L) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) m[c][r] -= L[r] * n[c];
     return m;
-}
-
-glm::vec4 towardsLight(const Light& light) {
-    return light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), 0.0f) : glm::vec4(light.position, 1.0f);
 }
 
 std::vector<std::string> splitNames(const std::string& text) {

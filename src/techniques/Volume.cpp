@@ -75,8 +75,7 @@ public:
         std::vector<std::uint8_t> any(frame.items.size(), 0);
         for (int index : lights) {
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
-            const glm::vec4 towards = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), 0.0f)
-                                                                            : glm::vec4(light.position, 1.0f);
+            const glm::vec4 towards = towardsLight(light);
             const glm::vec3 along = light.type == LightType::Directional ? glm::normalize(light.direction) : glm::vec3(0.0f, -1.0f, 0.0f);
             const glm::mat4 lightView = glm::lookAt(glm::vec3(0.0f), along, lightCameraUp(along));
             const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
@@ -100,8 +99,7 @@ public:
         const bool depthFail = o.method != VolumeMethod::DepthPass;
         const bool book = o.method == VolumeMethod::Book;
         shared::VolumeUniforms u{};
-        u.light = view.light.type == LightType::Directional ? glm::vec4(-glm::normalize(view.light.direction), 0.0f)
-                                                              : glm::vec4(view.light.position, 1.0f);
+        u.light = towardsLight(view.light);
         // The book's extrusion: past every point of the scene seen from the light.
         Bounds scene;
         for (const Bounds& b : frame.itemBounds) scene.add(b);
@@ -192,9 +190,7 @@ private:
     // The light (position with w = 1, or the direction towards it with w =
     // 0) in the item's object space.
     static glm::dvec4 lightInObject(const DrawItem& item, const Light& light) {
-        const glm::dvec4 L = light.type == LightType::Directional ? glm::dvec4(-glm::normalize(glm::dvec3(light.direction)), 0.0)
-                                                                    : glm::dvec4(glm::dvec3(light.position), 1.0);
-        return glm::inverse(glm::dmat4(item.worldFromObject)) * L;
+        return glm::inverse(glm::dmat4(item.worldFromObject)) * glm::dvec4(towardsLight(light));
     }
 
     struct CpuVertex {
@@ -280,11 +276,14 @@ private:
             glEnableVertexArrayAttrib(cpuArray_.id(), 0);
             glEnableVertexArrayAttrib(cpuArray_.id(), 1);
         }
-        // A fresh buffer each frame (the old one may still be read by the GPU).
-        cpuBuffer_ = gl::Buffer();
+        // One buffer for the technique's life: glNamedBufferData gives it new
+        // storage each frame (the driver keeps the old one while it is read).
+        if (!cpuBuffer_) {
+            cpuBuffer_ = gl::Buffer();
+            glVertexArrayVertexBuffer(cpuArray_.id(), 0, cpuBuffer_.id(), 0, sizeof(CpuVertex));
+        }
         glNamedBufferData(cpuBuffer_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, cpuVertices_.size()) * sizeof(CpuVertex)),
                           cpuVertices_.empty() ? nullptr : cpuVertices_.data(), GL_STREAM_DRAW);
-        glVertexArrayVertexBuffer(cpuArray_.id(), 0, cpuBuffer_.id(), 0, sizeof(CpuVertex));
     }
 
     struct Adjacency {

@@ -223,12 +223,7 @@ TEST_F(VolumeGLTest, NearlyCoplanarFacesMakeNoHoles) {
         node.mesh = static_cast<int>(scene.meshes.size()) - 1;
         node.receivesShadows = false;
         scene.nodes.push_back(node);
-        Renderer renderer(test::glContext());
-        renderer.upload(scene);
-        CompareOptions options;
-        options.width = 640;
-        options.height = 360;
-        const Comparison c = compareWithReference(renderer, scene, options);
+        const Comparison c = test::compareScene(scene, 640, 360);
         EXPECT_GT(c.lights[0].referenceShadowedPixels, 800u) << "the slab's band on the wall is in view";
         EXPECT_EQ(awayFromEdges(c.lights[0]), 0.0);
         if (HasFailure()) test::saveImagesIfFailed(std::string("coplanar-") + extrusion, c.technique, c.reference);
