@@ -25,6 +25,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -34,6 +36,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -65,7 +68,9 @@ struct Overrides {
 
 // One action of a --script file, one per line: "set KEY=VALUE", "wait N"
 // (frames), "screenshot FILE", "save FILE" (the scene with the settings made,
-// as JSON), "resize W H", "minimize", "restore", "quit"; "#" starts a comment.
+// as JSON), "show-maps", "show-light", "show-density", "compare [DIR]" (waits
+// for the reference; prints the numbers, writes error-<i>.png into DIR),
+// "resize W H", "minimize", "restore", "quit"; "#" starts a comment.
 struct Action {
     std::string verb, argument;
     int line = 0;
@@ -101,10 +106,14 @@ std::vector<Action> readScript(const std::string& path) {
             std::string rest;
             if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
+        } else if (a.verb == "compare") {
+            // An optional directory for the error images.
         } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "show-light" &&
-                   a.verb != "compare") {
+                   a.verb != "show-density") {
             throw Error(where + "unknown action '" + a.verb +
-                        "' (expected set, wait, screenshot, save, show-maps, show-light, compare, resize, minimize, restore or quit)");
+                        "' (expected set, wait, screenshot, save, show-maps, show-light, show-density, compare, resize, minimize, restore or quit)");
+        } else if (!a.argument.empty()) {
+            throw Error(where + a.verb + ": expected nothing after it, got '" + a.argument + "'");
         }
         out.push_back(a);
     }
@@ -161,6 +170,51 @@ struct Orbit {
     }
 };
 
+// A comparison with the ray-traced reference in flight: the technique's
+// frame was read when it was asked for; the tracing runs on a worker thread
+// while the window goes on drawing; the result is classified on the window's
+// thread once `done`. Destroying it cancels the tracing and waits for it.
+struct ReferenceRun {
+    std::unique_ptr<ComparisonJob> job;
+    std::thread worker;
+    std::atomic<bool> done{false};
+    std::string error;  ///< the worker's failure, written before `done`
+    std::string directory;  ///< the script's "compare DIR": where the error images go
+    int startFrame = 0;     ///< the window's frame when it started
+    ReferenceRun() = default;
+    ReferenceRun(const ReferenceRun&) = delete;
+    ReferenceRun& operator=(const ReferenceRun&) = delete;
+    ~ReferenceRun() {
+        if (job) job->cancel();
+        if (worker.joinable()) worker.join();
+    }
+};
+
+// A segment in world space onto the window, clipped at the camera's near
+// side (w > 0) so that a frustum reaching behind the viewer stays drawn.
+void drawSegment(ImDrawList* draw, const glm::mat4& clipFromWorld, glm::vec2 size, glm::vec3 a, glm::vec3 b, ImU32 colour) {
+    glm::vec4 ca = clipFromWorld * glm::vec4(a, 1.0f), cb = clipFromWorld * glm::vec4(b, 1.0f);
+    constexpr float kNear = 1e-3f;
+    if (ca.w < kNear && cb.w < kNear) return;
+    if (ca.w < kNear) ca = glm::mix(ca, cb, (kNear - ca.w) / (cb.w - ca.w));
+    if (cb.w < kNear) cb = glm::mix(cb, ca, (kNear - cb.w) / (ca.w - cb.w));
+    auto screen = [&](const glm::vec4& c) { return ImVec2((c.x / c.w * 0.5f + 0.5f) * size.x, (0.5f - c.y / c.w * 0.5f) * size.y); };
+    draw->AddLine(screen(ca), screen(cb), colour, 1.5f);
+}
+
+// The twelve edges of the volume that is [-1, 1]^3 in `lightClip`'s clip space.
+void drawFrustum(ImDrawList* draw, const glm::mat4& clipFromWorld, glm::vec2 size, const glm::mat4& lightClip, ImU32 colour) {
+    const glm::mat4 worldFromLight = glm::inverse(lightClip);
+    std::array<glm::vec3, 8> corner{};
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec4 p = worldFromLight * glm::vec4(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, k & 4 ? 1.0f : -1.0f, 1.0f);
+        corner[static_cast<std::size_t>(k)] = glm::vec3(p) / p.w;
+    }
+    for (int k = 0; k < 8; ++k)
+        for (int bit = 1; bit < 8; bit <<= 1)
+            if (!(k & bit)) drawSegment(draw, clipFromWorld, size, corner[static_cast<std::size_t>(k)], corner[static_cast<std::size_t>(k | bit)], colour);
+}
+
 } // namespace
 
 int runView(const ViewArgs& args) {
@@ -198,21 +252,26 @@ int runView(const ViewArgs& args) {
     int selectedLight = 0;    // the light Shift + drag moves, and whose cone is drawn
     bool showLight = false;   // the selected light in wireframe over the picture
     bool showDebug = false;   // the techniques' debug images (maps, cube crosses) in the panel
+    bool showDensity = false; // the selected light's texel density over the picture
+    gl::Texture densityTexture{gl::NoCreate};
     std::vector<DebugImage> debugImages;
     std::vector<gl::Texture> debugTextures;  // one per debug image, for ImGui::Image
     Scene lastShown;                     // what the last frame drew (its debug images are read from it)
-    // The error image against the ray-traced reference: asked for (C or the
-    // button), then traced on the next frame after "tracing ..." was shown.
-    enum class Reference { None, Asked, Tracing, Shown } reference = Reference::None;
+    // The error image against the ray-traced reference: asked for (C, the
+    // button or the script), traced on a worker thread, then shown.
+    bool referenceAsked = false;
+    std::unique_ptr<ReferenceRun> tracing;
     std::vector<std::string> referenceLines;
     std::vector<gl::Texture> referenceTextures;
     std::vector<ImageRGBA8> referenceImages;
     auto freeReferenceTextures = [&] { referenceTextures.clear(); };
     auto freeDebugTextures = [&] { debugTextures.clear(); };
+    std::string compareDirectory;  // the script's pending "compare DIR"
     auto lastFrame = std::chrono::steady_clock::now();
 
     // Reads the scene again with every override; on failure keeps the last good one.
     auto reload = [&] {
+        tracing.reset();  // a comparison in flight would describe a frame no longer shown
         try {
             Scene next = load();
             renderer.upload(next);
@@ -265,8 +324,9 @@ int runView(const ViewArgs& args) {
                 reload();
             }
         }
-        // The script: one action per frame, "wait N" holds it N frames.
-        while (waitFrames == 0 && nextAction < script.size()) {
+        // The script: one action per frame, "wait N" holds it N frames, a
+        // comparison holds it until the reference is traced.
+        while (waitFrames == 0 && nextAction < script.size() && !referenceAsked && !tracing) {
             const Action& a = script[nextAction++];
             if (a.verb == "set") {
                 const auto eq = a.argument.find('=');
@@ -289,8 +349,12 @@ int runView(const ViewArgs& args) {
                 showDebug = true;
             } else if (a.verb == "show-light") {
                 showLight = true;
+            } else if (a.verb == "show-density") {
+                showDensity = true;
             } else if (a.verb == "compare") {
-                reference = Reference::Asked;
+                referenceAsked = true;
+                compareDirectory = a.argument;
+                break;
             } else if (a.verb == "minimize") {
                 glfwIconifyWindow(window);
             } else if (a.verb == "restore") {
@@ -300,46 +364,84 @@ int runView(const ViewArgs& args) {
             }
         }
 
-        // The comparison asked for last frame (its "tracing" line is on
-        // screen now): the same frame against exact shadows, per light the
-        // misclassified shares and the error image (docs/metrics.md).
-        if (reference == Reference::Tracing) {
-            freeReferenceTextures();
-            referenceLines.clear();
-            referenceImages.clear();
+        // The comparison: started from the last frame drawn, finished here
+        // when the worker is done (per light the misclassified shares and the
+        // error image, docs/metrics.md).
+        if (referenceAsked && frame > 0 && !tracing) {
+            referenceAsked = false;
             try {
                 CompareOptions options;
                 options.width = width;
                 options.height = height;
                 options.timeSeconds = seconds;
-                const Comparison c = compareWithReference(renderer, lastShown, options);
-                for (const LightComparison& l : c.lights) {
-                    char line[200];
-                    std::snprintf(line, sizeof line, "%s: %.3f %% wrong away from edges, %.3f %% in all", l.name.c_str(),
-                                  100.0 * (l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges), 100.0 * (l.falseLit + l.falseShadow));
-                    referenceLines.push_back(line);
-                    referenceImages.push_back(l.errorImage);
-                    referenceTextures.push_back(textureOf(l.errorImage));
-                }
-                reference = Reference::Shown;
+                auto run = std::make_unique<ReferenceRun>();
+                run->directory = compareDirectory;
+                run->startFrame = frame;
+                run->job = std::make_unique<ComparisonJob>(renderer, lastShown, options);
+                ReferenceRun* r = run.get();
+                r->worker = std::thread([r] {
+                    try {
+                        r->job->trace();
+                    } catch (const Error& e) {
+                        r->error = e.what();
+                    }
+                    r->done = true;
+                });
+                tracing = std::move(run);
             } catch (const Error& e) {
                 error = e.what();
-                reference = Reference::None;
+                if (!script.empty()) throw;
+            }
+            compareDirectory.clear();
+        }
+        if (tracing && tracing->done) {
+            tracing->worker.join();
+            const std::unique_ptr<ReferenceRun> run = std::move(tracing);
+            if (!run->error.empty()) {
+                error = run->error;
+                if (!script.empty()) throw Error(args.script + ": compare: " + run->error);
+            } else {
+                const Comparison c = run->job->finish(renderer);
+                if (!script.empty())
+                    std::cout << "compare: traced in " << std::lround(c.referenceMs) << " ms while the window drew " << frame - run->startFrame << " frames\n";
+                freeReferenceTextures();
+                referenceLines.clear();
+                referenceImages.clear();
+                for (std::size_t l = 0; l < c.lights.size(); ++l) {
+                    const LightComparison& lc = c.lights[l];
+                    char line[240];
+                    std::snprintf(line, sizeof line, "%s: %.3f %% wrong away from edges, %.3f %% in all (%zu receiver pixels)", lc.name.c_str(),
+                                  100.0 * (lc.falseLitAwayFromEdges + lc.falseShadowAwayFromEdges), 100.0 * (lc.falseLit + lc.falseShadow),
+                                  lc.receiverPixels);
+                    referenceLines.push_back(line);
+                    referenceImages.push_back(lc.errorImage);
+                    referenceTextures.push_back(textureOf(lc.errorImage));
+                    if (!script.empty()) std::cout << "compare: light " << l << " " << line << "\n";
+                    if (!run->directory.empty()) {
+                        const std::string file = (fs::path(run->directory) / ("error-" + std::to_string(l) + ".png")).string();
+                        writePng(file, lc.errorImage);
+                        std::cout << file << "\n";
+                    }
+                }
             }
         }
-        if (reference == Reference::Asked && frame > 0) reference = Reference::Tracing;  // shown once, traced next frame
 
         // The techniques' debug images of the last frame drawn, before this
         // frame's panel names their textures.
-        if (showDebug && frame % 10 == 1) {
-            // The techniques' debug images as textures for the panel (read back: every tenth frame).
+        // Read back every tenth frame for the panel, every fourth for the
+        // texel-density tint (it follows the camera).
+        if (frame > 0 && ((showDebug && frame % 10 == 1) || (showDensity && frame % 4 == 1))) {
             debugImages = renderer.debugImages(lastShown);
             freeDebugTextures();
-            for (const DebugImage& d : debugImages) debugTextures.push_back(textureOf(d.image));
-        } else if (!showDebug && !debugTextures.empty()) {
-            freeDebugTextures();
-            debugImages.clear();
+            if (showDebug)
+                for (const DebugImage& d : debugImages) debugTextures.push_back(textureOf(d.image));
+            densityTexture = gl::Texture(gl::NoCreate);
+            for (const DebugImage& d : debugImages)
+                if (showDensity && d.name == "light" + std::to_string(selectedLight) + "-texel-density") densityTexture = textureOf(d.image);
         }
+        if (!showDebug && !debugTextures.empty()) freeDebugTextures();
+        if (!showDensity) densityTexture = gl::Texture(gl::NoCreate);
+        if (!showDebug && !showDensity) debugImages.clear();
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
@@ -408,7 +510,7 @@ int runView(const ViewArgs& args) {
             }
         }
         bool screenshotKey = pressed(GLFW_KEY_F12);
-        if (pressed(GLFW_KEY_C)) reference = Reference::Asked;
+        if (pressed(GLFW_KEY_C) && !tracing) referenceAsked = true;
 
         // The panel, at a fixed place on the left.
         ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
@@ -432,10 +534,19 @@ int runView(const ViewArgs& args) {
         ImGui::Checkbox("show shadow maps", &showDebug);
         ImGui::SameLine();
         ImGui::Checkbox("show light", &showLight);
+        ImGui::Checkbox("texel density", &showDensity);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The selected light's shadow-map texels per screen pixel over the picture: green about one, red blocky (a texel over many pixels), blue wasted; grey outside the map");
         ImGui::SameLine();
-        if (ImGui::Button("compare (C)")) reference = Reference::Asked;
-        if (reference == Reference::Asked || reference == Reference::Tracing) ImGui::TextUnformatted("tracing the reference ...");
-        if (reference == Reference::Shown) {
+        if (ImGui::Button("compare (C)") && !tracing) referenceAsked = true;
+        if (tracing) {
+            ImGui::ProgressBar(static_cast<float>(tracing->job->progress()), ImVec2(kPanelWidth - 100.0f, 0.0f), "tracing the reference");
+            ImGui::SameLine();
+            if (ImGui::Button("cancel")) tracing.reset();
+        } else if (referenceAsked) {
+            ImGui::TextUnformatted("tracing the reference ...");
+        }
+        if (!referenceLines.empty()) {
             for (const std::string& line : referenceLines) ImGui::TextWrapped("%s", line.c_str());
             for (std::size_t r = 0; r < referenceTextures.size(); ++r) {
                 const float w = kPanelWidth - 30.0f;
@@ -443,7 +554,8 @@ int runView(const ViewArgs& args) {
                 ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(referenceTextures[r].id())), ImVec2(w, h));
             }
             if (ImGui::Button("hide comparison")) {
-                reference = Reference::None;
+                referenceLines.clear();
+                referenceImages.clear();
                 freeReferenceTextures();
             }
         }
@@ -570,25 +682,21 @@ int runView(const ViewArgs& args) {
         renderer.blitToDefaultFramebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, width, height);
+        const glm::vec2 windowSize(static_cast<float>(width), static_cast<float>(height));
+        ImDrawList* background = ImGui::GetBackgroundDrawList();
+        // The selected light's texel density over the picture, half opaque.
+        if (showDensity && densityTexture.id() != 0)
+            background->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(densityTexture.id())), ImVec2(0.0f, 0.0f),
+                                 ImVec2(windowSize.x, windowSize.y), ImVec2(0.0f, 0.0f), ImVec2(1.0f, 1.0f), IM_COL32(255, 255, 255, 150));
         // The selected light in wireframe over the picture: a spot's cone out
-        // to its reach (its map's frustum holds just that cone), a point
-        // light's position, a directional light's direction from the target.
+        // to its reach, a point light's position, a directional light's
+        // direction from the target; and in blue the frustums its technique
+        // rendered from last frame, fitted (a 2D map's one, a cube's six).
         if (showLight && selectedLight >= 0 && static_cast<std::size_t>(selectedLight) < lastShown.lights.size()) {
             const Light& light = lastShown.lights[static_cast<std::size_t>(selectedLight)];
-            const float aspect = static_cast<float>(width) / static_cast<float>(height);
-            const glm::mat4 clip = lastShown.camera.clipFromView(aspect) * lastShown.camera.viewFromWorld();
-            ImDrawList* draw = ImGui::GetBackgroundDrawList();
-            const ImU32 colour = IM_COL32(255, 220, 90, 220);
-            auto toScreen = [&](const glm::vec3& p, ImVec2& out) {
-                const glm::vec4 c = clip * glm::vec4(p, 1.0f);
-                if (c.w <= 1e-4f) return false;
-                out = ImVec2((c.x / c.w * 0.5f + 0.5f) * static_cast<float>(width), (0.5f - c.y / c.w * 0.5f) * static_cast<float>(height));
-                return true;
-            };
-            auto line = [&](const glm::vec3& a, const glm::vec3& b) {
-                ImVec2 sa, sb;
-                if (toScreen(a, sa) && toScreen(b, sb)) draw->AddLine(sa, sb, colour, 1.5f);
-            };
+            const glm::mat4 clip = lastShown.camera.clipFromView(windowSize.x / windowSize.y) * lastShown.camera.viewFromWorld();
+            const ImU32 colour = IM_COL32(255, 220, 90, 220), frustumColour = IM_COL32(90, 170, 255, 200);
+            auto line = [&](const glm::vec3& a, const glm::vec3& b) { drawSegment(background, clip, windowSize, a, b, colour); };
             if (light.type == LightType::Spot) {
                 const glm::vec3 axis = glm::normalize(light.direction);
                 const glm::vec3 side = glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
@@ -609,6 +717,8 @@ int runView(const ViewArgs& args) {
                 const glm::vec3 target = lastShown.camera.target;
                 line(target - glm::normalize(light.direction) * 3.0f, target);
             }
+            for (const LightFrustum& f : renderer.lightFrustums(lastShown))
+                if (f.light == selectedLight) drawFrustum(background, clip, windowSize, f.clipFromWorld, frustumColour);
         }
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -643,8 +753,10 @@ int runView(const ViewArgs& args) {
         if (playing) seconds += dt;
     }
 
+    tracing.reset();
     freeDebugTextures();
     freeReferenceTextures();
+    densityTexture = gl::Texture(gl::NoCreate);
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

@@ -12,7 +12,7 @@ struct ViewArgs {
     int width = 1280, height = 720;      ///< window size, screen coordinates
     int frames = 0;                      ///< > 0: quit after this many frames (with --screenshot: write it first)
     std::string screenshot;              ///< with --frames: the window's last frame as a PNG
-    std::string script;                  ///< a file of actions (docs/viewer.md), run one per frame
+    std::string script;                  ///< a file of actions (README, "The viewer"), run one per frame
 };
 
 /// Opens the window and runs until it is closed (or --frames / the script

@@ -8,6 +8,7 @@
 #include <shadowlab/Renderer.h>
 #include <shadowlab/Scene.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -63,7 +64,39 @@ struct Comparison {
 /// Renders `scene` (already uploaded to `renderer`) with its configured
 /// techniques and with ray-traced visibility from the same visible surface
 /// points, and compares them per light. Throws shadowlab::Error for bad
-/// options, or when built without Embree.
+/// options, or when built without Embree. The same as a ComparisonJob's
+/// three steps in a row.
 Comparison compareWithReference(Renderer& renderer, const Scene& scene, const CompareOptions& options = {});
+
+/// compareWithReference in three steps, so that a window stays responsive
+/// while the reference is traced:
+///  1. the constructor renders the technique's frame and reads back what it
+///     needs (on the renderer's GL thread; quick);
+///  2. trace() ray-traces the reference (on any thread; the long part),
+///     with progress() and cancel() callable from any thread meanwhile;
+///  3. finish() shades the reference image and classifies the pixels (on the
+///     GL thread again, after trace() returned, the scene still uploaded).
+class ComparisonJob {
+public:
+    /// Throws shadowlab::Error for bad options, or when built without Embree.
+    ComparisonJob(Renderer& renderer, const Scene& scene, const CompareOptions& options = {});
+    ~ComparisonJob();
+    ComparisonJob(const ComparisonJob&) = delete;
+    ComparisonJob& operator=(const ComparisonJob&) = delete;
+
+    /// Traces every light's reference. Once; throws shadowlab::Error when
+    /// cancelled or when the tracer fails.
+    void trace();
+    /// The share of surface points traced, 0 .. 1.
+    double progress() const;
+    /// Makes a running or later trace() stop soon and throw.
+    void cancel();
+    /// The comparison; throws shadowlab::Error unless trace() completed.
+    Comparison finish(Renderer& renderer);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 } // namespace shadowlab

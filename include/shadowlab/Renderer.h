@@ -80,6 +80,12 @@ struct DebugImage {
     std::vector<float> values;
 };
 
+/// One camera a technique rendered from a light (a shadow map's frustum).
+struct LightFrustum {
+    int light = 0;                    ///< into Scene::lights
+    glm::mat4 clipFromWorld{1.0f};    ///< its volume is clip space's [-1, 1]^3
+};
+
 class Renderer {
 public:
     /// Needs `context` current on this thread for the Renderer's lifetime.
@@ -109,6 +115,9 @@ public:
     std::vector<glm::vec3> readVisibilityRgb(const Scene& scene, std::size_t light);
     /// Every technique's debug images for the last frame, named by light.
     std::vector<DebugImage> debugImages(const Scene& scene);
+    /// The light cameras the techniques used in the last frame (each 2D
+    /// map's frustum, a cube map's six faces), light by light.
+    std::vector<LightFrustum> lightFrustums(const Scene& scene) const;
     /// The last frame, 8-bit sRGB, rows top to bottom.
     ImageRGBA8 readColor() const;
     /// Copies the last frame, sRGB-encoded as readColor() has it, into the

@@ -8,6 +8,7 @@
 #include <shadowlab/Error.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -65,62 +66,124 @@ std::vector<Extension> surfaceExtensions(const Scene& scene, const SurfaceBuffer
 
 } // namespace
 
+#ifdef SHADOWLAB_WITH_EMBREE
+struct ComparisonJob::Impl {
+    Scene scene;
+    CompareOptions options;
+    Comparison out;
+    std::vector<reference::SurfaceSample> samples;
+    std::vector<Extension> extensions;
+    std::vector<reference::SurfaceSample> extensionSamples;
+    std::vector<std::vector<float>> techniqueVisibility;  ///< per light, read back with the technique's frame
+    std::vector<std::vector<float>> truth, extensionTruth;
+    std::atomic<std::size_t> samplesDone{0};
+    std::atomic<bool> cancelled{false};
+    bool traced = false;
+};
+#else
+struct ComparisonJob::Impl {};
+#endif
+
+ComparisonJob::~ComparisonJob() = default;
+
+Comparison compareWithReference(Renderer& renderer, const Scene& scene, const CompareOptions& options) {
+    ComparisonJob job(renderer, scene, options);
+    job.trace();
+    return job.finish(renderer);
+}
+
 #ifndef SHADOWLAB_WITH_EMBREE
-Comparison compareWithReference(Renderer&, const Scene&, const CompareOptions&) {
+ComparisonJob::ComparisonJob(Renderer&, const Scene&, const CompareOptions&) {
     throw Error("compare: this build has no ray-traced reference (configure with -DSHADOWLAB_WITH_EMBREE=ON)");
 }
+void ComparisonJob::trace() {}
+double ComparisonJob::progress() const { return 0.0; }
+void ComparisonJob::cancel() {}
+Comparison ComparisonJob::finish(Renderer&) { return {}; }
 #else
-Comparison compareWithReference(Renderer& renderer, const Scene& scene, const CompareOptions& options) {
+ComparisonJob::ComparisonJob(Renderer& renderer, const Scene& scene, const CompareOptions& options) : impl_(std::make_unique<Impl>()) {
     if (options.softSamples < 1) throw Error("compare: softSamples must be >= 1, got " + std::to_string(options.softSamples));
     if (!(options.litThreshold > 0.0f && options.litThreshold <= 1.0f))
         throw Error("compare: litThreshold must be in (0, 1]");
+    Impl& d = *impl_;
+    d.scene = scene;
+    d.options = options;
     RenderOptions renderOptions;
     renderOptions.width = options.width;
     renderOptions.height = options.height;
     renderOptions.clock = TimingClock::Auto;
     renderOptions.surfaces = true;  // the reference traces from the base pass's surface points
     renderOptions.timeSeconds = options.timeSeconds;
-    Comparison out;
+    Comparison& out = d.out;
     out.techniqueFrame = renderer.render(scene, renderOptions);
     out.technique = renderer.readColor();
     out.surfaces = renderer.readSurfaces();
+    // The technique's own visibility per light.
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) d.techniqueVisibility.push_back(renderer.readVisibility(scene, l));
     const SurfaceBuffer& surfaces = out.surfaces;
-    const int w = surfaces.width, h = surfaces.height;
-    const std::size_t n = static_cast<std::size_t>(w) * h;
+    const std::size_t n = static_cast<std::size_t>(surfaces.width) * surfaces.height;
 
-    std::vector<reference::SurfaceSample> samples(n);
+    d.samples.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 normal(surfaces.normal[i]);
         const float len = glm::length(normal);
-        samples[i].valid = surfaces.position[i].w > 0.5f && len > 0.5f;
-        samples[i].position = glm::vec3(surfaces.position[i]);
-        samples[i].normal = samples[i].valid ? normal / len : glm::vec3(0.0f, 1.0f, 0.0f);
+        reference::SurfaceSample& s = d.samples[i];
+        s.valid = surfaces.position[i].w > 0.5f && len > 0.5f;
+        s.position = glm::vec3(surfaces.position[i]);
+        s.normal = s.valid ? normal / len : glm::vec3(0.0f, 1.0f, 0.0f);
     }
 
     // Points on each surface pixel's own plane under its neighbours' pixel
     // centres, where a neighbour is on another surface (the edge band below).
-    const std::vector<Extension> extensions = surfaceExtensions(scene, surfaces, samples);
-    std::vector<reference::SurfaceSample> extensionSamples(extensions.size());
-    for (std::size_t k = 0; k < extensions.size(); ++k)
-        extensionSamples[k] = {extensions[k].position, samples[extensions[k].pixel].normal, true};
+    d.extensions = surfaceExtensions(scene, surfaces, d.samples);
+    d.extensionSamples.resize(d.extensions.size());
+    for (std::size_t k = 0; k < d.extensions.size(); ++k)
+        d.extensionSamples[k] = {d.extensions[k].position, d.samples[d.extensions[k].pixel].normal, true};
+}
 
+void ComparisonJob::trace() {
+    Impl& d = *impl_;
+    if (d.traced) return;
+    if (d.cancelled) throw Error("compare: cancelled");
     const auto traceStart = std::chrono::steady_clock::now();
-    const reference::RayTracer tracer(scene);
+    const reference::RayTracer tracer(d.scene);
     reference::VisibilityOptions visibilityOptions;
-    visibilityOptions.softSamples = options.softSamples;
-    visibilityOptions.seed = options.seed;
-    std::vector<std::vector<float>> truth;
-    std::vector<std::vector<float>> extensionTruth;
-    for (const Light& light : scene.lights) {
-        truth.push_back(tracer.visibility(light, samples, visibilityOptions));
-        extensionTruth.push_back(tracer.visibility(light, extensionSamples, visibilityOptions));
+    visibilityOptions.softSamples = d.options.softSamples;
+    visibilityOptions.seed = d.options.seed;
+    visibilityOptions.samplesDone = &d.samplesDone;
+    visibilityOptions.cancel = &d.cancelled;
+    for (const Light& light : d.scene.lights) {
+        d.truth.push_back(tracer.visibility(light, d.samples, visibilityOptions));
+        d.extensionTruth.push_back(tracer.visibility(light, d.extensionSamples, visibilityOptions));
     }
-    out.referenceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - traceStart).count();
+    d.out.referenceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - traceStart).count();
+    d.traced = true;
+}
 
-    // The technique's own visibility per light, then the reference image
-    // (same shading, exact visibility) for the error images' backdrop.
-    std::vector<std::vector<float>> techniqueVisibility;
-    for (std::size_t l = 0; l < scene.lights.size(); ++l) techniqueVisibility.push_back(renderer.readVisibility(scene, l));
+double ComparisonJob::progress() const {
+    const Impl& d = *impl_;
+    const double total = static_cast<double>(d.scene.lights.size()) * static_cast<double>(d.samples.size() + d.extensionSamples.size());
+    return total > 0.0 ? std::min(1.0, static_cast<double>(d.samplesDone.load()) / total) : 1.0;
+}
+
+void ComparisonJob::cancel() { impl_->cancelled = true; }
+
+Comparison ComparisonJob::finish(Renderer& renderer) {
+    Impl& d = *impl_;
+    if (!d.traced) throw Error("compare: finish() before trace() completed");
+    const Scene& scene = d.scene;
+    const CompareOptions& options = d.options;
+    Comparison& out = d.out;
+    const SurfaceBuffer& surfaces = out.surfaces;
+    const int w = surfaces.width, h = surfaces.height;
+    const std::size_t n = static_cast<std::size_t>(w) * h;
+    const std::vector<reference::SurfaceSample>& samples = d.samples;
+    const std::vector<Extension>& extensions = d.extensions;
+    const std::vector<std::vector<float>>& truth = d.truth;
+    const std::vector<std::vector<float>>& extensionTruth = d.extensionTruth;
+    const std::vector<std::vector<float>>& techniqueVisibility = d.techniqueVisibility;
+
+    // The reference image (same shading, exact visibility) for the error images' backdrop.
     RenderOptions referenceOptions;
     referenceOptions.width = options.width;
     referenceOptions.height = options.height;
@@ -214,8 +277,7 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
         c.rmse = std::sqrt(sqSum / receivers);
         out.lights.push_back(std::move(c));
     }
-
-    return out;
+    return std::move(out);
 }
 #endif
 

@@ -409,10 +409,22 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
         return fixedOffset >= 0.0f ? s.position + fixedOffset * s.normal : offsetRayOrigin(s.position, s.normal);
     };
 
+    // Each chunk: skipped once cancelled, counted when done.
+    const auto tracked = [&options](auto body) {
+        return [&options, body](std::size_t begin, std::size_t end) {
+            if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;
+            body(begin, end);
+            if (options.samplesDone) options.samplesDone->fetch_add(end - begin, std::memory_order_relaxed);
+        };
+    };
+    const auto stopIfCancelled = [&options] {
+        if (options.cancel && options.cancel->load()) throw Error("RayTracer: tracing cancelled");
+    };
+
     if (!setup.soft) {
         // Hard: one ray per sample, 16 consecutive samples per packet (raster
         // order: neighbouring origins, parallel or converging directions).
-        parallelChunks(samples.size(), 4096, [&](std::size_t begin, std::size_t end) {
+        parallelChunks(samples.size(), 4096, tracked([&](std::size_t begin, std::size_t end) {
             RTCIntersectContext context;
             rtcInitIntersectContext(&context);
             context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -439,7 +451,8 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
                     if (packet.valid[static_cast<std::size_t>(lane)])
                         result[index[static_cast<std::size_t>(lane)]] = packet.occluded(lane) ? 0.0f : 1.0f;
             }
-        });
+        }));
+        stopIfCancelled();
         return result;
     }
 
@@ -451,7 +464,7 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
     const int grid = static_cast<int>(std::sqrt(static_cast<double>(n))); // floor(sqrt n)
     const int stratified = grid * grid;
     const std::size_t chunk = std::max<std::size_t>(1, 65536 / static_cast<std::size_t>(n));
-    parallelChunks(samples.size(), chunk, [&](std::size_t begin, std::size_t end) {
+    parallelChunks(samples.size(), chunk, tracked([&](std::size_t begin, std::size_t end) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -510,7 +523,8 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
             }
             result[i] = static_cast<float>(unoccluded) / static_cast<float>(n);
         }
-    });
+    }));
+    stopIfCancelled();
     return result;
 }
 

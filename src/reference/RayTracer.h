@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -51,6 +52,12 @@ struct VisibilityOptions {
     /// Seed of the stratified jitter; results are deterministic for a given
     /// seed (independent of thread count and scheduling).
     unsigned seed = 1;
+    /// When set, the number of samples traced so far is added here as the
+    /// work goes on (from the tracing threads), for a progress display.
+    std::atomic<std::size_t>* samplesDone = nullptr;
+    /// When set and true, tracing stops early and visibility() throws
+    /// shadowlab::Error("... cancelled").
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 /// The origin of a shadow ray from surface point p (world space) with unit

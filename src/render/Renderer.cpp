@@ -505,6 +505,21 @@ std::vector<DebugImage> Renderer::debugImages(const Scene& scene) {
     return out;
 }
 
+std::vector<LightFrustum> Renderer::lightFrustums(const Scene& scene) const {
+    const Impl& d = *impl_;
+    if (!d.targets) throw Error("Renderer::lightFrustums: nothing rendered yet");
+    d.checkScene(scene);
+    std::vector<LightFrustum> out;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const auto found = d.instances.find(scene.lights[i].shadow.technique);
+        if (found == d.instances.end()) continue;  // not drawn yet: no camera
+        std::vector<glm::mat4> matrices;
+        found->second->lightFrustums(LightView{scene.lights[i], static_cast<int>(i)}, matrices);
+        for (const glm::mat4& m : matrices) out.push_back({static_cast<int>(i), m});
+    }
+    return out;
+}
+
 void Renderer::blitToDefaultFramebuffer() const {
     if (!impl_->targets) throw Error("Renderer::blitToDefaultFramebuffer: nothing rendered yet");
     const FrameTargets& t = *impl_->targets;

@@ -544,6 +544,16 @@ public:
         out.push_back({"texel-density", texelDensity(host, frame, view), {}});
     }
 
+    void lightFrustums(const LightView& view, std::vector<glm::mat4>& out) const override {
+        const auto found = lights_.find(view.index);
+        if (found == lights_.end()) return;
+        const PerLight& p = found->second;
+        if (p.cube)
+            out.insert(out.end(), p.cubeCamera.faceClipFromWorld.begin(), p.cubeCamera.faceClipFromWorld.end());
+        else
+            out.push_back(p.camera.clipFromWorld());
+    }
+
 private:
     // One layer of a group's array (a 2D map, or one face of a cube) as
     // stored depths in 0..1: read back, or unpacked from rgba8's base-255

@@ -142,6 +142,10 @@ public:
     /// Images worth looking at (depth maps, cube crosses, texel density);
     /// `shadowlab render --debug-images DIR` writes them.
     virtual void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, std::vector<DebugImage>&) {}
+    /// The clip-from-world matrices of the light's cameras in the last frame
+    /// (a 2D map's one, a cube's six faces), for drawing their frustums;
+    /// none for techniques without a light camera.
+    virtual void lightFrustums(const LightView&, std::vector<glm::mat4>&) const {}
 };
 
 /// One registry row: everything the renderer, the scene parser and the docs

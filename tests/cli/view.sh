@@ -3,8 +3,9 @@
 # changes the technique and a bias through the panel's own path (override
 # lines); the screenshots match `shadowlab render` with the same settings
 # pixel for pixel right of the panel, and differ from each other where the
-# bias moves the shadows. Then resizing, minimising, a broken scene file
-# and its repair: no crash.
+# bias moves the shadows. The viewer's comparison (traced on a worker
+# thread) equals `shadowlab compare`'s. Then resizing, minimising, a broken
+# scene file and its repair: no crash.
 set -u
 tool=$1; src=$2; diff=$3
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT; cd "$work"
@@ -30,6 +31,18 @@ changed=$("$diff" a.png b.png --from-x $panel)
 # "save" wrote the scene with both settings in it: it renders as render with the two --set lines.
 "$tool" render saved.json --width 960 --height 540 -o rs.png >/dev/null || { echo "the saved scene does not load"; exit 1; }
 cmp -s rs.png rb.png || { echo "the saved scene renders differently from the --set lines"; exit 1; }
+# The comparison traced off the window's thread: the script waits for it,
+# and its error image is the command line's, pixel for pixel, at the window's size.
+mkdir cmp
+printf 'set lights[0].shadow.technique="map"\ncompare cmp\nshow-density\nshow-light\nwait 6\nscreenshot e.png\nquit\n' > steps4.txt
+"$tool" view "$src/scenes/spot-objects.json" --width 640 --height 360 --script steps4.txt >out4.txt 2>err.txt || { echo "compare in the viewer: $(cat err.txt)"; exit 1; }
+grep -q "^compare: light 0 " out4.txt && [[ -s cmp/error-0.png && -s e.png ]] || { echo "no comparison from the viewer: $(cat out4.txt err.txt)"; exit 1; }
+"$tool" compare "$src/scenes/spot-objects.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' -o cli >/dev/null || exit 1
+cmp -s cmp/error-0.png cli/error-0.png || { echo "the viewer's error image differs from compare's"; exit 1; }
+# The texel-density tint and the frustums change the picture right of the panel.
+"$tool" render "$src/scenes/spot-objects.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' -o re.png >/dev/null || exit 1
+tinted=$("$diff" e.png re.png --from-x $panel)
+(( tinted > 10000 )) || { echo "the texel-density tint changed only $tinted pixels"; exit 1; }
 # Resize, minimise, restore.
 printf 'show-maps\nshow-light\ncompare\nwait 12\nresize 500 300\nwait 3\nminimize\nwait 3\nrestore\nwait 12\nscreenshot c.png\nquit\n' > steps2.txt
 "$tool" view "$src/scenes/torus-floating.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' --set lights[0].shadow.map.size=256 --script steps2.txt >/dev/null 2>err.txt || { echo "resize/minimise: $(cat err.txt)"; exit 1; }

@@ -9,6 +9,8 @@
 #include <shadowlab/Error.h>
 #include <shadowlab/SceneFile.h>
 
+#include <thread>
+
 using namespace shadowlab;
 using shadowlab::test::GLTest;
 
@@ -274,4 +276,43 @@ TEST_F(CompareGLTest, BadOptionsAreErrors) {
     CompareOptions options;
     options.softSamples = 0;
     EXPECT_THROW(compareWithReference(renderer, scene, options), Error);
+}
+
+// The viewer's path: the job traced on another thread while this one goes
+// on (progress rising to 1) gives exactly compareWithReference's result; a
+// cancelled job's trace() throws and finish() refuses.
+TEST_F(CompareGLTest, JobTracedOnAnotherThreadMatchesTheOneCall) {
+    const Scene scene = sphereOverPlane();
+    Renderer renderer(test::glContext());
+    const Comparison whole = compareAt(renderer, scene, 320, 180);
+
+    CompareOptions options;
+    options.width = 320;
+    options.height = 180;
+    ComparisonJob job(renderer, scene, options);
+    EXPECT_EQ(job.progress(), 0.0);
+    std::string failure;
+    std::thread worker([&] {
+        try {
+            job.trace();
+        } catch (const Error& e) {
+            failure = e.what();
+        }
+    });
+    worker.join();
+    ASSERT_EQ(failure, "");
+    EXPECT_EQ(job.progress(), 1.0);
+    const Comparison split = job.finish(renderer);
+    ASSERT_EQ(split.lights.size(), 1u);
+    EXPECT_EQ(split.lights[0].receiverPixels, whole.lights[0].receiverPixels);
+    EXPECT_EQ(split.lights[0].falseLit, whole.lights[0].falseLit);
+    EXPECT_EQ(split.lights[0].referenceVisibility.pixels, whole.lights[0].referenceVisibility.pixels);
+    EXPECT_EQ(split.lights[0].errorImage.pixels, whole.lights[0].errorImage.pixels);
+    EXPECT_EQ(split.reference.pixels, whole.reference.pixels);
+
+    ComparisonJob cancelled(renderer, scene, options);
+    cancelled.cancel();
+    EXPECT_THROW(cancelled.trace(), Error);
+    EXPECT_LT(cancelled.progress(), 1.0);
+    EXPECT_THROW(cancelled.finish(renderer), Error);
 }

@@ -340,3 +340,58 @@ TEST_F(MapGLTest, ShadowedLightBrightensTheShadowButNotTheTest) {
     EXPECT_GE(static_cast<double>(brighter), 0.98 * static_cast<double>(shadowed));
     EXPECT_LE(static_cast<double>(litChanged), 0.0005 * static_cast<double>(d.receiverPixels));
 }
+
+// What the viewer draws as a light's frustums: the cameras the maps were
+// rendered from. Every receiver pixel the reference shadows must lie inside
+// one of them (else its shadow could not be in the map): inside x and y of
+// a directional light's box (its depth is clamped), inside the whole volume
+// of a spot's frustum or of one of a point light's six faces.
+TEST_F(MapGLTest, TheLightFrustumsHoldEveryShadowedReceiver) {
+    for (const char* name : {"spot-objects.json", "spheres-sun.json", "four-spheres-point.json", "room-point.json"}) {
+        SCOPED_TRACE(name);
+        const fs::path path = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / name;
+        const Scene plain = loadSceneFile(path.string());
+        std::vector<std::string> overrides;
+        for (std::size_t i = 0; i < plain.lights.size(); ++i) overrides.push_back("lights[" + std::to_string(i) + "].shadow.technique=map");
+        const Scene scene = loadSceneFile(path.string(), overrides);
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        CompareOptions options;
+        options.width = 320;
+        options.height = 180;
+        const Comparison c = compareWithReference(renderer, scene, options);
+        RenderOptions frame;
+        frame.width = options.width;
+        frame.height = options.height;
+        renderer.render(scene, frame);
+        const std::vector<LightFrustum> frustums = renderer.lightFrustums(scene);
+        for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+            const Light& light = scene.lights[l];
+            std::vector<glm::mat4> mine;
+            for (const LightFrustum& f : frustums)
+                if (f.light == static_cast<int>(l)) mine.push_back(f.clipFromWorld);
+            ASSERT_EQ(mine.size(), light.type == LightType::Point ? 6u : 1u) << "light " << l;
+            std::size_t shadowed = 0, outside = 0;
+            for (std::size_t i = 0; i < c.surfaces.position.size(); ++i) {
+                if (c.lights[l].reach.pixels[i] == 0 || c.lights[l].referenceVisibility.pixels[i] >= 32768) continue;
+                ++shadowed;
+                bool in = false;
+                for (const glm::mat4& m : mine) {
+                    const glm::vec4 p = m * glm::vec4(glm::vec3(c.surfaces.position[i]), 1.0f);
+                    // 1e-3 of the volume's half size: float rounding of the fit, far below a texel.
+                    const float w = std::fabs(p.w) * 1.001f;
+                    in = in || (p.w > 0.0f && std::fabs(p.x) <= w && std::fabs(p.y) <= w && (light.type == LightType::Directional || std::fabs(p.z) <= w));
+                }
+                outside += !in;
+            }
+            EXPECT_GT(shadowed, 100u) << "light " << l << ": the test needs shadow in view";
+            EXPECT_EQ(outside, 0u) << "light " << l << ": shadowed receivers outside every frustum";
+        }
+    }
+    // A light whose technique renders no map has no frustum.
+    const Scene none = planeScene(R"({"type": "directional", "direction": [0, -1, 0]})");
+    Renderer renderer(test::glContext());
+    renderer.upload(none);
+    renderer.render(none);
+    EXPECT_TRUE(renderer.lightFrustums(none).empty());
+}
