@@ -8,7 +8,10 @@
 // sampler2DArrayShadow, or unpacked from RGBA8 and compared here
 // (MAP_RGBA8). Cube maps (MAP_CUBE): the fragment's vector from the light
 // looks the map up, its distance over the far plane is the reference (all
-// per fragment). Variants: MAP_CUBE, MAP_FILTER (SL_MAP_FILTER_*),
+// per fragment). Cascades (MAP_CASCADES > 1, directional lights): the
+// fragment's view depth picks a cascade, each a layer of the array with its
+// own matrix, offsets applied per fragment; the far share cascade.w of each
+// slice fades into the next. Variants: MAP_CUBE, MAP_CASCADES, MAP_FILTER (SL_MAP_FILTER_*),
 // MAP_KERNEL (grid side), MAP_GRID_BILINEAR (the grid's comparisons from
 // bilinear fetches), MAP_RGBA8. Numbers are uniforms.
 #include "shadow_map_shared.h"
@@ -24,15 +27,17 @@ layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
 float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.params.x), ref); }
 #endif
 #else
+// The array layer the taps read: the light's map, or the cascade's.
+float mapLayer = 0.0;
 #if MAP_RGBA8
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
 // 1 where the receiver at depth `ref` is nearer than the map's occluder.
 float mapTap(vec2 uv, float ref) {
-    return ref <= unpackDepth(texture(mapPacked, vec3(uv, map.params.x))) ? 1.0 : 0.0;
+    return ref <= unpackDepth(texture(mapPacked, vec3(uv, mapLayer))) ? 1.0 : 0.0;
 }
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
-float mapTap(vec2 uv, float ref) { return texture(mapDepth, vec4(uv, map.params.x, ref)); }
+float mapTap(vec2 uv, float ref) { return texture(mapDepth, vec4(uv, mapLayer, ref)); }
 #endif
 #endif
 
@@ -121,28 +126,67 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
 #endif
 }
 #else
+// The filtered test at map point `uv` for reference depth `ref`, in layer mapLayer.
+float mapFilter(vec2 uv, float ref);
+
+// The test in a map, at texture-space point s (before the divide).
+float mapTest(vec4 s, float NdotL) {
+    if (s.w <= 0.0) return 1.0;
+    s.xyz /= s.w;
+    // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
+    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return 1.0;
+    return mapFilter(s.xy, s.z - map.bias.x - max(map.bias.y * (1.0 - NdotL), map.bias.z));
+}
+
+#if MAP_CASCADES > 1
+// Cascade c's test: the offsets of shadow_map_vertex.glsl, here per
+// fragment with the cascade's own texel size.
+float cascadeTest(int c, vec3 worldPosition, vec3 n, float NdotL, float tanTheta) {
+    float texel = map.cascadeTexel[c >> 2][c & 3];
+    vec3 p = worldPosition + n * (map.bias.w * texel * (1.0 - NdotL)) + map.light.xyz * (map.params.y * texel * tanTheta);
+    mapLayer = map.params.x + float(c);
+    return mapTest(map.cascadeShadowFromWorld[c] * vec4(p, 1.0), NdotL);
+}
+
+// The shadow test's visibility, 0 (shadowed) to 1 (lit): the slice's
+// cascade, fading into the next one over the far `blend` share of the slice.
+float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
+    vec3 n = worldNormal;
+    float NdotL = clamp(dot(n, map.light.xyz), 0.0, 1.0);
+    float tanTheta = min(length(cross(n, map.light.xyz)) / max(NdotL, 1e-4), 10.0);
+    float depth = cascadeDepth(worldPosition);
+    int c = cascadeOf(depth);
+    float v = cascadeTest(c, worldPosition, n, NdotL, tanTheta);
+    if (c < MAP_CASCADES - 1) {
+        float far = cascadeFarOf(c);
+        float band = map.cascade.w * (far - (c > 0 ? cascadeFarOf(c - 1) : 0.0));
+        float t = band > 0.0 ? (depth - (far - band)) / band : 0.0;
+        if (t > 0.0) v = mix(v, cascadeTest(c + 1, worldPosition, n, NdotL, tanTheta), min(t, 1.0));
+    }
+    return v;
+}
+#else
 in vec4 vShadowCoord;   // from shadow_map_vertex.glsl: the offset point in texture space
 in float vShadowNdotL;
 
 // The shadow test's visibility, 0 (shadowed) to 1 (lit).
 float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
-    vec4 s = vShadowCoord;
-    float NdotL = vShadowNdotL;
-    if (s.w <= 0.0) return 1.0;
-    s.xyz /= s.w;
-    // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
-    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return 1.0;
-    float ref = s.z - map.bias.x - max(map.bias.y * (1.0 - NdotL), map.bias.z);
+    mapLayer = map.params.x;
+    return mapTest(vShadowCoord, vShadowNdotL);
+}
+#endif
+
+float mapFilter(vec2 uv, float ref) {
     float du = map.taps.x;
 #if MAP_FILTER == SL_MAP_FILTER_NONE || MAP_FILTER == SL_MAP_FILTER_HARDWARE
-    return mapTap(s.xy, ref);  // the sampler is nearest or bilinear
+    return mapTap(uv, ref);  // the sampler is nearest or bilinear
 #elif MAP_FILTER == SL_MAP_FILTER_GRID && !MAP_GRID_BILINEAR
     // MAP_KERNEL x MAP_KERNEL nearest taps one texel apart, centred on the point.
     float sum = 0.0;
     float start = -0.5 * float(MAP_KERNEL - 1);
     for (int j = 0; j < MAP_KERNEL; ++j)
         for (int i = 0; i < MAP_KERNEL; ++i)
-            sum += mapTap(s.xy + du * vec2(start + float(i), start + float(j)), ref);
+            sum += mapTap(uv + du * vec2(start + float(i), start + float(j)), ref);
     return sum / float(MAP_KERNEL * MAP_KERNEL);
 #elif MAP_FILTER == SL_MAP_FILTER_GRID
     // The same MAP_KERNEL x MAP_KERNEL nearest taps, from as few bilinear
@@ -153,7 +197,7 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
     // texel alone; so pairs of texels take one tap of weight 2, an odd last
     // texel one tap of weight 1: ceil(N / 2)^2 taps (4 for 3x3, 16 for 8x8)
     // give the box average of the N^2 comparisons.
-    vec2 t = s.xy / du;
+    vec2 t = uv / du;
     vec2 k0 = floor(t - 0.5 * float(MAP_KERNEL - 1));
     const int taps = (MAP_KERNEL + 1) / 2;
     float sum = 0.0;
@@ -174,8 +218,8 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
     // gl_FragCoord mod 2, taps `spread` texels apart.
     float w = map.taps.w * du;
     vec2 o = mod(floor(gl_FragCoord.xy), 2.0) * w;
-    float sum = mapTap(s.xy + vec2(-1.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(s.xy + vec2(-1.5 * w + o.x, -0.5 * w - o.y), ref) +
-                mapTap(s.xy + vec2(0.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(s.xy + vec2(0.5 * w + o.x, -0.5 * w - o.y), ref);
+    float sum = mapTap(uv + vec2(-1.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(uv + vec2(-1.5 * w + o.x, -0.5 * w - o.y), ref) +
+                mapTap(uv + vec2(0.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(uv + vec2(0.5 * w + o.x, -0.5 * w - o.y), ref);
     return 0.25 * sum;
 #elif MAP_FILTER == SL_MAP_FILTER_POISSON
     // A Vogel disk (golden-angle spiral, uniform by area) rotated per pixel.
@@ -185,7 +229,7 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
     for (int k = 0; k < taps; ++k) {
         float r = sqrt((float(k) + 0.5) / float(taps)) * map.taps.y;
         float a = float(k) * 2.3999632 + rotation;
-        sum += mapTap(s.xy + du * r * vec2(cos(a), sin(a)), ref);
+        sum += mapTap(uv + du * r * vec2(cos(a), sin(a)), ref);
     }
     return sum / float(taps);
 #else

@@ -2,7 +2,8 @@
 // visible point, as a colour. Green: about one texel per pixel; towards red:
 // one texel covers many pixels (blocky edges, 1/16 at full red); towards
 // blue: many texels fall into one pixel (resolution spent for nothing, 16 at
-// full blue); grey: outside the map (lit).
+// full blue); grey: outside the map (lit). With cascades (MAP_CASCADES > 1)
+// the point's own cascade.
 #include "shadow_map_shared.h"
 
 in vec3 vWorldPosition;
@@ -11,7 +12,11 @@ in vec2 vUv;
 layout(location = 0) out vec4 outColor;
 
 void main() {
+#if MAP_CASCADES > 1
+    vec4 s = map.cascadeShadowFromWorld[cascadeOf(cascadeDepth(vWorldPosition))] * vec4(vWorldPosition, 1.0);
+#else
     vec4 s = map.shadowFromWorld * vec4(vWorldPosition, 1.0);
+#endif
     vec2 uv = s.xy / s.w;
     vec2 perPixel = vec2(length(dFdx(uv)), length(dFdy(uv))) / map.taps.x;  // texels a pixel step crosses
     float l = clamp(log2(max(max(perPixel.x, perPixel.y), 1e-6)) / 4.0, -1.0, 1.0);

@@ -13,6 +13,9 @@
 #define SL_MAP_FILTER_POISSON 4
 #define SL_MAP_FILTER_PCF20 5
 
+// Cascaded maps of a directional light, at most.
+#define SL_MAP_MAX_CASCADES 8
+
 #ifdef __cplusplus
 #include <glm/glm.hpp>
 namespace shadowlab::shared {
@@ -34,6 +37,10 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     SL_MAP_VEC4 axis;    // xyz: perspective light camera's unit view direction (texels grow along it), w unused
     SL_MAP_VEC4 cube;    // cube maps: x far (stored depth = distance / far), y slope bias (shadow pass), z world size of a texel per unit of distance (2 / size), w filter radius (world units)
     SL_MAP_VEC4 cubeMore;// cube maps: x radius growth per (viewer distance / far), y constant offset (stored depth units, shadow pass), z 1 when the bias is the presets' constant only, w unused
+    SL_MAP_MAT4 cascadeShadowFromWorld[SL_MAP_MAX_CASCADES]; // cascades: the bias matrix times each cascade's light camera
+    SL_MAP_VEC4 cascadeFar[SL_MAP_MAX_CASCADES / 4];   // cascades: each slice's far end, scene units along the view
+    SL_MAP_VEC4 cascadeTexel[SL_MAP_MAX_CASCADES / 4]; // cascades: world size of one texel of each cascade
+    SL_MAP_VEC4 cascade;  // cascades: xyz the view's forward direction (unit), w the blend share of a slice
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared
@@ -59,5 +66,18 @@ vec4 packDepth(float d) {
 }
 // Its inverse.
 float unpackDepth(vec4 v) { return dot(v, vec4(1.0, 1.0 / 255.0, 1.0 / 65025.0, 1.0 / 16581375.0)); }
+
+// Cascades (MAP_CASCADES > 1, defined by every program that includes this
+// with the map block): the view depth of a world point, and the slice it
+// lies in (the first whose far end is beyond it).
+#ifdef MAP_CASCADES
+float cascadeDepth(vec3 worldPosition) { return dot(worldPosition - frame.cameraPosition.xyz, map.cascade.xyz); }
+float cascadeFarOf(int c) { return map.cascadeFar[c >> 2][c & 3]; }
+int cascadeOf(float depth) {
+    int c = 0;
+    while (c < MAP_CASCADES - 1 && depth > cascadeFarOf(c)) ++c;
+    return c;
+}
+#endif
 #endif
 #endif

@@ -6,9 +6,10 @@
 #include "shadow_map_shared.h"
 #define SHADOW_VERTEX_HOOK 1
 
-#if MAP_CUBE
+#if MAP_CUBE || MAP_CASCADES > 1
 // Cube maps work per fragment (shadow_map.glsl): a point light's texel size
 // and N.L change too much across a wall-sized triangle to interpolate.
+// Cascades too: the fragment's depth picks the cascade.
 void shadowVertex(vec3 worldPosition, vec3 worldNormal) {}
 #else
 

@@ -273,8 +273,9 @@ int runRender(const RenderArgs& args) {
             };
             const bool isMap = endsWith("-map") || endsWith("-cube");  // a 2D map, or a cube's six faces as a cross
             const bool isDensity = d.name.find("texel-density") != std::string::npos;
+            const bool isCascades = endsWith("-cascades");
             for (const std::string& kind : args.debug)
-                if (kind == "all" || (kind == "shadow-maps" && isMap) || (kind == "texel-density" && isDensity)) {
+                if (kind == "all" || (kind == "shadow-maps" && isMap) || (kind == "texel-density" && isDensity) || (kind == "cascades" && isCascades)) {
                     pending.write(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), d.image);
                     break;
                 }
@@ -476,8 +477,8 @@ int main(int argc, char** argv) {
         ->check(CLI::NonNegativeNumber);
     render->add_option("--debug", renderArgs.debug,
                        "Also write debug images beside the output as <name>-<image>.png: shadow-maps (each light's map, "
-                       "perspective depth linearised; a point light's cube as a cross), texel-density (map texels per pixel), all")
-        ->check(CLI::IsMember({"shadow-maps", "texel-density", "all"}))
+                       "perspective depth linearised; a point light's cube as a cross), texel-density (map texels per pixel), cascades (the frame coloured by cascade), all")
+        ->check(CLI::IsMember({"shadow-maps", "texel-density", "cascades", "all"}))
         ->delimiter(',');
     render->add_option("--debug-images", renderArgs.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
     render->add_option("--time", renderArgs.timeSeconds, "Seconds since the start of the animation: where light paths put the lights (the first frame's time)")

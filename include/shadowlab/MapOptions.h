@@ -2,11 +2,13 @@
 /// @file MapOptions.h
 /// Options of technique "map": a shadow map per light (lecture 000, 002
 /// §8.2-8.4, 004), the block `lights[i].shadow.map` of a scene file.
-/// Directional lights get an orthographic light camera, spot lights a
-/// perspective one; point lights (cube maps) are not supported yet.
+/// Directional lights get an orthographic light camera (or cascades of
+/// them), spot lights a perspective one, point lights a cube map.
 /// Every field's JSON key, unit, range and default is in its OptionTable
 /// (mapOptionTable(), and docs/scene-format.md).
 #include <shadowlab/Options.h>
+
+#include <string>
 
 namespace shadowlab {
 
@@ -67,6 +69,12 @@ struct MapOptions {
     float shadowedLight = 0.0f;          ///< share of the light's diffuse and specular a shadowed point keeps (a look; compare judges the test); default 0
     bool mipmaps = false;                ///< mipmap the map and sample it with mipmapping (002 exercise 8.6.1-4); default false
     MapPreset preset = MapPreset::Default;
+    // Directional lights: cascaded shadow maps (one layer per cascade).
+    int cascades = 1;                    ///< maps along the view, 1..8 (1: one map over the whole view); default 1
+    float cascadeLambda = 0.75f;         ///< the splits: 0 uniform .. 1 logarithmic (the practical scheme); default 0.75
+    std::string cascadeSplits;           ///< explicit far distances of the first cascades - 1 slices, scene units along the view, e.g. "4 15 50"; default "" (cascadeLambda's scheme)
+    bool stabilize = true;               ///< cascades: a sphere per slice snapped to whole texels, so shadows do not shimmer as the camera moves (false: each slice fitted tightly); default true
+    float cascadeBlend = 0.1f;           ///< cascades: share of each slice, at its far end, over which it fades into the next; default 0.1
     // Point lights (cube maps) only.
     MapCubePasses cubePasses = MapCubePasses::One;
     bool faceCulling = true;             ///< draw a caster only into the faces it can touch (false: all six, as LearnOpenGL does); default true

@@ -165,6 +165,72 @@ LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInpu
     return cam;
 }
 
+std::vector<float> cascadeSplits(float near, float far, int count, float lambda, const std::vector<float>& given) {
+    std::vector<float> out;
+    for (int i = 1; i < count; ++i) {
+        const float t = static_cast<float>(i) / static_cast<float>(count);
+        const float scheme = lambda * near * std::pow(far / near, t) + (1.0f - lambda) * (near + (far - near) * t);
+        const float split = given.empty() ? scheme : given[static_cast<std::size_t>(i - 1)];
+        // Increasing and inside (near, far), 10^-5 of the range left
+        // for each slice: none is empty.
+        const float step = 1e-5f * (far - near);
+        const float lo = (out.empty() ? near : out.back()) + step;
+        out.push_back(std::clamp(split, lo, std::max(lo, far - step * static_cast<float>(count - i))));
+    }
+    out.push_back(far);
+    return out;
+}
+
+float viewReach(const Camera& camera, const FitInput& in) {
+    const glm::mat4 view = camera.viewFromWorld();
+    float reach = camera.nearPlane;
+    for (std::size_t i = 0; i < in.items.size(); ++i) {
+        if (!in.items[i].receivesShadows || !mayIntersect(in.cameraClipFromWorld, in.itemBounds[i])) continue;
+        const Bounds b = in.itemBounds[i].transformed(view);
+        reach = std::max(reach, -b.lo.z);
+    }
+    return std::clamp(reach, camera.nearPlane * 1.001f, camera.farPlane);
+}
+
+LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in) {
+    const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    FitInput slice = in;
+    slice.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, near, far) * camera.viewFromWorld();
+    if (!stabilize) return fitDirectional(direction, MapFit::Tight, slice);
+
+    LightCamera cam;
+    const Bounds scene = all(in);
+    const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
+    const float diagonal = scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f);
+    // A view of fixed orientation and origin: it moves with neither the camera nor the slice.
+    cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, lightCameraUp(direction));
+    cam.casts = castersThatMatter(glm::vec4(-direction, 0.0f), cam.viewFromWorld, slice);
+    // The slice's bounding sphere, centred on the view axis where the near
+    // and far corners are equally far (k: a corner's distance from the axis
+    // per unit of depth), radius rounded up to 1/64 of a unit: it depends
+    // on the slice alone, not on where the camera is or turns.
+    const float k2 = (1.0f + aspect * aspect) * tanHalf * tanHalf;
+    const float along = std::min(0.5f * (far + near) * (1.0f + k2), far);
+    float radius = std::sqrt((far - along) * (far - along) + k2 * far * far);
+    radius = std::ceil(radius * 64.0f) / 64.0f;
+    const glm::vec3 eye = camera.position, forward = glm::normalize(camera.target - camera.position);
+    const glm::vec3 sphere = glm::vec3(cam.viewFromWorld * glm::vec4(eye + forward * along, 1.0f));
+    // The box: the sphere plus the filter's footprint, its centre on the texel grid.
+    const float size = static_cast<float>(std::max(in.size, 1));
+    const float half = radius * size / std::max(size - 2.0f * in.paddingTexels, 1.0f);
+    const float texel = 2.0f * half / size;
+    const glm::vec2 snapped = glm::floor(glm::vec2(sphere) / texel + 0.5f) * texel;
+    // Depth: the whole scene along the light (fixed, like the orientation).
+    const Bounds depth = scene.transformed(cam.viewFromWorld);
+    const float depthPad = 1e-3f * diagonal;
+    cam.nearPlane = scene.empty() ? 0.0f : -depth.hi.z - depthPad;
+    cam.farPlane = scene.empty() ? 2.0f * diagonal : -depth.lo.z + depthPad;
+    cam.clipFromView = glm::ortho(snapped.x - half, snapped.x + half, snapped.y - half, snapped.y + half, cam.nearPlane, cam.farPlane);
+    cam.texelSize = texel;
+    cam.perspective = false;
+    return cam;
+}
+
 LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
     LightCamera cam;
     const glm::vec3 axis = glm::normalize(light.direction);

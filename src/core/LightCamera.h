@@ -91,6 +91,28 @@ glm::mat4 cubeFaceView(const glm::vec3& position, int face);
 /// replace the fitted values (the presets' fixed planes).
 CubeCamera fitCube(const Light& light, MapFit fit, const FitInput& in, float nearPlane = 0.0f, float farPlane = 0.0f);
 
+/// Cascaded shadow maps (directional lights): the view's depth range
+/// [near, far] split into `count` slices, each slice's far distance along
+/// the view axis (the last is `far`). With `given` (count - 1 increasing
+/// distances) those, else the practical scheme (Zhang et al. 2006): lambda x
+/// the logarithmic split + (1 - lambda) x the uniform one.
+std::vector<float> cascadeSplits(float near, float far, int count, float lambda, const std::vector<float>& given = {});
+
+/// How far along the view axis receivers the camera sees reach: the
+/// farthest corner of their bounds within the frustum, at most the camera's
+/// far plane and at least just past its near one.
+float viewReach(const Camera& camera, const FitInput& in);
+
+/// One cascade: an orthographic light camera for the slice [near, far] of
+/// `camera`'s view (aspect: width / height) along `direction`.
+/// Tight (stabilize false): fitDirectional() for the receivers and casters
+/// of that slice. Stabilised: the slice's bounding sphere (its radius does
+/// not change as the camera moves or turns), a light view of fixed
+/// orientation and origin, the box's centre snapped to whole texels and its
+/// depth over the whole scene, so the map's texel grid stays put in the world
+/// while the camera moves (no shimmer).
+LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in);
+
 /// Spot light: perspective along its axis, field of view just containing
 /// the outer cone (plus the padding), far at the farthest projection of the
 /// (tight: visible receivers', scene: all) bounds on the axis, near at the

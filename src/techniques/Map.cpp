@@ -10,6 +10,7 @@
 #include "techniques/Map.h"
 
 #include "core/LightCamera.h"
+#include "core/Text.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/MapOptions.h>
@@ -23,6 +24,7 @@
 #include <cstdio>
 #include <cstdint>
 #include <map>
+#include <span>
 
 namespace shadowlab {
 
@@ -52,6 +54,16 @@ const OptionTable& mapOptionTable() {
             .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (lecture 002 exercise 8.6.1-4; docs/techniques.md says what it does)")
             .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl", "lecture-000"},
                     "replace the settings with the lecture's or LearnOpenGL's (docs/techniques.md); lecture-000: a point light through lecture 000's one 60-degree map")
+            .integer(&MapOptions::cascades, "cascades", 1, 8, "maps",
+                     "directional lights: cascaded shadow maps, one per slice of the view's depth (layers of one array); 1: one map")
+            .number(&MapOptions::cascadeLambda, "cascadeLambda", 0.0, 1.0, "0 uniform .. 1 logarithmic",
+                    "cascades: where the slices split, lambda x logarithmic + (1 - lambda) x uniform (the practical scheme)")
+            .text(&MapOptions::cascadeSplits, "cascadeSplits", "cascades - 1 increasing distances, scene units, e.g. \"4 15 50\"",
+                  "cascades: the slices' far ends along the view instead of cascadeLambda's (the last slice ends at the camera's far plane when stabilised, else at the farthest receiver in view)")
+            .boolean(&MapOptions::stabilize, "stabilize",
+                     "cascades: a bounding sphere per slice and the map snapped to whole texels, so shadows do not shimmer as the camera moves; false: each slice fitted tightly")
+            .number(&MapOptions::cascadeBlend, "cascadeBlend", 0.0, 0.5, "share of a slice",
+                    "cascades: the far part of each slice over which its shadow fades into the next cascade's")
             .choice(&MapOptions::cubePasses, "cubePasses", {"one", "six"},
                     "point lights: each caster drawn once through a geometry shader that picks its faces, or one pass per face (the same map)")
             .boolean(&MapOptions::faceCulling, "faceCulling",
@@ -207,6 +219,33 @@ LightCamera lecturePointCamera(const Light& light, int size) {
     return cam;
 }
 
+// The maps of a directional light's cascades (1 for any other light).
+int cascadeCount(const Light& light, const MapOptions& o) { return light.type == LightType::Directional ? o.cascades : 1; }
+
+// cascadeSplits' distances; `problem` says what is wrong with them, if anything.
+std::vector<float> parseSplits(const MapOptions& o, std::string& problem) {
+    std::vector<float> out;
+    if (o.cascadeSplits.find_first_not_of(" ,\t") == std::string::npos) return out;
+    std::string text = o.cascadeSplits;
+    std::replace(text.begin(), text.end(), ',', ' ');
+    const char* at = text.c_str();
+    for (;;) {
+        while (*at == ' ' || *at == '\t') ++at;
+        if (*at == '\0') break;
+        char* end = nullptr;
+        const float v = std::strtof(at, &end);
+        if (end == at || !std::isfinite(v) || v <= 0.0f || (!out.empty() && v <= out.back())) {
+            problem = "expected increasing distances > 0";
+            return {};
+        }
+        out.push_back(v);
+        at = end;
+    }
+    if (static_cast<int>(out.size()) != o.cascades - 1)
+        problem = "expected " + std::to_string(o.cascades - 1) + " distance(s) for " + std::to_string(o.cascades) + " cascades, got " + std::to_string(out.size());
+    return out;
+}
+
 // A point light's map is a cube unless preset lecture-000 asks for 000's single map.
 bool isCube(const Light& light) {
     return light.type == LightType::Point && light.shadow.get<MapOptions>().preset != MapPreset::Lecture000;
@@ -292,6 +331,16 @@ struct PerLight {
     /// whole faces after (re)attaching.
     std::array<TexelRect, 6> faceDirty{TexelRect::whole(), TexelRect::whole(), TexelRect::whole(),
                                        TexelRect::whole(), TexelRect::whole(), TexelRect::whole()};
+    // Directional lights with cascades: a camera per slice (the first is
+    // also `camera`) in layers layer .. layer + n - 1, each slice's far end
+    // along the view, and the view's forward direction (the light pass picks
+    // a cascade by the depth along it).
+    std::vector<LightCamera> cascades;
+    std::vector<float> cascadeFar;
+    glm::vec3 viewForward{0.0f, 0.0f, -1.0f};
+    std::vector<gl::Framebuffer> cascadeFbos;
+    /// The cameras its 2D map layers were drawn from: the cascades, or the one camera.
+    std::span<const LightCamera> cameras() const { return cascades.empty() ? std::span<const LightCamera>(&camera, 1) : std::span<const LightCamera>(cascades); }
 };
 
 gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
@@ -340,8 +389,9 @@ public:
             if (o.size > limit)
                 throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
                             " texels is past this GPU's limit of " + std::to_string(limit));
-            const bool cube = isCube(frame.scene.lights[static_cast<std::size_t>(index)]);
-            ++layersWanted[{static_cast<int>(o.format) + (o.mipmaps ? kMipmapped : 0) + (cube ? kCube : 0), o.size}];
+            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+            const bool cube = isCube(light);
+            layersWanted[{static_cast<int>(o.format) + (o.mipmaps ? kMipmapped : 0) + (cube ? kCube : 0), o.size}] += cube ? 1 : cascadeCount(light, o);
         }
         // Stated limits, before anything is allocated: layers per array, and
         // all maps together within kMapBudgetBytes (a 16384^2 depth32f map is
@@ -356,7 +406,7 @@ public:
             bytes += texel * static_cast<double>(wanted.first.second) * static_cast<double>(wanted.first.second) * wanted.second * perLight;
             if (wanted.second * perLight > host.glInfo().maxArrayLayers)
                 throw Error("lights[" + std::to_string(lights[0]) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
-                            " map layers in one array (" + std::to_string(wanted.second) + " light(s)" + (perLight == 6 ? ", six per point light" : "") +
+                            " map layers in one array (" + (perLight == 6 ? std::to_string(wanted.second) + " point light(s), six each" : "lights and cascades") +
                             "), past this GPU's limit of " + std::to_string(host.glInfo().maxArrayLayers) + " layers");
         }
         if (bytes > kMapBudgetBytes) {
@@ -405,7 +455,8 @@ public:
                 if (groups_[g].format == p.options.format && groups_[g].mipmaps == p.options.mipmaps && groups_[g].cube == p.cube &&
                     groups_[g].size == p.options.size)
                     p.group = g;
-            p.layer = nextLayer[p.group]++;
+            p.layer = nextLayer[p.group];
+            nextLayer[p.group] += p.cube ? 1 : cascadeCount(light, p.options);
             const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld, p.options.size, footprint(p.options)};
             p.spot = light.type == LightType::Spot;
             if (p.cube) {
@@ -420,6 +471,8 @@ public:
                 ;  // the cube's cameras above
             else if (light.type == LightType::Spot)
                 p.camera = fitSpot(light, p.options.fit, in);
+            else if (cascadeCount(light, p.options) > 1)
+                fitCascades(p, light, frame, in);
             else
                 p.camera = fitDirectional(glm::normalize(light.direction), p.options.fit, in);
             auto old = lights_.find(index);
@@ -428,6 +481,7 @@ public:
                 p.attachedGeneration = old->second.attachedGeneration;
                 p.attachedLayer = old->second.attachedLayer;
                 p.faceFbos = std::move(old->second.faceFbos);
+                p.cascadeFbos = std::move(old->second.cascadeFbos);
                 p.faceDirty = old->second.faceDirty;
             }
             attach(p);
@@ -446,33 +500,43 @@ public:
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
         const bool packed = g.format == MapFormat::Rgba8;
-        glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
-        glViewport(0, 0, g.size, g.size);
-        gl::RenderState state;  // all writes on for the clears
-        host.apply(state);
-        const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-        glClearNamedFramebufferfv(p.fbo.id(), GL_DEPTH, 0, one);
-        if (packed) glClearNamedFramebufferfv(p.fbo.id(), GL_COLOR, 0, one);
-        if (!packed) state.noColor();
-        state.polygonOffset = p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f;
-        state.offsetFactor = p.options.slopeBias;
-        state.offsetUnits = p.options.offsetUnits;
-        state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
-        // An orthographic light pancakes casters nearer than its near plane onto it.
-        state.depthClamp = !p.camera.perspective;
-        host.apply(state);
         upload(view);
         const gl::Program& program = host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
              std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_SPOT " + (p.spot ? "1" : "0") + "\n"});
-        // Casters that cannot reach the light's frustum are not drawn.
-        const glm::mat4 lightClip = p.camera.clipFromWorld();
         std::size_t drawn = 0;
-        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
-            const bool inside = mayCast(p.camera, i) && (!p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]));
-            if (inside) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
-            return inside;
-        });
+        const std::span<const LightCamera> cameras = p.cameras();
+        for (std::size_t c = 0; c < cameras.size(); ++c) {
+            const LightCamera& camera = cameras[c];
+            const gl::Framebuffer& fbo = p.cascades.empty() ? p.fbo : p.cascadeFbos[c];
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            glViewport(0, 0, g.size, g.size);
+            gl::RenderState state;  // all writes on for the clears
+            host.apply(state);
+            const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+            glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, one);
+            if (packed) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, one);
+            if (!packed) state.noColor();
+            state.polygonOffset = p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f;
+            state.offsetFactor = p.options.slopeBias;
+            state.offsetUnits = p.options.offsetUnits;
+            state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
+            // An orthographic light pancakes casters nearer than its near plane onto it.
+            state.depthClamp = !camera.perspective;
+            host.apply(state);
+            // This cascade's camera for the depth pass (the block's first member).
+            const glm::mat4 lightClip = camera.clipFromWorld();
+            glNamedBufferSubData(ubo_.id(), 0, sizeof lightClip, &lightClip);
+            // Casters that cannot reach the light's frustum are not drawn.
+            std::size_t drawnHere = 0;
+            host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+                const bool inside = castsInto(camera, frame, i);
+                if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+                return inside;
+            });
+            if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
+            drawn += drawnHere;
+        }
         host.count("triangles", static_cast<double>(drawn));
         if (g.mipmaps) {
             // Every level from the map: averaged depths (of all layers; each light's pass refreshes them).
@@ -486,7 +550,8 @@ public:
         const MapOptions o = effective(light);
         return "#define MAP_FILTER " + std::to_string(static_cast<int>(o.filter)) + "\n#define MAP_KERNEL " +
                std::to_string(o.kernel) + "\n#define MAP_RGBA8 " + (o.format == MapFormat::Rgba8 ? "1" : "0") +
-               "\n#define MAP_GRID_BILINEAR " + (bilinearGrid(o) ? "1" : "0") + "\n#define MAP_CUBE " + (isCube(light) ? "1" : "0") + "\n";
+               "\n#define MAP_GRID_BILINEAR " + (bilinearGrid(o) ? "1" : "0") + "\n#define MAP_CUBE " + (isCube(light) ? "1" : "0") +
+               "\n#define MAP_CASCADES " + std::to_string(cascadeCount(light, o)) + "\n";
     }
 
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
@@ -523,25 +588,30 @@ public:
             return;
         }
         const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
-        const std::vector<float> depth = readLayer(g, p.layer);
-        ImageRGBA8 image{g.size, g.size, std::vector<std::uint8_t>(n * 4, 255)};
-        const float nearP = p.camera.nearPlane, farP = p.camera.farPlane;
-        for (int y = 0; y < g.size; ++y)
-            for (int x = 0; x < g.size; ++x) {
-                float d = depth[static_cast<std::size_t>(y) * g.size + x];
-                if (p.camera.perspective && d < 1.0f) {
-                    // Perspective depth linearised: eye distance from window depth, then 0..1 over near..far.
-                    const float z = 2.0f * d - 1.0f;
-                    const float eye = 2.0f * nearP * farP / (farP + nearP - z * (farP - nearP));
-                    d = (eye - nearP) / (farP - nearP);
+        const std::span<const LightCamera> cameras = p.cameras();
+        for (std::size_t c = 0; c < cameras.size(); ++c) {
+            const LightCamera& camera = cameras[c];
+            const std::vector<float> depth = readLayer(g, p.layer + static_cast<int>(c));
+            ImageRGBA8 image{g.size, g.size, std::vector<std::uint8_t>(n * 4, 255)};
+            const float nearP = camera.nearPlane, farP = camera.farPlane;
+            for (int y = 0; y < g.size; ++y)
+                for (int x = 0; x < g.size; ++x) {
+                    float d = depth[static_cast<std::size_t>(y) * g.size + x];
+                    if (camera.perspective && d < 1.0f) {
+                        // Perspective depth linearised: eye distance from window depth, then 0..1 over near..far.
+                        const float z = 2.0f * d - 1.0f;
+                        const float eye = 2.0f * nearP * farP / (farP + nearP - z * (farP - nearP));
+                        d = (eye - nearP) / (farP - nearP);
+                    }
+                    const auto v = static_cast<std::uint8_t>(std::clamp(d, 0.0f, 1.0f) * 255.0f + 0.5f);
+                    // Rows top to bottom: the map's v = 1 at the top.
+                    std::uint8_t* px = &image.pixels[(static_cast<std::size_t>(g.size - 1 - y) * g.size + x) * 4];
+                    px[0] = px[1] = px[2] = v;
                 }
-                const auto v = static_cast<std::uint8_t>(std::clamp(d, 0.0f, 1.0f) * 255.0f + 0.5f);
-                // Rows top to bottom: the map's v = 1 at the top.
-                std::uint8_t* px = &image.pixels[(static_cast<std::size_t>(g.size - 1 - y) * g.size + x) * 4];
-                px[0] = px[1] = px[2] = v;
-            }
-        out.push_back({"map", std::move(image), {}});
-        out.push_back({"texel-density", texelDensity(host, frame, view), {}});
+            out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), std::move(image), {}});
+        }
+        out.push_back({"texel-density", frameView(host, frame, view, "shadow_map_density.frag"), {}});
+        if (cameras.size() > 1) out.push_back({"cascades", frameView(host, frame, view, "shadow_map_cascades.frag"), {}});
     }
 
     void lightFrustums(const LightView& view, std::vector<glm::mat4>& out) const override {
@@ -551,10 +621,31 @@ public:
         if (p.cube)
             out.insert(out.end(), p.cubeCamera.faceClipFromWorld.begin(), p.cubeCamera.faceClipFromWorld.end());
         else
-            out.push_back(p.camera.clipFromWorld());
+            for (const LightCamera& camera : p.cameras()) out.push_back(camera.clipFromWorld());
     }
 
 private:
+    // A directional light's cascades: the view's depth split into slices
+    // (core/LightCamera: cascadeSplits, fitCascade), one camera each.
+    static void fitCascades(PerLight& p, const Light& light, const FrameInfo& frame, const FitInput& in) {
+        const Camera& camera = frame.scene.camera;
+        const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
+        // Stabilised slices must not move with the camera: they end at its far
+        // plane; tight ones at the farthest receiver it sees.
+        const float near = camera.nearPlane;
+        const float far = p.options.stabilize ? camera.farPlane : viewReach(camera, in);
+        std::string problem;  // checked when the scene was read (the registry's unsupported())
+        const std::vector<float> given = parseSplits(p.options, problem);
+        p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
+        p.cascades.clear();
+        for (std::size_t c = 0; c < p.cascadeFar.size(); ++c)
+            p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, c == 0 ? near : p.cascadeFar[c - 1], p.cascadeFar[c],
+                                            p.options.stabilize, in));
+        p.camera = p.cascades.front();
+        const glm::mat4& v = frame.viewFromWorld;
+        p.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
+    }
+
     // One layer of a group's array (a 2D map, or one face of a cube) as
     // stored depths in 0..1: read back, or unpacked from rgba8's base-255
     // digits (the 4th is below float precision here).
@@ -619,7 +710,9 @@ private:
     // still name the deleted texture).
     void attach(PerLight& p) {
         const Group& g = groups_[p.group];
-        if (p.fbo && p.attachedGeneration == g.generation && p.attachedLayer == p.layer) return;
+        const bool attached = p.attachedGeneration == g.generation && p.attachedLayer == p.layer &&
+                              (p.cascades.empty() ? static_cast<bool>(p.fbo) : p.cascadeFbos.size() == p.cascades.size());
+        if (attached) return;
         if (!p.fbo || p.attachedGeneration != g.generation) p.fbo = gl::Framebuffer();
         const bool packed = g.format == MapFormat::Rgba8;
         auto attachOne = [&](gl::Framebuffer& fbo, int layer, const char* what) {
@@ -642,6 +735,12 @@ private:
                 attachOne(face, 6 * p.layer + f, "cube shadow map framebuffer (one face)");
             }
             p.faceDirty.fill(TexelRect::whole());  // a new array or layer: its contents are undefined
+        } else if (!p.cascades.empty()) {
+            p.cascadeFbos.clear();
+            for (std::size_t c = 0; c < p.cascades.size(); ++c) {
+                p.cascadeFbos.emplace_back();
+                attachOne(p.cascadeFbos.back(), p.layer + static_cast<int>(c), "cascade shadow map framebuffer");
+            }
         } else {
             attachOne(p.fbo, p.layer, "shadow map framebuffer");
         }
@@ -656,9 +755,11 @@ private:
     }
     bool software_ = false;
 
-    // The frame from the camera, coloured by shadow-map texels per screen
-    // pixel (shaders/shadow_map_density.frag).
-    ImageRGBA8 texelDensity(TechniqueHost& host, const FrameInfo& frame, const LightView& view) {
+    // The frame from the camera, each visible point coloured by
+    // `fragmentFile` with the light's map block: shadow-map texels per
+    // screen pixel (shadow_map_density.frag), the cascade
+    // (shadow_map_cascades.frag).
+    ImageRGBA8 frameView(TechniqueHost& host, const FrameInfo& frame, const LightView& view, const char* fragmentFile) {
         const glm::ivec2 size = frame.viewport;
         gl::Texture colour(GL_TEXTURE_2D), depth(GL_TEXTURE_2D);
         glTextureStorage2D(colour.id(), 1, GL_RGBA8, size.x, size.y);
@@ -674,7 +775,9 @@ private:
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, background);
         glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
         upload(view);
-        host.drawItems(ItemFilter::All, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_density.frag"}}, ""}));
+        const int cascades = static_cast<int>(lights_.at(view.index).cameras().size());
+        host.drawItems(ItemFilter::All, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, fragmentFile}},
+                                                      "#define MAP_CASCADES " + std::to_string(cascades) + "\n"}));
         ImageRGBA8 image{size.x, size.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size.x) * size.y * 4)};
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glGetTextureImage(colour.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());
@@ -724,11 +827,21 @@ private:
     void drawFloor(TechniqueHost& host, const FrameInfo& frame, const PerLight& p) {
         const auto scope = host.timeScope("floor");
         const gl::Program& bare = bindFloor(host, groups_[p.group]);
-        clearFloor(host, !p.camera.perspective);
-        const glm::mat4 lightClip = p.camera.clipFromWorld();
-        host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) {
-            return mayCast(p.camera, i) && (!p.camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]));
-        });
+        for (const LightCamera& camera : p.cameras()) {
+            clearFloor(host, !camera.perspective);
+            const glm::mat4 lightClip = camera.clipFromWorld();
+            glNamedBufferSubData(ubo_.id(), 0, sizeof lightClip, &lightClip);
+            host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i); });
+        }
+    }
+
+    // Whether item i is drawn into `camera`'s map: it may cast there, and
+    // its bounds reach the frustum (an orthographic light's sides only: it
+    // clamps depth).
+    static bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i) {
+        if (!mayCast(camera, i)) return false;
+        const glm::mat4 lightClip = camera.clipFromWorld();
+        return !camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
     }
 
     gl::Texture floorTarget_{gl::NoCreate};
@@ -871,6 +984,12 @@ private:
             u.cube = glm::vec4(c.farPlane, p.options.slopeBias, 2.0f / static_cast<float>(g.size), p.options.diskRadius);
             u.cubeMore = glm::vec4(p.options.diskGrowth, p.options.offsetUnits * step, presetBias ? 1.0f : 0.0f, 0.0f);
         }
+        for (std::size_t c = 0; c < p.cascades.size(); ++c) {
+            u.cascadeShadowFromWorld[c] = kBias * p.cascades[c].clipFromWorld();
+            u.cascadeFar[c / 4][static_cast<int>(c % 4)] = p.cascadeFar[c];
+            u.cascadeTexel[c / 4][static_cast<int>(c % 4)] = p.cascades[c].texelSize;
+        }
+        u.cascade = glm::vec4(glm::normalize(p.viewForward), p.options.cascadeBlend);
         uniforms_ = u;
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
@@ -896,6 +1015,19 @@ TechniqueEntry mapTechnique() {
                     if (o.mipmaps) return std::string("map: mipmaps are for 2D maps (directional and spot lights), not a point light's cube");
                 } else if (o.filter == MapFilter::Pcf20 && o.preset == MapPreset::Default) {
                     return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
+                }
+                if (o.cascades > 1) {
+                    if (light.type != LightType::Directional)
+                        return std::string("map: cascades are for directional lights; a spot or point light takes one map (cascades 1)");
+                    if (o.preset != MapPreset::Default)
+                        return std::string("map: cascades do not combine with a preset (each preset is one map); use preset \"default\"");
+                    if (o.fit == MapFit::Scene)
+                        return std::string("map: cascades fit each slice of the view; fit \"scene\" is one map around the whole scene");
+                    std::string problem;
+                    parseSplits(o, problem);
+                    if (!problem.empty()) return "map: cascadeSplits \"" + text::escapeControl(o.cascadeSplits) + "\": " + problem;
+                } else if (!o.cascadeSplits.empty() && o.cascadeSplits.find_first_not_of(" ,\t") != std::string::npos) {
+                    return std::string("map: cascadeSplits is given but cascades is 1");
                 }
                 return std::string();
             },

@@ -1,0 +1,169 @@
+// Cascaded shadow maps' light cameras (core/LightCamera: cascadeSplits,
+// fitCascade), GPU-free: where the slices split, that each cascade holds its
+// slice, and that a stabilised cascade's texel grid stays put in the world
+// while the camera moves and turns (the cause of shimmer when it does not).
+#include "core/LightCamera.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+using namespace shadowlab;
+
+namespace {
+
+// A field: a 400 m ground and a row of boxes along -z, all casting and receiving.
+struct Field {
+    std::vector<DrawItem> items;
+    std::vector<Bounds> bounds;
+    std::vector<std::optional<glm::vec4>> planes;
+    std::vector<std::vector<glm::vec4>> convex;
+    Field() {
+        Bounds ground;
+        ground.add(glm::vec3(-200.0f, 0.0f, -200.0f));
+        ground.add(glm::vec3(200.0f, 0.0f, 200.0f));
+        bounds.push_back(ground);
+        planes.emplace_back(glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+        for (int i = 0; i < 40; ++i) {
+            Bounds box;
+            const float z = -2.0f - 4.5f * static_cast<float>(i), x = (i % 2 ? 3.0f : -3.0f);
+            box.add(glm::vec3(x - 0.5f, 0.0f, z - 0.5f));
+            box.add(glm::vec3(x + 0.5f, 2.0f, z + 0.5f));
+            bounds.push_back(box);
+            planes.emplace_back(std::nullopt);
+        }
+        items.resize(bounds.size());
+        for (std::size_t i = 0; i < items.size(); ++i) items[i].mesh = static_cast<int>(i);
+        convex.resize(bounds.size());
+    }
+    FitInput input(const Camera& camera, float aspect) const {
+        return FitInput{bounds, items, planes, convex, camera.clipFromView(aspect) * camera.viewFromWorld(), 2048, 1.0f};
+    }
+};
+
+Camera walker(glm::vec3 position, float yawDeg) {
+    Camera c;
+    c.position = position;
+    const float yaw = glm::radians(yawDeg);
+    c.target = position + glm::vec3(std::sin(yaw), -0.1f, -std::cos(yaw));
+    c.fovYDeg = 50.0f;
+    c.nearPlane = 0.1f;
+    c.farPlane = 400.0f;
+    return c;
+}
+
+const glm::vec3 kSun = glm::normalize(glm::vec3(0.6f, -0.45f, 0.5f));
+constexpr float kAspect = 16.0f / 9.0f;
+
+// The light-space box of an orthographic camera: [lo, hi] in x and y.
+void box(const LightCamera& c, glm::vec2& lo, glm::vec2& hi) {
+    const glm::mat4 viewFromClip = glm::inverse(c.clipFromView);
+    lo = glm::vec2(viewFromClip * glm::vec4(-1.0f, -1.0f, 0.0f, 1.0f));
+    hi = glm::vec2(viewFromClip * glm::vec4(1.0f, 1.0f, 0.0f, 1.0f));
+}
+
+// The eight corners of the view slice [near, far].
+std::vector<glm::vec3> sliceCorners(const Camera& c, float near, float far) {
+    const glm::mat4 worldFromClip = glm::inverse(glm::perspective(glm::radians(c.fovYDeg), kAspect, near, far) * c.viewFromWorld());
+    std::vector<glm::vec3> out;
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec4 p = worldFromClip * glm::vec4(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, k & 4 ? 1.0f : -1.0f, 1.0f);
+        out.push_back(glm::vec3(p) / p.w);
+    }
+    return out;
+}
+
+} // namespace
+
+TEST(CascadeTest, SplitsFollowThePracticalSchemeOrTheGivenDistances) {
+    // lambda 0: uniform; lambda 1: logarithmic (each slice the same ratio far / near).
+    const std::vector<float> uniform = cascadeSplits(1.0f, 101.0f, 4, 0.0f);
+    ASSERT_EQ(uniform.size(), 4u);
+    EXPECT_NEAR(uniform[0], 26.0f, 1e-4f);
+    EXPECT_NEAR(uniform[1], 51.0f, 1e-4f);
+    EXPECT_NEAR(uniform[2], 76.0f, 1e-4f);
+    EXPECT_EQ(uniform[3], 101.0f);
+    const std::vector<float> log = cascadeSplits(0.1f, 1000.0f, 4, 1.0f);
+    EXPECT_NEAR(log[0], 1.0f, 1e-5f);
+    EXPECT_NEAR(log[1], 10.0f, 1e-4f);
+    EXPECT_NEAR(log[2], 100.0f, 1e-3f);
+    // The blend in between, and the given distances as given.
+    const std::vector<float> mixed = cascadeSplits(0.1f, 1000.0f, 4, 0.75f);
+    EXPECT_NEAR(mixed[0], 0.75f * 1.0f + 0.25f * (0.1f + 999.9f / 4.0f), 1e-3f);
+    EXPECT_EQ(cascadeSplits(0.1f, 100.0f, 3, 0.5f, {4.0f, 20.0f}), (std::vector<float>{4.0f, 20.0f, 100.0f}));
+    // Distances past the far end are pulled inside it: no slice is empty or reversed.
+    const std::vector<float> pulled = cascadeSplits(0.1f, 10.0f, 3, 0.5f, {50.0f, 60.0f});
+    EXPECT_LT(pulled[0], pulled[1]);
+    EXPECT_LT(pulled[1], pulled[2]);
+    EXPECT_EQ(pulled[2], 10.0f);
+}
+
+TEST(CascadeTest, EachCascadeHoldsItsSliceOfTheView) {
+    const Field field;
+    const Camera camera = walker(glm::vec3(0.0f, 1.8f, 5.0f), 10.0f);
+    const std::vector<float> far = cascadeSplits(camera.nearPlane, camera.farPlane, 4, 0.75f);
+    for (bool stabilize : {true, false}) {
+        float previousTexel = 0.0f;
+        for (std::size_t c = 0; c < far.size(); ++c) {
+            SCOPED_TRACE(std::string(stabilize ? "stabilised" : "tight") + ", cascade " + std::to_string(c));
+            const float near = c == 0 ? camera.nearPlane : far[c - 1];
+            const LightCamera cam = fitCascade(kSun, camera, kAspect, near, far[c], stabilize, field.input(camera, kAspect));
+            EXPECT_FALSE(cam.perspective);
+            glm::vec2 lo, hi;
+            box(cam, lo, hi);
+            if (stabilize) {
+                // The sphere holds the whole slice, above the ground too.
+                for (const glm::vec3& p : sliceCorners(camera, near, far[c])) {
+                    const glm::vec3 v = glm::vec3(cam.viewFromWorld * glm::vec4(p, 1.0f));
+                    EXPECT_GE(v.x, lo.x);
+                    EXPECT_LE(v.x, hi.x);
+                    EXPECT_GE(v.y, lo.y);
+                    EXPECT_LE(v.y, hi.y);
+                }
+            } else {
+                // Tight: the slice's receivers (the ground under it) as far as casters reach over it.
+                EXPECT_LE(hi.x - lo.x, 2.0f * far[c] * 2.5f);
+            }
+            // Stabilised, nearer cascades have finer texels (tight ones are
+            // also cut to the casters' footprint, which can make a far one smaller).
+            if (stabilize) {
+                EXPECT_GT(cam.texelSize, previousTexel);
+            }
+            previousTexel = cam.texelSize;
+        }
+    }
+}
+
+TEST(CascadeTest, AStabilisedCascadeKeepsItsTexelGridWhileTheCameraMovesAndTurns) {
+    const Field field;
+    const Camera start = walker(glm::vec3(0.0f, 1.8f, 5.0f), 0.0f);
+    const LightCamera first = fitCascade(kSun, start, kAspect, 0.1f, 20.0f, true, field.input(start, kAspect));
+    const float texel = first.texelSize;
+    glm::vec2 lo0, hi0;
+    box(first, lo0, hi0);
+    int shifted = 0;
+    for (int step = 1; step <= 60; ++step) {
+        // 3 mm and 0.05 degrees a step: sub-texel (a texel is about 2 cm here).
+        const Camera camera = walker(glm::vec3(0.003f * static_cast<float>(step), 1.8f, 5.0f - 0.002f * static_cast<float>(step)),
+                                     0.05f * static_cast<float>(step));
+        const LightCamera cam = fitCascade(kSun, camera, kAspect, 0.1f, 20.0f, true, field.input(camera, kAspect));
+        SCOPED_TRACE("step " + std::to_string(step));
+        // The same light view and depth range, the same texel size...
+        EXPECT_EQ(cam.viewFromWorld, first.viewFromWorld);
+        EXPECT_EQ(cam.texelSize, texel);
+        EXPECT_EQ(cam.nearPlane, first.nearPlane);
+        EXPECT_EQ(cam.farPlane, first.farPlane);
+        // ... and a box moved by whole texels only: the grid of texel
+        // centres is the same in the world.
+        glm::vec2 lo, hi;
+        box(cam, lo, hi);
+        const glm::vec2 moved = (lo - lo0) / texel;
+        EXPECT_NEAR(moved.x, std::round(moved.x), 1e-2f);
+        EXPECT_NEAR(moved.y, std::round(moved.y), 1e-2f);
+        EXPECT_NEAR((hi.x - lo.x) / texel, 2048.0f, 1e-2f);
+        shifted += moved != glm::vec2(0.0f);
+    }
+    EXPECT_GT(shifted, 0) << "the path must move the box at least once for the test to mean something";
+}
