@@ -22,9 +22,17 @@ layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePacked;
 float cubeTap(vec3 direction, float ref) {
     return ref <= unpackDepth(texture(mapCubePacked, vec4(direction, map.params.x))) ? 1.0 : 0.0;
 }
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, vec4(direction, map.params.x))); }
+#endif
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
 float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.params.x), ref); }
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+// The stored depths for PCSS's blocker search: a sampler without comparison.
+layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
+float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.params.x)).r; }
+#endif
 #endif
 #else
 // The array layer the taps read: the light's map, or the cascade's.
@@ -43,6 +51,33 @@ float mapTap(vec2 uv, float ref) { return texture(mapDepth, vec4(uv, mapLayer, r
 
 // Interleaved gradient noise (Jimenez 2014): a per-pixel rotation for the disk.
 float mapNoise(vec2 pixel) { return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715)))); }
+
+#if !MAP_CUBE && MAP_FILTER == SL_MAP_FILTER_PCSS
+// PCSS reads stored depths in its blocker search: the same array through a
+// sampler without comparison (rgba8: unpacked).
+#if MAP_RGBA8
+float mapDepthAt(vec2 uv) { return unpackDepth(texture(mapPacked, vec3(uv, mapLayer))); }
+#else
+layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform sampler2DArray mapRaw;
+float mapDepthAt(vec2 uv) { return texture(mapRaw, vec3(uv, mapLayer)).r; }
+#endif
+// The map being read: its texel's world size (perspective: per unit of
+// distance), its camera's near and far planes, and the receiver's
+// texture-space point (uv, depth) per screen pixel in x and y, taken where
+// every fragment of a quad runs (the receiver-plane bias of the taps).
+float mapTexelWorld = 0.0;
+vec2 mapPlanes = vec2(0.0, 1.0);
+vec3 mapDx = vec3(0.0), mapDy = vec3(0.0);
+// A stored depth as distance along the light (perspective: linearised).
+float mapDistance(float depth) {
+    float n = mapPlanes.x, f = mapPlanes.y;
+    if (map.params.w > 0.5) {
+        float z = 2.0 * depth - 1.0;
+        return 2.0 * n * f / (f + n - z * (f - n));
+    }
+    return n + depth * (f - n);
+}
+#endif
 
 #if MAP_CUBE
 // The lecture's 20 offset directions (001): far apart, none along the ray.
@@ -73,6 +108,8 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
     float reachWorld = radius * 1.7320508;  // the grid's corners
 #elif MAP_FILTER == SL_MAP_FILTER_PCF20
     float reachWorld = radius * 1.7320508;  // |(1, 1, 1)| x radius
+#elif MAP_FILTER == SL_MAP_FILTER_PCSS
+    float reachWorld = 0.0;  // each tap compares against the receiver's plane itself
 #else
     float reachWorld = radius;
 #endif
@@ -121,6 +158,48 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
         sum += cubeTap(v + r * (cos(a) * t + sin(a) * b), ref);
     }
     return sum / float(taps);
+#elif MAP_FILTER == SL_MAP_FILTER_PCSS
+    // Percentage-closer soft shadows on a disk across the ray (Fernando
+    // 2005, for a sphere light of radius `size`). Each tap compares against
+    // the receiver's plane where its direction meets it, not the centre's depth.
+    float size = map.pcss.x;
+    float dr = length(v);
+    vec3 axis = v / dr;
+    vec3 t = normalize(abs(axis.y) < 0.99 ? cross(axis, vec3(0.0, 1.0, 0.0)) : cross(axis, vec3(1.0, 0.0, 0.0)));
+    vec3 b = cross(axis, t);
+    float nv = dot(n, v);
+    float rotation = 6.2831853 * mapNoise(gl_FragCoord.xy);
+    // 1. Blockers within three radii of the ray at the receiver (those at
+    // least a quarter of the way from the light).
+    int blockerTaps = int(map.pcss.w);
+    float blockers = 0.0, blockerSum = 0.0;
+    for (int k = 0; k < blockerTaps; ++k) {
+        float r = sqrt((float(k) + 0.5) / float(blockerTaps)) * 3.0 * size;
+        float a = float(k) * 2.3999632 + rotation;
+        vec3 w = v + r * (cos(a) * t + sin(a) * b);
+        float nw = dot(n, w);
+        float tapRef = nv < 0.0 && nw < 0.0 ? length(w) * nv / nw / map.cube.x - map.bias.x : ref;
+        float d = cubeDepthAt(w);
+        if (d < tapRef) {
+            blockers += 1.0;
+            blockerSum += d * map.cube.x;
+        }
+    }
+    if (blockers == 0.0) return 1.0;
+    float db = blockerSum / blockers;
+    // 2. The penumbra's half width at the receiver, by similar triangles.
+    float penumbra = size * (dr - db) / max(db, 1e-6);
+    // 3. Percentage-closer filtering over it.
+    int taps = int(map.taps.z);
+    float sum = 0.0;
+    for (int k = 0; k < taps; ++k) {
+        float r = sqrt((float(k) + 0.5) / float(taps)) * penumbra;
+        float a = float(k) * 2.3999632 + rotation;
+        vec3 w = v + r * (cos(a) * t + sin(a) * b);
+        float nw = dot(n, w);
+        sum += cubeTap(w, nv < 0.0 && nw < 0.0 ? length(w) * nv / nw / map.cube.x - map.bias.x : ref);
+    }
+    return sum / float(taps);
 #else
 #error this MAP_FILTER is for 2D maps
 #endif
@@ -141,10 +220,17 @@ float mapTest(vec4 s, float NdotL) {
 #if MAP_CASCADES > 1
 // Cascade c's test: the offsets of shadow_map_vertex.glsl, here per
 // fragment with the cascade's own texel size.
-float cascadeTest(int c, vec3 worldPosition, vec3 n, float NdotL, float tanTheta) {
+float cascadeTest(int c, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 worldDx, vec3 worldDy) {
     float texel = map.cascadeTexel[c >> 2][c & 3];
     vec3 p = worldPosition + n * (map.bias.w * texel * (1.0 - NdotL)) + map.light.xyz * (map.params.y * texel * tanTheta);
     mapLayer = map.params.x + float(c);
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+    mapTexelWorld = texel;
+    mapPlanes = map.cascadeRange[c].xy;
+    mat3 affine = mat3(map.cascadeShadowFromWorld[c]);  // orthographic: the point's change is linear
+    mapDx = affine * worldDx;
+    mapDy = affine * worldDy;
+#endif
     return mapTest(map.cascadeShadowFromWorld[c] * vec4(p, 1.0), NdotL);
 }
 
@@ -154,14 +240,15 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
     vec3 n = worldNormal;
     float NdotL = clamp(dot(n, map.light.xyz), 0.0, 1.0);
     float tanTheta = min(length(cross(n, map.light.xyz)) / max(NdotL, 1e-4), 10.0);
+    vec3 worldDx = dFdx(worldPosition), worldDy = dFdy(worldPosition);
     float depth = cascadeDepth(worldPosition);
     int c = cascadeOf(depth);
-    float v = cascadeTest(c, worldPosition, n, NdotL, tanTheta);
+    float v = cascadeTest(c, worldPosition, n, NdotL, tanTheta, worldDx, worldDy);
     if (c < MAP_CASCADES - 1) {
         float far = cascadeFarOf(c);
         float band = map.cascade.w * (far - (c > 0 ? cascadeFarOf(c - 1) : 0.0));
         float t = band > 0.0 ? (depth - (far - band)) / band : 0.0;
-        if (t > 0.0) v = mix(v, cascadeTest(c + 1, worldPosition, n, NdotL, tanTheta), min(t, 1.0));
+        if (t > 0.0) v = mix(v, cascadeTest(c + 1, worldPosition, n, NdotL, tanTheta, worldDx, worldDy), min(t, 1.0));
     }
     return v;
 }
@@ -172,6 +259,13 @@ in float vShadowNdotL;
 // The shadow test's visibility, 0 (shadowed) to 1 (lit).
 float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
     mapLayer = map.params.x;
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+    mapTexelWorld = map.params.z;
+    mapPlanes = map.pcss.yz;
+    vec3 q = vShadowCoord.xyz / vShadowCoord.w;
+    mapDx = dFdx(q);
+    mapDy = dFdy(q);
+#endif
     return mapTest(vShadowCoord, vShadowNdotL);
 }
 #endif
@@ -230,6 +324,51 @@ float mapFilter(vec2 uv, float ref) {
         float r = sqrt((float(k) + 0.5) / float(taps)) * map.taps.y;
         float a = float(k) * 2.3999632 + rotation;
         sum += mapTap(uv + du * r * vec2(cos(a), sin(a)), ref);
+    }
+    return sum / float(taps);
+#elif MAP_FILTER == SL_MAP_FILTER_PCSS
+    // Percentage-closer soft shadows (Fernando 2005). Every tap compares
+    // against the receiver's plane at its own place (the depth change per
+    // uv from the screen derivatives), not the centre's depth.
+    float det = mapDx.x * mapDy.y - mapDx.y * mapDy.x;
+    vec2 dzduv = abs(det) > 1e-20 ? vec2(mapDy.y * mapDx.z - mapDx.y * mapDy.z, mapDx.x * mapDy.z - mapDy.x * mapDx.z) / det : vec2(0.0);
+    dzduv = clamp(dzduv, vec2(-1e4), vec2(1e4));
+    bool perspective = map.params.w > 0.5;
+    float dr = mapDistance(ref);
+    float texel = perspective ? mapTexelWorld * dr : mapTexelWorld;
+    float size = map.pcss.x;
+    float rotation = 6.2831853 * mapNoise(gl_FragCoord.xy);
+    // 1. Blockers: stored depths nearer the light than the receiver's plane
+    // within the region a blocker can shade it from: directional, the light's
+    // angular radius over the depth up to the light camera's near plane;
+    // spot, three radii at the receiver (blockers at least a quarter of the
+    // way from the light). At most an eighth of the map.
+    float limit = 0.125 / du;
+    float search = clamp((perspective ? 3.0 * size : (dr - mapPlanes.x) * size) / texel, 1.0, limit);
+    int blockerTaps = int(map.pcss.w);
+    float blockers = 0.0, blockerSum = 0.0;
+    for (int k = 0; k < blockerTaps; ++k) {
+        float r = sqrt((float(k) + 0.5) / float(blockerTaps)) * search;
+        float a = float(k) * 2.3999632 + rotation;
+        vec2 o = du * r * vec2(cos(a), sin(a));
+        float d = mapDepthAt(uv + o);
+        if (d < ref + dot(dzduv, o)) {
+            blockers += 1.0;
+            blockerSum += mapDistance(d);
+        }
+    }
+    if (blockers == 0.0) return 1.0;
+    float db = blockerSum / blockers;
+    // 2. The penumbra's half width at the receiver, by similar triangles.
+    float radius = min((perspective ? size * (dr - db) / max(db, 1e-6) : (dr - db) * size) / texel, limit);
+    // 3. Percentage-closer filtering over it.
+    int taps = int(map.taps.z);
+    float sum = 0.0;
+    for (int k = 0; k < taps; ++k) {
+        float r = sqrt((float(k) + 0.5) / float(taps)) * radius;
+        float a = float(k) * 2.3999632 + rotation;
+        vec2 o = du * r * vec2(cos(a), sin(a));
+        sum += mapTap(uv + o, ref + dot(dzduv, o));
     }
     return sum / float(taps);
 #else

@@ -12,6 +12,7 @@
 #define SL_MAP_FILTER_DITHER4 3
 #define SL_MAP_FILTER_POISSON 4
 #define SL_MAP_FILTER_PCF20 5
+#define SL_MAP_FILTER_PCSS 6
 
 // Cascaded maps of a directional light, at most.
 #define SL_MAP_MAX_CASCADES 8
@@ -41,6 +42,8 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     SL_MAP_VEC4 cascadeFar[SL_MAP_MAX_CASCADES / 4];   // cascades: each slice's far end, scene units along the view
     SL_MAP_VEC4 cascadeTexel[SL_MAP_MAX_CASCADES / 4]; // cascades: world size of one texel of each cascade
     SL_MAP_VEC4 cascade;  // cascades: xyz the view's forward direction (unit), w the blend share of a slice
+    SL_MAP_VEC4 cascadeRange[SL_MAP_MAX_CASCADES]; // cascades: x near, y far plane of each cascade's light camera, scene units
+    SL_MAP_VEC4 pcss;     // filter pcss: x the light's size (directional: tan of half its angular diameter; spot, point: its radius, scene units), y near, z far plane of the light camera, w blocker-search taps
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

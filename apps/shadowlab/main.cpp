@@ -358,10 +358,13 @@ int runCompare(const CompareArgs& args) {
         writePng(written.back(), l.errorImage);
         written.push_back(dir / ("visibility-" + index + ".png"));
         writePng16(written.back(), l.referenceVisibility);
+        written.push_back(dir / ("technique-visibility-" + index + ".png"));
+        writePng16(written.back(), l.techniqueVisibility);
         written.push_back(dir / ("reach-" + index + ".png"));
         writePng(written.back(), l.reach);
         lights.push_back(tool::lightRecord(light, l, {{"errorImage", "error-" + index + ".png"},
                                                       {"visibilityImage", "visibility-" + index + ".png"},
+                                                      {"techniqueVisibilityImage", "technique-visibility-" + index + ".png"},
                                                       {"reachImage", "reach-" + index + ".png"}}));
     }
     written.push_back(dir / "metrics.json");

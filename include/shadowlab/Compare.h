@@ -46,6 +46,8 @@ struct LightComparison {
     /// 0 = shadowed .. 65535 = lit, whole image. Also 0 where the light does not
     /// reach (background, outside a spot's cone, beyond range, facing away): `reach` tells them apart.
     ImageGray16 referenceVisibility;
+    /// The technique's own visibility the same way: 0 = shadowed .. 65535 = lit, 0 on the background.
+    ImageGray16 techniqueVisibility;
     /// 255 on receiver pixels (the ones counted in receiverPixels: receive shadows,
     /// within the light's reach, facing it), 0 elsewhere.
     ImageGray8 reach;

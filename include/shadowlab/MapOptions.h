@@ -31,6 +31,7 @@ enum class MapFilter {
     Dither4,  ///< "dither4": the lecture's 4-sample dithered PCF (000)
     Poisson,  ///< "poisson": a rotated Vogel disk of `samples` taps within `radius` texels (point lights: within `diskRadius`, across the light's ray)
     Pcf20,    ///< "pcf20": point lights only: the lecture's 20 offset directions times `diskRadius` (001)
+    Pcss,     ///< "pcss": percentage-closer soft shadows (Fernando 2005) for the light's `size`: a blocker search of `blockerSamples` taps, then `samples` taps over the penumbra it predicts
 };
 
 enum class MapGridTaps {
@@ -59,7 +60,8 @@ struct MapOptions {
     MapFilter filter = MapFilter::Hardware;
     int kernel = 3;                      ///< grid: samples per side, 2..8; default 3
     MapGridTaps gridTaps = MapGridTaps::Auto; ///< grid: how the kernel^2 comparisons are fetched (same result); default auto
-    int samples = 16;                    ///< poisson: taps, 4..64; default 16
+    int samples = 16;                    ///< poisson and pcss: filter taps, 4..64; default 16
+    int blockerSamples = 16;             ///< pcss: blocker-search taps, 4..64; default 16
     float radius = 1.5f;                 ///< poisson: disk radius, texels; default 1.5
     float constantBias = 0.0f;           ///< light-space depth, shadow-map texels of the light's depth range; default 0
     float slopeBias = 1.5f;              ///< glPolygonOffset factor in the shadow pass; default 1.5

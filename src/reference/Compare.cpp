@@ -235,9 +235,11 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
         std::size_t falseShadow = 0, falseLit = 0, falseShadowAway = 0, falseLitAway = 0;
         double absSum = 0.0, sqSum = 0.0;
         c.referenceVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
+        c.techniqueVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
         c.errorImage = {w, h, std::vector<std::uint8_t>(n * 4, 0)};
         for (std::size_t i = 0; i < n; ++i) {
             c.referenceVisibility.pixels[i] = static_cast<std::uint16_t>(std::lround(std::clamp(exact[i], 0.0f, 1.0f) * 65535.0f));
+            c.techniqueVisibility.pixels[i] = static_cast<std::uint16_t>(std::lround(std::clamp(technique[i], 0.0f, 1.0f) * 65535.0f));
             // Grey: the reference image's own luminance, dimmed, so the scene stays readable.
             const std::uint8_t* ref = &out.reference.pixels[i * 4];
             std::uint8_t rgb[3];

@@ -36,12 +36,13 @@ const OptionTable& mapOptionTable() {
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene"},
                     "light camera: around what the viewer sees and the casters over it, or around the whole scene")
-            .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson", "pcf20"},
-                    "one nearest tap; one bilinear hardware compare; kernel x kernel taps (point lights: kernel^3 in a cube of side 2 diskRadius); the lecture's dithered 4 taps (2D maps); a rotated disk; the lecture's 20 directions (point lights)")
+            .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson", "pcf20", "pcss"},
+                    "one nearest tap; one bilinear hardware compare; kernel x kernel taps (point lights: kernel^3 in a cube of side 2 diskRadius); the lecture's dithered 4 taps (2D maps); a rotated disk; the lecture's 20 directions (point lights); soft shadows for the light's size (PCSS)")
             .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
                     "grid filter: the same comparisons from ceil(kernel/2)^2 bilinear or kernel^2 nearest fetches; auto: nearest on a software rasteriser")
-            .integer(&MapOptions::samples, "samples", 4, 64, "taps", "poisson filter: taps on the disk")
+            .integer(&MapOptions::samples, "samples", 4, 64, "taps", "poisson and pcss filters: taps on the disk")
+            .integer(&MapOptions::blockerSamples, "blockerSamples", 4, 64, "taps", "pcss filter: taps of the blocker search")
             .number(&MapOptions::radius, "radius", 0.0, 32.0, "texels", "poisson filter: disk radius")
             .number(&MapOptions::constantBias, "constantBias", 0.0, 0.1, "depth (0..1)", "subtracted from the receiver's map depth")
             .number(&MapOptions::slopeBias, "slopeBias", 0.0, 16.0, "polygon offset factor", "shadow pass: depth offset per unit of depth slope")
@@ -97,6 +98,7 @@ float footprint(const MapOptions& o) {
     case MapFilter::Dither4: return 3.0f;
     case MapFilter::Poisson: return o.radius + 1.0f;
     case MapFilter::Pcf20: return 1.0f;  // point lights only
+    case MapFilter::Pcss: return 0.125f * static_cast<float>(o.size) + 1.0f;  // its search and filter reach an eighth of the map
     }
     return 1.0f;
 }
@@ -112,6 +114,7 @@ float reach(const MapOptions& o) {
     case MapFilter::Dither4: return 1.5f * 1.41421356f;
     case MapFilter::Poisson: return o.radius;
     case MapFilter::Pcf20: return 0.0f;  // point lights only (shadow_map.glsl computes theirs)
+    case MapFilter::Pcss: return 0.0f;   // each tap compares against the receiver's plane (shadow_map.glsl)
     }
     return 0.0f;
 }
@@ -459,6 +462,9 @@ public:
             nextLayer[p.group] += p.cube ? 1 : cascadeCount(light, p.options);
             const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld, p.options.size, footprint(p.options)};
             p.spot = light.type == LightType::Spot;
+            if (p.options.filter == MapFilter::Pcss && !(light.size > 0.0f))
+                host.note("lights[" + std::to_string(index) + "].shadow.map.filter \"pcss\": the light's size is 0, so its shadows stay hard (set lights[" +
+                          std::to_string(index) + "].size: a radius, or a directional light's angular diameter in degrees)");
             if (p.cube) {
                 const auto [nearPlane, farPlane] = cubeNearFar(p.options);
                 p.cubeCamera = fitCube(light, p.options.fit, in, nearPlane, farPlane);
@@ -563,7 +569,9 @@ public:
             glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
             const bool packed = g.format == MapFormat::Rgba8;
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
-            glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? plainNearest_.id() : p.options.filter == MapFilter::Hardware ? compareLinear_.id() : compareNearest_.id());
+            const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss;
+            glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? plainNearest_.id() : linear ? compareLinear_.id() : compareNearest_.id());
+            bindRawDepth(p, g);
             return;
         }
         if (g.format == MapFormat::Rgba8) {
@@ -572,10 +580,20 @@ public:
         } else {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
             // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
-            const bool linear = p.options.filter == MapFilter::Hardware || (p.options.filter == MapFilter::Grid && bilinearGrid(p.options));
+            const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss ||
+                                (p.options.filter == MapFilter::Grid && bilinearGrid(p.options));
             glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? (linear ? compareLinearMip_.id() : compareNearestMip_.id())
                                                           : (linear ? compareLinear_.id() : compareNearest_.id()));
+            bindRawDepth(p, g);
         }
+    }
+
+    // PCSS's blocker search reads the stored depths themselves: the same
+    // depth array on the next unit through a sampler without comparison.
+    void bindRawDepth(const PerLight& p, const Group& g) const {
+        if (p.options.filter != MapFilter::Pcss || g.format == MapFormat::Rgba8) return;
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, g.depth.id());
+        glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps ? plainNearestMip_.id() : plainNearest_.id());
     }
 
     void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, std::vector<DebugImage>& out) override {
@@ -990,6 +1008,10 @@ private:
             u.cascadeTexel[c / 4][static_cast<int>(c % 4)] = p.cascades[c].texelSize;
         }
         u.cascade = glm::vec4(glm::normalize(p.viewForward), p.options.cascadeBlend);
+        for (std::size_t c = 0; c < p.cascades.size(); ++c) u.cascadeRange[c] = glm::vec4(p.cascades[c].nearPlane, p.cascades[c].farPlane, 0.0f, 0.0f);
+        // PCSS: the light's size as the similar triangles take it.
+        const float size = light.type == LightType::Directional ? std::tan(glm::radians(0.5f * light.size)) : light.size;
+        u.pcss = glm::vec4(size, p.camera.nearPlane, p.camera.farPlane, static_cast<float>(p.options.blockerSamples));
         uniforms_ = u;
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());

@@ -16,7 +16,7 @@ passed=0
 out=$("$tool" compare "$src/scenes/torus-floating.json" -o cmp --width 160 --height 90)
 grep -q "light 0 'sun' (directional, hard, technique none)" <<<"$out" || fail "compare output: $out"
 grep -q "false shadow 0.000%, false lit [1-9]" <<<"$out" || fail "unshadowed should be false lit only: $out"
-for f in technique.png reference.png error-0.png visibility-0.png; do [[ -s cmp/$f ]] || fail "compare did not write $f"; done
+for f in technique.png reference.png error-0.png visibility-0.png technique-visibility-0.png; do [[ -s cmp/$f ]] || fail "compare did not write $f"; done
 # visibility-0.png is 16-bit greyscale: IHDR bit depth 16, colour type 0.
 [[ "$(od -An -tu1 -j24 -N2 cmp/visibility-0.png | tr -s ' ')" == " 16 0" ]] || fail "visibility-0.png is not 16-bit grey"
 passed=$((passed + 1))

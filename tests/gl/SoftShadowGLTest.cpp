@@ -1,0 +1,113 @@
+// Soft shadows against the area-light reference (lights with a `size`):
+// PCSS (technique "map", filter "pcss") on the lecture scenes made soft,
+// and its penumbra growing with the distance from occluder to receiver.
+#include "GLTestContext.h"
+
+#include <shadowlab/Compare.h>
+#include <shadowlab/SceneFile.h>
+
+#include <filesystem>
+
+using namespace shadowlab;
+using shadowlab::test::GLTest;
+namespace fs = std::filesystem;
+
+namespace {
+
+Comparison compareAt(const Scene& scene, int width, int height, int samples) {
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    CompareOptions options;
+    options.width = width;
+    options.height = height;
+    options.softSamples = samples;
+    return compareWithReference(renderer, scene, options);
+}
+
+// A point light of radius 0.5 at height 6 over the ground, a large sheet
+// whose edge runs along z over x = 0 at height h: the penumbra on the
+// ground is R h / (6 - h) to each side of x = 0 (similar triangles).
+Scene edgeScene(float h, const std::string& filter) {
+    const std::string height = std::to_string(h);
+    return parseScene(R"({
+      "camera": {"position": [8, 7, 0], "target": [0, 0, 0], "fovY": 30},
+      "lights": [{"name": "lamp", "type": "point", "position": [0, 6, 0], "size": 0.5,
+                  "shadow": {"technique": "map", "map": {"filter": ")" + filter + R"("}}}],
+      "nodes": [
+        {"name": "ground", "shape": {"type": "plane", "size": [30, 30]}},
+        {"name": "sheet", "shape": {"type": "box", "size": [8, 0.02, 16]}, "translation": [-4, )" + height + R"(, 0], "receivesShadows": false}
+      ]
+    })", "edge", ".");
+}
+
+// Along the image's centre column (the plane z = 0), the ground's x where
+// the visibility first rises through `level` coming from the shadowed side
+// (smallest x), linearly between pixels.
+float crossing(const Comparison& c, const ImageGray16& visibility, float level) {
+    const SurfaceBuffer& s = c.surfaces;
+    const int x = s.width / 2;
+    float bestX = 1e9f;
+    for (int y = 0; y + 1 < s.height; ++y) {
+        const std::size_t i = static_cast<std::size_t>(y) * s.width + x, j = i + s.width;
+        if (s.position[i].w < 0.5f || s.position[j].w < 0.5f || std::fabs(s.position[i].y) > 1e-3f || std::fabs(s.position[j].y) > 1e-3f) continue;
+        const float a = visibility.pixels[i] / 65535.0f, b = visibility.pixels[j] / 65535.0f;
+        if ((a - level) * (b - level) > 0.0f || a == b) continue;
+        const float t = (level - a) / (b - a);
+        bestX = std::min(bestX, s.position[i].x + t * (s.position[j].x - s.position[i].x));
+    }
+    return bestX;
+}
+
+float penumbraWidth(const Comparison& c, const ImageGray16& visibility) {
+    return crossing(c, visibility, 0.9f) - crossing(c, visibility, 0.1f);
+}
+
+} // namespace
+
+class SoftShadowGLTest : public GLTest {};
+
+// The issue's bar: RMSE at most 0.05 against the 1024-sample reference on
+// every lecture scene made soft (spot and point lights of radius 0.3,
+// directional ones 2 degrees across); measured 0.010 to 0.034. And always
+// closer than the hard map (filter "hardware", measured 0.018 to 0.12) to
+// the soft truth (that one against 256 samples: it only has to lose).
+TEST_F(SoftShadowGLTest, PcssMatchesTheAreaLightReferenceOnTheLectureScenes) {
+    for (const char* name : {"torus-pyramid.json", "torus-floating.json", "room-point.json", "spheres-sun.json", "spot-objects.json",
+                             "slide-projector.json"}) {
+        SCOPED_TRACE(name);
+        const fs::path path = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / name;
+        const Scene plain = loadSceneFile(path);
+        const std::string size = plain.lights[0].type == LightType::Directional ? "2" : "0.3";
+        const std::vector<std::string> soft = {"lights[0].size=" + size, "lights[0].shadow.technique=\"map\""};
+        std::vector<std::string> pcss = soft;
+        pcss.push_back("lights[0].shadow.map.filter=\"pcss\"");
+        const Comparison withPcss = compareAt(loadSceneFile(path, pcss), 480, 270, 1024);
+        const Comparison hard = compareAt(loadSceneFile(path, soft), 480, 270, 256);
+        ASSERT_TRUE(withPcss.lights[0].soft);
+        EXPECT_LE(withPcss.lights[0].rmse, 0.05);
+        EXPECT_LT(withPcss.lights[0].rmse, hard.lights[0].rmse);
+    }
+}
+
+// The penumbra widens as the occluder rises from the receiver (h = 1, 2,
+// 3: true half widths 0.1, 0.25, 0.5), in the reference and in PCSS; PCSS
+// within a quarter of the reference's width (measured within 7 %), where
+// a hard map stays under a twentieth of a unit at every height.
+TEST_F(SoftShadowGLTest, PcssPenumbraGrowsWithTheOccluderToReceiverDistance) {
+    float previousReference = 0.0f, previousPcss = 0.0f;
+    for (float h : {1.0f, 2.0f, 3.0f}) {
+        SCOPED_TRACE("occluder at height " + std::to_string(h));
+        const Comparison c = compareAt(edgeScene(h, "pcss"), 480, 480, 1024);
+        const float reference = penumbraWidth(c, c.lights[0].referenceVisibility);
+        const float pcss = penumbraWidth(c, c.lights[0].techniqueVisibility);
+        ASSERT_LT(reference, 100.0f) << "the penumbra must be in view";
+        ASSERT_LT(pcss, 100.0f) << "the penumbra must be in view";
+        EXPECT_GT(reference, previousReference);
+        EXPECT_GT(pcss, previousPcss);
+        EXPECT_NEAR(pcss, reference, 0.25f * reference);
+        previousReference = reference;
+        previousPcss = pcss;
+        const Comparison hard = compareAt(edgeScene(h, "hardware"), 480, 480, 64);
+        EXPECT_LT(penumbraWidth(hard, hard.lights[0].techniqueVisibility), 0.05f);
+    }
+}
