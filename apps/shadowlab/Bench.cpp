@@ -152,6 +152,14 @@ std::string slug(const std::string& label) {
     return out;
 }
 
+// `scene`, a copy of `loaded` (its techniques may have been changed), with
+// its lights and camera where their paths are at `seconds`; the meshes are
+// not copied again.
+void moveToTime(Scene& scene, const Scene& loaded, double seconds) {
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l].position = lightAtTime(loaded.lights[l], seconds).position;
+    scene.camera = cameraAtTime(loaded.camera, seconds);
+}
+
 } // namespace
 
 json runBench(Context& context, const BenchArgs& args) {
@@ -226,14 +234,12 @@ json runBench(Context& context, const BenchArgs& args) {
             std::string clockName = "off";
             int baseLight = -1;
             // Timed frame i shows the animation at --time + i / --fps: the
-            // lights are moved (outside the timed render()) and the three
-            // frames of a step see them at the same place.
+            // lights and the camera are moved (outside the timed render())
+            // and the three frames of a step see them at the same place.
             for (int i = 0; i < args.frames; ++i) {
                 const double t = args.timeSeconds + i / args.fps;
-                for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-                    scene.lights[l].position = lightAtTime(loaded.lights[l], t).position;
-                    unshadowed.lights[l].position = scene.lights[l].position;
-                }
+                moveToTime(scene, loaded, t);
+                moveToTime(unshadowed, loaded, t);
                 plain.timeSeconds = clocked.timeSeconds = t;
                 frameTimes.push_back(renderer.render(scene, plain).cpuMs);
                 unshadowedTimes.push_back(renderer.render(unshadowed, plain).cpuMs);
@@ -250,7 +256,7 @@ json runBench(Context& context, const BenchArgs& args) {
             }
 
             // The accuracy numbers at --time, as `compare --time` gives them.
-            for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l].position = lightAtTime(loaded.lights[l], args.timeSeconds).position;
+            moveToTime(scene, loaded, args.timeSeconds);
             CompareOptions compareOptions;
             compareOptions.timeSeconds = args.timeSeconds;
             compareOptions.width = args.width;

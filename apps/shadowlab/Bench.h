@@ -17,9 +17,10 @@ struct BenchArgs {
     std::vector<std::string> overrides;  ///< --set, for every combination
     std::vector<std::string> vary;       ///< --vary key=v1,v2,...
     int frames = 10;                     ///< timed frames per combination
-    /// Seconds since the start of the animation (--time): the lights' paths
-    /// are evaluated at timeSeconds for the warm-up frames and the accuracy
-    /// comparison, and at timeSeconds + k / fps for timed frame k. Default 0.
+    /// Seconds since the start of the animation (--time): the lights' and
+    /// the camera's paths are evaluated at timeSeconds for the warm-up frames
+    /// and the accuracy comparison, and at timeSeconds + k / fps for timed
+    /// frame k. Default 0.
     double timeSeconds = 0.0;
     double fps = 30.0;                   ///< frames per second of the timed sequence (--fps), > 0; default 30
     int warmup = 2;                      ///< untimed frames first (shader compilation, caches)

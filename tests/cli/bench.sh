@@ -80,6 +80,24 @@ assert lt["receiverPixels"] != l0["receiverPixels"] or lt["falseLit"] != l0["fal
 PY
 passed=$((passed + 1))
 
+# A camera path moves bench's camera too: its accuracy numbers at --time 2
+# (a key's time) are those of compare with a static camera at that key.
+walk='camera.path={"type": "keyframes", "times": [0, 2], "positions": [[-4, 3, 5], [5, 4, 4]], "targets": [[0, 0.5, 0], [0, 1, 0]]}'
+"$tool" bench "$src/scenes/torus-floating.json" --set "$walk" --time 2 --frames 2 --warmup 0 --width 64 --height 36 -o walk >/dev/null 2>&1 \
+  || fail "bench with a camera path failed"
+"$tool" compare "$src/scenes/torus-floating.json" --set 'camera.position=[5, 4, 4]' --set 'camera.target=[0, 1, 0]' --width 64 --height 36 -o cmp-key >/dev/null \
+  || fail "compare with the key's camera failed"
+"$tool" compare "$src/scenes/torus-floating.json" --width 64 --height 36 -o cmp-scene >/dev/null || fail "compare with the scene's camera failed"
+python3 - walk/results.json cmp-key/metrics.json cmp-scene/metrics.json <<'PY' || fail "bench with a camera path: results.json"
+import json, sys
+bench, key, scene = (json.load(open(p)) for p in sys.argv[1:])
+light, lk, ls = bench["results"][0]["lights"][0], key["lights"][0], scene["lights"][0]
+for field in ("receiverPixels", "referenceShadowedPixels", "falseLit"):
+    assert light[field] == lk[field], (field, light[field], lk[field])
+assert (ls["receiverPixels"], ls["referenceShadowedPixels"]) != (lk["receiverPixels"], lk["referenceShadowedPixels"]), "the key's view is the scene's"
+PY
+passed=$((passed + 1))
+
 # The report, rendered by a real browser from disk.
 if ! command -v chromium >/dev/null; then fail "chromium is not installed (scripts/install-deps.sh installs it)"; fi
 flags=(--headless --no-sandbox --disable-gpu --disable-background-networking --disable-component-update
