@@ -23,6 +23,11 @@ struct BenchArgs {
     /// frame k. Default 0.
     double timeSeconds = 0.0;
     double fps = 30.0;                   ///< frames per second of the timed sequence (--fps), > 0; default 30
+    /// Temporal stability (--flips): compare every timed frame's time with
+    /// the reference, and report per light the share of receiver pixels
+    /// whose shadow flips between consecutive frames while the reference's
+    /// does not (docs/metrics.md). Needs frames >= 2; default off.
+    bool flips = false;
     int warmup = 2;                      ///< untimed frames first (shader compilation, caches)
     int width = 960, height = 540;
     int softSamples = 256;

@@ -2,7 +2,7 @@
 //   render [SCENE.json] -o out.png [--width W --height H] [--set key=value ...]
 //          [--time T] [--frames N --fps F -o frame_%03d.png]
 //   compare [SCENE.json] [-o DIR] [--set ...] [--time T]  technique vs ray-traced reference
-//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [--time T --fps F] [-o DIR]
+//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [--time T --fps F] [--flips] [-o DIR]
 //   info
 // Every failure prints one line `shadowlab: error: ...` and exits non-zero;
 // no output file is written unless the whole render succeeded.
@@ -511,6 +511,9 @@ int main(int argc, char** argv) {
                                                         "time of the warm-up frames and the accuracy comparison")
         ->capture_default_str();
     bench->add_option("--fps", benchArgs.fps, "Frames per second of the timed sequence")->capture_default_str();
+    bench->add_flag("--flips", benchArgs.flips,
+                    "Temporal stability: compare every timed frame with the reference and report per light the share of receiver "
+                    "pixels whose shadow flips between consecutive frames while the reference's does not (needs --frames >= 2)");
     bench->add_option("--warmup", benchArgs.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
     bench->add_option("--width", benchArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     bench->add_option("--height", benchArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
