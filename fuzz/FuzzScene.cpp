@@ -24,13 +24,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     try {
         const shadowlab::Scene scene = shadowlab::parseScene(input.substr(0, nul), "fuzz.json", SHADOWLAB_FUZZ_FILES_DIR, overrides);
-        // Animated lights: a parsed path evaluates at any finite time without
-        // an error, and every position it reaches is finite.
+        // Animated lights and camera: a parsed path evaluates at any finite
+        // time without an error, every position it reaches is finite, and the
+        // camera has a view (a finite view matrix) everywhere on its path.
+        constexpr double kTimes[] = {-1e9, -1.5, 0.0, 0.25, 0.5, 1.0 / 3.0, 7.0, 1e9};
         for (const shadowlab::Light& light : scene.lights)
-            for (const double t : {-1e9, -1.5, 0.0, 0.25, 7.0, 1e9}) {
+            for (const double t : kTimes) {
                 const glm::vec3 p = shadowlab::lightAtTime(light, t).position;
                 if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
             }
+        for (const double t : kTimes) {
+            const glm::mat4 view = shadowlab::cameraAtTime(scene.camera, t).viewFromWorld();
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r)
+                    if (!std::isfinite(view[c][r])) __builtin_trap();
+        }
     } catch (const shadowlab::Error&) {
     }
     return 0;

@@ -152,6 +152,83 @@ std::string slug(const std::string& label) {
     return out;
 }
 
+// `scene`, a copy of `loaded` (its techniques may have been changed), with
+// its lights and camera where their paths are at `seconds`; the meshes are
+// not copied again.
+void moveToTime(Scene& scene, const Scene& loaded, double seconds) {
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l].position = lightAtTime(loaded.lights[l], seconds).position;
+    scene.camera = cameraAtTime(loaded.camera, seconds);
+}
+
+// Temporal stability (--flips), per light over consecutive frames: the share
+// of receiver pixels (receivers in both frames) whose technique class (lit:
+// visibility >= the threshold) changes while the reference's class there does
+// not: a shadow that flickers on a still truth. Where the truth changes too
+// (a light that moved, an edge that crossed the pixel as the camera moved)
+// the change is right and is counted apart, as a reference change.
+class FlipCounter {
+public:
+    explicit FlipCounter(float litThreshold) : threshold_(litThreshold) {}
+
+    // One frame: its comparison and each light's technique visibility, read
+    // back with the comparison's technique frame.
+    void add(const Comparison& c, const std::vector<std::vector<float>>& techniqueVisibility) {
+        const auto referenceThreshold = static_cast<double>(threshold_) * 65535.0;
+        std::vector<Classes> frame(c.lights.size());
+        for (std::size_t l = 0; l < c.lights.size(); ++l) {
+            const LightComparison& light = c.lights[l];
+            const std::size_t n = light.reach.pixels.size();
+            Classes& k = frame[l];
+            k.receiver.resize(n);
+            k.techniqueLit.resize(n);
+            k.referenceLit.resize(n);
+            for (std::size_t i = 0; i < n; ++i) {
+                k.receiver[i] = light.reach.pixels[i] != 0;
+                k.techniqueLit[i] = techniqueVisibility[l][i] >= threshold_;
+                k.referenceLit[i] = light.referenceVisibility.pixels[i] >= referenceThreshold;
+            }
+        }
+        if (!previous_.empty()) {
+            flips_.resize(frame.size());
+            referenceChanges_.resize(frame.size());
+            for (std::size_t l = 0; l < frame.size(); ++l) {
+                const Classes &a = previous_[l], &b = frame[l];
+                std::size_t receivers = 0, flips = 0, changes = 0;
+                for (std::size_t i = 0; i < b.receiver.size(); ++i) {
+                    if (!a.receiver[i] || !b.receiver[i]) continue;
+                    ++receivers;
+                    const bool truthChanged = a.referenceLit[i] != b.referenceLit[i];
+                    changes += truthChanged;
+                    flips += !truthChanged && a.techniqueLit[i] != b.techniqueLit[i];
+                }
+                const double denominator = static_cast<double>(std::max<std::size_t>(receivers, 1));
+                flips_[l].push_back(static_cast<double>(flips) / denominator);
+                referenceChanges_[l].push_back(static_cast<double>(changes) / denominator);
+            }
+        }
+        previous_ = std::move(frame);
+    }
+
+    // Light l's `flips` and `referenceChanges`: median, maximum and every
+    // pair's share, in frame order.
+    void addTo(json& record, std::size_t l) const {
+        const auto summary = [](const std::vector<double>& shares) {
+            return json{{"median", median(shares)}, {"max", shares.empty() ? 0.0 : *std::max_element(shares.begin(), shares.end())},
+                        {"perPair", shares}};
+        };
+        record["flips"] = summary(l < flips_.size() ? flips_[l] : std::vector<double>{});
+        record["referenceChanges"] = summary(l < referenceChanges_.size() ? referenceChanges_[l] : std::vector<double>{});
+    }
+
+private:
+    struct Classes {
+        std::vector<std::uint8_t> receiver, techniqueLit, referenceLit;
+    };
+    float threshold_;
+    std::vector<Classes> previous_;  ///< per light, the last frame's
+    std::vector<std::vector<double>> flips_, referenceChanges_;  ///< per light, per pair of frames
+};
+
 } // namespace
 
 json runBench(Context& context, const BenchArgs& args) {
@@ -161,6 +238,8 @@ json runBench(Context& context, const BenchArgs& args) {
     if (!std::isfinite(args.fps) || !(args.fps > 0.0)) throw Error("--fps: expected a finite number of frames per second > 0");
     if (!std::isfinite(args.timeSeconds + (args.frames - 1) / args.fps))
         throw Error("--time, --fps: the last timed frame's time is not a finite number of seconds");
+    if (args.flips && args.frames < 2)
+        throw Error("--flips: needs at least 2 timed frames to compare (got --frames " + std::to_string(args.frames) + ")");
     std::vector<Variation> variations;
     for (const std::string& v : args.vary) variations.push_back(parseVariation(v));
     std::vector<std::string> scenes = args.scenes;
@@ -226,14 +305,12 @@ json runBench(Context& context, const BenchArgs& args) {
             std::string clockName = "off";
             int baseLight = -1;
             // Timed frame i shows the animation at --time + i / --fps: the
-            // lights are moved (outside the timed render()) and the three
-            // frames of a step see them at the same place.
+            // lights and the camera are moved (outside the timed render())
+            // and the three frames of a step see them at the same place.
             for (int i = 0; i < args.frames; ++i) {
                 const double t = args.timeSeconds + i / args.fps;
-                for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-                    scene.lights[l].position = lightAtTime(loaded.lights[l], t).position;
-                    unshadowed.lights[l].position = scene.lights[l].position;
-                }
+                moveToTime(scene, loaded, t);
+                moveToTime(unshadowed, loaded, t);
                 plain.timeSeconds = clocked.timeSeconds = t;
                 frameTimes.push_back(renderer.render(scene, plain).cpuMs);
                 unshadowedTimes.push_back(renderer.render(unshadowed, plain).cpuMs);
@@ -249,14 +326,30 @@ json runBench(Context& context, const BenchArgs& args) {
                 baseLight = frame.baseLight;
             }
 
-            // The accuracy numbers at --time, as `compare --time` gives them.
-            for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l].position = lightAtTime(loaded.lights[l], args.timeSeconds).position;
+            // The accuracy numbers at --time, as `compare --time` gives them;
+            // with --flips, a comparison at every timed frame's time too
+            // (the first of them is the one at --time).
             CompareOptions compareOptions;
-            compareOptions.timeSeconds = args.timeSeconds;
             compareOptions.width = args.width;
             compareOptions.height = args.height;
             compareOptions.softSamples = args.softSamples;
-            const Comparison comparison = compareWithReference(renderer, scene, compareOptions);
+            FlipCounter flips(compareOptions.litThreshold);
+            Comparison comparison;
+            for (int i = 0; i < (args.flips ? args.frames : 1); ++i) {
+                const double t = args.timeSeconds + i / args.fps;
+                moveToTime(scene, loaded, t);
+                compareOptions.timeSeconds = t;
+                ComparisonJob job(renderer, scene, compareOptions);
+                // The technique's visibility on the job's technique frame, the last one rendered.
+                std::vector<std::vector<float>> techniqueVisibility;
+                if (args.flips)
+                    for (std::size_t l = 0; l < scene.lights.size(); ++l) techniqueVisibility.push_back(renderer.readVisibility(scene, l));
+                job.trace();
+                Comparison c = job.finish(renderer);
+                if (args.flips) flips.add(c, techniqueVisibility);
+                if (i == 0) comparison = std::move(c);
+            }
+            moveToTime(scene, loaded, args.timeSeconds);
 
             const std::string stem = std::to_string(records.size()) + "-" + slug(label);
             const fs::path images = args.output / "images";
@@ -293,6 +386,7 @@ json runBench(Context& context, const BenchArgs& args) {
                 };
                 if (json r = reportedUnder(pass + ".", pass + ".triangles"); !r.empty()) record["shadowCounters"] = std::move(r);
                 if (json r = reportedUnder("light[" + std::to_string(l) + "].", ""); !r.empty()) record["lightCounters"] = std::move(r);
+                if (args.flips) flips.addTo(record, l);
                 lights.push_back(std::move(record));
             }
             json passes = json::object();
@@ -334,6 +428,7 @@ json runBench(Context& context, const BenchArgs& args) {
                 {"warmup", args.warmup},
                 {"time", args.timeSeconds},
                 {"fps", args.fps},
+                {"flips", args.flips},
                 {"softSamples", args.softSamples},
                 {"overrides", args.overrides},
                 {"vary", args.vary},

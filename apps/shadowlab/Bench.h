@@ -17,11 +17,17 @@ struct BenchArgs {
     std::vector<std::string> overrides;  ///< --set, for every combination
     std::vector<std::string> vary;       ///< --vary key=v1,v2,...
     int frames = 10;                     ///< timed frames per combination
-    /// Seconds since the start of the animation (--time): the lights' paths
-    /// are evaluated at timeSeconds for the warm-up frames and the accuracy
-    /// comparison, and at timeSeconds + k / fps for timed frame k. Default 0.
+    /// Seconds since the start of the animation (--time): the lights' and
+    /// the camera's paths are evaluated at timeSeconds for the warm-up frames
+    /// and the accuracy comparison, and at timeSeconds + k / fps for timed
+    /// frame k. Default 0.
     double timeSeconds = 0.0;
     double fps = 30.0;                   ///< frames per second of the timed sequence (--fps), > 0; default 30
+    /// Temporal stability (--flips): compare every timed frame's time with
+    /// the reference, and report per light the share of receiver pixels
+    /// whose shadow flips between consecutive frames while the reference's
+    /// does not (docs/metrics.md). Needs frames >= 2; default off.
+    bool flips = false;
     int warmup = 2;                      ///< untimed frames first (shader compilation, caches)
     int width = 960, height = 540;
     int softSamples = 256;

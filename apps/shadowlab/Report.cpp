@@ -162,7 +162,13 @@ figcaption { font-size: 12px; color: #555; }
       << " clock (cpu-finish: glFinish around each pass on a software rasteriser; gpu-timestamp: GL_TIMESTAMP queries); "
          "medians, min&ndash;max in brackets. "
       << "Accuracy against the Embree ray-traced reference at the same surface points; shares of receiver pixels "
-         "(see docs/metrics.md).</p>\n";
+         "(see docs/metrics.md).";
+    const bool flips = results.value("flips", false);
+    if (flips)
+        h << " Flips: each timed frame compared with the reference; the share of receiver pixels whose shadow flips between "
+             "consecutive frames while the reference's does not, median and maximum over the pairs of frames, beside the share "
+             "whose reference changed (true motion, left out of the flips).";
+    h << "</p>\n";
     double fastest = 0.0;
     for (const json& r : records) {
         const double m = r["frameMs"]["median"].get<double>();
@@ -171,7 +177,8 @@ figcaption { font-size: 12px; color: #555; }
     h << "<h2>Time and error</h2>\n<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
          "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
          "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
-         "<th>MAE</th><th>RMSE</th></tr>\n";
+         "<th>MAE</th><th>RMSE</th>"
+      << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";
     int index = 0;
     for (const json& r : records) {
         double shadowMs = 0, baseMs = 0, lightMs = 0;
@@ -194,7 +201,11 @@ figcaption { font-size: 12px; color: #555; }
               << escape(r["clock"].get<std::string>())
               << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
               << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
-              << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4) << "</td></tr>\n";
+              << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4) << "</td>";
+            if (flips && l.contains("flips"))
+                h << "<td>" << percent(l["flips"]["median"]) << "</td><td>" << percent(l["flips"]["max"]) << "</td><td>"
+                  << percent(l["referenceChanges"]["median"]) << "</td>";
+            h << "</tr>\n";
         }
         ++index;
     }

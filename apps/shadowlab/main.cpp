@@ -2,7 +2,7 @@
 //   render [SCENE.json] -o out.png [--width W --height H] [--set key=value ...]
 //          [--time T] [--frames N --fps F -o frame_%03d.png]
 //   compare [SCENE.json] [-o DIR] [--set ...] [--time T]  technique vs ray-traced reference
-//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [--time T --fps F] [-o DIR]
+//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [--time T --fps F] [--flips] [-o DIR]
 //   info
 // Every failure prints one line `shadowlab: error: ...` and exits non-zero;
 // no output file is written unless the whole render succeeded.
@@ -250,15 +250,16 @@ int runRender(const RenderArgs& args) {
     Scene scene = loaded;
     for (int k = 0; k < args.frames; ++k) {
         const fs::path& output = outputs[static_cast<std::size_t>(k)];
-        // The lights where their paths put them at this frame's time, the
-        // camera from a light's view after it moved.
-        for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l] = lightAtTime(loaded.lights[l], times[static_cast<std::size_t>(k)]);
-        scene.camera = loaded.camera;
+        // The lights and the camera where their paths put them at this
+        // frame's time, the camera from a light's view after it moved.
+        const double t = times[static_cast<std::size_t>(k)];
+        for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l] = lightAtTime(loaded.lights[l], t);
+        scene.camera = cameraAtTime(loaded.camera, t);
         applyViewFromLight(scene, args.viewFromLight);
         RenderOptions options;
         options.width = args.width;
         options.height = args.height;
-        options.timeSeconds = times[static_cast<std::size_t>(k)];
+        options.timeSeconds = t;
         printNotes(renderer.render(scene, options).notes);
         const ImageRGBA8 image = renderer.readColor();
         std::vector<DebugImage> debug;
@@ -299,7 +300,7 @@ struct CompareArgs {
     int height = 540;
     int softSamples = 256;
     std::vector<std::string> overrides;
-    double timeSeconds = 0.0; ///< --time: the lights where their paths put them at this time, seconds
+    double timeSeconds = 0.0; ///< --time: the lights and the camera where their paths put them at this time, seconds
 };
 
 fs::path checkOutputDirectory(const std::string& output) {
@@ -318,7 +319,7 @@ std::string pct(double share) {
 
 int runCompare(const CompareArgs& args) {
     checkTime(args.timeSeconds, "--time");
-    // Both sides, technique and reference, see the lights at --time.
+    // Both sides, technique and reference, see the lights and the camera at --time.
     const Scene scene = sceneAtTime(loadScene(args.scene, args.overrides), args.timeSeconds);
     const fs::path dir = checkOutputDirectory(args.output);
     checkMemory(args.width, args.height);
@@ -484,7 +485,7 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"shadow-maps", "texel-density", "cascades", "all"}))
         ->delimiter(',');
     render->add_option("--debug-images", renderArgs.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
-    render->add_option("--time", renderArgs.timeSeconds, "Seconds since the start of the animation: where light paths put the lights (the first frame's time)")
+    render->add_option("--time", renderArgs.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are (the first frame's time)")
         ->capture_default_str();
     render->add_option("--frames", renderArgs.frames, "Render this many frames, frame k at --time + k / --fps; -o then needs a field such as %03d")
         ->check(CLI::Range(1, 100000))->capture_default_str();
@@ -499,7 +500,7 @@ int main(int argc, char** argv) {
     compare->add_option("--samples", compareArgs.softSamples, "Reference rays per pixel for lights with a size")
         ->check(CLI::Range(1, 65536))->capture_default_str();
     compare->add_option("--set", compareArgs.overrides, "Override a scene value by JSON path")->take_all();
-    compare->add_option("--time", compareArgs.timeSeconds, "Seconds since the start of the animation: where light paths put the lights")
+    compare->add_option("--time", compareArgs.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are")
         ->capture_default_str();
 
     tool::BenchArgs benchArgs;
@@ -514,6 +515,9 @@ int main(int argc, char** argv) {
                                                         "time of the warm-up frames and the accuracy comparison")
         ->capture_default_str();
     bench->add_option("--fps", benchArgs.fps, "Frames per second of the timed sequence")->capture_default_str();
+    bench->add_flag("--flips", benchArgs.flips,
+                    "Temporal stability: compare every timed frame with the reference and report per light the share of receiver "
+                    "pixels whose shadow flips between consecutive frames while the reference's does not (needs --frames >= 2)");
     bench->add_option("--warmup", benchArgs.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
     bench->add_option("--width", benchArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     bench->add_option("--height", benchArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();

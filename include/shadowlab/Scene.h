@@ -14,6 +14,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
@@ -144,14 +145,33 @@ struct Light {
 /// a path is returned unchanged. A spot light keeps its direction.
 Light lightAtTime(const Light& light, double seconds);
 
+/// How the camera moves over time (the scene file's `camera.path`): the eye
+/// and the point looked at, each piecewise-linear between world-space keys,
+/// with the same times, clamping and looping as a light's keyframe path
+/// (LightPath::Type::Keyframes). Up, field of view, near and far stay as the
+/// Camera has them. Evaluate it with cameraAtTime() or sceneAtTime().
+struct CameraPath {
+    std::vector<double> times;        ///< seconds, finite, strictly increasing, at least one
+    std::vector<glm::vec3> positions; ///< world-space eye, one per time (replaces Camera::position)
+    std::vector<glm::vec3> targets;   ///< world-space point looked at, one per time (replaces Camera::target)
+    bool loop = false;                ///< repeat with period times.back() - times.front(); default false
+
+    /// The eye (first) and the point looked at (second) at `seconds` (finite).
+    std::pair<glm::vec3, glm::vec3> poseAt(double seconds) const;
+};
+
 /// Perspective camera.
 struct Camera {
-    glm::vec3 position{0.0f, 4.0f, 10.0f}; ///< world space
-    glm::vec3 target{0.0f};                ///< world-space point looked at
+    glm::vec3 position{0.0f, 4.0f, 10.0f}; ///< world space; a `path` replaces it when evaluated
+    glm::vec3 target{0.0f};                ///< world-space point looked at; a `path` replaces it when evaluated
     glm::vec3 up{0.0f, 1.0f, 0.0f};        ///< world-space up hint
     float fovYDeg = 45.0f;                 ///< vertical field of view, degrees, (0,180)
     float nearPlane = 0.1f;                ///< > 0
     float farPlane = 100.0f;               ///< > near
+    /// How position and target move over time; none (default) = static.
+    /// Evaluated by cameraAtTime() / sceneAtTime(); the Renderer draws
+    /// position and target as they are.
+    std::optional<CameraPath> path;
 
     glm::mat4 viewFromWorld() const;
     glm::mat4 clipFromView(float aspect) const;
@@ -160,6 +180,11 @@ struct Camera {
     /// for shadow volumes whose far caps must never be clipped.
     glm::mat4 clipFromViewInfiniteFar(float aspect) const;
 };
+
+/// `camera` at `seconds` (finite; seconds since the start of the animation):
+/// position and target evaluated along its path, and the path removed, so
+/// the result is a static camera. A camera without a path is returned unchanged.
+Camera cameraAtTime(const Camera& camera, double seconds);
 
 /// A node of the hierarchy. Transform = translation * rotation * scale,
 /// relative to the parent.
@@ -206,8 +231,9 @@ struct Scene {
 };
 
 /// `scene` at `seconds` (finite): every light replaced by lightAtTime(light,
-/// seconds). Copies the scene (meshes included); to step a scene through
-/// many frames, update a copy's lights with lightAtTime() instead.
+/// seconds) and the camera by cameraAtTime(camera, seconds). Copies the
+/// scene (meshes included); to step a scene through many frames, update a
+/// copy's lights with lightAtTime() and its camera with cameraAtTime() instead.
 Scene sceneAtTime(const Scene& scene, double seconds);
 
 /// The up vector of a light's own camera looking along `axis` (unit): +Y,

@@ -181,8 +181,92 @@ private:
 
 // --- Scene parts --------------------------------------------------------------
 
+// Keyframes, shared by `lights[i].path` and `camera.path`: `times` (seconds,
+// at least one, strictly increasing) and, under `key`, one [x, y, z] per
+// time, each called `what` in messages.
+std::vector<double> readKeyTimes(const Reader& r) {
+    if (!r.has("times")) r.fail("missing key 'times' (seconds, strictly increasing)");
+    const Reader times = r.child("times");
+    times.requireArray();
+    if (times.value().empty()) times.fail("expected at least one time");
+    std::vector<double> out;
+    for (std::size_t i = 0; i < times.value().size(); ++i) {
+        const Reader t = times.element(i);
+        const double seconds = t.real();
+        if (i > 0 && !(seconds > out.back()))
+            t.fail("expected times strictly increasing, got " + Reader::fmt(seconds) + " after " + Reader::fmt(out.back()));
+        out.push_back(seconds);
+    }
+    return out;
+}
+
+std::vector<glm::vec3> readKeyPoints(const Reader& r, const std::string& key, const std::string& what, std::size_t count) {
+    if (!r.has(key)) r.fail("missing key '" + key + "' (one [x, y, z] per time)");
+    const Reader points = r.child(key);
+    points.requireArray();
+    if (points.value().size() != count)
+        points.fail("expected one " + what + " per time (" + std::to_string(count) + "), got " + std::to_string(points.value().size()));
+    std::vector<glm::vec3> out;
+    for (std::size_t i = 0; i < count; ++i) out.push_back(points.element(i).vec3());
+    return out;
+}
+
+// Why a camera at `position` looking at `target` with `up` has no view
+// direction, or "" when it has one.
+std::string viewProblem(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up) {
+    const glm::vec3 forward = target - position;
+    if (!std::isfinite(glm::length(forward))) return "camera position and target are too far apart (their distance overflows a float)";
+    if (glm::length(forward) < 1e-9f) return "camera position and target coincide";
+    if (glm::length(glm::cross(glm::normalize(forward), up)) < 1e-6f) return "camera up is parallel to the view direction";
+    return "";
+}
+
+// The distance from the origin to the segment [a, b], in double.
+double closestToOrigin(const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 d = b - a;
+    const double dd = glm::dot(d, d);
+    const double s = dd > 0.0 ? std::clamp(-glm::dot(a, d) / dd, 0.0, 1.0) : 0.0;
+    return glm::length(a + s * d);
+}
+
+// `camera.path`: the eye and target moving along keyframes (CameraPath in
+// Scene.h). Every key, and every point between two keys, must give the
+// camera a view direction, as a static camera's position and target must.
+CameraPath readCameraPath(const Reader& r, const glm::vec3& up) {
+    r.requireObject();
+    if (!r.has("type")) r.fail("missing key 'type' (keyframes)");
+    const std::string type = r.child("type").string();
+    if (type != "keyframes") r.child("type").fail("unknown path type '" + type + "' (a camera path has keyframes only)");
+    r.checkKeys({"type", "times", "positions", "targets", "loop"});
+    CameraPath path;
+    path.times = readKeyTimes(r);
+    path.positions = readKeyPoints(r, "positions", "position", path.times.size());
+    path.targets = readKeyPoints(r, "targets", "target", path.times.size());
+    path.loop = r.boolean("loop", path.loop);
+    const Reader targets = r.child("targets");
+    for (std::size_t i = 0; i < path.times.size(); ++i) {
+        const std::string problem = viewProblem(path.positions[i], path.targets[i], up);
+        if (!problem.empty()) targets.element(i).fail("key " + std::to_string(i) + ": " + problem);
+    }
+    // Between keys the view direction is the linear blend of the keys' own
+    // (eye and target move linearly): it vanishes where that blend passes
+    // the origin, and turns parallel to up where its cross product with up
+    // does. That is measured against the longer key's length (|blend| is at
+    // most that), so it is never looser than the per-key check above.
+    for (std::size_t i = 1; i < path.times.size(); ++i) {
+        const glm::dvec3 a(path.targets[i - 1] - path.positions[i - 1]), b(path.targets[i] - path.positions[i]), u(up);
+        const double longer = std::max(glm::length(a), glm::length(b));
+        const std::string between = "between keys " + std::to_string(i - 1) + " and " + std::to_string(i) + " the camera ";
+        if (closestToOrigin(a, b) < 1e-9)
+            targets.element(i).fail(between + "passes through its target (add a key in between)");
+        if (closestToOrigin(glm::cross(a, u), glm::cross(b, u)) < 1e-6 * longer)
+            targets.element(i).fail(between + "looks along camera up (add a key in between, or change up)");
+    }
+    return path;
+}
+
 void readCamera(const Reader& r, Camera& cam) {
-    r.checkKeys({"position", "target", "up", "fovY", "near", "far"});
+    r.checkKeys({"position", "target", "up", "fovY", "near", "far", "path"});
     cam.position = r.vec3("position", cam.position);
     cam.target = r.vec3("target", cam.target);
     cam.up = r.direction("up", cam.up);
@@ -192,12 +276,8 @@ void readCamera(const Reader& r, Camera& cam) {
     cam.farPlane = r.positive("far", cam.farPlane);
     if (cam.farPlane <= cam.nearPlane)
         (r.has("far") ? r.child("far") : r).fail("expected far > near (" + Reader::fmt(cam.nearPlane) + ")");
-    const glm::vec3 forward = cam.target - cam.position;
-    if (!std::isfinite(glm::length(forward)))
-        r.fail("camera position and target are too far apart (their distance overflows a float)");
-    if (glm::length(forward) < 1e-9f) r.fail("camera position and target coincide");
-    if (glm::length(glm::cross(glm::normalize(forward), cam.up)) < 1e-6f)
-        r.fail("camera up is parallel to the view direction");
+    if (const std::string problem = viewProblem(cam.position, cam.target, cam.up); !problem.empty()) r.fail(problem);
+    if (r.has("path")) cam.path = readCameraPath(r.child("path"), cam.up);
 }
 
 std::string techniqueList() {
@@ -296,23 +376,8 @@ LightPath readPath(const Reader& r, const glm::vec3& base) {
     if (type == "keyframes") {
         r.checkKeys({"type", "times", "positions", "loop"});
         path.type = LightPath::Type::Keyframes;
-        if (!r.has("times")) r.fail("missing key 'times' (seconds, strictly increasing)");
-        if (!r.has("positions")) r.fail("missing key 'positions' (one [x, y, z] per time)");
-        const Reader times = r.child("times"), positions = r.child("positions");
-        times.requireArray();
-        positions.requireArray();
-        if (times.value().empty()) times.fail("expected at least one time");
-        for (std::size_t i = 0; i < times.value().size(); ++i) {
-            const Reader t = times.element(i);
-            const double seconds = t.real();
-            if (i > 0 && !(seconds > path.times.back()))
-                t.fail("expected times strictly increasing, got " + Reader::fmt(seconds) + " after " + Reader::fmt(path.times.back()));
-            path.times.push_back(seconds);
-        }
-        if (positions.value().size() != times.value().size())
-            positions.fail("expected one position per time (" + std::to_string(times.value().size()) + "), got " +
-                           std::to_string(positions.value().size()));
-        for (std::size_t i = 0; i < positions.value().size(); ++i) path.positions.push_back(positions.element(i).vec3());
+        path.times = readKeyTimes(r);
+        path.positions = readKeyPoints(r, "positions", "position", path.times.size());
         path.loop = r.boolean("loop", path.loop);
         return path;
     }

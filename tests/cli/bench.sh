@@ -80,6 +80,70 @@ assert lt["receiverPixels"] != l0["receiverPixels"] or lt["falseLit"] != l0["fal
 PY
 passed=$((passed + 1))
 
+# A camera path moves bench's camera too: its accuracy numbers at --time 2
+# (a key's time) are those of compare with a static camera at that key.
+walk='camera.path={"type": "keyframes", "times": [0, 2], "positions": [[-4, 3, 5], [5, 4, 4]], "targets": [[0, 0.5, 0], [0, 1, 0]]}'
+"$tool" bench "$src/scenes/torus-floating.json" --set "$walk" --time 2 --frames 2 --warmup 0 --width 64 --height 36 -o walk >/dev/null 2>&1 \
+  || fail "bench with a camera path failed"
+"$tool" compare "$src/scenes/torus-floating.json" --set 'camera.position=[5, 4, 4]' --set 'camera.target=[0, 1, 0]' --width 64 --height 36 -o cmp-key >/dev/null \
+  || fail "compare with the key's camera failed"
+"$tool" compare "$src/scenes/torus-floating.json" --width 64 --height 36 -o cmp-scene >/dev/null || fail "compare with the scene's camera failed"
+python3 - walk/results.json cmp-key/metrics.json cmp-scene/metrics.json <<'PY' || fail "bench with a camera path: results.json"
+import json, sys
+bench, key, scene = (json.load(open(p)) for p in sys.argv[1:])
+light, lk, ls = bench["results"][0]["lights"][0], key["lights"][0], scene["lights"][0]
+for field in ("receiverPixels", "referenceShadowedPixels", "falseLit"):
+    assert light[field] == lk[field], (field, light[field], lk[field])
+assert (ls["receiverPixels"], ls["referenceShadowedPixels"]) != (lk["receiverPixels"], lk["referenceShadowedPixels"]), "the key's view is the scene's"
+PY
+passed=$((passed + 1))
+
+# --flips (docs/metrics.md): per light, the share of receivers whose shadow
+# flips between consecutive timed frames while the reference's does not.
+# A still scene flips nothing, and nothing changes in truth either.
+"$tool" bench "$src/scenes/torus-floating.json" --set 'lights[0].shadow.technique=map' --flips --frames 3 --warmup 0 \
+  --width 160 --height 90 -o still >/dev/null 2>&1 || fail "bench --flips on a still scene failed"
+# A point light swinging across a box, a second a frame: its shadow moves
+# over 5 % of the receivers, in truth and in the map alike; that is true
+# motion, not flips (a count of the map's changes alone would equal it).
+printf '%s' '{"camera": {"position": [0, 9, 9], "target": [0, 0, 0]},
+  "lights": [{"type": "point", "position": [-3, 4, 0], "shadow": {"technique": "map"},
+              "path": {"type": "keyframes", "times": [0, 1, 2], "positions": [[-3, 4, 0], [0, 4, 1.5], [3, 4, 0]]}}],
+  "nodes": [{"shape": {"type": "plane", "size": [20, 20]}},
+            {"shape": {"type": "box", "size": [1.5, 2, 1.5]}, "translation": [0, 1, 0]}]}' > swing.json
+"$tool" bench swing.json --flips --frames 3 --fps 1 --warmup 0 --width 320 --height 180 -o swing >/dev/null 2>&1 \
+  || fail "bench --flips with a moving light failed"
+# A camera drifting over a coarse map (two-boxes-sun, filter none, the tight
+# fit following the view): its stair steps shift and flip, more the coarser
+# the map (measured: 0.10 % with 32^2 texels, 0.03 % with 128^2).
+drift='camera.path={"type": "keyframes", "times": [0, 3], "positions": [[6, 5, 8], [5.4, 5, 8.6]], "targets": [[0, 0.8, 0], [0, 0.8, 0]]}'
+for size in 32 128; do
+  "$tool" bench "$src/scenes/two-boxes-sun.json" --set 'lights[0].shadow.technique=map' --set "lights[0].shadow.map.size=$size" \
+    --set 'lights[0].shadow.map.filter="none"' --set "$drift" --flips --frames 4 --fps 1 --warmup 0 --width 320 --height 180 \
+    -o "drift$size" >/dev/null 2>&1 || fail "bench --flips with a drifting camera failed"
+done
+python3 - still/results.json swing/results.json drift32/results.json drift128/results.json <<'PY' || fail "bench --flips: results.json"
+import json, sys
+still, swing, coarse, fine = (json.load(open(p)) for p in sys.argv[1:])
+assert still["flips"] is True and swing["flips"] is True
+light = lambda r: r["results"][0]["lights"][0]
+s = light(still)
+assert len(s["flips"]["perPair"]) == 2, s["flips"]
+assert s["flips"]["max"] == 0 and s["referenceChanges"]["max"] == 0, (s["flips"], s["referenceChanges"])
+w = light(swing)
+assert min(w["referenceChanges"]["perPair"]) > 0.02, w["referenceChanges"]
+assert w["flips"]["max"] <= 0.01 * min(w["referenceChanges"]["perPair"]), (w["flips"], w["referenceChanges"])
+c, f = light(coarse)["flips"], light(fine)["flips"]
+assert len(c["perPair"]) == 3 and c["median"] <= c["max"], c
+assert f["median"] > 0 and c["median"] > 2 * f["median"], (c, f)
+PY
+grep -q 'flips % (median)' swing/report.html || fail "report.html has no flips column"
+# --flips needs two frames to compare: one line, and nothing written.
+if "$tool" bench "$src/scenes/torus-floating.json" --flips --frames 1 -o oneframe >out.txt 2>err.txt; then fail "bench --flips --frames 1 succeeded"; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--flips: needs at least 2 timed frames to compare (got --frames 1)" err.txt || fail "--flips --frames 1: $(cat err.txt)"
+[[ ! -e oneframe ]] || fail "bench --flips --frames 1 left oneframe behind"
+passed=$((passed + 1))
+
 # The report, rendered by a real browser from disk.
 if ! command -v chromium >/dev/null; then fail "chromium is not installed (scripts/install-deps.sh installs it)"; fi
 flags=(--headless --no-sandbox --disable-gpu --disable-background-networking --disable-component-update

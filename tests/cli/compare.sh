@@ -56,6 +56,17 @@ PY
 done
 passed=$((passed + 1))
 
+# --time moves the camera along its path for both sides: at a key's time the
+# numbers and images are those of a static camera at that key.
+walk='camera.path={"type": "keyframes", "times": [0, 2], "positions": [[-4, 3, 5], [5, 4, 4]], "targets": [[0, 0.5, 0], [0, 1, 0]]}'
+"$tool" compare "$src/scenes/torus-floating.json" --set "$walk" --time 2 -o walk --width 96 --height 54 >/dev/null || fail "compare --time with a camera path failed"
+"$tool" compare "$src/scenes/torus-floating.json" --set 'camera.position=[5, 4, 4]' --set 'camera.target=[0, 1, 0]' -o key --width 96 --height 54 >/dev/null \
+  || fail "compare with the key's static camera failed"
+for f in technique.png reference.png error-0.png; do cmp -s walk/$f key/$f || fail "compare --time 2: $f differs from the static camera at the key"; done
+"$tool" compare "$src/scenes/torus-floating.json" --set "$walk" -o walk0 --width 96 --height 54 >/dev/null || fail "compare at time 0 failed"
+cmp -s walk0/technique.png walk/technique.png && fail "compare at times 0 and 2 of a camera path gave the same image"
+passed=$((passed + 1))
+
 # An output directory that cannot be made is one error line, and no metrics.json.
 touch blocker
 if "$tool" compare "$src/scenes/torus-floating.json" -o blocker/out --width 32 --height 18 > out.txt 2> err.txt; then

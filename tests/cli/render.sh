@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `shadowlab render` writes the image it names, for the default scene and
-# a scene file with --set, and a sequence of frames of an animated light;
+# a scene file with --set, and sequences of frames of an animated light and camera;
 # `shadowlab info` reports OpenGL 4.5.
 set -eu
 tool=$1
@@ -71,5 +71,14 @@ out=$("$tool" render --frames 2 -o 'p%%-%d.png' --width 32 --height 24)
 # A scene without a path renders the same at every time.
 "$tool" render "$src/scenes/torus-resting.json" -o t5.png --width 64 --height 48 --set lights[0].intensity=0.5 --time 5 >/dev/null
 cmp -s t5.png t.png || { echo "--time moved a static scene"; exit 1; }
+# A camera path: the frames move with it, and at a key's time the camera is
+# where that key puts it, exactly as a static camera written there.
+walk='camera.path={"type": "keyframes", "times": [0, 1], "positions": [[4, 3, 5], [5, 3, 4]], "targets": [[0, 0.5, 0], [0, 1, 0]]}'
+"$tool" render "$src/scenes/torus-resting.json" --set "$walk" --frames 2 --fps 1 -o 'walk_%d.png' --width 64 --height 48 >/dev/null
+cmp -s walk_0.png walk_1.png && { echo "frames 0 and 1 of a camera path are the same: the camera did not move"; exit 1; }
+"$tool" render "$src/scenes/torus-resting.json" --set 'camera.position=[5, 3, 4]' --set 'camera.target=[0, 1, 0]' -o key1.png --width 64 --height 48 >/dev/null
+cmp -s walk_1.png key1.png || { echo "frame 1 of the camera path differs from a static camera at its key"; exit 1; }
+"$tool" render "$src/scenes/torus-resting.json" --set "$walk" -o walk_static.png --width 64 --height 48 --time 7 >/dev/null
+cmp -s walk_static.png key1.png || { echo "--time 7 (past the last key) differs from the last key"; exit 1; }
 [[ -z "$(find . -name '*.pending*' -o -name '*.partial*')" ]] || { echo "temporaries left: $(find . -name '*.pending*' -o -name '*.partial*')"; exit 1; }
-echo "8 passed, 0 failed"
+echo "9 passed, 0 failed"

@@ -5,6 +5,7 @@
 #include <shadowlab/SceneFile.h>
 
 #include "ErrorText.h"
+#include "SceneErrorCase.h"
 
 #include <gtest/gtest.h>
 
@@ -178,82 +179,67 @@ TEST(LightPath, NonFiniteTimesAndBrokenPathsThroughTheApiAreErrors) {
 
 // --- Errors in the scene file: one line, file or flag, JSON path -------------
 
-struct PathErrorCase {
-    const char* name;
-    std::string text;
-    std::vector<std::string> overrides;
-    std::string expected;  // the message must contain this
-};
-void PrintTo(const PathErrorCase& c, std::ostream* os) { *os << c.name; }
+class LightPathErrors : public ::testing::TestWithParam<SceneErrorCase> {};
 
-class LightPathErrors : public ::testing::TestWithParam<PathErrorCase> {};
-
-TEST_P(LightPathErrors, NameFilePathAndExpectation) {
-    const PathErrorCase& c = GetParam();
-    const std::string message = errorOf([&] { parse(c.text, c.overrides); });
-    EXPECT_NE(message.find(c.expected), std::string::npos) << "message: " << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-    if (c.overrides.empty()) EXPECT_EQ(message.rfind("scene.json: ", 0), 0u) << message;
-    else EXPECT_EQ(message.rfind("--set ", 0), 0u) << message;
-}
+TEST_P(LightPathErrors, NameFilePathAndExpectation) { expectSceneError(GetParam()); }
 
 INSTANTIATE_TEST_SUITE_P(
     All, LightPathErrors,
     ::testing::Values(
-        PathErrorCase{"Directional", R"({"lights": [{"type": "directional", "path": {"type": "sine"}}]})", {},
-                      "scene.json: lights[0].path: a directional light has no position to move"},
-        PathErrorCase{"NotAnObject", pointWithPath("[0, 0, 3]"), {}, "lights[0].path: expected an object, got an array"},
-        PathErrorCase{"MissingType", pointWithPath(R"({"amplitude": [0, 0, 3]})"), {}, "lights[0].path: missing key 'type' (sine or keyframes)"},
-        PathErrorCase{"TypeNotAString", pointWithPath(R"({"type": 3})"), {}, "lights[0].path.type: expected a string, got a number"},
-        PathErrorCase{"UnknownType", pointWithPath(R"({"type": "circle"})"), {}, "lights[0].path.type: unknown path type 'circle' (expected sine or keyframes)"},
-        PathErrorCase{"UnknownSineKey", pointWithPath(R"({"type": "sine", "frequency": 2})"), {}, "lights[0].path.frequency: unknown key"},
-        PathErrorCase{"KeyframeKeyOnSine", pointWithPath(R"({"type": "sine", "times": [0]})"), {}, "lights[0].path.times: unknown key"},
-        PathErrorCase{"AmplitudeTwoNumbers", pointWithPath(R"({"type": "sine", "amplitude": [0, 3]})"), {},
-                      "lights[0].path.amplitude: expected 3 numbers, got 2"},
-        PathErrorCase{"AmplitudeString", pointWithPath(R"({"type": "sine", "amplitude": [0, "3", 0]})"), {},
-                      "lights[0].path.amplitude[1]: expected a number, got a string"},
-        PathErrorCase{"AmplitudeOverflows", pointWithPath(R"({"type": "sine", "amplitude": [3e38, 0, 0]})", "[3e38, 0, 0]"), {},
-                      "lights[0].path.amplitude: position + amplitude overflows a float"},
-        PathErrorCase{"InfiniteFrequency", pointWithPath(R"({"type": "sine", "angularFrequency": 1e999})"), {},
-                      "invalid JSON: number overflow parsing '1e999' (numbers must be finite)"},
-        PathErrorCase{"FrequencyPastAFloat", pointWithPath(R"({"type": "sine", "angularFrequency": 1e300})"), {},
-                      "lights[0].path.angularFrequency: expected a finite number"},
-        PathErrorCase{"NegativeFrequency", pointWithPath(R"({"type": "sine", "angularFrequency": -0.5})"), {},
-                      "lights[0].path.angularFrequency: expected radians per second >= 0, got -0.5"},
-        PathErrorCase{"PhaseBoolean", pointWithPath(R"({"type": "sine", "phase": true})"), {}, "lights[0].path.phase: expected a number, got a boolean"},
-        PathErrorCase{"MissingTimes", pointWithPath(R"({"type": "keyframes", "positions": [[0, 0, 0]]})"), {},
-                      "lights[0].path: missing key 'times'"},
-        PathErrorCase{"MissingPositions", pointWithPath(R"({"type": "keyframes", "times": [0]})"), {},
-                      "lights[0].path: missing key 'positions'"},
-        PathErrorCase{"TimesNotArray", pointWithPath(R"({"type": "keyframes", "times": 0, "positions": [[0, 0, 0]]})"), {},
-                      "lights[0].path.times: expected an array, got a number"},
-        PathErrorCase{"PositionsNotArray", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": {}})"), {},
-                      "lights[0].path.positions: expected an array, got an object"},
-        PathErrorCase{"NoKeys", pointWithPath(R"({"type": "keyframes", "times": [], "positions": []})"), {},
-                      "lights[0].path.times: expected at least one time"},
-        PathErrorCase{"TimesEqual", pointWithPath(R"({"type": "keyframes", "times": [0, 1, 1], "positions": [[0,0,0],[1,0,0],[2,0,0]]})"), {},
-                      "lights[0].path.times[2]: expected times strictly increasing, got 1 after 1"},
-        PathErrorCase{"TimesDecreasing", pointWithPath(R"({"type": "keyframes", "times": [2, 1], "positions": [[0,0,0],[1,0,0]]})"), {},
-                      "lights[0].path.times[1]: expected times strictly increasing, got 1 after 2"},
-        PathErrorCase{"TimeString", pointWithPath(R"({"type": "keyframes", "times": ["0"], "positions": [[0,0,0]]})"), {},
-                      "lights[0].path.times[0]: expected a number, got a string"},
-        PathErrorCase{"FewerPositions", pointWithPath(R"({"type": "keyframes", "times": [0, 1], "positions": [[0,0,0]]})"), {},
-                      "lights[0].path.positions: expected one position per time (2), got 1"},
-        PathErrorCase{"MorePositions", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": [[0,0,0],[1,1,1]]})"), {},
-                      "lights[0].path.positions: expected one position per time (1), got 2"},
-        PathErrorCase{"PositionTwoNumbers", pointWithPath(R"({"type": "keyframes", "times": [0, 1], "positions": [[0,0,0],[1,1]]})"), {},
-                      "lights[0].path.positions[1]: expected 3 numbers, got 2"},
-        PathErrorCase{"PositionPastAFloat", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": [[0,4e38,0]]})"), {},
-                      "lights[0].path.positions[0][1]: expected a finite number"},
-        PathErrorCase{"LoopNotBoolean", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": [[0,0,0]], "loop": "yes"})"), {},
-                      "lights[0].path.loop: expected true or false, got a string"},
-        PathErrorCase{"UnknownKeyframeKey", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": [[0,0,0]], "amplitude": [1,1,1]})"), {},
-                      "lights[0].path.amplitude: unknown key"},
+        SceneErrorCase{"Directional", R"({"lights": [{"type": "directional", "path": {"type": "sine"}}]})", {},
+                       "scene.json: lights[0].path: a directional light has no position to move"},
+        SceneErrorCase{"NotAnObject", pointWithPath("[0, 0, 3]"), {}, "lights[0].path: expected an object, got an array"},
+        SceneErrorCase{"MissingType", pointWithPath(R"({"amplitude": [0, 0, 3]})"), {}, "lights[0].path: missing key 'type' (sine or keyframes)"},
+        SceneErrorCase{"TypeNotAString", pointWithPath(R"({"type": 3})"), {}, "lights[0].path.type: expected a string, got a number"},
+        SceneErrorCase{"UnknownType", pointWithPath(R"({"type": "circle"})"), {}, "lights[0].path.type: unknown path type 'circle' (expected sine or keyframes)"},
+        SceneErrorCase{"UnknownSineKey", pointWithPath(R"({"type": "sine", "frequency": 2})"), {}, "lights[0].path.frequency: unknown key"},
+        SceneErrorCase{"KeyframeKeyOnSine", pointWithPath(R"({"type": "sine", "times": [0]})"), {}, "lights[0].path.times: unknown key"},
+        SceneErrorCase{"AmplitudeTwoNumbers", pointWithPath(R"({"type": "sine", "amplitude": [0, 3]})"), {},
+                       "lights[0].path.amplitude: expected 3 numbers, got 2"},
+        SceneErrorCase{"AmplitudeString", pointWithPath(R"({"type": "sine", "amplitude": [0, "3", 0]})"), {},
+                       "lights[0].path.amplitude[1]: expected a number, got a string"},
+        SceneErrorCase{"AmplitudeOverflows", pointWithPath(R"({"type": "sine", "amplitude": [3e38, 0, 0]})", "[3e38, 0, 0]"), {},
+                       "lights[0].path.amplitude: position + amplitude overflows a float"},
+        SceneErrorCase{"InfiniteFrequency", pointWithPath(R"({"type": "sine", "angularFrequency": 1e999})"), {},
+                       "invalid JSON: number overflow parsing '1e999' (numbers must be finite)"},
+        SceneErrorCase{"FrequencyPastAFloat", pointWithPath(R"({"type": "sine", "angularFrequency": 1e300})"), {},
+                       "lights[0].path.angularFrequency: expected a finite number"},
+        SceneErrorCase{"NegativeFrequency", pointWithPath(R"({"type": "sine", "angularFrequency": -0.5})"), {},
+                       "lights[0].path.angularFrequency: expected radians per second >= 0, got -0.5"},
+        SceneErrorCase{"PhaseBoolean", pointWithPath(R"({"type": "sine", "phase": true})"), {}, "lights[0].path.phase: expected a number, got a boolean"},
+        SceneErrorCase{"MissingTimes", pointWithPath(R"({"type": "keyframes", "positions": [[0, 0, 0]]})"), {},
+                       "lights[0].path: missing key 'times'"},
+        SceneErrorCase{"MissingPositions", pointWithPath(R"({"type": "keyframes", "times": [0]})"), {},
+                       "lights[0].path: missing key 'positions'"},
+        SceneErrorCase{"TimesNotArray", pointWithPath(R"({"type": "keyframes", "times": 0, "positions": [[0, 0, 0]]})"), {},
+                       "lights[0].path.times: expected an array, got a number"},
+        SceneErrorCase{"PositionsNotArray", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": {}})"), {},
+                       "lights[0].path.positions: expected an array, got an object"},
+        SceneErrorCase{"NoKeys", pointWithPath(R"({"type": "keyframes", "times": [], "positions": []})"), {},
+                       "lights[0].path.times: expected at least one time"},
+        SceneErrorCase{"TimesEqual", pointWithPath(R"({"type": "keyframes", "times": [0, 1, 1], "positions": [[0,0,0],[1,0,0],[2,0,0]]})"), {},
+                       "lights[0].path.times[2]: expected times strictly increasing, got 1 after 1"},
+        SceneErrorCase{"TimesDecreasing", pointWithPath(R"({"type": "keyframes", "times": [2, 1], "positions": [[0,0,0],[1,0,0]]})"), {},
+                       "lights[0].path.times[1]: expected times strictly increasing, got 1 after 2"},
+        SceneErrorCase{"TimeString", pointWithPath(R"({"type": "keyframes", "times": ["0"], "positions": [[0,0,0]]})"), {},
+                       "lights[0].path.times[0]: expected a number, got a string"},
+        SceneErrorCase{"FewerPositions", pointWithPath(R"({"type": "keyframes", "times": [0, 1], "positions": [[0,0,0]]})"), {},
+                       "lights[0].path.positions: expected one position per time (2), got 1"},
+        SceneErrorCase{"MorePositions", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": [[0,0,0],[1,1,1]]})"), {},
+                       "lights[0].path.positions: expected one position per time (1), got 2"},
+        SceneErrorCase{"PositionTwoNumbers", pointWithPath(R"({"type": "keyframes", "times": [0, 1], "positions": [[0,0,0],[1,1]]})"), {},
+                       "lights[0].path.positions[1]: expected 3 numbers, got 2"},
+        SceneErrorCase{"PositionPastAFloat", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": [[0,4e38,0]]})"), {},
+                       "lights[0].path.positions[0][1]: expected a finite number"},
+        SceneErrorCase{"LoopNotBoolean", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": [[0,0,0]], "loop": "yes"})"), {},
+                       "lights[0].path.loop: expected true or false, got a string"},
+        SceneErrorCase{"UnknownKeyframeKey", pointWithPath(R"({"type": "keyframes", "times": [0], "positions": [[0,0,0]], "amplitude": [1,1,1]})"), {},
+                       "lights[0].path.amplitude: unknown key"},
         // --set: the flag is named, with the path and what was wrong.
-        PathErrorCase{"SetAmplitudeBad", pointWithPath(R"({"type": "sine"})"), {"lights[0].path.amplitude=[0,0]"},
-                      "--set lights[0].path.amplitude=[0,0]: lights[0].path.amplitude: expected 3 numbers, got 2"},
-        PathErrorCase{"SetFrequencyNaN", pointWithPath(R"({"type": "sine"})"), {"lights[0].path.angularFrequency=nan"},
-                      "--set lights[0].path.angularFrequency=nan: lights[0].path.angularFrequency: expected a number, got a string"},
-        PathErrorCase{"SetPathOnDirectional", R"({"lights": [{"type": "directional"}]})", {"lights[0].path.type=sine"},
-                      "--set lights[0].path.type=sine: lights[0].path: a directional light has no position to move"}),
-    [](const ::testing::TestParamInfo<PathErrorCase>& p) { return std::string(p.param.name); });
+        SceneErrorCase{"SetAmplitudeBad", pointWithPath(R"({"type": "sine"})"), {"lights[0].path.amplitude=[0,0]"},
+                       "--set lights[0].path.amplitude=[0,0]: lights[0].path.amplitude: expected 3 numbers, got 2"},
+        SceneErrorCase{"SetFrequencyNaN", pointWithPath(R"({"type": "sine"})"), {"lights[0].path.angularFrequency=nan"},
+                       "--set lights[0].path.angularFrequency=nan: lights[0].path.angularFrequency: expected a number, got a string"},
+        SceneErrorCase{"SetPathOnDirectional", R"({"lights": [{"type": "directional"}]})", {"lights[0].path.type=sine"},
+                       "--set lights[0].path.type=sine: lights[0].path: a directional light has no position to move"}),
+    sceneErrorCaseName);
