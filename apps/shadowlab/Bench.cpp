@@ -163,9 +163,13 @@ void moveToTime(Scene& scene, const Scene& loaded, double seconds) {
 // Temporal stability (--flips), per light over consecutive frames: the share
 // of receiver pixels (receivers in both frames) whose technique class (lit:
 // visibility >= the threshold) changes while the reference's class there does
-// not: a shadow that flickers on a still truth. Where the truth changes too
-// (a light that moved, an edge that crossed the pixel as the camera moved)
-// the change is right and is counted apart, as a reference change.
+// not, away from the edges: in both frames every receiver among the pixel's
+// 8 neighbours has its technique class and its reference class. A shadow
+// edge that slides by less than a pixel as the view moves is motion, not
+// flicker; one that jumps by more (a texel grid sliding under the world)
+// flips whole blocks of pixels. Where the truth changes (a light that moved,
+// an edge that crossed the pixel) the change is right and is counted apart,
+// as a reference change.
 class FlipCounter {
 public:
     explicit FlipCounter(float litThreshold) : threshold_(litThreshold) {}
@@ -179,6 +183,7 @@ public:
             const LightComparison& light = c.lights[l];
             const std::size_t n = light.reach.pixels.size();
             Classes& k = frame[l];
+            k.width = light.reach.width;
             k.receiver.resize(n);
             k.techniqueLit.resize(n);
             k.referenceLit.resize(n);
@@ -199,7 +204,7 @@ public:
                     ++receivers;
                     const bool truthChanged = a.referenceLit[i] != b.referenceLit[i];
                     changes += truthChanged;
-                    flips += !truthChanged && a.techniqueLit[i] != b.techniqueLit[i];
+                    flips += !truthChanged && a.techniqueLit[i] != b.techniqueLit[i] && a.interior(i) && b.interior(i);
                 }
                 const double denominator = static_cast<double>(std::max<std::size_t>(receivers, 1));
                 flips_[l].push_back(static_cast<double>(flips) / denominator);
@@ -222,7 +227,21 @@ public:
 
 private:
     struct Classes {
+        int width = 0;
         std::vector<std::uint8_t> receiver, techniqueLit, referenceLit;
+        // Whether every receiver among pixel i's 8 neighbours has its classes.
+        bool interior(std::size_t i) const {
+            const int x = static_cast<int>(i % static_cast<std::size_t>(width)), y = static_cast<int>(i / static_cast<std::size_t>(width));
+            const int height = static_cast<int>(receiver.size() / static_cast<std::size_t>(width));
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+                    const std::size_t j = static_cast<std::size_t>(ny) * static_cast<std::size_t>(width) + static_cast<std::size_t>(nx);
+                    if (receiver[j] && (techniqueLit[j] != techniqueLit[i] || referenceLit[j] != referenceLit[i])) return false;
+                }
+            return true;
+        }
     };
     float threshold_;
     std::vector<Classes> previous_;  ///< per light, the last frame's

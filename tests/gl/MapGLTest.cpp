@@ -12,6 +12,7 @@
 #include <shadowlab/SceneFile.h>
 
 #include <filesystem>
+#include <set>
 
 using namespace shadowlab;
 using shadowlab::test::awayFromEdges;
@@ -398,4 +399,63 @@ TEST_F(MapGLTest, TheLightFrustumsHoldEveryShadowedReceiver) {
     renderer.upload(none);
     renderer.render(none);
     EXPECT_TRUE(renderer.lightFrustums(none).empty());
+}
+
+// Issue 17's bar for cascades: on cascades-field (a 400 m ground, casters
+// from 2 m to 150 m away, a camera at eye height), 4 cascades of 2048^2
+// with filter none misclassify at most 0.1 % of the receivers outside the
+// 1-pixel band, stabilised or fitted tightly, and strictly fewer than one
+// 2048^2 map over the same view (measured 0.011 %, 0.000 % and 0.212 %).
+TEST_F(MapGLTest, FourCascadesBeatOneMapOnTheField) {
+    const fs::path path = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "cascades-field.json";
+    const std::vector<std::string> hard = {"lights[0].shadow.technique=\"map\"", "lights[0].shadow.map.filter=\"none\"", "lights[0].shadow.map.size=2048"};
+    auto with = [&](std::vector<std::string> extra) {
+        extra.insert(extra.begin(), hard.begin(), hard.end());
+        return awayFromEdges(compareScene(loadSceneFile(path, extra)).lights[0]);
+    };
+    const double one = with({});
+    const double stabilised = with({"lights[0].shadow.map.cascades=4", "lights[0].shadow.map.stabilize=true"});
+    const double tight = with({"lights[0].shadow.map.cascades=4", "lights[0].shadow.map.stabilize=false"});
+    EXPECT_LE(stabilised, 0.001);
+    EXPECT_LE(tight, 0.001);
+    EXPECT_LT(stabilised, one);
+    EXPECT_LT(tight, one);
+}
+
+// The cascades colour view shows one colour per slice, nearest first: on
+// the field, with 4 cascades, all four appear, red (the first) at the
+// bottom of the frame (the ground at the camera's feet) and the last
+// cascade's colour towards the horizon.
+TEST_F(MapGLTest, TheCascadeViewColoursEachSlice) {
+    const fs::path path = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "cascades-field.json";
+    const Scene scene = loadSceneFile(path, {"lights[0].shadow.technique=\"map\"", "lights[0].shadow.map.cascades=4", "lights[0].shadow.map.size=512",
+                                             "lights[0].shadow.map.cascadeBlend=0"});
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options;
+    options.width = 320;
+    options.height = 180;
+    renderer.render(scene, options);
+    const ImageRGBA8* view = nullptr;
+    std::vector<DebugImage> images = renderer.debugImages(scene);
+    int maps = 0;
+    for (const DebugImage& d : images) {
+        if (d.name == "light0-cascades") view = &d.image;
+        maps += d.name.find("-map") != std::string::npos;
+    }
+    EXPECT_EQ(maps, 4);
+    ASSERT_NE(view, nullptr);
+    // The dominant channel picks the colour (shading only scales it).
+    auto hue = [&](int x, int y) {
+        const std::uint8_t* p = &view->pixels[(static_cast<std::size_t>(y) * view->width + x) * 4];
+        return p[0] > 2 * p[1] && p[0] > 2 * p[2] ? 'r' : p[1] > p[0] && p[1] > p[2] ? 'g' : p[2] > p[0] && p[2] > p[1] ? 'b' : 'y';
+    };
+    EXPECT_EQ(hue(160, 178), 'r');
+    std::set<char> seen;
+    for (int y = 0; y < view->height; ++y)
+        for (int x = 0; x < view->width; ++x) {
+            const std::uint8_t* p = &view->pixels[(static_cast<std::size_t>(y) * view->width + x) * 4];
+            if (p[0] + p[1] + p[2] > 30) seen.insert(hue(x, y));
+        }
+    EXPECT_EQ(seen, (std::set<char>{'r', 'g', 'b', 'y'}));
 }
