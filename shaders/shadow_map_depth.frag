@@ -1,10 +1,13 @@
 // Technique "map", shadow pass. Variants: MAP_RGBA8 (pack depth into an
 // RGBA8 colour, lecture 002 §8.3.1), MAP_SPOT (discard outside the cone:
-// the cone is the circle inscribed in the square map, 002 §8.2.1.3).
+// the cone is the circle inscribed in the square map, 002 §8.2.1.3),
+// MAP_MOMENTS (write the moments of depth, SL_MAP_MOMENTS_*).
 in vec2 vLightNdc;
 #include "shadow_map_shared.h"
 #if MAP_RGBA8
 layout(location = 0) out vec4 outPacked;
+#elif MAP_MOMENTS > 0
+layout(location = 0) out vec4 outMoments;
 #endif
 
 void main() {
@@ -13,5 +16,14 @@ void main() {
 #endif
 #if MAP_RGBA8
     outPacked = packDepth(gl_FragCoord.z);
+#elif MAP_MOMENTS > 0
+    float z = gl_FragCoord.z;
+#if MAP_SPOT
+    // Perspective depth is far from linear: the moments take the distance
+    // along the axis between the near and far planes instead.
+    float n = map.pcss.y, f = map.pcss.z;
+    z = (2.0 * n * f / (f + n - (2.0 * z - 1.0) * (f - n)) - n) / (f - n);
+#endif
+    outMoments = momentsOf(z);
 #endif
 }

@@ -14,6 +14,12 @@
 #define SL_MAP_FILTER_PCF20 5
 #define SL_MAP_FILTER_PCSS 6
 
+// MAP_MOMENTS variant values (MapRepresentation's order): 0 a depth map.
+#define SL_MAP_MOMENTS_VSM 1
+#define SL_MAP_MOMENTS_EVSM2 2
+#define SL_MAP_MOMENTS_EVSM4 3
+#define SL_MAP_MOMENTS_MSM 4
+
 // Cascaded maps of a directional light, at most.
 #define SL_MAP_MAX_CASCADES 8
 
@@ -43,7 +49,9 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     SL_MAP_VEC4 cascadeTexel[SL_MAP_MAX_CASCADES / 4]; // cascades: world size of one texel of each cascade
     SL_MAP_VEC4 cascade;  // cascades: xyz the view's forward direction (unit), w the blend share of a slice
     SL_MAP_VEC4 cascadeRange[SL_MAP_MAX_CASCADES]; // cascades: x near, y far plane of each cascade's light camera, scene units
-    SL_MAP_VEC4 pcss;     // filter pcss: x the light's size (directional: tan of half its angular diameter; spot, point: its radius, scene units), y near, z far plane of the light camera, w blocker-search taps
+    SL_MAP_VEC4 pcss;     // x the light's size for filter pcss (directional: tan of half its angular diameter; spot, point: its radius, scene units), y near, z far plane of the light camera, w pcss's blocker-search taps
+    SL_MAP_VEC4 blur;     // moment maps' blur passes: x radius (texels), y axis (0 across, 1 down), z the layer blurred, w unused
+    SL_MAP_VEC4 moments;  // moment maps: x light-bleeding reduction, yzw unused
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared
@@ -73,6 +81,24 @@ float unpackDepth(vec4 v) { return dot(v, vec4(1.0, 1.0 / 255.0, 1.0 / 65025.0, 
 // Cascades (MAP_CASCADES > 1, defined by every program that includes this
 // with the map block): the view depth of a world point, and the slice it
 // lies in (the first whose far end is beyond it).
+#if defined(MAP_MOMENTS) && MAP_MOMENTS > 0
+// The moments a map stores for depth z in [0, 1] (a spot's: linear between
+// its near and far planes): VSM (z, z^2); EVSM the warps e^(c+ z') and
+// -e^(-c- z') of z' = 2z - 1 with their squares; MSM (z, z^2, z^3, z^4).
+vec4 momentsOf(float z) {
+#if MAP_MOMENTS == SL_MAP_MOMENTS_VSM
+    return vec4(z, z * z, 0.0, 0.0);
+#elif MAP_MOMENTS == SL_MAP_MOMENTS_MSM
+    float z2 = z * z;
+    return vec4(z, z2, z2 * z, z2 * z2);
+#else
+    float w = 2.0 * z - 1.0;
+    float p = exp(MAP_EVSM_POSITIVE * w), n = -exp(-MAP_EVSM_NEGATIVE * w);
+    return vec4(p, p * p, n, n * n);
+#endif
+}
+#endif
+
 #ifdef MAP_CASCADES
 float cascadeDepth(vec3 worldPosition) { return dot(worldPosition - frame.cameraPosition.xyz, map.cascade.xyz); }
 float cascadeFarOf(int c) { return map.cascadeFar[c >> 2][c & 3]; }

@@ -21,7 +21,9 @@ nlohmann::json lightRecord(const Light& light, const LightComparison& c,
                           {"falseShadowAwayFromEdges", c.falseShadowAwayFromEdges},
                           {"falseLitAwayFromEdges", c.falseLitAwayFromEdges},
                           {"meanAbsError", c.meanAbsError},
-                          {"rmse", c.rmse}};
+                          {"rmse", c.rmse},
+                          {"umbraPixels", c.umbraPixels},
+                          {"leakedInUmbra", c.leakedInUmbra}};
     for (const auto& [key, path] : images) record[key] = path;
     return record;
 }

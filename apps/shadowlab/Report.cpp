@@ -78,10 +78,28 @@ std::string settingsText(const json& record) {
 }
 
 // Misclassified share away from edges, mean over lights: the plot's y.
+// A row's error: per light the misclassified share away from edges (hard
+// lights) or the visibility RMSE (soft ones, whose truth is not two
+// classes), averaged over its lights.
 double errorOf(const json& record) {
     double sum = 0.0;
-    for (const json& l : record["lights"]) sum += l["falseLitAwayFromEdges"].get<double>() + l["falseShadowAwayFromEdges"].get<double>();
+    for (const json& l : record["lights"])
+        sum += l.value("soft", false) ? l["rmse"].get<double>() : l["falseLitAwayFromEdges"].get<double>() + l["falseShadowAwayFromEdges"].get<double>();
     return record["lights"].empty() ? 0.0 : sum / static_cast<double>(record["lights"].size());
+}
+
+// Whether row i is on its scene's time-error front: no other row of the
+// same scene file is at least as fast and at least as exact, and better in one.
+bool onFront(const json& records, std::size_t i) {
+    const json& r = records[i];
+    const double t = r["frameMs"]["median"].get<double>(), e = errorOf(r);
+    for (std::size_t j = 0; j < records.size(); ++j) {
+        const json& o = records[j];
+        if (j == i || o["sceneFile"] != r["sceneFile"]) continue;
+        const double ot = o["frameMs"]["median"].get<double>(), oe = errorOf(o);
+        if (ot <= t && oe <= e && (ot < t || oe < e)) return false;
+    }
+    return true;
 }
 
 double niceStep(double range) {
@@ -121,11 +139,13 @@ std::string scatterPlot(const json& records) {
     s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 12
       << "\" text-anchor=\"middle\" font-size=\"12\">frame time, median (ms)</text>\n";
     s << "<text transform=\"translate(16," << (top + H - bottom) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"12\">misclassified away from edges (%)</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"12\">misclassified away from edges, or RMSE (%)</text>\n";
     int index = 0;
     for (const json& r : records) {
         const double x = px(r["frameMs"]["median"].get<double>()), y = py(100.0 * errorOf(r));
-        s << "<g class=\"point\"><circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"5\" fill=\"#2b6cb0\" fill-opacity=\"0.75\"><title>"
+        const bool front = onFront(records, static_cast<std::size_t>(index));
+        s << "<g class=\"point" << (front ? " front" : "") << "\"><circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"5\" fill=\""
+          << (front ? "#dd6b20" : "#2b6cb0") << "\" fill-opacity=\"0.75\"><title>"
           << escape(r["scene"].get<std::string>() + " (" + settingsText(r) + ")") << "</title></circle><text x=\"" << x + 7
           << "\" y=\"" << y - 6 << "\" font-size=\"10\">" << index << "</text></g>\n";
         ++index;
@@ -177,7 +197,7 @@ figcaption { font-size: 12px; color: #555; }
     h << "<h2>Time and error</h2>\n<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
          "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
          "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
-         "<th>MAE</th><th>RMSE</th>"
+         "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>&times; hard map</th><th>front</th>"
       << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";
     int index = 0;
     for (const json& r : records) {
@@ -201,7 +221,10 @@ figcaption { font-size: 12px; color: #555; }
               << escape(r["clock"].get<std::string>())
               << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
               << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
-              << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4) << "</td>";
+              << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4) << "</td><td>"
+              << (l.contains("leakedInUmbra") ? percent(l["leakedInUmbra"]) : std::string("&ndash;")) << "</td><td>"
+              << (r.contains("frameOverHardMap") ? fixed(r["frameOverHardMap"], 2) : std::string("&ndash;")) << "</td><td>"
+              << (onFront(records, static_cast<std::size_t>(index)) ? "&#9679;" : "") << "</td>";
             if (flips && l.contains("flips"))
                 h << "<td>" << percent(l["flips"]["median"]) << "</td><td>" << percent(l["flips"]["max"]) << "</td><td>"
                   << percent(l["referenceChanges"]["median"]) << "</td>";
@@ -209,7 +232,10 @@ figcaption { font-size: 12px; color: #555; }
         }
         ++index;
     }
-    h << "</table></div>\n<h2>Time against error</h2>\n<p>Each point is a row of the table (its number); lower left is better.</p>\n"
+    h << "</table></div>\n<h2>Time against error</h2>\n<p>Each point is a row of the table (its number); lower left is better. "
+         "Orange, and &#9679; in the table's front column: the rows on their scene's time&ndash;error front (the Pareto front), "
+         "those no other row of the same scene beats in both frame time and error: for a frame-time budget, the least error "
+         "is among them. Error: misclassified away from edges for hard lights, RMSE for soft ones, averaged over the lights.</p>\n"
       << scatterPlot(records);
     h << "<h2>Images</h2>\n<p class=\"legend\">Error images: <span style=\"background:#eb281e\">false lit</span>"
          "<span style=\"background:#286ef0\">false shadow</span> paler in the 1-pixel band around true shadow edges; grey: agrees.</p>\n";

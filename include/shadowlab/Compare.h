@@ -42,6 +42,12 @@ struct LightComparison {
     double falseShadowAwayFromEdges = 0.0; ///< falseShadow counted outside the edge band, share of receivers outside it
     double falseLitAwayFromEdges = 0.0;    ///< falseLit counted outside the edge band, share of receivers outside it
     double meanAbsError = 0.0;    ///< mean |technique - reference| visibility over receivers
+    /// Receivers in the reference's umbra (visibility 0) outside the edge band.
+    std::size_t umbraPixels = 0;
+    /// Light leaked into the umbra: the technique's mean visibility over
+    /// umbraPixels (0 when there are none). What filterable maps' light
+    /// bleeding costs (docs/metrics.md).
+    double leakedInUmbra = 0.0;
     double rmse = 0.0;            ///< root mean square of the same
     /// 0 = shadowed .. 65535 = lit, whole image. Also 0 where the light does not
     /// reach (background, outside a spot's cone, beyond range, facing away): `reach` tells them apart.

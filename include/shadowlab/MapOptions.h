@@ -47,6 +47,19 @@ enum class MapPreset {
     Lecture000,  ///< "lecture-000": point lights: lecture 000's one 60-degree map towards the origin instead of a cube
 };
 
+enum class MapRepresentation {
+    Depth, ///< "depth": the nearest depth, compared per tap (default)
+    Vsm,   ///< "vsm": variance shadow maps, two moments of depth, Chebyshev's bound (Donnelly and Lauritzen 2006)
+    Evsm2, ///< "evsm2": exponential VSM, the positive exponential warp's two moments (Lauritzen and McCool 2008)
+    Evsm4, ///< "evsm4": exponential VSM with both warps, four moments
+    Msm,   ///< "msm": moment shadow maps, four moments of depth, Hamburger's bound (Peters and Klein 2015)
+};
+
+enum class MapMomentFormat {
+    Rgba32f, ///< "rgba32f": 32-bit float moments (default)
+    Rgba16f, ///< "rgba16f": 16-bit float moments: half the memory and bandwidth, more light bleeding; EVSM's exponents drop to 5.54
+};
+
 enum class MapCubePasses {
     One, ///< "one": each caster drawn once, a geometry shader sends each triangle to the faces it touches (default)
     Six, ///< "six": one pass per face, the face attached as the target
@@ -77,6 +90,11 @@ struct MapOptions {
     std::string cascadeSplits;           ///< explicit far distances of the first cascades - 1 slices, scene units along the view, e.g. "4 15 50"; default "" (cascadeLambda's scheme)
     bool stabilize = true;               ///< cascades: a sphere per slice snapped to whole texels, so shadows do not shimmer as the camera moves (false: each slice fitted tightly); default true
     float cascadeBlend = 0.1f;           ///< cascades: share of each slice, at its far end, over which it fades into the next; default 0.1
+    // Directional and spot lights: filterable maps.
+    MapRepresentation representation = MapRepresentation::Depth;
+    MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;
+    int blur = 2;                        ///< moments: separable Gaussian blur, texels each side (sigma = blur / 2), 0..16; default 2
+    float bleedReduction = 0.0f;         ///< moments: light-bleeding reduction, the bound's values below this count as 0 (rescaled above), 0..0.9; default 0
     // Point lights (cube maps) only.
     MapCubePasses cubePasses = MapCubePasses::One;
     bool faceCulling = true;             ///< draw a caster only into the faces it can touch (false: all six, as LearnOpenGL does); default true

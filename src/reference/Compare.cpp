@@ -233,7 +233,7 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
                 edge[e.pixel] = 1;
 
         std::size_t falseShadow = 0, falseLit = 0, falseShadowAway = 0, falseLitAway = 0;
-        double absSum = 0.0, sqSum = 0.0;
+        double absSum = 0.0, sqSum = 0.0, leakSum = 0.0;
         c.referenceVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
         c.techniqueVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
         c.errorImage = {w, h, std::vector<std::uint8_t>(n * 4, 0)};
@@ -254,6 +254,10 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
                 const double e = static_cast<double>(technique[i]) - exact[i];
                 absSum += std::fabs(e);
                 sqSum += e * e;
+                if (exact[i] <= 0.0f && !edge[i]) {
+                    ++c.umbraPixels;
+                    leakSum += std::clamp(technique[i], 0.0f, 1.0f);
+                }
                 if (techniqueLit && !exactLit[i]) {
                     ++falseLit;
                     falseLitAway += !edge[i];
@@ -277,6 +281,7 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
         c.falseLitAwayFromEdges = static_cast<double>(falseLitAway) / away;
         c.meanAbsError = absSum / receivers;
         c.rmse = std::sqrt(sqSum / receivers);
+        c.leakedInUmbra = c.umbraPixels ? leakSum / static_cast<double>(c.umbraPixels) : 0.0;
         out.lights.push_back(std::move(c));
     }
     return std::move(out);

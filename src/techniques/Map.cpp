@@ -65,6 +65,13 @@ const OptionTable& mapOptionTable() {
                      "cascades: a bounding sphere per slice and the map snapped to whole texels, so shadows do not shimmer as the camera moves; false: each slice fitted tightly")
             .number(&MapOptions::cascadeBlend, "cascadeBlend", 0.0, 0.5, "share of a slice",
                     "cascades: the far part of each slice over which its shadow fades into the next cascade's")
+            .choice(&MapOptions::representation, "representation", {"depth", "vsm", "evsm2", "evsm4", "msm"},
+                    "directional and spot lights: what the map stores; depth, compared per tap, or moments of depth that are blurred and filtered like colour (variance, exponential variance with 2 or 4 moments, moment shadow maps)")
+            .choice(&MapOptions::momentFormat, "momentFormat", {"rgba32f", "rgba16f"},
+                    "moments: 32- or 16-bit floats (16: half the memory, more light bleeding)")
+            .integer(&MapOptions::blur, "blur", 0, 16, "texels each side", "moments: separable Gaussian blur of sigma blur / 2 texels before the light pass")
+            .number(&MapOptions::bleedReduction, "bleedReduction", 0.0, 0.9, "share of the bound",
+                    "moments: light-bleeding reduction, the upper bound's values under this become 0 and the rest is stretched to 0..1 (darkens penumbrae)")
             .choice(&MapOptions::cubePasses, "cubePasses", {"one", "six"},
                     "point lights: each caster drawn once through a geometry shader that picks its faces, or one pass per face (the same map)")
             .boolean(&MapOptions::faceCulling, "faceCulling",
@@ -91,6 +98,7 @@ GLenum depthFormat(MapFormat f) {
 
 // Texels around the fitted region that the filter may read.
 float footprint(const MapOptions& o) {
+    if (o.representation != MapRepresentation::Depth) return static_cast<float>(o.blur) + 2.0f;  // the blur, then a bilinear lookup
     switch (o.filter) {
     case MapFilter::None: return 1.0f;
     case MapFilter::Hardware: return 1.5f;
@@ -106,7 +114,7 @@ float footprint(const MapOptions& o) {
 // Texels from a filter's centre to its farthest tap (the receiver-plane
 // bias covers that distance; the presets keep their own biases instead).
 float reach(const MapOptions& o) {
-    if (o.preset != MapPreset::Default) return 0.0f;
+    if (o.preset != MapPreset::Default || o.representation != MapRepresentation::Depth) return 0.0f;  // moments bound the depths' spread instead
     switch (o.filter) {
     case MapFilter::None: return 0.0f;
     case MapFilter::Hardware: return 1.0f;  // the 2x2 bilinear footprint
@@ -265,23 +273,47 @@ std::pair<float, float> cubeNearFar(const MapOptions& o) {
 // Texture space from clip space: the lecture's bias matrix (scale and offset by 0.5).
 const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
 
-// Group keys: the format's index, plus kMipmapped for a mipmapped array,
-// plus kCube for a cube-map array.
-constexpr int kMipmapped = 16;
-constexpr int kCube = 32;
-
-struct Group {
+// What lights must agree on to share one texture array.
+struct GroupKey {
     MapFormat format = MapFormat::Depth32F;
     bool mipmaps = false;
     bool cube = false;  ///< a cube-map array: six layers per light
-    int key() const { return static_cast<int>(format) + (mipmaps ? kMipmapped : 0) + (cube ? kCube : 0); }
+    MapRepresentation representation = MapRepresentation::Depth;
+    MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;  ///< moments only
     int size = 0;
+    static GroupKey of(const MapOptions& o, bool cube) {
+        const bool moments = o.representation != MapRepresentation::Depth;
+        return {o.format, o.mipmaps, cube, o.representation, moments ? o.momentFormat : MapMomentFormat::Rgba32f, o.size};
+    }
+    auto tie() const { return std::tie(format, mipmaps, cube, representation, momentFormat, size); }
+    bool operator<(const GroupKey& o) const { return tie() < o.tie(); }
+    bool operator==(const GroupKey& o) const { return tie() == o.tie(); }
+};
+
+// Moments stored per texel: 0 for depth maps.
+int momentCount(MapRepresentation r) { return r == MapRepresentation::Depth ? 0 : r == MapRepresentation::Vsm || r == MapRepresentation::Evsm2 ? 2 : 4; }
+GLenum momentFormatOf(const GroupKey& k) {
+    const bool half = k.momentFormat == MapMomentFormat::Rgba16f;
+    return momentCount(k.representation) == 2 ? (half ? GL_RG16F : GL_RG32F) : (half ? GL_RGBA16F : GL_RGBA32F);
+}
+
+struct Group {
+    GroupKey key;
     int layers = 0;
     std::uint64_t generation = 0;     ///< unique per allocation: framebuffers attached to an older one are rebuilt
-    gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, or the depth test's buffer for rgba8
+    gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, or the depth test's buffer for rgba8 and moments
     gl::Texture packed{gl::NoCreate}; ///< RGBA8 array: the map for rgba8
-    GLenum target() const { return cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY; }
-    int layersPerLight() const { return cube ? 6 : 1; }
+    gl::Texture moments{gl::NoCreate};///< RG/RGBA float array: the map for moment representations
+    gl::Texture blurScratch{gl::NoCreate};   ///< moments: one layer's horizontal blur
+    gl::Framebuffer blurFbo{gl::NoCreate};   ///< the scratch as a target
+    GLenum target() const { return key.cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY; }
+    int layersPerLight() const { return key.cube ? 6 : 1; }
+    bool hasMoments() const { return key.representation != MapRepresentation::Depth; }
+    // Shorthands.
+    MapFormat format() const { return key.format; }
+    bool mipmaps() const { return key.mipmaps; }
+    bool cube() const { return key.cube; }
+    int size() const { return key.size; }
 };
 
 // A rectangle of a map's texels, [x0, x1) x [y0, y1); empty when x0 >= x1.
@@ -375,11 +407,18 @@ public:
             compareNearestMip_ = makeSampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, true);
             compareLinearMip_ = makeSampler(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, true);
             plainNearestMip_ = makeSampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, false);
+            // Moments are filtered like colour; past the edge, the edge.
+            momentLinear_ = makeSampler(GL_LINEAR, GL_LINEAR, false);
+            momentLinearMip_ = makeSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, false);
+            for (const gl::Sampler* m : {&momentLinear_, &momentLinearMip_}) {
+                glSamplerParameteri(m->id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+                glSamplerParameteri(m->id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            }
             ubo_ = gl::Buffer();
             glNamedBufferStorage(ubo_.id(), sizeof(shared::MapUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
         }
         // Lights with the same format and size share one texture array.
-        std::map<std::pair<int, int>, int> layersWanted;
+        std::map<GroupKey, int> layersWanted;
         const int windowSize = std::clamp(std::max(frame.viewport.x, frame.viewport.y), 16, host.glInfo().maxTextureSize);
         auto effectiveHere = [&](const Light& light) {
             MapOptions o = effective(light);
@@ -394,7 +433,7 @@ public:
                             " texels is past this GPU's limit of " + std::to_string(limit));
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
             const bool cube = isCube(light);
-            layersWanted[{static_cast<int>(o.format) + (o.mipmaps ? kMipmapped : 0) + (cube ? kCube : 0), o.size}] += cube ? 1 : cascadeCount(light, o);
+            layersWanted[GroupKey::of(o, cube)] += cube ? 1 : cascadeCount(light, o);
         }
         // Stated limits, before anything is allocated: layers per array, and
         // all maps together within kMapBudgetBytes (a 16384^2 depth32f map is
@@ -403,10 +442,11 @@ public:
         constexpr double kMapBudgetBytes = 1024.0 * 1024.0 * 1024.0;
         double bytes = 0.0;
         for (const auto& wanted : layersWanted) {
-            const auto format = static_cast<MapFormat>(wanted.first.first % kMipmapped);
-            const int perLight = wanted.first.first >= kCube ? 6 : 1;
-            const double texel = format == MapFormat::Depth16 ? 2.0 : format == MapFormat::Rgba8 ? 8.0 : 4.0;
-            bytes += texel * static_cast<double>(wanted.first.second) * static_cast<double>(wanted.first.second) * wanted.second * perLight;
+            const GroupKey& key = wanted.first;
+            const int perLight = key.cube ? 6 : 1;
+            const double texel = (key.format == MapFormat::Depth16 ? 2.0 : key.format == MapFormat::Rgba8 ? 8.0 : 4.0) +
+                                 momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
+            bytes += texel * static_cast<double>(key.size) * static_cast<double>(key.size) * wanted.second * perLight;
             if (wanted.second * perLight > host.glInfo().maxArrayLayers)
                 throw Error("lights[" + std::to_string(lights[0]) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
                             " map layers in one array (" + (perLight == 6 ? std::to_string(wanted.second) + " point light(s), six each" : "lights and cascades") +
@@ -420,29 +460,36 @@ public:
         }
         std::vector<Group> groups;
         for (const auto& wanted : layersWanted) {
-            const std::pair<int, int> key = wanted.first;
+            const GroupKey& key = wanted.first;
             const int layers = wanted.second;
             // Keep an existing array when it still fits, so maps are not reallocated every frame.
-            auto same = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) {
-                return g.key() == key.first && g.size == key.second && g.layers == layers;
-            });
+            auto same = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) { return g.key == key && g.layers == layers; });
             if (same != groups_.end()) {
                 groups.push_back(std::move(*same));
                 continue;
             }
             Group g;
-            g.format = static_cast<MapFormat>(key.first % kMipmapped);
-            g.mipmaps = key.first % kCube >= kMipmapped;
-            g.cube = key.first >= kCube;
-            g.size = key.second;
+            g.key = key;
             g.layers = layers;
             g.generation = ++generations_;
-            const int levels = g.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(g.size)))) : 1;
+            const int size = key.size;
+            const int levels = key.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(size)))) : 1;
+            const bool colour = key.format == MapFormat::Rgba8 || g.hasMoments();  // the depth array only serves the depth test
             g.depth = gl::Texture(g.target());
-            glTextureStorage3D(g.depth.id(), g.format == MapFormat::Rgba8 ? 1 : levels, depthFormat(g.format), g.size, g.size, layers * g.layersPerLight());
-            if (g.format == MapFormat::Rgba8) {
+            glTextureStorage3D(g.depth.id(), colour ? 1 : levels, depthFormat(key.format), size, size, layers * g.layersPerLight());
+            if (key.format == MapFormat::Rgba8) {
                 g.packed = gl::Texture(g.target());
-                glTextureStorage3D(g.packed.id(), levels, GL_RGBA8, g.size, g.size, layers * g.layersPerLight());
+                glTextureStorage3D(g.packed.id(), levels, GL_RGBA8, size, size, layers * g.layersPerLight());
+            }
+            if (g.hasMoments()) {
+                g.moments = gl::Texture(g.target());
+                glTextureStorage3D(g.moments.id(), levels, momentFormatOf(key), size, size, layers);
+                g.blurScratch = gl::Texture(GL_TEXTURE_2D);
+                glTextureStorage2D(g.blurScratch.id(), 1, momentFormatOf(key), size, size);
+                g.blurFbo = gl::Framebuffer();
+                glNamedFramebufferTexture(g.blurFbo.id(), GL_COLOR_ATTACHMENT0, g.blurScratch.id(), 0);
+                glNamedFramebufferDrawBuffer(g.blurFbo.id(), GL_COLOR_ATTACHMENT0);
+                gl::checkFramebuffer(g.blurFbo, "moment blur framebuffer");
             }
             groups.push_back(std::move(g));
         }
@@ -455,9 +502,7 @@ public:
             p.options = effectiveHere(light);
             p.cube = isCube(light);
             for (std::size_t g = 0; g < groups_.size(); ++g)
-                if (groups_[g].format == p.options.format && groups_[g].mipmaps == p.options.mipmaps && groups_[g].cube == p.cube &&
-                    groups_[g].size == p.options.size)
-                    p.group = g;
+                if (groups_[g].key == GroupKey::of(p.options, p.cube)) p.group = g;
             p.layer = nextLayer[p.group];
             nextLayer[p.group] += p.cube ? 1 : cascadeCount(light, p.options);
             const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld, p.options.size, footprint(p.options)};
@@ -505,24 +550,29 @@ public:
         }
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
-        const bool packed = g.format == MapFormat::Rgba8;
+        const bool packed = g.format() == MapFormat::Rgba8;
         upload(view);
         const gl::Program& program = host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
-             std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_SPOT " + (p.spot ? "1" : "0") + "\n"});
+             std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_SPOT " + (p.spot ? "1" : "0") + "\n#define MAP_MOMENTS " +
+                 std::to_string(static_cast<int>(g.key.representation)) + "\n" + momentDefines(g.key.momentFormat)});
         std::size_t drawn = 0;
         const std::span<const LightCamera> cameras = p.cameras();
         for (std::size_t c = 0; c < cameras.size(); ++c) {
             const LightCamera& camera = cameras[c];
             const gl::Framebuffer& fbo = p.cascades.empty() ? p.fbo : p.cascadeFbos[c];
             glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            glViewport(0, 0, g.size, g.size);
+            glViewport(0, 0, g.size(), g.size());
             gl::RenderState state;  // all writes on for the clears
             host.apply(state);
             const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, one);
             if (packed) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, one);
-            if (!packed) state.noColor();
+            if (g.hasMoments()) {
+                const glm::vec4 far = farMoments(g.key);
+                glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, &far.x);
+            }
+            if (!packed && !g.hasMoments()) state.noColor();
             state.polygonOffset = p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f;
             state.offsetFactor = p.options.slopeBias;
             state.offsetUnits = p.options.offsetUnits;
@@ -542,12 +592,13 @@ public:
             });
             if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
             drawn += drawnHere;
+            if (g.hasMoments() && p.options.blur > 0) blurLayer(host, g, p.layer + static_cast<int>(c), p.options.blur, fbo);
         }
         host.count("triangles", static_cast<double>(drawn));
-        if (g.mipmaps) {
-            // Every level from the map: averaged depths (of all layers; each light's pass refreshes them).
+        if (g.mipmaps()) {
+            // Every level from the map: averaged depths or moments (of all layers; each light's pass refreshes them).
             const auto scope = host.timeScope("mipmaps");
-            glGenerateTextureMipmap(packed ? g.packed.id() : g.depth.id());
+            glGenerateTextureMipmap(packed ? g.packed.id() : g.hasMoments() ? g.moments.id() : g.depth.id());
         }
         if (frame.measureFloors) drawFloor(host, frame, p);
     }
@@ -557,7 +608,8 @@ public:
         return "#define MAP_FILTER " + std::to_string(static_cast<int>(o.filter)) + "\n#define MAP_KERNEL " +
                std::to_string(o.kernel) + "\n#define MAP_RGBA8 " + (o.format == MapFormat::Rgba8 ? "1" : "0") +
                "\n#define MAP_GRID_BILINEAR " + (bilinearGrid(o) ? "1" : "0") + "\n#define MAP_CUBE " + (isCube(light) ? "1" : "0") +
-               "\n#define MAP_CASCADES " + std::to_string(cascadeCount(light, o)) + "\n";
+               "\n#define MAP_CASCADES " + std::to_string(cascadeCount(light, o)) + "\n#define MAP_MOMENTS " +
+               std::to_string(isCube(light) ? 0 : static_cast<int>(o.representation)) + "\n" + momentDefines(o.momentFormat);
     }
 
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
@@ -567,22 +619,25 @@ public:
         if (p.cube) {
             // Filters read across face edges (the test with a plane over the seams).
             glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-            const bool packed = g.format == MapFormat::Rgba8;
+            const bool packed = g.format() == MapFormat::Rgba8;
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
             const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss;
             glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? plainNearest_.id() : linear ? compareLinear_.id() : compareNearest_.id());
             bindRawDepth(p, g);
             return;
         }
-        if (g.format == MapFormat::Rgba8) {
+        if (g.hasMoments()) {
+            glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.moments.id());
+            glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? momentLinearMip_.id() : momentLinear_.id());
+        } else if (g.format() == MapFormat::Rgba8) {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
-            glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? plainNearestMip_.id() : plainNearest_.id());
+            glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? plainNearestMip_.id() : plainNearest_.id());
         } else {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
             // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
             const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss ||
                                 (p.options.filter == MapFilter::Grid && bilinearGrid(p.options));
-            glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps ? (linear ? compareLinearMip_.id() : compareNearestMip_.id())
+            glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? (linear ? compareLinearMip_.id() : compareNearestMip_.id())
                                                           : (linear ? compareLinear_.id() : compareNearest_.id()));
             bindRawDepth(p, g);
         }
@@ -591,9 +646,9 @@ public:
     // PCSS's blocker search reads the stored depths themselves: the same
     // depth array on the next unit through a sampler without comparison.
     void bindRawDepth(const PerLight& p, const Group& g) const {
-        if (p.options.filter != MapFilter::Pcss || g.format == MapFormat::Rgba8) return;
+        if (p.options.filter != MapFilter::Pcss || g.format() == MapFormat::Rgba8) return;
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, g.depth.id());
-        glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps ? plainNearestMip_.id() : plainNearest_.id());
+        glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps() ? plainNearestMip_.id() : plainNearest_.id());
     }
 
     void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, std::vector<DebugImage>& out) override {
@@ -605,16 +660,16 @@ public:
             out.push_back({"cube", std::move(cross), std::move(values)});
             return;
         }
-        const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
+        const std::size_t n = static_cast<std::size_t>(g.size()) * static_cast<std::size_t>(g.size());
         const std::span<const LightCamera> cameras = p.cameras();
         for (std::size_t c = 0; c < cameras.size(); ++c) {
             const LightCamera& camera = cameras[c];
             const std::vector<float> depth = readLayer(g, p.layer + static_cast<int>(c));
-            ImageRGBA8 image{g.size, g.size, std::vector<std::uint8_t>(n * 4, 255)};
+            ImageRGBA8 image{g.size(), g.size(), std::vector<std::uint8_t>(n * 4, 255)};
             const float nearP = camera.nearPlane, farP = camera.farPlane;
-            for (int y = 0; y < g.size; ++y)
-                for (int x = 0; x < g.size; ++x) {
-                    float d = depth[static_cast<std::size_t>(y) * g.size + x];
+            for (int y = 0; y < g.size(); ++y)
+                for (int x = 0; x < g.size(); ++x) {
+                    float d = depth[static_cast<std::size_t>(y) * g.size() + x];
                     if (camera.perspective && d < 1.0f) {
                         // Perspective depth linearised: eye distance from window depth, then 0..1 over near..far.
                         const float z = 2.0f * d - 1.0f;
@@ -623,7 +678,7 @@ public:
                     }
                     const auto v = static_cast<std::uint8_t>(std::clamp(d, 0.0f, 1.0f) * 255.0f + 0.5f);
                     // Rows top to bottom: the map's v = 1 at the top.
-                    std::uint8_t* px = &image.pixels[(static_cast<std::size_t>(g.size - 1 - y) * g.size + x) * 4];
+                    std::uint8_t* px = &image.pixels[(static_cast<std::size_t>(g.size() - 1 - y) * g.size() + x) * 4];
                     px[0] = px[1] = px[2] = v;
                 }
             out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), std::move(image), {}});
@@ -643,6 +698,47 @@ public:
     }
 
 private:
+    // Moment maps: the exponents of EVSM's warps (32-bit floats: 40 and 5, as
+    // MJP's sample; 16-bit: 5.54 each, the most e^(2c) allows under 65504)
+    // and MSM's and VSM's floors, as GLSL defines for every program that
+    // writes or reads moments.
+    static std::string momentDefines(MapMomentFormat format) {
+        const bool half = format == MapMomentFormat::Rgba16f;
+        char text[200];
+        std::snprintf(text, sizeof text, "#define MAP_EVSM_POSITIVE %.4f\n#define MAP_EVSM_NEGATIVE %.4f\n#define MAP_MOMENT_BIAS %.1e\n#define MAP_MIN_VARIANCE %.1e\n",
+                      half ? 5.54 : 40.0, half ? 5.54 : 5.0, half ? 1e-3 : 3e-5, half ? 1e-4 : 1e-6);
+        return text;
+    }
+    // The moments of depth 1 (nothing in front of the far plane): the clear colour.
+    static glm::vec4 farMoments(const GroupKey& k) {
+        const bool half = k.momentFormat == MapMomentFormat::Rgba16f;
+        const float positive = half ? 5.54f : 40.0f, negative = half ? 5.54f : 5.0f;
+        switch (k.representation) {
+        case MapRepresentation::Evsm2:
+        case MapRepresentation::Evsm4:
+            return {std::exp(positive), std::exp(2.0f * positive), -std::exp(-negative), std::exp(-2.0f * negative)};
+        default: return glm::vec4(1.0f);
+        }
+    }
+    // The separable Gaussian blur of one moment layer: across into the
+    // scratch texture, then down back into the layer (its framebuffer `fbo`).
+    void blurLayer(TechniqueHost& host, const Group& g, int layer, int radius, const gl::Framebuffer& fbo) {
+        const auto scope = host.timeScope("blur");
+        host.apply(gl::RenderState{.depthTest = false, .depthWrite = false});
+        for (int axis = 0; axis < 2; ++axis) {
+            const glm::vec4 blur(static_cast<float>(radius), static_cast<float>(axis), static_cast<float>(layer), 0.0f);
+            glNamedBufferSubData(ubo_.id(), offsetof(shared::MapUniforms, blur), sizeof blur, &blur);
+            glBindFramebuffer(GL_FRAMEBUFFER, axis == 0 ? g.blurFbo.id() : fbo.id());
+            glBindTextureUnit(SL_UNIT_SHADOW_FIRST, axis == 0 ? g.moments.id() : g.blurScratch.id());
+            glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
+            const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_blur.frag"}},
+                                                       "#define BLUR_FROM_ARRAY " + std::to_string(axis == 0 ? 1 : 0) + "\n"});
+            glUseProgram(program.id());
+            host.drawFullscreenTriangle();
+        }
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    }
+
     // A directional light's cascades: the view's depth split into slices
     // (core/LightCamera: cascadeSplits, fitCascade), one camera each.
     static void fitCascades(PerLight& p, const Light& light, const FrameInfo& frame, const FitInput& in) {
@@ -668,15 +764,15 @@ private:
     // stored depths in 0..1: read back, or unpacked from rgba8's base-255
     // digits (the 4th is below float precision here).
     std::vector<float> readLayer(const Group& g, int layer) const {
-        const std::size_t n = static_cast<std::size_t>(g.size) * static_cast<std::size_t>(g.size);
+        const std::size_t n = static_cast<std::size_t>(g.size()) * static_cast<std::size_t>(g.size());
         std::vector<float> depth(n);
-        if (g.format == MapFormat::Rgba8) {
+        if (g.format() == MapFormat::Rgba8) {
             std::vector<std::uint8_t> rgba(n * 4);
-            glGetTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size, g.size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+            glGetTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_RGBA, GL_UNSIGNED_BYTE,
                                  static_cast<GLsizei>(rgba.size()), rgba.data());
             for (std::size_t i = 0; i < n; ++i) depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65025.0f + rgba[4 * i + 2] / 16581375.0f;
         } else {
-            glGetTextureSubImage(g.depth.id(), 0, 0, 0, layer, g.size, g.size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+            glGetTextureSubImage(g.depth.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                                  static_cast<GLsizei>(n * sizeof(float)), depth.data());
         }
         return depth;
@@ -689,7 +785,7 @@ private:
     // contrast; white where no caster was drawn.
     ImageRGBA8 cubeCross(const PerLight& p, std::vector<float>& values) const {
         const Group& g = groups_[p.group];
-        const int tile = std::min(g.size, 512);
+        const int tile = std::min(g.size(), 512);
         std::array<std::vector<float>, 6> faces;
         float lo = 1.0f, hi = 0.0f;
         for (int f = 0; f < 6; ++f) {
@@ -709,8 +805,8 @@ private:
             const std::vector<float>& depth = faces[static_cast<std::size_t>(f)];
             for (int y = 0; y < tile; ++y)
                 for (int x = 0; x < tile; ++x) {
-                    const int sx = x * g.size / tile, sy = y * g.size / tile;
-                    const float d = depth[static_cast<std::size_t>(sy) * g.size + sx];
+                    const int sx = x * g.size() / tile, sy = y * g.size() / tile;
+                    const float d = depth[static_cast<std::size_t>(sy) * g.size() + sx];
                     const float v = d >= 1.0f ? 1.0f : 0.1f + 0.8f * (hi > lo ? (d - lo) / (hi - lo) : 0.0f);
                     const auto grey = static_cast<std::uint8_t>(v * 255.0f + 0.5f);
                     const std::size_t px = (static_cast<std::size_t>(place[f][1] * tile + y) * static_cast<std::size_t>(4 * tile) +
@@ -732,16 +828,18 @@ private:
                               (p.cascades.empty() ? static_cast<bool>(p.fbo) : p.cascadeFbos.size() == p.cascades.size());
         if (attached) return;
         if (!p.fbo || p.attachedGeneration != g.generation) p.fbo = gl::Framebuffer();
-        const bool packed = g.format == MapFormat::Rgba8;
+        const bool packed = g.format() == MapFormat::Rgba8;
+        // The colour the pass writes: depth packed into RGBA8, or moments.
+        const GLuint colour = packed ? g.packed.id() : g.hasMoments() ? g.moments.id() : 0;
         auto attachOne = [&](gl::Framebuffer& fbo, int layer, const char* what) {
             if (layer < 0) {  // the whole array, layered (gl_Layer picks)
                 glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0);
-                if (packed) glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, g.packed.id(), 0);
+                if (colour) glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0);
             } else {
                 glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, layer);
-                if (packed) glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.packed.id(), 0, layer);
+                if (colour) glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0, layer);
             }
-            glNamedFramebufferDrawBuffer(fbo.id(), packed ? GL_COLOR_ATTACHMENT0 : GL_NONE);
+            glNamedFramebufferDrawBuffer(fbo.id(), colour ? GL_COLOR_ATTACHMENT0 : GL_NONE);
             glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
             gl::checkFramebuffer(fbo, what);
         };
@@ -811,14 +909,14 @@ private:
     // scratch target of the same size and format, with no bias, culling or
     // packing: what the pass itself costs at least.
     void ensureFloorTarget(const Group& g) {
-        if (!floorTarget_ || floorSize_ != g.size || floorFormat_ != g.format) {
+        if (!floorTarget_ || floorSize_ != g.size() || floorFormat_ != g.format()) {
             floorTarget_ = gl::Texture(GL_TEXTURE_2D);
-            glTextureStorage2D(floorTarget_.id(), 1, depthFormat(g.format), g.size, g.size);
+            glTextureStorage2D(floorTarget_.id(), 1, depthFormat(g.format()), g.size(), g.size());
             floorFbo_ = gl::Framebuffer();
             glNamedFramebufferTexture(floorFbo_.id(), GL_DEPTH_ATTACHMENT, floorTarget_.id(), 0);
             glNamedFramebufferDrawBuffer(floorFbo_.id(), GL_NONE);
-            floorSize_ = g.size;
-            floorFormat_ = g.format;
+            floorSize_ = g.size();
+            floorFormat_ = g.format();
         }
     }
 
@@ -826,7 +924,7 @@ private:
     const gl::Program& bindFloor(TechniqueHost& host, const Group& g) {
         ensureFloorTarget(g);
         glBindFramebuffer(GL_FRAMEBUFFER, floorFbo_.id());
-        glViewport(0, 0, g.size, g.size);
+        glViewport(0, 0, g.size(), g.size());
         return host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n"});
     }
@@ -872,7 +970,7 @@ private:
     // (each triangle to the faces it touches) or once per face they touch.
     void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView& view, PerLight& p) {
         const Group& g = groups_[p.group];
-        const bool packed = g.format == MapFormat::Rgba8;
+        const bool packed = g.format() == MapFormat::Rgba8;
         std::array<bool, 6> used{};
         std::array<TexelRect, 6> covered{};
         std::array<double, 6> faceTriangles{};
@@ -886,7 +984,7 @@ private:
                 if (mask & (1u << f)) {
                     used[f] = true;
                     faceTriangles[f] += triangles;
-                    covered[f] = covered[f].united(projectedRect(p.cubeCamera.faceClipFromWorld[f], frame.itemBounds[i], g.size));
+                    covered[f] = covered[f].united(projectedRect(p.cubeCamera.faceClipFromWorld[f], frame.itemBounds[i], g.size()));
                 }
         }
         upload(view);
@@ -898,7 +996,7 @@ private:
             for (int f = 0; f < 6; ++f) {
                 const auto face = static_cast<std::size_t>(f);
                 // Only texels that held casters or will: the rest is still clear.
-                const TexelRect r = p.faceDirty[face].clamped(g.size).united(covered[face]);
+                const TexelRect r = p.faceDirty[face].clamped(g.size()).united(covered[face]);
                 p.faceDirty[face] = covered[face];
                 if (r.empty()) continue;
                 glClearTexSubImage(g.depth.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, one);
@@ -911,7 +1009,7 @@ private:
         const bool onePass = p.options.cubePasses == MapCubePasses::One;
         const std::string defines = std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_CUBE_ONE_PASS " + (onePass ? "1" : "0") +
                                     "\n#define MAP_CUBE_CULL " + (p.options.faceCulling ? "1" : "0") + "\n";
-        glViewport(0, 0, g.size, g.size);
+        glViewport(0, 0, g.size(), g.size());
         if (onePass) {
             const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"},
                                                         {GL_GEOMETRY_SHADER, "shadow_map_cube.geom"},
@@ -984,8 +1082,8 @@ private:
         u.bias = glm::vec4(p.options.constantBias, 0.0f, 0.0f, p.options.normalBias);
         if (p.options.preset == MapPreset::LearnOpenGL && !p.cube) u.bias = glm::vec4(0.0f, 0.05f, 0.005f, 0.0f);
         // Dither spread: one texel (the lecture's 2.5 x 0.001 uv at 1024 texels, about 2.5 texels, with preset lecture).
-        const float spread = isLecture2D(p.options, light) ? 2.5f * 0.001f * static_cast<float>(g.size) : 1.0f;
-        u.taps = glm::vec4(1.0f / static_cast<float>(g.size), p.options.radius, static_cast<float>(p.options.samples), spread);
+        const float spread = isLecture2D(p.options, light) ? 2.5f * 0.001f * static_cast<float>(g.size()) : 1.0f;
+        u.taps = glm::vec4(1.0f / static_cast<float>(g.size()), p.options.radius, static_cast<float>(p.options.samples), spread);
         u.light = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), p.options.shadowedLight)
                                                          : glm::vec4(light.position, p.options.shadowedLight);
         // The light camera's view direction: minus the view matrix's third row.
@@ -998,8 +1096,8 @@ private:
             // The presets give their constant bias in world units (001, LearnOpenGL: 0.15).
             u.bias.x = presetBias ? p.options.constantBias / c.farPlane : p.options.constantBias;
             // The constant offset in the format's smallest steps.
-            const float step = g.format == MapFormat::Depth16 ? 1.0f / 65535.0f : g.format == MapFormat::Depth24 ? 1.0f / 16777215.0f : 1.0f / 16777216.0f;
-            u.cube = glm::vec4(c.farPlane, p.options.slopeBias, 2.0f / static_cast<float>(g.size), p.options.diskRadius);
+            const float step = g.format() == MapFormat::Depth16 ? 1.0f / 65535.0f : g.format() == MapFormat::Depth24 ? 1.0f / 16777215.0f : 1.0f / 16777216.0f;
+            u.cube = glm::vec4(c.farPlane, p.options.slopeBias, 2.0f / static_cast<float>(g.size()), p.options.diskRadius);
             u.cubeMore = glm::vec4(p.options.diskGrowth, p.options.offsetUnits * step, presetBias ? 1.0f : 0.0f, 0.0f);
         }
         for (std::size_t c = 0; c < p.cascades.size(); ++c) {
@@ -1012,6 +1110,7 @@ private:
         // PCSS: the light's size as the similar triangles take it.
         const float size = light.type == LightType::Directional ? std::tan(glm::radians(0.5f * light.size)) : light.size;
         u.pcss = glm::vec4(size, p.camera.nearPlane, p.camera.farPlane, static_cast<float>(p.options.blockerSamples));
+        u.moments = glm::vec4(p.options.bleedReduction, 0.0f, 0.0f, 0.0f);
         uniforms_ = u;
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
@@ -1021,6 +1120,7 @@ private:
     std::map<int, PerLight> lights_;
     gl::Sampler compareNearest_{gl::NoCreate}, compareLinear_{gl::NoCreate}, plainNearest_{gl::NoCreate};
     gl::Sampler compareNearestMip_{gl::NoCreate}, compareLinearMip_{gl::NoCreate}, plainNearestMip_{gl::NoCreate};
+    gl::Sampler momentLinear_{gl::NoCreate}, momentLinearMip_{gl::NoCreate};
     gl::Buffer ubo_{gl::NoCreate};
     shared::MapUniforms uniforms_{};  ///< what upload() last wrote
 };
@@ -1035,8 +1135,16 @@ TechniqueEntry mapTechnique() {
                     if (o.filter == MapFilter::Dither4)
                         return std::string("map: filter \"dither4\" is for 2D maps (directional and spot lights); a point light's cube takes none, hardware, grid, poisson or pcf20");
                     if (o.mipmaps) return std::string("map: mipmaps are for 2D maps (directional and spot lights), not a point light's cube");
+                    if (o.representation != MapRepresentation::Depth)
+                        return std::string("map: representation \"vsm\", \"evsm2\", \"evsm4\" and \"msm\" are for 2D maps (directional and spot lights), not a point light's cube");
                 } else if (o.filter == MapFilter::Pcf20 && o.preset == MapPreset::Default) {
                     return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
+                }
+                if (o.representation != MapRepresentation::Depth) {
+                    if (o.format == MapFormat::Rgba8) return std::string("map: moment maps have their own format (momentFormat); format \"rgba8\" packs depth only");
+                    if (o.filter != MapFilter::Hardware)
+                        return std::string("map: a moment map is filtered by its blur and bilinear lookups; filter must be \"hardware\" (the default)");
+                    if (o.preset != MapPreset::Default) return std::string("map: moment maps do not combine with a preset; use preset \"default\"");
                 }
                 if (o.cascades > 1) {
                     if (light.type != LightType::Directional)
