@@ -23,7 +23,10 @@ nlohmann::json lightRecord(const Light& light, const LightComparison& c,
                           {"meanAbsError", c.meanAbsError},
                           {"rmse", c.rmse},
                           {"umbraPixels", c.umbraPixels},
-                          {"leakedInUmbra", c.leakedInUmbra}};
+                          {"leakedInUmbra", c.leakedInUmbra},
+                          {"referencePenumbraPixels", c.referencePenumbraPixels},
+                          {"techniquePenumbraPixels", c.techniquePenumbraPixels},
+                          {"penumbraRatio", c.penumbraRatio()}};
     for (const auto& [key, path] : images) record[key] = path;
     return record;
 }

@@ -197,7 +197,7 @@ figcaption { font-size: 12px; color: #555; }
     h << "<h2>Time and error</h2>\n<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
          "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
          "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
-         "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>&times; hard map</th><th>front</th>"
+         "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>penumbra &times; truth</th><th>&times; hard map</th><th>front</th>"
       << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";
     int index = 0;
     for (const json& r : records) {
@@ -223,6 +223,7 @@ figcaption { font-size: 12px; color: #555; }
               << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
               << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4) << "</td><td>"
               << (l.contains("leakedInUmbra") ? percent(l["leakedInUmbra"]) : std::string("&ndash;")) << "</td><td>"
+              << (l.value("soft", false) && l.contains("penumbraRatio") ? fixed(l["penumbraRatio"], 2) : std::string("&ndash;")) << "</td><td>"
               << (r.contains("frameOverHardMap") ? fixed(r["frameOverHardMap"], 2) : std::string("&ndash;")) << "</td><td>"
               << (onFront(records, static_cast<std::size_t>(index)) ? "&#9679;" : "") << "</td>";
             if (flips && l.contains("flips"))

@@ -354,6 +354,10 @@ int runCompare(const CompareArgs& args) {
                   << "  misclassified, away from edges:    false shadow " << pct(l.falseShadowAwayFromEdges) << ", false lit "
                   << pct(l.falseLitAwayFromEdges) << " (" << l.edgePixels << " pixels in the 1-pixel edge band)\n"
                   << "  visibility error:                  MAE " << l.meanAbsError << ", RMSE " << l.rmse << "\n";
+        if (l.umbraPixels > 0) std::cout << "  light leaked into the umbra:       " << pct(l.leakedInUmbra) << " of the light (" << l.umbraPixels << " umbra pixels)\n";
+        if (l.soft)
+            std::cout << "  penumbra:                          " << l.techniquePenumbraPixels << " pixels against " << l.referencePenumbraPixels
+                      << " in truth (ratio " << l.penumbraRatio() << ")\n";
         const std::string index = std::to_string(i);
         written.push_back(dir / ("error-" + index + ".png"));
         writePng(written.back(), l.errorImage);

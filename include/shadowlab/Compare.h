@@ -48,6 +48,14 @@ struct LightComparison {
     /// umbraPixels (0 when there are none). What filterable maps' light
     /// bleeding costs (docs/metrics.md).
     double leakedInUmbra = 0.0;
+    /// Receivers in a penumbra (visibility strictly between 0.02 and 0.98),
+    /// by the reference and by the technique. Over the same shadow edges
+    /// their ratio is the penumbrae's width ratio (1: as wide as the truth;
+    /// a hard technique under a soft light: near 0).
+    std::size_t referencePenumbraPixels = 0, techniquePenumbraPixels = 0;
+    double penumbraRatio() const {
+        return referencePenumbraPixels ? static_cast<double>(techniquePenumbraPixels) / static_cast<double>(referencePenumbraPixels) : 0.0;
+    }
     double rmse = 0.0;            ///< root mean square of the same
     /// 0 = shadowed .. 65535 = lit, whole image. Also 0 where the light does not
     /// reach (background, outside a spot's cone, beyond range, facing away): `reach` tells them apart.

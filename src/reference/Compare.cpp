@@ -254,6 +254,9 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
                 const double e = static_cast<double>(technique[i]) - exact[i];
                 absSum += std::fabs(e);
                 sqSum += e * e;
+                const auto penumbra = [](float v) { return v > 0.02f && v < 0.98f; };
+                c.referencePenumbraPixels += penumbra(exact[i]);
+                c.techniquePenumbraPixels += penumbra(technique[i]);
                 if (exact[i] <= 0.0f && !edge[i]) {
                     ++c.umbraPixels;
                     leakSum += std::clamp(technique[i], 0.0f, 1.0f);
