@@ -586,7 +586,7 @@ public:
             // Casters that cannot reach the light's frustum are not drawn.
             std::size_t drawnHere = 0;
             host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
-                const bool inside = castsInto(camera, frame, i);
+                const bool inside = castsInto(camera, frame, i, g.hasMoments());
                 if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
                 return inside;
             });
@@ -947,15 +947,18 @@ private:
             clearFloor(host, !camera.perspective);
             const glm::mat4 lightClip = camera.clipFromWorld();
             glNamedBufferSubData(ubo_.id(), 0, sizeof lightClip, &lightClip);
-            host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i); });
+            host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i, groups_[p.group].hasMoments()); });
         }
     }
 
     // Whether item i is drawn into `camera`'s map: it may cast there, and
     // its bounds reach the frustum (an orthographic light's sides only: it
-    // clamps depth).
-    static bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i) {
-        if (!mayCast(camera, i)) return false;
+    // clamps depth). A moment map takes every caster in the frustum, the
+    // floors too: its filtered moments must hold the receivers' own depths
+    // beside the occluders', or an edge's blur would mix the occluder with
+    // the empty far plane and light the receiver under it.
+    static bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i, bool moments) {
+        if (!moments && !mayCast(camera, i)) return false;
         const glm::mat4 lightClip = camera.clipFromWorld();
         return !camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
     }
