@@ -12,6 +12,7 @@
 // vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal).
 #include "shadowlab_shared.h"
 #include "light_reach.h"
+#include "alpha_test.h"
 
 in vec3 vWorldPosition;
 in vec3 vWorldNormal;
@@ -82,6 +83,7 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 #endif
 
 void main() {
+    if (alphaCutOut(vUv)) discard;  // a hole in an alpha-tested surface: nothing drawn, no surface for the reference
     vec3 N = normalize(vWorldNormal);
     // Two-sided lighting: a back face seen by the camera is lit as its front.
     if (!gl_FrontFacing) N = -N;

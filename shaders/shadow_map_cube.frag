@@ -5,13 +5,16 @@
 // for window depth, which a written depth bypasses) and the constant
 // offset. Variant MAP_RGBA8 packs it into colour (002 §8.3.1).
 #include "shadow_map_shared.h"
+#include "alpha_test.h"
 
 in vec3 gCubeWorld;
+in vec2 gCubeUv;
 #if MAP_RGBA8
 layout(location = 0) out vec4 outPacked;
 #endif
 
 void main() {
+    if (alphaCutOut(gCubeUv)) discard;  // alpha-tested casters cast through their holes
     float distance = length(gCubeWorld - map.light.xyz);
     float slope = max(abs(dFdx(distance)), abs(dFdy(distance)));
     float depth = (distance + map.cube.y * slope) / map.cube.x + map.cubeMore.y;

@@ -10,7 +10,9 @@ layout(triangle_strip, max_vertices = 18) out;
 
 layout(location = 0) uniform uint faceMask;
 in vec3 vCubeWorld[];
+in vec2 vCubeUv[];
 out vec3 gCubeWorld;
+out vec2 gCubeUv;
 
 void main() {
     int first = 6 * int(map.params.x);
@@ -31,6 +33,7 @@ void main() {
             gl_Layer = first + f;
             gl_Position = c[k];
             gCubeWorld = vCubeWorld[k];
+            gCubeUv = vCubeUv[k];
             EmitVertex();
         }
         EndPrimitive();

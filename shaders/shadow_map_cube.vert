@@ -4,14 +4,22 @@
 #include "shadow_map_shared.h"
 
 layout(location = 0) in vec3 inPosition;
+layout(location = 2) in vec2 inUv;
 #if MAP_CUBE_ONE_PASS
 out vec3 vCubeWorld;
+out vec2 vCubeUv;
 #else
 layout(location = 1) uniform int face;
 out vec3 gCubeWorld;
+out vec2 gCubeUv;
 #endif
 
 void main() {
+#if MAP_CUBE_ONE_PASS
+    vCubeUv = inUv;
+#else
+    gCubeUv = inUv;
+#endif
     vec4 world = draw.worldFromObject * vec4(inPosition, 1.0);
 #if MAP_CUBE_ONE_PASS
     vCubeWorld = world.xyz;

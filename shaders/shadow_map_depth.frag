@@ -3,7 +3,9 @@
 // the cone is the circle inscribed in the square map, 002 §8.2.1.3),
 // MAP_MOMENTS (write the moments of depth, SL_MAP_MOMENTS_*).
 in vec2 vLightNdc;
+in vec2 vUv;
 #include "shadow_map_shared.h"
+#include "alpha_test.h"
 #if MAP_RGBA8
 layout(location = 0) out vec4 outPacked;
 #elif MAP_MOMENTS > 0
@@ -11,6 +13,7 @@ layout(location = 0) out vec4 outMoments;
 #endif
 
 void main() {
+    if (alphaCutOut(vUv)) discard;  // alpha-tested casters cast through their holes
 #if MAP_SPOT
     if (dot(vLightNdc, vLightNdc) > 1.0) discard;
 #endif

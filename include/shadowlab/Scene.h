@@ -44,6 +44,14 @@ struct ImageRGBA8 {
 /// Lit colour = globalAmbient*ambient*base
 ///            + sum_lights visibility * light * (diffuse*base*max(N.L,0)
 ///                                               + specular*max(N.H,0)^shininess)
+/// How a material's alpha (Material::alpha times the base-colour texture's
+/// alpha) decides where the surface is, as glTF's alphaMode.
+enum class AlphaMode {
+    Opaque, ///< "opaque": alpha ignored (default)
+    Mask,   ///< "mask": the surface is absent where alpha < alphaCutoff, for the camera, every shadow technique's map and the reference
+    Blend,  ///< "blend": glTF's translucent surfaces; for now drawn opaque and casting like "mask" at alphaCutoff
+};
+
 struct Material {
     std::string name;
     glm::vec3 baseColor{0.8f};   ///< linear RGB, default 0.8 grey
@@ -52,6 +60,11 @@ struct Material {
     glm::vec3 diffuse{1.0f};     ///< diffuse reflectance, multiplies baseColor; default 1
     glm::vec3 specular{0.2f};    ///< specular reflectance (not tinted); default 0.2
     float shininess = 32.0f;     ///< Blinn-Phong exponent, > 0; default 32
+    float alpha = 1.0f;          ///< the base colour's alpha factor, 0..1; default 1
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;    ///< mask: alpha below this is a hole, 0..1; default 0.5 (glTF's)
+    /// Whether alpha decides where the surface is (mask, blend).
+    bool alphaTested() const { return alphaMode != AlphaMode::Opaque; }
 };
 
 /// Per-light shadow settings (the scene file's `lights[i].shadow` block):

@@ -31,7 +31,55 @@ namespace shadowlab::reference {
 void RayTracer::DeviceDeleter::operator()(RTCDeviceTy* device) const { rtcReleaseDevice(device); }
 void RayTracer::SceneDeleter::operator()(RTCSceneTy* scene) const { rtcReleaseScene(scene); }
 
+struct RayTracer::AlphaCaster {
+    std::vector<glm::vec2> uvs;           ///< per vertex (empty: all (0, 0))
+    std::vector<std::uint32_t> indices;   ///< three per triangle, as the geometry's
+    float alpha = 1.0f, cutoff = 0.5f;
+    ImageRGBA8 textureCopy;               ///< the base-colour texture, owned
+    const ImageRGBA8* texture = nullptr;  ///< &textureCopy, or none
+
+    // The alpha the GPU reads at uv (alpha_test.h: textureLod level 0 of an
+    // RGBA8 texture, bilinear, repeating): the texels' alpha bytes / 255.
+    float textureAlpha(glm::vec2 uv) const {
+        const int w = texture->width, h = texture->height;
+        if (w <= 0 || h <= 0) return 1.0f;
+        const float x = uv.x * static_cast<float>(w) - 0.5f, y = uv.y * static_cast<float>(h) - 0.5f;
+        const float fx0 = std::floor(x), fy0 = std::floor(y);
+        const float fx = x - fx0, fy = y - fy0;
+        const auto at = [&](float xf, float yf) {
+            const long xi = ((static_cast<long>(xf) % w) + w) % w, yi = ((static_cast<long>(yf) % h) + h) % h;
+            return static_cast<float>(texture->pixels[(static_cast<std::size_t>(yi) * static_cast<std::size_t>(w) + static_cast<std::size_t>(xi)) * 4 + 3]) / 255.0f;
+        };
+        const float top = at(fx0, fy0) + fx * (at(fx0 + 1.0f, fy0) - at(fx0, fy0));
+        const float bottom = at(fx0, fy0 + 1.0f) + fx * (at(fx0 + 1.0f, fy0 + 1.0f) - at(fx0, fy0 + 1.0f));
+        return top + fy * (bottom - top);
+    }
+    // Whether the surface is there at barycentrics (u, v) of triangle `prim`.
+    bool solidAt(unsigned prim, float u, float v) const {
+        float a = alpha;
+        if (texture && !uvs.empty()) {
+            const std::size_t base = static_cast<std::size_t>(prim) * 3;
+            const glm::vec2 uv = (1.0f - u - v) * uvs[indices[base]] + u * uvs[indices[base + 1]] + v * uvs[indices[base + 2]];
+            a *= textureAlpha(uv);
+        } else if (texture) {
+            a *= textureAlpha(glm::vec2(0.0f));
+        }
+        return a >= cutoff;
+    }
+};
+
 namespace {
+
+// Embree's occlusion filter for an alpha-tested caster: a hit in one of its
+// holes is rejected, the ray goes on.
+void alphaFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* caster = static_cast<const RayTracer::AlphaCaster*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+        if (!caster->solidAt(prim, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i))) args->valid[i] = 0;
+    }
+}
 
 constexpr int kPacket = 16;
 
@@ -376,6 +424,24 @@ RayTracer::RayTracer(const Scene& scene) {
             vertices[3 * v + 2] = p.z;
         }
         std::copy_n(mesh.indices.begin(), triangles * 3, indices);
+        // An alpha-tested material: a hit where its alpha is under the
+        // cutoff does not occlude (the holes the GPU's alpha_test.h cuts).
+        const Material* material = item.material >= 0 && static_cast<std::size_t>(item.material) < scene.materials.size()
+                                       ? &scene.materials[static_cast<std::size_t>(item.material)] : nullptr;
+        if (material && material->alphaTested()) {
+            auto caster = std::make_unique<AlphaCaster>();
+            if (mesh.uvs.size() == mesh.positions.size()) caster->uvs = mesh.uvs;
+            caster->indices.assign(mesh.indices.begin(), mesh.indices.begin() + static_cast<long>(triangles * 3));
+            caster->alpha = material->alpha;
+            caster->cutoff = material->alphaCutoff;
+            if (material->baseColorTexture >= 0 && static_cast<std::size_t>(material->baseColorTexture) < scene.textures.size()) {
+                caster->textureCopy = scene.textures[static_cast<std::size_t>(material->baseColorTexture)];
+                caster->texture = &caster->textureCopy;
+            }
+            rtcSetGeometryUserData(geometry, caster.get());
+            rtcSetGeometryOccludedFilterFunction(geometry, &alphaFilter);
+            alphaCasters_.push_back(std::move(caster));
+        }
         rtcCommitGeometry(geometry);
         rtcAttachGeometry(rtcScene, geometry);
         rtcReleaseGeometry(geometry); // the scene holds its own reference

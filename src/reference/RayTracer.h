@@ -116,11 +116,18 @@ public:
     /// Triangles in the BVH (shadow casters only).
     std::size_t triangleCount() const;
 
+    /// What an alpha-tested caster's occlusion filter reads: its texture
+    /// coordinates per vertex and triangles, its material's alpha factor and
+    /// cutoff, and its base-colour texture (or none).
+    struct AlphaCaster;
+
 private:
     struct DeviceDeleter { void operator()(RTCDeviceTy* device) const; };
     struct SceneDeleter { void operator()(RTCSceneTy* scene) const; };
 
-    // Declaration order matters: the scene is released before its device.
+    // Declaration order matters: the scene is released before its device,
+    // and both before the filters' data they point to.
+    std::vector<std::unique_ptr<AlphaCaster>> alphaCasters_;
     std::unique_ptr<RTCDeviceTy, DeviceDeleter> device_;
     std::unique_ptr<RTCSceneTy, SceneDeleter> scene_;
     std::size_t triangleCount_ = 0;

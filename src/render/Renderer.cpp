@@ -113,6 +113,11 @@ struct Renderer::Impl final : TechniqueHost {
                 continue;
             if (perItem && !perItem(i)) continue;
             drawList.bind(i);
+            // An alpha-tested caster's holes come from its texture (alpha_test.h).
+            if (item.material >= 0) {
+                const Material& m = scene->materials[static_cast<std::size_t>(item.material)];
+                if (m.alphaTested() && m.baseColorTexture >= 0) glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
+            }
             if (topology == Topology::TrianglesAdjacency)
                 gpu->drawAdjacency(item.mesh, scene->meshes[static_cast<std::size_t>(item.mesh)]);
             else

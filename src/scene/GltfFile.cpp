@@ -377,9 +377,13 @@ private:
         Material m;
         m.name = src.name;
         const auto& pbr = src.pbrMetallicRoughness;
-        if (pbr.baseColorFactor.size() >= 3) // alpha ignored
+        if (pbr.baseColorFactor.size() >= 3)
             m.baseColor = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
                                     static_cast<float>(pbr.baseColorFactor[2]));
+        if (pbr.baseColorFactor.size() >= 4) m.alpha = std::clamp(static_cast<float>(pbr.baseColorFactor[3]), 0.0f, 1.0f);
+        // glTF's alphaMode (OPAQUE when absent or unknown) and alphaCutoff (0.5 by default).
+        m.alphaMode = src.alphaMode == "MASK" ? AlphaMode::Mask : src.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
+        if (std::isfinite(src.alphaCutoff)) m.alphaCutoff = std::clamp(static_cast<float>(src.alphaCutoff), 0.0f, 1.0f);
         const int tex = pbr.baseColorTexture.index;
         if (tex >= 0 && tex < static_cast<int>(gltf_.textures.size())) {
             const int source = gltf_.textures[tex].source;

@@ -450,7 +450,7 @@ public:
         r.requireObject();
         for (const auto& [name, _] : r.value().items()) {
             const Reader m = r.child(name);
-            m.checkKeys({"baseColor", "baseColorTexture", "ambient", "diffuse", "specular", "shininess"});
+            m.checkKeys({"baseColor", "baseColorTexture", "ambient", "diffuse", "specular", "shininess", "alpha", "alphaMode", "alphaCutoff"});
             Material mat;
             mat.name = name;
             mat.baseColor = m.color("baseColor", mat.baseColor);
@@ -458,6 +458,20 @@ public:
             mat.diffuse = m.color("diffuse", mat.diffuse);
             mat.specular = m.color("specular", mat.specular);
             mat.shininess = m.positive("shininess", mat.shininess);
+            for (const auto& [key, field] : {std::pair<const char*, float*>{"alpha", &mat.alpha}, {"alphaCutoff", &mat.alphaCutoff}})
+                if (m.has(key)) {
+                    const float v = m.child(key).number();
+                    if (!(v >= 0.0f && v <= 1.0f)) m.child(key).fail("expected a number in 0..1, got " + Reader::fmt(v));
+                    *field = v;
+                }
+            if (m.has("alphaMode")) {
+                const Reader a = m.child("alphaMode");
+                const std::string mode = a.string();
+                if (mode == "opaque") mat.alphaMode = AlphaMode::Opaque;
+                else if (mode == "mask") mat.alphaMode = AlphaMode::Mask;
+                else if (mode == "blend") mat.alphaMode = AlphaMode::Blend;
+                else a.fail("expected \"opaque\", \"mask\" or \"blend\", got \"" + text::escapeControl(mode) + "\"");
+            }
             if (m.has("baseColorTexture")) {
                 const Reader t = m.child("baseColorTexture");
                 scene_.textures.push_back(loadTexture(t, ctx_.baseDir / t.string()));

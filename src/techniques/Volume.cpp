@@ -85,6 +85,9 @@ public:
         for (std::size_t i = 0; i < frame.items.size(); ++i) {
             const DrawItem& item = frame.items[i];
             if (!any[i]) continue;
+            if (item.material >= 0 && frame.scene.materials[static_cast<std::size_t>(item.material)].alphaTested())
+                host.note("volume: material '" + frame.scene.materials[static_cast<std::size_t>(item.material)].name +
+                          "' is alpha-tested; shadow volumes follow geometry, so its whole surface casts (its holes need technique map)");
             const std::size_t edges = open_[static_cast<std::size_t>(item.mesh)].edges;
             if (edges == 0) continue;
             const Mesh& mesh = frame.scene.meshes[static_cast<std::size_t>(item.mesh)];
