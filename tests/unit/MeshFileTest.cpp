@@ -443,7 +443,7 @@ TEST_F(MeshFileTest, GltfHierarchyTranslationMaterialAndComputedNormals) {
   "nodes": [{"name": "parent", "translation": [1, 2, 3], "children": [1]},
             {"name": "child", "mesh": 0, "translation": [0, 1, 0],
              "rotation": [0, 0.70710678, 0, 0.70710678], "scale": [2, 2, 2]}],
-  "materials": [{"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.2, 0.5]}}])";
+  "materials": [{"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.2, 0.5]}, "alphaMode": "MASK", "alphaCutoff": 0.3}])";
     const fs::path p = write("scene.gltf", triangleGltf(dataUri(triangleBuffer().data), nodes, R"(, "material": 0)"));
     const ImportedModel model = shadowlab::loadMeshFile(p);
 
@@ -477,6 +477,9 @@ TEST_F(MeshFileTest, GltfHierarchyTranslationMaterialAndComputedNormals) {
     const shadowlab::Material& mat = model.materials[0];
     EXPECT_EQ(mat.name, "red");
     expectVec(mat.baseColor, {0.8f, 0.1f, 0.2f});
+    EXPECT_FLOAT_EQ(mat.alpha, 0.5f);  // the factor's fourth component
+    EXPECT_EQ(mat.alphaMode, shadowlab::AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(mat.alphaCutoff, 0.3f);
     EXPECT_EQ(mat.baseColorTexture, -1);
     const shadowlab::Material defaults;
     EXPECT_EQ(mat.specular, defaults.specular);
