@@ -104,15 +104,28 @@ std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const
     return out;
 }
 
-LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInput& in) {
+namespace {
+
+// A directional light's camera before its box: looking along `direction`
+// from the scene's centre moved back by its diagonal (every depth negative
+// in view space; fixed while the scene is), with the casters that matter
+// for what `in`'s camera sees.
+LightCamera directionalView(const glm::vec3& direction, const FitInput& in, const Bounds& scene, float diagonal) {
     LightCamera cam;
-    const Bounds scene = all(in);
     const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
-    const float diagonal = scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f);
-    // Light view: looking along `direction`, origin at the scene's centre
-    // moved back by the diagonal so every depth is negative in view space.
     cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, lightCameraUp(direction));
     cam.casts = castersThatMatter(glm::vec4(-direction, 0.0f), cam.viewFromWorld, in);
+    return cam;
+}
+
+float diagonalOf(const Bounds& scene) { return scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f); }
+
+} // namespace
+
+LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInput& in) {
+    const Bounds scene = all(in);
+    const float diagonal = diagonalOf(scene);
+    LightCamera cam = directionalView(direction, in, scene, diagonal);
     Bounds region; // light view space: x, y across the light, z = -distance from the eye
     if (fit == MapFit::Scene) {
         // The lecture's box: sides equal to the diagonal, centred on the scene.
@@ -198,13 +211,10 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     slice.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, near, far) * camera.viewFromWorld();
     if (!stabilize) return fitDirectional(direction, MapFit::Tight, slice);
 
-    LightCamera cam;
-    const Bounds scene = all(in);
-    const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
-    const float diagonal = scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f);
     // A view of fixed orientation and origin: it moves with neither the camera nor the slice.
-    cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, lightCameraUp(direction));
-    cam.casts = castersThatMatter(glm::vec4(-direction, 0.0f), cam.viewFromWorld, slice);
+    const Bounds scene = all(in);
+    const float diagonal = diagonalOf(scene);
+    LightCamera cam = directionalView(direction, slice, scene, diagonal);
     // The slice's bounding sphere, centred on the view axis where the near
     // and far corners are equally far (k: a corner's distance from the axis
     // per unit of depth), radius rounded up to 1/64 of a unit: it depends

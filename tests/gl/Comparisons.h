@@ -8,12 +8,13 @@
 
 namespace shadowlab::test {
 
-inline Comparison compareScene(const Scene& scene, int width = 960, int height = 540) {
+inline Comparison compareScene(const Scene& scene, int width = 960, int height = 540, int softSamples = 256) {
     Renderer renderer(glContext());
     renderer.upload(scene);
     CompareOptions options;
     options.width = width;
     options.height = height;
+    options.softSamples = softSamples;
     return compareWithReference(renderer, scene, options);
 }
 

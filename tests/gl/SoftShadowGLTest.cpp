@@ -2,6 +2,7 @@
 // PCSS (technique "map", filter "pcss") on the lecture scenes made soft,
 // and its penumbra growing with the distance from occluder to receiver.
 #include "GLTestContext.h"
+#include "Comparisons.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/SceneFile.h>
@@ -9,20 +10,11 @@
 #include <filesystem>
 
 using namespace shadowlab;
+using shadowlab::test::compareScene;
 using shadowlab::test::GLTest;
 namespace fs = std::filesystem;
 
 namespace {
-
-Comparison compareAt(const Scene& scene, int width, int height, int samples) {
-    Renderer renderer(test::glContext());
-    renderer.upload(scene);
-    CompareOptions options;
-    options.width = width;
-    options.height = height;
-    options.softSamples = samples;
-    return compareWithReference(renderer, scene, options);
-}
 
 // A point light of radius 0.5 at height 6 over the ground, a large sheet
 // whose edge runs along z over x = 0 at height h: the penumbra on the
@@ -81,8 +73,8 @@ TEST_F(SoftShadowGLTest, PcssMatchesTheAreaLightReferenceOnTheLectureScenes) {
         const std::vector<std::string> soft = {"lights[0].size=" + size, "lights[0].shadow.technique=\"map\""};
         std::vector<std::string> pcss = soft;
         pcss.push_back("lights[0].shadow.map.filter=\"pcss\"");
-        const Comparison withPcss = compareAt(loadSceneFile(path, pcss), 480, 270, 1024);
-        const Comparison hard = compareAt(loadSceneFile(path, soft), 480, 270, 256);
+        const Comparison withPcss = compareScene(loadSceneFile(path, pcss), 480, 270, 1024);
+        const Comparison hard = compareScene(loadSceneFile(path, soft), 480, 270, 256);
         ASSERT_TRUE(withPcss.lights[0].soft);
         EXPECT_LE(withPcss.lights[0].rmse, 0.05);
         EXPECT_LT(withPcss.lights[0].rmse, hard.lights[0].rmse);
@@ -97,7 +89,7 @@ TEST_F(SoftShadowGLTest, PcssPenumbraGrowsWithTheOccluderToReceiverDistance) {
     float previousReference = 0.0f, previousPcss = 0.0f;
     for (float h : {1.0f, 2.0f, 3.0f}) {
         SCOPED_TRACE("occluder at height " + std::to_string(h));
-        const Comparison c = compareAt(edgeScene(h, "pcss"), 480, 480, 1024);
+        const Comparison c = compareScene(edgeScene(h, "pcss"), 480, 480, 1024);
         const float reference = penumbraWidth(c, c.lights[0].referenceVisibility);
         const float pcss = penumbraWidth(c, c.lights[0].techniqueVisibility);
         ASSERT_LT(reference, 100.0f) << "the penumbra must be in view";
@@ -107,7 +99,7 @@ TEST_F(SoftShadowGLTest, PcssPenumbraGrowsWithTheOccluderToReceiverDistance) {
         EXPECT_NEAR(pcss, reference, 0.25f * reference);
         previousReference = reference;
         previousPcss = pcss;
-        const Comparison hard = compareAt(edgeScene(h, "hardware"), 480, 480, 64);
+        const Comparison hard = compareScene(edgeScene(h, "hardware"), 480, 480, 64);
         EXPECT_LT(penumbraWidth(hard, hard.lights[0].techniqueVisibility), 0.05f);
     }
 }
@@ -125,7 +117,7 @@ TEST_F(SoftShadowGLTest, Evsm4AndMsmLeakLessThanVsm) {
         auto leak = [&](const std::string& representation) {
             const Scene scene = loadSceneFile(path, {"lights[0].shadow.map.representation=\"" + representation + "\"",
                                                      "lights[0].shadow.map.blur=" + std::to_string(blur), "lights[0].shadow.map.size=1024"});
-            const LightComparison l = compareAt(scene, 480, 270, 1).lights[0];
+            const LightComparison l = compareScene(scene, 480, 270, 1).lights[0];
             EXPECT_GT(l.umbraPixels, 5000u) << "the umbra must be in view";
             return l.leakedInUmbra;
         };
@@ -148,7 +140,7 @@ TEST_F(SoftShadowGLTest, MomentMapsClassifyLikeDepthMapsAwayFromEdges) {
             const Scene scene = loadSceneFile(path, {"lights[0].shadow.technique=\"map\"",
                                                      std::string("lights[0].shadow.map.representation=\"") + representation + "\"",
                                                      std::string("lights[0].shadow.map.momentFormat=\"") + format + "\""});
-            const LightComparison l = compareAt(scene, 480, 270, 1).lights[0];
+            const LightComparison l = compareScene(scene, 480, 270, 1).lights[0];
             EXPECT_LE(l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges, 0.0005);
         }
 }
