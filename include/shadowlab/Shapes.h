@@ -25,5 +25,10 @@ Mesh cone(float radius, float height, int segments = 48);
 /// Square-based pyramid (as in the lecture scenes): base `baseWidth` x `baseWidth`
 /// at y = -height/2, apex at +height/2, flat-shaded (18 vertices).
 Mesh pyramid(float baseWidth, float height);
+/// A flat disc of `radius` in the XZ plane facing +Y (one-sided, like
+/// plane()), a fan of `segments` triangles around a vertex at the origin
+/// (the technique "disc" knows a disc by this and shadows with the exact
+/// circle of radius `radius`).
+Mesh disc(float radius, int segments = 128);
 
 } // namespace shadowlab::shapes

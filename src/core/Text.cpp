@@ -1,6 +1,7 @@
 #include "core/Text.h"
 
 #include <cstdint>
+#include <sstream>
 
 namespace shadowlab::text {
 
@@ -90,6 +91,18 @@ std::size_t jsonDepth(std::string_view json, std::size_t limit) {
         }
     }
     return deepest;
+}
+
+std::vector<std::string> splitNames(const std::string& list) {
+    std::vector<std::string> out;
+    std::stringstream s(list);
+    std::string name;
+    while (std::getline(s, name, ',')) {
+        const auto first = name.find_first_not_of(" \t");
+        const auto last = name.find_last_not_of(" \t");
+        if (first != std::string::npos) out.push_back(name.substr(first, last - first + 1));
+    }
+    return out;
 }
 
 } // namespace shadowlab::text

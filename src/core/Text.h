@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace shadowlab::text {
 
@@ -22,6 +23,10 @@ std::string escapeControl(std::string_view s);
 /// Byte offset of the first byte that is not part of valid UTF-8 (overlong
 /// forms, surrogates and code points past U+10FFFF are invalid), or npos.
 std::size_t invalidUtf8At(std::string_view s);
+
+/// The comma-separated names in `list`, each without surrounding blanks;
+/// empty entries dropped (an option's list of node names).
+std::vector<std::string> splitNames(const std::string& list);
 
 /// Deepest nesting of [ and { in JSON text, outside strings. Stops counting
 /// at `limit` + 1, so a hostile file is scanned once and never more.

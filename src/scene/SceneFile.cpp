@@ -549,12 +549,18 @@ private:
                 return type == "cylinder" ? shapes::cylinder(radius, height, segments) : shapes::cone(radius, height, segments);
             });
         }
+        if (type == "disc") {
+            r.checkKeys({"type", "radius", "segments"});
+            const float radius = r.positive("radius", 0.5f);
+            const int segments = r.integer("segments", 128, 3, kMaxSegments);
+            return build([&] { return shapes::disc(radius, segments); });
+        }
         if (type == "pyramid") {
             r.checkKeys({"type", "baseWidth", "height"});
             const float width = r.positive("baseWidth", 1.0f), height = r.positive("height", 1.0f);
             return build([&] { return shapes::pyramid(width, height); });
         }
-        r.child("type").fail("unknown shape '" + type + "' (expected plane, box, sphere, torus, cylinder, cone or pyramid)");
+        r.child("type").fail("unknown shape '" + type + "' (expected plane, disc, box, sphere, torus, cylinder, cone or pyramid)");
     }
 
     static glm::vec2 sizeOf2(const Reader& r) {

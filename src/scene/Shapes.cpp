@@ -112,6 +112,14 @@ Mesh plane(float width, float depth) {
     return std::move(b.mesh);
 }
 
+Mesh disc(float radius, int segments) {
+    requireSize("disc", "radius", radius);
+    requireSegments("disc", "segments", segments, 3);
+    Builder b("disc");
+    b.disc(radius, 0.0f, segments, true);
+    return std::move(b.mesh);
+}
+
 Mesh box(const glm::vec3& size) {
     requireSize("box", "size.x", size.x);
     requireSize("box", "size.y", size.y);

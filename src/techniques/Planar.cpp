@@ -11,6 +11,7 @@
 #include "techniques/Planar.h"
 
 #include "core/LightCamera.h"
+#include "core/Text.h"
 #include "techniques/Stencil.h"
 
 #include <shadowlab/Error.h>
@@ -53,18 +54,6 @@ glm::mat4 planeProjection(const glm::vec4& n, const glm::vec4& L) {
     return m;
 }
 
-std::vector<std::string> splitNames(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream s(text);
-    std::string name;
-    while (std::getline(s, name, ',')) {
-        const auto first = name.find_first_not_of(" \t");
-        const auto last = name.find_last_not_of(" \t");
-        if (first != std::string::npos) out.push_back(name.substr(first, last - first + 1));
-    }
-    return out;
-}
-
 struct Receiver {
     std::size_t item = 0;
     glm::vec4 plane{0.0f};  ///< oriented so that the light is on its positive side
@@ -87,7 +76,7 @@ public:
             const std::string at = "lights[" + std::to_string(index) + "].shadow.planar.receivers";
             // Which items are receiver planes: named nodes, or every planar receiving item.
             std::vector<std::size_t> chosen;
-            const std::vector<std::string> names = splitNames(o.receivers);
+            const std::vector<std::string> names = text::splitNames(o.receivers);
             if (names.empty()) {
                 for (std::size_t i = 0; i < frame.items.size(); ++i)
                     if (frame.items[i].receivesShadows && frame.itemPlanes[i]) chosen.push_back(i);

@@ -2,6 +2,7 @@
 #include "techniques/Registry.h"
 
 #include "gl/ShaderSource.h"
+#include "techniques/Disc.h"
 #include "techniques/Map.h"
 #include "techniques/None.h"
 #include "techniques/Planar.h"
@@ -23,6 +24,7 @@ std::vector<TechniqueEntry> builtIn() {
         mapTechnique(),
         planarTechnique(),
         volumeTechnique(),
+        discTechnique(),
     };
 }
 

@@ -1,0 +1,59 @@
+// Technique "disc" (issue 18, lecture 002 exercise 8.6.2-1): flat discs'
+// shadows computed exactly in the light pass, without a shadow pass, match
+// the ray-traced reference (the discs as 256-gons: their rims stay within
+// the 1-pixel band here) with no misclassified pixel outside the band,
+// whatever the discs' orientation and scale and the light's type.
+#include "GLTestContext.h"
+#include "Comparisons.h"
+
+#include <shadowlab/Error.h>
+#include <shadowlab/SceneFile.h>
+
+#include <filesystem>
+
+using namespace shadowlab;
+using shadowlab::test::awayFromEdges;
+using shadowlab::test::compareScene;
+using shadowlab::test::GLTest;
+namespace fs = std::filesystem;
+
+namespace {
+const fs::path kDiscs = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "discs.json";
+} // namespace
+
+class DiscGLTest : public GLTest {};
+
+TEST_F(DiscGLTest, DiscShadowsAreExactUnderEveryKindOfLight) {
+    for (const char* light : {"", R"(lights[0]={"type": "spot", "position": [1, 7, 1], "direction": [0, -1, 0], "outerCone": 60, "shadow": {"technique": "disc"}})",
+                              R"(lights[0]={"type": "point", "position": [1, 7, 1], "shadow": {"technique": "disc"}})"}) {
+        SCOPED_TRACE(light);
+        const Scene scene = loadSceneFile(kDiscs, *light ? std::vector<std::string>{light} : std::vector<std::string>{});
+        const Comparison c = compareScene(scene);
+        ASSERT_GT(c.lights[0].referenceShadowedPixels, 10000u) << "the five discs' shadows must be in view";
+        EXPECT_EQ(awayFromEdges(c.lights[0]), 0.0);
+    }
+}
+
+// Only the named discs cast; a named node that is no disc, or no node at
+// all, is an error naming the option.
+TEST_F(DiscGLTest, CastersNamesTheDiscs) {
+    const Comparison all = compareScene(loadSceneFile(kDiscs), 480, 270);
+    const Comparison one = compareScene(loadSceneFile(kDiscs, {"lights[0].shadow.disc.casters=\"ufo 1\""}), 480, 270);
+    EXPECT_EQ(one.lights[0].referenceShadowedPixels, all.lights[0].referenceShadowedPixels);  // the reference sees every disc...
+    EXPECT_GT(one.lights[0].falseLitAwayFromEdges, 0.01);                                     // ...the technique only ufo 1
+    EXPECT_EQ(awayFromEdges(all.lights[0]), 0.0);
+    EXPECT_EQ(one.lights[0].falseShadow, 0.0);
+    for (const auto& [setting, message] : {std::pair<std::string, std::string>{"lights[0].shadow.disc.casters=\"ground\"",
+                                                                                "lights[0].shadow.disc.casters: node 'ground' is not a disc shape"},
+                                           {"lights[0].shadow.disc.casters=\"ufo 9\"", "lights[0].shadow.disc.casters: no node named 'ufo 9'"}}) {
+        const Scene scene = loadSceneFile(kDiscs, {setting});
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        try {
+            renderer.render(scene);
+            ADD_FAILURE() << "no error for " << setting;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()), message);
+        }
+    }
+}
