@@ -69,6 +69,12 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
 // UNORM step and the four channels give 32 bits of depth.
 vec4 packDepth(float d) {
     if (d >= 1.0) return vec4(1.0);
+#if defined(MAP_R8) && MAP_R8
+    // r8: one byte, rounded up, so a caster never shadows its own surface
+    // (lecture 002 exercise 8.6.2-1, variation 2: casters nearer the light
+    // than anything they shadow need no more).
+    return vec4(ceil(d * 255.0) / 255.0, 0.0, 0.0, 1.0);
+#endif
     const vec4 shift = vec4(1.0, 255.0, 255.0 * 255.0, 255.0 * 255.0 * 255.0);
     const vec4 mask = vec4(1.0 / 255.0, 1.0 / 255.0, 1.0 / 255.0, 0.0);
     vec4 res = fract(d * shift);
@@ -76,7 +82,13 @@ vec4 packDepth(float d) {
     return res;
 }
 // Its inverse.
-float unpackDepth(vec4 v) { return dot(v, vec4(1.0, 1.0 / 255.0, 1.0 / 65025.0, 1.0 / 16581375.0)); }
+float unpackDepth(vec4 v) {
+#if defined(MAP_R8) && MAP_R8
+    return v.r;
+#else
+    return dot(v, vec4(1.0, 1.0 / 255.0, 1.0 / 65025.0, 1.0 / 16581375.0));
+#endif
+}
 
 // Cascades (MAP_CASCADES > 1, defined by every program that includes this
 // with the map block): the view depth of a world point, and the slice it

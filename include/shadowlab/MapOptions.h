@@ -17,6 +17,7 @@ enum class MapFormat {
     Depth24,  ///< "depth24": DEPTH_COMPONENT24
     Depth32F, ///< "depth32f": DEPTH_COMPONENT32F (default)
     Rgba8,    ///< "rgba8": depth packed into an RGBA8 colour target (002 §8.3.1), compared in the shader
+    R8,       ///< "r8": 8 bits of depth (rounded up) in an R8 colour target: enough when every caster is nearer the light than what it shadows (002 exercise 8.6.2-1, variation 2)
 };
 
 enum class MapFit {

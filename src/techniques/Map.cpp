@@ -32,8 +32,8 @@ const OptionTable& mapOptionTable() {
     static const OptionTable table =
         OptionTableFor<MapOptions>("map")
             .integer(&MapOptions::size, "size", 16, 16384, "texels", "side of the square shadow map")
-            .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8"},
-                    "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1)")
+            .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
+                    "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene"},
                     "light camera: around what the viewer sees and the casters over it, or around the whole scene")
             .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson", "pcf20", "pcss"},
@@ -91,9 +91,19 @@ GLenum depthFormat(MapFormat f) {
     case MapFormat::Depth16: return GL_DEPTH_COMPONENT16;
     case MapFormat::Depth24: return GL_DEPTH_COMPONENT24;
     case MapFormat::Depth32F: return GL_DEPTH_COMPONENT32F;
-    case MapFormat::Rgba8: return GL_DEPTH_COMPONENT24;  // the depth test's own buffer; the map is the colour
+    case MapFormat::Rgba8:
+    case MapFormat::R8: return GL_DEPTH_COMPONENT24;  // the depth test's own buffer; the map is the colour
     }
     return GL_DEPTH_COMPONENT32F;
+}
+
+// Whether the map is depth packed into a colour target (rgba8's four
+// base-255 digits, or r8's one), compared in the shader.
+bool isPacked(MapFormat f) { return f == MapFormat::Rgba8 || f == MapFormat::R8; }
+
+// The shader defines of a packed format.
+std::string packDefines(MapFormat f) {
+    return std::string("#define MAP_RGBA8 ") + (isPacked(f) ? "1" : "0") + "\n#define MAP_R8 " + (f == MapFormat::R8 ? "1" : "0") + "\n";
 }
 
 // Texels around the fitted region that the filter may read.
@@ -291,6 +301,22 @@ struct GroupKey {
 };
 
 // Moments stored per texel: 0 for depth maps.
+int momentCount(MapRepresentation r);
+
+// Whether the group's depth-test buffer is one layer shared by all its
+// lights (r8 2D maps: each pass clears it first), not a layer per map.
+bool sharedDepthBuffer(const GroupKey& key) { return key.format == MapFormat::R8 && !key.cube; }
+
+// Bytes a texel of one map layer takes: its depth (the map itself for
+// depth formats; the depth test's buffer for rgba8 and moments, r8 shares
+// one), a packed format's colour, the moments.
+double texelBytes(const GroupKey& key) {
+    const double depth = sharedDepthBuffer(key) ? 0.0 : key.format == MapFormat::Depth16 ? 2.0 : 4.0;  // depth24 is stored in 4 bytes
+    const double colour = key.format == MapFormat::Rgba8 ? 4.0 : key.format == MapFormat::R8 ? 1.0 : 0.0;
+    return depth + colour + momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
+}
+
+// Moments stored per texel: 0 for depth maps.
 int momentCount(MapRepresentation r) { return r == MapRepresentation::Depth ? 0 : r == MapRepresentation::Vsm || r == MapRepresentation::Evsm2 ? 2 : 4; }
 GLenum momentFormatOf(const GroupKey& k) {
     const bool half = k.momentFormat == MapMomentFormat::Rgba16f;
@@ -444,9 +470,8 @@ public:
         for (const auto& wanted : layersWanted) {
             const GroupKey& key = wanted.first;
             const int perLight = key.cube ? 6 : 1;
-            const double texel = (key.format == MapFormat::Depth16 ? 2.0 : key.format == MapFormat::Rgba8 ? 8.0 : 4.0) +
-                                 momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
-            bytes += texel * static_cast<double>(key.size) * static_cast<double>(key.size) * wanted.second * perLight;
+            bytes += texelBytes(key) * static_cast<double>(key.size) * static_cast<double>(key.size) * wanted.second * perLight +
+                     (sharedDepthBuffer(key) ? 4.0 * static_cast<double>(key.size) * static_cast<double>(key.size) : 0.0);
             if (wanted.second * perLight > host.glInfo().maxArrayLayers)
                 throw Error("lights[" + std::to_string(lights[0]) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
                             " map layers in one array (" + (perLight == 6 ? std::to_string(wanted.second) + " point light(s), six each" : "lights and cascades") +
@@ -474,12 +499,13 @@ public:
             g.generation = ++generations_;
             const int size = key.size;
             const int levels = key.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(size)))) : 1;
-            const bool colour = key.format == MapFormat::Rgba8 || g.hasMoments();  // the depth array only serves the depth test
+            const bool colour = isPacked(key.format) || g.hasMoments();  // the depth array only serves the depth test
             g.depth = gl::Texture(g.target());
-            glTextureStorage3D(g.depth.id(), colour ? 1 : levels, depthFormat(key.format), size, size, layers * g.layersPerLight());
-            if (key.format == MapFormat::Rgba8) {
+            glTextureStorage3D(g.depth.id(), colour ? 1 : levels, depthFormat(key.format), size, size,
+                               sharedDepthBuffer(key) ? 1 : layers * g.layersPerLight());
+            if (isPacked(key.format)) {
                 g.packed = gl::Texture(g.target());
-                glTextureStorage3D(g.packed.id(), levels, GL_RGBA8, size, size, layers * g.layersPerLight());
+                glTextureStorage3D(g.packed.id(), levels, key.format == MapFormat::R8 ? GL_R8 : GL_RGBA8, size, size, layers * g.layersPerLight());
             }
             if (g.hasMoments()) {
                 g.moments = gl::Texture(g.target());
@@ -550,11 +576,11 @@ public:
         }
         const PerLight& p = lights_.at(view.index);
         const Group& g = groups_[p.group];
-        const bool packed = g.format() == MapFormat::Rgba8;
+        const bool packed = isPacked(g.format());
         upload(view);
         const gl::Program& program = host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
-             std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_SPOT " + (p.spot ? "1" : "0") + "\n#define MAP_MOMENTS " +
+             packDefines(g.format()) + "#define MAP_SPOT " + (p.spot ? "1" : "0") + "\n#define MAP_MOMENTS " +
                  std::to_string(static_cast<int>(g.key.representation)) + "\n" + momentDefines(g.key.momentFormat)});
         std::size_t drawn = 0;
         const std::span<const LightCamera> cameras = p.cameras();
@@ -595,6 +621,8 @@ public:
             if (g.hasMoments() && p.options.blur > 0) blurLayer(host, g, p.layer + static_cast<int>(c), p.options.blur, fbo);
         }
         host.count("triangles", static_cast<double>(drawn));
+        // The memory of this light's layers (the map the light pass reads and what its pass needs beside it).
+        host.count("mapBytes", texelBytes(g.key) * static_cast<double>(g.size()) * static_cast<double>(g.size()) * static_cast<double>(cameras.size()));
         if (g.mipmaps()) {
             // Every level from the map: averaged depths or moments (of all layers; each light's pass refreshes them).
             const auto scope = host.timeScope("mipmaps");
@@ -606,7 +634,7 @@ public:
     std::string lightPassDefines(const Light& light) const override {
         const MapOptions o = effective(light);
         return "#define MAP_FILTER " + std::to_string(static_cast<int>(o.filter)) + "\n#define MAP_KERNEL " +
-               std::to_string(o.kernel) + "\n#define MAP_RGBA8 " + (o.format == MapFormat::Rgba8 ? "1" : "0") +
+               std::to_string(o.kernel) + "\n" + packDefines(o.format) +
                "\n#define MAP_GRID_BILINEAR " + (bilinearGrid(o) ? "1" : "0") + "\n#define MAP_CUBE " + (isCube(light) ? "1" : "0") +
                "\n#define MAP_CASCADES " + std::to_string(cascadeCount(light, o)) + "\n#define MAP_MOMENTS " +
                std::to_string(isCube(light) ? 0 : static_cast<int>(o.representation)) + "\n" + momentDefines(o.momentFormat);
@@ -619,7 +647,7 @@ public:
         if (p.cube) {
             // Filters read across face edges (the test with a plane over the seams).
             glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-            const bool packed = g.format() == MapFormat::Rgba8;
+            const bool packed = isPacked(g.format());
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
             const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss;
             glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? plainNearest_.id() : linear ? compareLinear_.id() : compareNearest_.id());
@@ -629,7 +657,7 @@ public:
         if (g.hasMoments()) {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.moments.id());
             glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? momentLinearMip_.id() : momentLinear_.id());
-        } else if (g.format() == MapFormat::Rgba8) {
+        } else if (isPacked(g.format())) {
             glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
             glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? plainNearestMip_.id() : plainNearest_.id());
         } else {
@@ -646,7 +674,7 @@ public:
     // PCSS's blocker search reads the stored depths themselves: the same
     // depth array on the next unit through a sampler without comparison.
     void bindRawDepth(const PerLight& p, const Group& g) const {
-        if (p.options.filter != MapFilter::Pcss || g.format() == MapFormat::Rgba8) return;
+        if (p.options.filter != MapFilter::Pcss || isPacked(g.format())) return;
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, g.depth.id());
         glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps() ? plainNearestMip_.id() : plainNearest_.id());
     }
@@ -762,7 +790,7 @@ private:
 
     // One layer of a group's array (a 2D map, or one face of a cube) as
     // stored depths in 0..1: read back, or unpacked from rgba8's base-255
-    // digits (the 4th is below float precision here).
+    // digits (the 4th is below float precision here) or r8's one byte.
     std::vector<float> readLayer(const Group& g, int layer) const {
         const std::size_t n = static_cast<std::size_t>(g.size()) * static_cast<std::size_t>(g.size());
         std::vector<float> depth(n);
@@ -771,6 +799,10 @@ private:
             glGetTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_RGBA, GL_UNSIGNED_BYTE,
                                  static_cast<GLsizei>(rgba.size()), rgba.data());
             for (std::size_t i = 0; i < n; ++i) depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65025.0f + rgba[4 * i + 2] / 16581375.0f;
+        } else if (g.format() == MapFormat::R8) {
+            std::vector<std::uint8_t> r(n);
+            glGetTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_RED, GL_UNSIGNED_BYTE, static_cast<GLsizei>(n), r.data());
+            for (std::size_t i = 0; i < n; ++i) depth[i] = r[i] / 255.0f;
         } else {
             glGetTextureSubImage(g.depth.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                                  static_cast<GLsizei>(n * sizeof(float)), depth.data());
@@ -828,7 +860,7 @@ private:
                               (p.cascades.empty() ? static_cast<bool>(p.fbo) : p.cascadeFbos.size() == p.cascades.size());
         if (attached) return;
         if (!p.fbo || p.attachedGeneration != g.generation) p.fbo = gl::Framebuffer();
-        const bool packed = g.format() == MapFormat::Rgba8;
+        const bool packed = isPacked(g.format());
         // The colour the pass writes: depth packed into RGBA8, or moments.
         const GLuint colour = packed ? g.packed.id() : g.hasMoments() ? g.moments.id() : 0;
         auto attachOne = [&](gl::Framebuffer& fbo, int layer, const char* what) {
@@ -836,7 +868,7 @@ private:
                 glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0);
                 if (colour) glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0);
             } else {
-                glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, layer);
+                glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, sharedDepthBuffer(g.key) ? 0 : layer);
                 if (colour) glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0, layer);
             }
             glNamedFramebufferDrawBuffer(fbo.id(), colour ? GL_COLOR_ATTACHMENT0 : GL_NONE);
@@ -866,7 +898,7 @@ private:
     std::uint64_t generations_ = 0;
 
     bool bilinearGrid(const MapOptions& o) const {
-        return o.format != MapFormat::Rgba8 &&
+        return !isPacked(o.format) &&
                (o.gridTaps == MapGridTaps::Bilinear || (o.gridTaps == MapGridTaps::Auto && !software_));
     }
     bool software_ = false;
@@ -926,7 +958,7 @@ private:
         glBindFramebuffer(GL_FRAMEBUFFER, floorFbo_.id());
         glViewport(0, 0, g.size(), g.size());
         return host.program(
-            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n"});
+            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, "#define MAP_RGBA8 0\n#define MAP_SPOT 0\n#define MAP_MOMENTS 0\n"});
     }
 
     // Clears the floor's target (all writes on), then leaves depth-only writes.
@@ -973,7 +1005,7 @@ private:
     // (each triangle to the faces it touches) or once per face they touch.
     void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView& view, PerLight& p) {
         const Group& g = groups_[p.group];
-        const bool packed = g.format() == MapFormat::Rgba8;
+        const bool packed = isPacked(g.format());
         std::array<bool, 6> used{};
         std::array<TexelRect, 6> covered{};
         std::array<double, 6> faceTriangles{};
@@ -1010,7 +1042,7 @@ private:
         state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
         host.apply(state);
         const bool onePass = p.options.cubePasses == MapCubePasses::One;
-        const std::string defines = std::string("#define MAP_RGBA8 ") + (packed ? "1" : "0") + "\n#define MAP_CUBE_ONE_PASS " + (onePass ? "1" : "0") +
+        const std::string defines = packDefines(g.format()) + "#define MAP_CUBE_ONE_PASS " + (onePass ? "1" : "0") +
                                     "\n#define MAP_CUBE_CULL " + (p.options.faceCulling ? "1" : "0") + "\n";
         glViewport(0, 0, g.size(), g.size());
         if (onePass) {
@@ -1144,7 +1176,7 @@ TechniqueEntry mapTechnique() {
                     return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
                 }
                 if (o.representation != MapRepresentation::Depth) {
-                    if (o.format == MapFormat::Rgba8) return std::string("map: moment maps have their own format (momentFormat); format \"rgba8\" packs depth only");
+                    if (isPacked(o.format)) return std::string("map: moment maps have their own format (momentFormat); formats \"rgba8\" and \"r8\" pack depth only");
                     if (o.filter != MapFilter::Hardware)
                         return std::string("map: a moment map is filtered by its blur and bilinear lookups; filter must be \"hardware\" (the default)");
                     if (o.preset != MapPreset::Default) return std::string("map: moment maps do not combine with a preset; use preset \"default\"");

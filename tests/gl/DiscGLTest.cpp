@@ -57,3 +57,27 @@ TEST_F(DiscGLTest, CastersNamesTheDiscs) {
         }
     }
 }
+
+// Variation 2: casters that are always nearer the light than what they
+// shadow need few depth bits. Format r8 keeps one byte a texel (rounded up:
+// no caster shadows itself) and matches the reference on the discs as the
+// 32-bit map does (0 outside the band), in a quarter of its memory (the
+// shadow pass's mapBytes; the depth test's buffer is one layer shared by
+// every r8 map).
+TEST_F(DiscGLTest, AnEightBitMapSufficesForCastersNearerTheLight) {
+    double bytes[2] = {0.0, 0.0};
+    int k = 0;
+    for (const char* format : {"depth32f", "r8"}) {
+        SCOPED_TRACE(format);
+        const Scene scene = loadSceneFile(kDiscs, {"lights[0].shadow.technique=\"map\"", "lights[0].shadow.map.filter=\"none\"",
+                                                   std::string("lights[0].shadow.map.format=\"") + format + "\""});
+        EXPECT_EQ(awayFromEdges(compareScene(scene).lights[0]), 0.0);
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        for (const auto& [name, value] : renderer.render(scene).counters)
+            if (name == "shadow[0].mapBytes") bytes[k] = value;
+        ++k;
+    }
+    EXPECT_EQ(bytes[0], 4.0 * 2048 * 2048);
+    EXPECT_EQ(bytes[1], 1.0 * 2048 * 2048);
+}
