@@ -212,13 +212,27 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
 // The filtered test at map point `uv` for reference depth `ref`, in layer mapLayer.
 float mapFilter(vec2 uv, float ref);
 
+// Translucent casters (alphaMode blend): the layer's transmittance and the
+// nearest translucent depth (shadow_map_transmit.frag); a receiver behind
+// that depth gets the light through them, coloured.
+layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform sampler2DArray mapTransmitColour;
+layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform sampler2DArray mapTransmitDepth;
+vec3 mapTransmit = vec3(1.0);  // of the last mapTest (the cascade in use)
+vec3 transmittanceAt(vec2 uv, float ref) {
+    if (map.transmit.x < 0.5) return vec3(1.0);
+    float nearest = texture(mapTransmitDepth, vec3(uv, mapLayer)).r;
+    return ref > nearest ? texture(mapTransmitColour, vec3(uv, mapLayer)).rgb : vec3(1.0);
+}
+
 // The test in a map, at texture-space point s (before the divide).
 float mapTest(vec4 s, float NdotL) {
     if (s.w <= 0.0) return 1.0;
     s.xyz /= s.w;
     // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return 1.0;
-    return mapFilter(s.xy, s.z - map.bias.x - max(map.bias.y * (1.0 - NdotL), map.bias.z));
+    float ref = s.z - map.bias.x - max(map.bias.y * (1.0 - NdotL), map.bias.z);
+    mapTransmit = transmittanceAt(s.xy, ref);
+    return mapFilter(s.xy, ref);
 }
 
 #if MAP_CASCADES > 1
@@ -461,5 +475,9 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     // shadowedLight > 0; compare reads the test itself (OUTPUT_VISIBILITY).
     v = mix(map.light.w, 1.0, v);
 #endif
+#if MAP_CUBE
     return vec3(v);
+#else
+    return v * mapTransmit;  // coloured by the translucent casters in the way
+#endif
 }

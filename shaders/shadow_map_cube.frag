@@ -14,7 +14,7 @@ layout(location = 0) out vec4 outPacked;
 #endif
 
 void main() {
-    if (alphaCutOut(gCubeUv)) discard;  // alpha-tested casters cast through their holes
+    if (alphaCutOut(gCubeUv) || translucentSurface()) discard;  // holes; translucent casters cast no depth
     float distance = length(gCubeWorld - map.light.xyz);
     float slope = max(abs(dFdx(distance)), abs(dFdy(distance)));
     float depth = (distance + map.cube.y * slope) / map.cube.x + map.cubeMore.y;

@@ -13,7 +13,7 @@ layout(location = 0) out vec4 outMoments;
 #endif
 
 void main() {
-    if (alphaCutOut(vUv)) discard;  // alpha-tested casters cast through their holes
+    if (alphaCutOut(vUv) || translucentSurface()) discard;  // holes; translucent casters go to the transmittance map
 #if MAP_SPOT
     if (dot(vLightNdc, vLightNdc) > 1.0) discard;
 #endif

@@ -52,6 +52,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     SL_MAP_VEC4 pcss;     // x the light's size for filter pcss (directional: tan of half its angular diameter; spot, point: its radius, scene units), y near, z far plane of the light camera, w pcss's blocker-search taps
     SL_MAP_VEC4 blur;     // moment maps' blur passes: x radius (texels), y axis (0 across, 1 down), z the layer blurred, w unused
     SL_MAP_VEC4 moments;  // moment maps: x light-bleeding reduction, yzw unused
+    SL_MAP_VEC4 transmit; // x 1 when the transmittance layers hold translucent casters (2D maps), yzw unused
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

@@ -62,7 +62,7 @@ SL_BLOCK(DrawUniforms, SL_BINDING_DRAW, draw) {
     SL_VEC4 ambient;          // rgb
     SL_VEC4 diffuse;          // rgb
     SL_VEC4 specular;         // rgb, w = shininess
-    SL_VEC4 alpha;            // x the base colour's alpha factor, y cutoff, z 1 when alpha decides where the surface is (mask, blend), w 1 with a base-colour texture
+    SL_VEC4 alpha;            // x the base colour's alpha factor, y cutoff, z the AlphaMode (0 opaque, 1 mask, 2 blend), w 1 with a base-colour texture
 } SL_END_BLOCK(draw)
 
 #ifdef __cplusplus

@@ -26,7 +26,9 @@ nlohmann::json lightRecord(const Light& light, const LightComparison& c,
                           {"leakedInUmbra", c.leakedInUmbra},
                           {"referencePenumbraPixels", c.referencePenumbraPixels},
                           {"techniquePenumbraPixels", c.techniquePenumbraPixels},
-                          {"penumbraRatio", c.penumbraRatio()}};
+                          {"penumbraRatio", c.penumbraRatio()},
+                          {"coloured", c.coloured},
+                          {"rmseRgb", {c.rmseRgb[0], c.rmseRgb[1], c.rmseRgb[2]}}};
     for (const auto& [key, path] : images) record[key] = path;
     return record;
 }

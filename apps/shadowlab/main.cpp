@@ -354,6 +354,8 @@ int runCompare(const CompareArgs& args) {
                   << "  misclassified, away from edges:    false shadow " << pct(l.falseShadowAwayFromEdges) << ", false lit "
                   << pct(l.falseLitAwayFromEdges) << " (" << l.edgePixels << " pixels in the 1-pixel edge band)\n"
                   << "  visibility error:                  MAE " << l.meanAbsError << ", RMSE " << l.rmse << "\n";
+        if (l.coloured)
+            std::cout << "  coloured light, RMSE per channel:  red " << l.rmseRgb[0] << ", green " << l.rmseRgb[1] << ", blue " << l.rmseRgb[2] << "\n";
         if (l.umbraPixels > 0) std::cout << "  light leaked into the umbra:       " << pct(l.leakedInUmbra) << " of the light (" << l.umbraPixels << " umbra pixels)\n";
         if (l.soft)
             std::cout << "  penumbra:                          " << l.techniquePenumbraPixels << " pixels against " << l.referencePenumbraPixels

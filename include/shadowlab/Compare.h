@@ -57,6 +57,13 @@ struct LightComparison {
         return referencePenumbraPixels ? static_cast<double>(techniquePenumbraPixels) / static_cast<double>(referencePenumbraPixels) : 0.0;
     }
     double rmse = 0.0;            ///< root mean square of the same
+    /// The same per channel (red, green, blue): light through translucent
+    /// casters arrives coloured (both sides' RGB transmittance; equal to
+    /// rmse in every channel without them).
+    double rmseRgb[3] = {0.0, 0.0, 0.0};
+    /// Whether the reference's light arrives coloured anywhere (a receiver
+    /// whose channels differ): translucent casters in the way.
+    bool coloured = false;
     /// 0 = shadowed .. 65535 = lit, whole image. Also 0 where the light does not
     /// reach (background, outside a spot's cone, beyond range, facing away): `reach` tells them apart.
     ImageGray16 referenceVisibility;

@@ -74,8 +74,10 @@ struct ComparisonJob::Impl {
     std::vector<reference::SurfaceSample> samples;
     std::vector<Extension> extensions;
     std::vector<reference::SurfaceSample> extensionSamples;
-    std::vector<std::vector<float>> techniqueVisibility;  ///< per light, read back with the technique's frame
+    std::vector<std::vector<float>> techniqueVisibility;  ///< per light, read back with the technique's frame: the mean of...
+    std::vector<std::vector<glm::vec3>> techniqueRgb;     ///< ...its channels
     std::vector<std::vector<float>> truth, extensionTruth;
+    std::vector<std::vector<glm::vec3>> truthRgb;
     std::atomic<std::size_t> samplesDone{0};
     std::atomic<bool> cancelled{false};
     bool traced = false;
@@ -119,7 +121,12 @@ ComparisonJob::ComparisonJob(Renderer& renderer, const Scene& scene, const Compa
     out.technique = renderer.readColor();
     out.surfaces = renderer.readSurfaces();
     // The technique's own visibility per light.
-    for (std::size_t l = 0; l < scene.lights.size(); ++l) d.techniqueVisibility.push_back(renderer.readVisibility(scene, l));
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+        d.techniqueRgb.push_back(renderer.readVisibilityRgb(scene, l));
+        std::vector<float> mean(d.techniqueRgb.back().size());
+        for (std::size_t i = 0; i < mean.size(); ++i) mean[i] = (d.techniqueRgb.back()[i].r + d.techniqueRgb.back()[i].g + d.techniqueRgb.back()[i].b) / 3.0f;
+        d.techniqueVisibility.push_back(std::move(mean));
+    }
     const SurfaceBuffer& surfaces = out.surfaces;
     const std::size_t n = static_cast<std::size_t>(surfaces.width) * surfaces.height;
 
@@ -153,7 +160,10 @@ void ComparisonJob::trace() {
     visibilityOptions.samplesDone = &d.samplesDone;
     visibilityOptions.cancel = &d.cancelled;
     for (const Light& light : d.scene.lights) {
+        d.truthRgb.emplace_back();
+        visibilityOptions.transmittance = &d.truthRgb.back();
         d.truth.push_back(tracer.visibility(light, d.samples, visibilityOptions));
+        visibilityOptions.transmittance = nullptr;
         d.extensionTruth.push_back(tracer.visibility(light, d.extensionSamples, visibilityOptions));
     }
     d.out.referenceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - traceStart).count();
@@ -234,6 +244,7 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
 
         std::size_t falseShadow = 0, falseLit = 0, falseShadowAway = 0, falseLitAway = 0;
         double absSum = 0.0, sqSum = 0.0, leakSum = 0.0;
+        double sqSumRgb[3] = {0.0, 0.0, 0.0};
         c.referenceVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
         c.techniqueVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
         c.errorImage = {w, h, std::vector<std::uint8_t>(n * 4, 0)};
@@ -254,6 +265,10 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
                 const double e = static_cast<double>(technique[i]) - exact[i];
                 absSum += std::fabs(e);
                 sqSum += e * e;
+                const glm::vec3& t = d.techniqueRgb[l][i];
+                const glm::vec3& r = d.truthRgb[l][i];
+                for (int ch = 0; ch < 3; ++ch) sqSumRgb[ch] += static_cast<double>(t[ch] - r[ch]) * static_cast<double>(t[ch] - r[ch]);
+                c.coloured = c.coloured || std::fabs(r.r - r.g) > 1e-3f || std::fabs(r.g - r.b) > 1e-3f;
                 const auto penumbra = [](float v) { return v > 0.02f && v < 0.98f; };
                 c.referencePenumbraPixels += penumbra(exact[i]);
                 c.techniquePenumbraPixels += penumbra(technique[i]);
@@ -284,6 +299,7 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
         c.falseLitAwayFromEdges = static_cast<double>(falseLitAway) / away;
         c.meanAbsError = absSum / receivers;
         c.rmse = std::sqrt(sqSum / receivers);
+        for (int ch = 0; ch < 3; ++ch) c.rmseRgb[ch] = std::sqrt(sqSumRgb[ch] / receivers);
         c.leakedInUmbra = c.umbraPixels ? leakSum / static_cast<double>(c.umbraPixels) : 0.0;
         out.lights.push_back(std::move(c));
     }

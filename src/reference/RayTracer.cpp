@@ -35,6 +35,8 @@ struct RayTracer::AlphaCaster {
     std::vector<glm::vec2> uvs;           ///< per vertex (empty: all (0, 0))
     std::vector<std::uint32_t> indices;   ///< three per triangle, as the geometry's
     float alpha = 1.0f, cutoff = 0.5f;
+    bool translucent = false;             ///< blend: light passes, filtered by transmittanceAt()
+    glm::vec3 baseColor{1.0f};            ///< linear
     ImageRGBA8 textureCopy;               ///< the base-colour texture, owned
     const ImageRGBA8* texture = nullptr;  ///< &textureCopy, or none
 
@@ -54,6 +56,37 @@ struct RayTracer::AlphaCaster {
         const float bottom = at(fx0, fy0 + 1.0f) + fx * (at(fx0 + 1.0f, fy0 + 1.0f) - at(fx0, fy0 + 1.0f));
         return top + fy * (bottom - top);
     }
+    glm::vec2 uvAt(unsigned prim, float u, float v) const {
+        if (uvs.empty()) return glm::vec2(0.0f);
+        const std::size_t base = static_cast<std::size_t>(prim) * 3;
+        return (1.0f - u - v) * uvs[indices[base]] + u * uvs[indices[base + 1]] + v * uvs[indices[base + 2]];
+    }
+    // The texture's colour at uv, decoded from sRGB (as the GPU's SRGB8_ALPHA8), bilinear, repeating.
+    glm::vec4 textureAt(glm::vec2 uv) const {
+        const int w = texture->width, h = texture->height;
+        const float x = uv.x * static_cast<float>(w) - 0.5f, y = uv.y * static_cast<float>(h) - 0.5f;
+        const float fx0 = std::floor(x), fy0 = std::floor(y), fx = x - fx0, fy = y - fy0;
+        const auto at = [&](float xf, float yf) {
+            const long xi = ((static_cast<long>(xf) % w) + w) % w, yi = ((static_cast<long>(yf) % h) + h) % h;
+            const std::uint8_t* p = &texture->pixels[(static_cast<std::size_t>(yi) * static_cast<std::size_t>(w) + static_cast<std::size_t>(xi)) * 4];
+            const auto linear = [](std::uint8_t c) {
+                const float v = static_cast<float>(c) / 255.0f;
+                return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+            };
+            return glm::vec4(linear(p[0]), linear(p[1]), linear(p[2]), static_cast<float>(p[3]) / 255.0f);
+        };
+        const glm::vec4 top = glm::mix(at(fx0, fy0), at(fx0 + 1.0f, fy0), fx);
+        const glm::vec4 bottom = glm::mix(at(fx0, fy0 + 1.0f), at(fx0 + 1.0f, fy0 + 1.0f), fx);
+        return glm::mix(top, bottom, fy);
+    }
+    // A translucent (blend) surface's transmittance at barycentrics (u, v)
+    // of triangle `prim`: white through its clear parts, its colour where it
+    // is opaque (alpha_test.h's surfaceTransmittance on the GPU).
+    glm::vec3 transmittanceAt(unsigned prim, float u, float v) const {
+        glm::vec4 c(baseColor, alpha);
+        if (texture && texture->width > 0 && texture->height > 0) c *= textureAt(uvAt(prim, u, v));
+        return glm::mix(glm::vec3(1.0f), glm::vec3(c), c.a);
+    }
     // Whether the surface is there at barycentrics (u, v) of triangle `prim`.
     bool solidAt(unsigned prim, float u, float v) const {
         float a = alpha;
@@ -69,6 +102,39 @@ struct RayTracer::AlphaCaster {
 };
 
 namespace {
+
+// The intersect context every packet is traced with: the transmittance each
+// ray (its RTCRay::id, a lane of the packet) has gathered through translucent
+// casters, and the translucent triangles it has already crossed (Embree may
+// report a triangle more than once with spatial splits).
+struct TransmitContext {
+    RTCIntersectContext base;  // first: the filter gets a pointer to it
+    std::array<glm::vec3, 16> transmit;
+    std::array<std::array<std::uint64_t, 8>, 16> crossed;
+    std::array<int, 16> crossedCount;
+    void reset() {
+        transmit.fill(glm::vec3(1.0f));
+        crossedCount.fill(0);
+    }
+};
+
+// Embree's occlusion filter for a translucent caster: the ray goes on,
+// filtered by the surface's transmittance (once per triangle crossed).
+void translucentFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* caster = static_cast<const RayTracer::AlphaCaster*>(args->geometryUserPtr);
+    auto* context = reinterpret_cast<TransmitContext*>(const_cast<RTCIntersectContext*>(args->context));
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        args->valid[i] = 0;
+        const unsigned lane = RTCRayN_id(args->ray, args->N, i) % 16u;
+        const std::uint64_t key = (static_cast<std::uint64_t>(RTCHitN_geomID(args->hit, args->N, i)) << 32) | RTCHitN_primID(args->hit, args->N, i);
+        auto& crossed = context->crossed[lane];
+        int& count = context->crossedCount[lane];
+        if (std::find(crossed.begin(), crossed.begin() + count, key) != crossed.begin() + count) continue;
+        if (count < static_cast<int>(crossed.size())) crossed[static_cast<std::size_t>(count++)] = key;
+        context->transmit[lane] *= caster->transmittanceAt(RTCHitN_primID(args->hit, args->N, i), RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+    }
+}
 
 // Embree's occlusion filter for an alpha-tested caster: a hit in one of its
 // holes is rejected, the ray goes on.
@@ -314,7 +380,7 @@ struct Packet {
         ray.time[lane] = 0.0f;
         ray.tfar[lane] = tfar;
         ray.mask[lane] = 0xFFFFFFFFu;
-        ray.id[lane] = 0;
+        ray.id[lane] = static_cast<unsigned>(lane);  // translucentFilter's index into TransmitContext
         ray.flags[lane] = 0;
         valid[lane] = -1;
         ++lanes;
@@ -434,12 +500,14 @@ RayTracer::RayTracer(const Scene& scene) {
             caster->indices.assign(mesh.indices.begin(), mesh.indices.begin() + static_cast<long>(triangles * 3));
             caster->alpha = material->alpha;
             caster->cutoff = material->alphaCutoff;
+            caster->translucent = material->alphaMode == AlphaMode::Blend;
+            caster->baseColor = material->baseColor;
             if (material->baseColorTexture >= 0 && static_cast<std::size_t>(material->baseColorTexture) < scene.textures.size()) {
                 caster->textureCopy = scene.textures[static_cast<std::size_t>(material->baseColorTexture)];
                 caster->texture = &caster->textureCopy;
             }
             rtcSetGeometryUserData(geometry, caster.get());
-            rtcSetGeometryOccludedFilterFunction(geometry, &alphaFilter);
+            rtcSetGeometryOccludedFilterFunction(geometry, caster->translucent ? &translucentFilter : &alphaFilter);
             alphaCasters_.push_back(std::move(caster));
         }
         rtcCommitGeometry(geometry);
@@ -467,6 +535,11 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
     const LightSetup setup = makeLightSetup(light);
     RTCScene scene = scene_.get();
     std::vector<float> result(samples.size(), 0.0f);
+    // Through translucent casters the light arrives coloured: the RGB
+    // transmittance per sample, when asked for; `result` is its mean.
+    std::vector<glm::vec3>* colour = options.transmittance;
+    if (colour) colour->assign(samples.size(), glm::vec3(0.0f));
+    const auto mean = [](const glm::vec3& c) { return (c.r + c.g + c.b) / 3.0f; };
 
     // Ray origin: the surface point moved off its surface by an amount that
     // depends on the point alone (offsetRayOrigin), or by a fixed distance.
@@ -491,9 +564,9 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
         // Hard: one ray per sample, 16 consecutive samples per packet (raster
         // order: neighbouring origins, parallel or converging directions).
         parallelChunks(samples.size(), 4096, tracked([&](std::size_t begin, std::size_t end) {
-            RTCIntersectContext context;
-            rtcInitIntersectContext(&context);
-            context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+            TransmitContext context;
+            rtcInitIntersectContext(&context.base);
+            context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
             Packet packet;
             std::array<std::size_t, kPacket> index{};
             for (std::size_t base = begin; base < end; base += kPacket) {
@@ -510,12 +583,19 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
                     const bool traced = setup.type == LightType::Directional ||
                                         rayToPoint(o, setup.position, dir, tfar);
                     if (traced) packet.set(lane, o, dir, tfar);
-                    else result[i] = 1.0f; // at the light: nothing in between
+                    else {
+                        result[i] = 1.0f; // at the light: nothing in between
+                        if (colour) (*colour)[i] = glm::vec3(1.0f);
+                    }
                 }
-                packet.trace(scene, context);
+                context.reset();
+                packet.trace(scene, context.base);
                 for (int lane = 0; lane < count; ++lane)
-                    if (packet.valid[static_cast<std::size_t>(lane)])
-                        result[index[static_cast<std::size_t>(lane)]] = packet.occluded(lane) ? 0.0f : 1.0f;
+                    if (packet.valid[static_cast<std::size_t>(lane)]) {
+                        const glm::vec3 t = packet.occluded(lane) ? glm::vec3(0.0f) : context.transmit[static_cast<std::size_t>(lane)];
+                        result[index[static_cast<std::size_t>(lane)]] = mean(t);
+                        if (colour) (*colour)[index[static_cast<std::size_t>(lane)]] = t;
+                    }
             }
         }));
         stopIfCancelled();
@@ -531,9 +611,9 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
     const int stratified = grid * grid;
     const std::size_t chunk = std::max<std::size_t>(1, 65536 / static_cast<std::size_t>(n));
     parallelChunks(samples.size(), chunk, tracked([&](std::size_t begin, std::size_t end) {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        TransmitContext context;
+        rtcInitIntersectContext(&context.base);
+        context.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
         Packet packet;
         for (std::size_t i = begin; i < end; ++i) {
             const SurfaceSample& s = samples[i];
@@ -547,7 +627,7 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
                 orthonormalBasis(len > 0.0f ? d / len : glm::vec3(0.0f, 1.0f, 0.0f), diskT, diskB);
             }
             Pcg32 rng(options.seed, i);
-            int unoccluded = 0;
+            glm::vec3 unoccluded(0.0f);  // the rays' transmittance summed
             for (int k0 = 0; k0 < n; k0 += kPacket) {
                 packet.clear();
                 const int count = std::min(kPacket, n - k0);
@@ -577,17 +657,20 @@ std::vector<float> RayTracer::visibility(const Light& light, const std::vector<S
                         const glm::vec3 target =
                             setup.position + setup.size * radius * (cosA * diskT + sinA * diskB);
                         if (!rayToPoint(o, target, dir, tfar)) {
-                            ++unoccluded; // on the light itself
+                            unoccluded += glm::vec3(1.0f); // on the light itself
                             continue;
                         }
                     }
                     packet.set(lane, o, dir, tfar);
                 }
-                packet.trace(scene, context);
+                context.reset();
+                packet.trace(scene, context.base);
                 for (int lane = 0; lane < count; ++lane)
-                    if (packet.valid[static_cast<std::size_t>(lane)] && !packet.occluded(lane)) ++unoccluded;
+                    if (packet.valid[static_cast<std::size_t>(lane)] && !packet.occluded(lane)) unoccluded += context.transmit[static_cast<std::size_t>(lane)];
             }
-            result[i] = static_cast<float>(unoccluded) / static_cast<float>(n);
+            const glm::vec3 t = unoccluded / static_cast<float>(n);
+            result[i] = mean(t);
+            if (colour) (*colour)[i] = t;
         }
     }));
     stopIfCancelled();

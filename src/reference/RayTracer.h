@@ -58,6 +58,10 @@ struct VisibilityOptions {
     /// When set and true, tracing stops early and visibility() throws
     /// shadowlab::Error("... cancelled").
     const std::atomic<bool>* cancel = nullptr;
+    /// When set, filled with each sample's RGB transmittance: the light
+    /// that arrives through translucent casters (alphaMode blend), the
+    /// visibility itself per channel; visibility() returns its mean.
+    std::vector<glm::vec3>* transmittance = nullptr;
 };
 
 /// The origin of a shadow ray from surface point p (world space) with unit

@@ -33,7 +33,7 @@ void DrawList::upload(const Scene& scene, const std::vector<DrawItem>& items) {
         u.ambient = glm::vec4(m.ambient, 0.0f);
         u.diffuse = glm::vec4(m.diffuse, 0.0f);
         u.specular = glm::vec4(m.specular, m.shininess);
-        u.alpha = glm::vec4(m.alpha, m.alphaCutoff, m.alphaTested() ? 1.0f : 0.0f, m.baseColorTexture >= 0 ? 1.0f : 0.0f);
+        u.alpha = glm::vec4(m.alpha, m.alphaCutoff, static_cast<float>(static_cast<int>(m.alphaMode)), m.baseColorTexture >= 0 ? 1.0f : 0.0f);
         std::memcpy(staging_.data() + i * stride_, &u, sizeof u);
     }
     if (!staging_.empty()) glNamedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(staging_.size()), staging_.data());

@@ -331,6 +331,8 @@ struct Group {
     gl::Texture packed{gl::NoCreate}; ///< RGBA8 array: the map for rgba8
     gl::Texture moments{gl::NoCreate};///< RG/RGBA float array: the map for moment representations
     gl::Texture blurScratch{gl::NoCreate};   ///< moments: one layer's horizontal blur
+    gl::Texture transmit{gl::NoCreate};      ///< RGBA8 array: the translucent casters' transmittance per layer (2D maps)
+    gl::Texture transmitDepth{gl::NoCreate}; ///< R32F array: the nearest translucent caster's depth per layer
     gl::Framebuffer blurFbo{gl::NoCreate};   ///< the scratch as a target
     GLenum target() const { return key.cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY; }
     int layersPerLight() const { return key.cube ? 6 : 1; }
@@ -520,6 +522,19 @@ public:
             groups.push_back(std::move(g));
         }
         groups_ = std::move(groups);
+        // Translucent casters (alphaMode blend) colour the light: each 2D
+        // array gets its transmittance layers (made once, kept with the array).
+        translucent_ = false;
+        for (const DrawItem& item : frame.items)
+            translucent_ = translucent_ || (item.castsShadows && item.material >= 0 &&
+                                            frame.scene.materials[static_cast<std::size_t>(item.material)].alphaMode == AlphaMode::Blend);
+        for (Group& g : groups_)
+            if (translucent_ && !g.cube() && !g.transmit) {
+                g.transmit = gl::Texture(GL_TEXTURE_2D_ARRAY);
+                glTextureStorage3D(g.transmit.id(), 1, GL_RGBA8, g.size(), g.size(), g.layers);
+                g.transmitDepth = gl::Texture(GL_TEXTURE_2D_ARRAY);
+                glTextureStorage3D(g.transmitDepth.id(), 1, GL_R32F, g.size(), g.size(), g.layers);
+            }
         std::map<std::size_t, int> nextLayer;
         std::map<int, PerLight> perLight;
         for (int index : lights) {
@@ -619,6 +634,7 @@ public:
             if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
             drawn += drawnHere;
             if (g.hasMoments() && p.options.blur > 0) blurLayer(host, g, p.layer + static_cast<int>(c), p.options.blur, fbo);
+            if (translucent_) drawTranslucent(host, frame, g, p, camera, p.layer + static_cast<int>(c));
         }
         host.count("triangles", static_cast<double>(drawn));
         // The memory of this light's layers (the map the light pass reads and what its pass needs beside it).
@@ -669,10 +685,19 @@ public:
                                                           : (linear ? compareLinear_.id() : compareNearest_.id()));
             bindRawDepth(p, g);
         }
+        bindTransmittance(p, g);
     }
 
     // PCSS's blocker search reads the stored depths themselves: the same
     // depth array on the next unit through a sampler without comparison.
+    void bindTransmittance(const PerLight& p, const Group& g) const {
+        if (!translucent_ || p.cube || !g.transmit) return;
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 2, g.transmit.id());
+        glBindSampler(SL_UNIT_SHADOW_FIRST + 2, plainNearest_.id());  // outside the map: the border, white
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 3, g.transmitDepth.id());
+        glBindSampler(SL_UNIT_SHADOW_FIRST + 3, plainNearest_.id());  // and depth 1
+    }
+
     void bindRawDepth(const PerLight& p, const Group& g) const {
         if (p.options.filter != MapFilter::Pcss || isPacked(g.format())) return;
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, g.depth.id());
@@ -726,6 +751,48 @@ public:
     }
 
 private:
+    // The translucent casters into layer `layer`'s transmittance: their
+    // colours multiplied together and their nearest depth, where no opaque
+    // caster is nearer (the map's own depth, tested, not written).
+    void drawTranslucent(TechniqueHost& host, const FrameInfo& frame, const Group& g, const PerLight& p, const LightCamera& camera, int layer) {
+        const auto scope = host.timeScope("translucent");
+        gl::Framebuffer fbo;
+        glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
+        glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
+        glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, sharedDepthBuffer(g.key) ? 0 : layer);
+        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
+        gl::checkFramebuffer(fbo, "translucent casters framebuffer");
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, g.size(), g.size());
+        gl::RenderState state;
+        host.apply(state);
+        const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, white);
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
+        state.depthWrite = false;
+        state.depthClamp = !camera.perspective;
+        host.apply(state);
+        // Per target: transmittances multiply (dst x src), depths keep the least.
+        glEnablei(GL_BLEND, 0);
+        glBlendEquationi(0, GL_FUNC_ADD);
+        glBlendFunci(0, GL_ZERO, GL_SRC_COLOR);
+        glEnablei(GL_BLEND, 1);
+        glBlendEquationi(1, GL_MIN);
+        glBlendFunci(1, GL_ONE, GL_ONE);
+        const glm::mat4 lightClip = camera.clipFromWorld();
+        glNamedBufferSubData(ubo_.id(), 0, sizeof lightClip, &lightClip);
+        const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_transmit.frag"}},
+                                                   std::string("#define MAP_SPOT ") + (p.spot ? "1" : "0") + "\n"});
+        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+            const int m = frame.items[i].material;
+            return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend && castsInto(camera, frame, i, true);
+        });
+        glDisablei(GL_BLEND, 0);
+        glDisablei(GL_BLEND, 1);
+        host.apply(gl::RenderState{});
+    }
+
     // Moment maps: the exponents of EVSM's warps (32-bit floats: 40 and 5, as
     // MJP's sample; 16-bit: 5.54 each, the most e^(2c) allows under 65504)
     // and MSM's and VSM's floors, as GLSL defines for every program that
@@ -1146,6 +1213,7 @@ private:
         const float size = light.type == LightType::Directional ? std::tan(glm::radians(0.5f * light.size)) : light.size;
         u.pcss = glm::vec4(size, p.camera.nearPlane, p.camera.farPlane, static_cast<float>(p.options.blockerSamples));
         u.moments = glm::vec4(p.options.bleedReduction, 0.0f, 0.0f, 0.0f);
+        u.transmit = glm::vec4(translucent_ && !p.cube ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
         uniforms_ = u;
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
@@ -1153,6 +1221,7 @@ private:
 
     std::vector<Group> groups_;
     std::map<int, PerLight> lights_;
+    bool translucent_ = false;  ///< the frame has translucent casters: 2D maps get transmittance layers
     gl::Sampler compareNearest_{gl::NoCreate}, compareLinear_{gl::NoCreate}, plainNearest_{gl::NoCreate};
     gl::Sampler compareNearestMip_{gl::NoCreate}, compareLinearMip_{gl::NoCreate}, plainNearestMip_{gl::NoCreate};
     gl::Sampler momentLinear_{gl::NoCreate}, momentLinearMip_{gl::NoCreate};
