@@ -34,6 +34,16 @@ layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
 float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.params.x)).r; }
 #endif
 #endif
+// Translucent casters (alphaMode blend): the cube's transmittance and the
+// nearest translucent depth (shadow_map_cube_transmit.frag).
+layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform samplerCubeArray mapCubeTransmitColour;
+layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform samplerCubeArray mapCubeTransmitDepth;
+vec3 mapTransmit = vec3(1.0);
+vec3 cubeTransmittanceAt(vec3 direction, float ref) {
+    if (map.transmit.x < 0.5) return vec3(1.0);
+    float nearest = texture(mapCubeTransmitDepth, vec4(direction, map.params.x)).r;
+    return ref > nearest ? texture(mapCubeTransmitColour, vec4(direction, map.params.x)).rgb : vec3(1.0);
+}
 #else
 // The array layer the taps read: the light's map, or the cascade's.
 float mapLayer = 0.0;
@@ -132,6 +142,7 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal) {
     vec3 v = p - map.light.xyz;
     // Beyond the far plane: lit (004).
     if (length(v) > map.cube.x) return 1.0;
+    mapTransmit = cubeTransmittanceAt(v, ref);
 #if MAP_FILTER == SL_MAP_FILTER_NONE || MAP_FILTER == SL_MAP_FILTER_HARDWARE
     return cubeTap(v, ref);  // the sampler is nearest or bilinear (seamless)
 #elif MAP_FILTER == SL_MAP_FILTER_GRID
@@ -475,9 +486,5 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     // shadowedLight > 0; compare reads the test itself (OUTPUT_VISIBILITY).
     v = mix(map.light.w, 1.0, v);
 #endif
-#if MAP_CUBE
-    return vec3(v);
-#else
     return v * mapTransmit;  // coloured by the translucent casters in the way
-#endif
 }

@@ -221,7 +221,10 @@ figcaption { font-size: 12px; color: #555; }
               << escape(r["clock"].get<std::string>())
               << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
               << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
-              << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4) << "</td><td>"
+              << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4)
+              << (l.value("coloured", false) ? " (r " + fixed(l["rmseRgb"][0], 4) + ", g " + fixed(l["rmseRgb"][1], 4) + ", b " + fixed(l["rmseRgb"][2], 4) + ")"
+                                             : std::string())
+              << "</td><td>"
               << (l.contains("leakedInUmbra") ? percent(l["leakedInUmbra"]) : std::string("&ndash;")) << "</td><td>"
               << (l.value("soft", false) && l.contains("penumbraRatio") ? fixed(l["penumbraRatio"], 2) : std::string("&ndash;")) << "</td><td>"
               << (r.contains("frameOverHardMap") ? fixed(r["frameOverHardMap"], 2) : std::string("&ndash;")) << "</td><td>"

@@ -331,7 +331,7 @@ struct Group {
     gl::Texture packed{gl::NoCreate}; ///< RGBA8 array: the map for rgba8
     gl::Texture moments{gl::NoCreate};///< RG/RGBA float array: the map for moment representations
     gl::Texture blurScratch{gl::NoCreate};   ///< moments: one layer's horizontal blur
-    gl::Texture transmit{gl::NoCreate};      ///< RGBA8 array: the translucent casters' transmittance per layer (2D maps)
+    gl::Texture transmit{gl::NoCreate};      ///< RGBA8 array: the translucent casters' transmittance per layer (cube: per face)
     gl::Texture transmitDepth{gl::NoCreate}; ///< R32F array: the nearest translucent caster's depth per layer
     gl::Framebuffer blurFbo{gl::NoCreate};   ///< the scratch as a target
     GLenum target() const { return key.cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY; }
@@ -529,11 +529,11 @@ public:
             translucent_ = translucent_ || (item.castsShadows && item.material >= 0 &&
                                             frame.scene.materials[static_cast<std::size_t>(item.material)].alphaMode == AlphaMode::Blend);
         for (Group& g : groups_)
-            if (translucent_ && !g.cube() && !g.transmit) {
-                g.transmit = gl::Texture(GL_TEXTURE_2D_ARRAY);
-                glTextureStorage3D(g.transmit.id(), 1, GL_RGBA8, g.size(), g.size(), g.layers);
-                g.transmitDepth = gl::Texture(GL_TEXTURE_2D_ARRAY);
-                glTextureStorage3D(g.transmitDepth.id(), 1, GL_R32F, g.size(), g.size(), g.layers);
+            if (translucent_ && !g.transmit) {
+                g.transmit = gl::Texture(g.target());
+                glTextureStorage3D(g.transmit.id(), 1, GL_RGBA8, g.size(), g.size(), g.layers * g.layersPerLight());
+                g.transmitDepth = gl::Texture(g.target());
+                glTextureStorage3D(g.transmitDepth.id(), 1, GL_R32F, g.size(), g.size(), g.layers * g.layersPerLight());
             }
         std::map<std::size_t, int> nextLayer;
         std::map<int, PerLight> perLight;
@@ -668,6 +668,7 @@ public:
             const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss;
             glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? plainNearest_.id() : linear ? compareLinear_.id() : compareNearest_.id());
             bindRawDepth(p, g);
+            bindTransmittance(p, g);
             return;
         }
         if (g.hasMoments()) {
@@ -690,8 +691,8 @@ public:
 
     // PCSS's blocker search reads the stored depths themselves: the same
     // depth array on the next unit through a sampler without comparison.
-    void bindTransmittance(const PerLight& p, const Group& g) const {
-        if (!translucent_ || p.cube || !g.transmit) return;
+    void bindTransmittance(const PerLight&, const Group& g) const {
+        if (!translucent_ || !g.transmit) return;
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 2, g.transmit.id());
         glBindSampler(SL_UNIT_SHADOW_FIRST + 2, plainNearest_.id());  // outside the map: the border, white
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 3, g.transmitDepth.id());
@@ -1136,7 +1137,49 @@ private:
         static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
         host.count("triangles", static_cast<double>(drawn));
         for (std::size_t f = 0; f < 6; ++f) host.count(std::string("faceTriangles.") + faceNames[f], faceTriangles[f]);
+        if (translucent_) drawCubeTranslucent(host, frame, g, p);
         if (frame.measureFloors) drawCubeFloor(host, p, used);
+    }
+
+    // A point light's translucent casters into its cube's transmittance
+    // layers, face by face, after the opaque depth (drawTranslucent's cube form).
+    void drawCubeTranslucent(TechniqueHost& host, const FrameInfo& frame, const Group& g, const PerLight& p) {
+        const auto scope = host.timeScope("translucent");
+        const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube_transmit.frag"}},
+                                                   "#define MAP_CUBE_ONE_PASS 0\n"});
+        for (int f = 0; f < 6; ++f) {
+            const int layer = 6 * p.layer + f;
+            gl::Framebuffer fbo;
+            glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
+            glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
+            glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, layer);
+            const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+            glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
+            gl::checkFramebuffer(fbo, "translucent casters framebuffer (cube face)");
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            glViewport(0, 0, g.size(), g.size());
+            gl::RenderState state;
+            host.apply(state);
+            const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, white);
+            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
+            state.depthWrite = false;
+            host.apply(state);
+            glEnablei(GL_BLEND, 0);
+            glBlendEquationi(0, GL_FUNC_ADD);
+            glBlendFunci(0, GL_ZERO, GL_SRC_COLOR);
+            glEnablei(GL_BLEND, 1);
+            glBlendEquationi(1, GL_MIN);
+            glBlendFunci(1, GL_ONE, GL_ONE);
+            glProgramUniform1i(program.id(), 1, f);
+            host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+                const int m = frame.items[i].material;
+                return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend && (faceMask(p, i) & (1u << f)) != 0;
+            });
+            glDisablei(GL_BLEND, 0);
+            glDisablei(GL_BLEND, 1);
+        }
+        host.apply(gl::RenderState{});
     }
 
     // The cube faces item i is drawn into: those its bounds touch, or all
@@ -1213,7 +1256,7 @@ private:
         const float size = light.type == LightType::Directional ? std::tan(glm::radians(0.5f * light.size)) : light.size;
         u.pcss = glm::vec4(size, p.camera.nearPlane, p.camera.farPlane, static_cast<float>(p.options.blockerSamples));
         u.moments = glm::vec4(p.options.bleedReduction, 0.0f, 0.0f, 0.0f);
-        u.transmit = glm::vec4(translucent_ && !p.cube ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+        u.transmit = glm::vec4(translucent_ ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
         uniforms_ = u;
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
