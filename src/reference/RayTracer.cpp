@@ -37,66 +37,52 @@ struct RayTracer::AlphaCaster {
     float alpha = 1.0f, cutoff = 0.5f;
     bool translucent = false;             ///< blend: light passes, filtered by transmittanceAt()
     glm::vec3 baseColor{1.0f};            ///< linear
-    ImageRGBA8 textureCopy;               ///< the base-colour texture, owned
-    const ImageRGBA8* texture = nullptr;  ///< &textureCopy, or none
+    const ImageRGBA8* texture = nullptr;  ///< the base-colour texture (the tracer's copy), or none
 
-    // The alpha the GPU reads at uv (alpha_test.h: textureLod level 0 of an
-    // RGBA8 texture, bilinear, repeating): the texels' alpha bytes / 255.
-    float textureAlpha(glm::vec2 uv) const {
+    // The texture at uv as the GPU reads it (alpha_test.h: textureLod level
+    // 0, bilinear, repeating), each texel through `fetch` (its bytes).
+    template <class Fetch>
+    auto bilinear(glm::vec2 uv, const Fetch& fetch) const {
         const int w = texture->width, h = texture->height;
-        if (w <= 0 || h <= 0) return 1.0f;
         const float x = uv.x * static_cast<float>(w) - 0.5f, y = uv.y * static_cast<float>(h) - 0.5f;
-        const float fx0 = std::floor(x), fy0 = std::floor(y);
-        const float fx = x - fx0, fy = y - fy0;
+        const float fx0 = std::floor(x), fy0 = std::floor(y), fx = x - fx0, fy = y - fy0;
         const auto at = [&](float xf, float yf) {
             const long xi = ((static_cast<long>(xf) % w) + w) % w, yi = ((static_cast<long>(yf) % h) + h) % h;
-            return static_cast<float>(texture->pixels[(static_cast<std::size_t>(yi) * static_cast<std::size_t>(w) + static_cast<std::size_t>(xi)) * 4 + 3]) / 255.0f;
+            return fetch(&texture->pixels[(static_cast<std::size_t>(yi) * static_cast<std::size_t>(w) + static_cast<std::size_t>(xi)) * 4]);
         };
-        const float top = at(fx0, fy0) + fx * (at(fx0 + 1.0f, fy0) - at(fx0, fy0));
-        const float bottom = at(fx0, fy0 + 1.0f) + fx * (at(fx0 + 1.0f, fy0 + 1.0f) - at(fx0, fy0 + 1.0f));
+        const auto top = at(fx0, fy0) + fx * (at(fx0 + 1.0f, fy0) - at(fx0, fy0));
+        const auto bottom = at(fx0, fy0 + 1.0f) + fx * (at(fx0 + 1.0f, fy0 + 1.0f) - at(fx0, fy0 + 1.0f));
         return top + fy * (bottom - top);
+    }
+    bool hasTexture() const { return texture && texture->width > 0 && texture->height > 0; }
+    // Its alpha at uv: the bytes / 255.
+    float textureAlpha(glm::vec2 uv) const {
+        return bilinear(uv, [](const std::uint8_t* p) { return static_cast<float>(p[3]) / 255.0f; });
+    }
+    // Its colour at uv, decoded from sRGB as the GPU's SRGB8_ALPHA8 is.
+    glm::vec4 textureAt(glm::vec2 uv) const {
+        const auto linear = [](std::uint8_t c) {
+            const float v = static_cast<float>(c) / 255.0f;
+            return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+        };
+        return bilinear(uv, [&](const std::uint8_t* p) { return glm::vec4(linear(p[0]), linear(p[1]), linear(p[2]), static_cast<float>(p[3]) / 255.0f); });
     }
     glm::vec2 uvAt(unsigned prim, float u, float v) const {
         if (uvs.empty()) return glm::vec2(0.0f);
         const std::size_t base = static_cast<std::size_t>(prim) * 3;
         return (1.0f - u - v) * uvs[indices[base]] + u * uvs[indices[base + 1]] + v * uvs[indices[base + 2]];
     }
-    // The texture's colour at uv, decoded from sRGB (as the GPU's SRGB8_ALPHA8), bilinear, repeating.
-    glm::vec4 textureAt(glm::vec2 uv) const {
-        const int w = texture->width, h = texture->height;
-        const float x = uv.x * static_cast<float>(w) - 0.5f, y = uv.y * static_cast<float>(h) - 0.5f;
-        const float fx0 = std::floor(x), fy0 = std::floor(y), fx = x - fx0, fy = y - fy0;
-        const auto at = [&](float xf, float yf) {
-            const long xi = ((static_cast<long>(xf) % w) + w) % w, yi = ((static_cast<long>(yf) % h) + h) % h;
-            const std::uint8_t* p = &texture->pixels[(static_cast<std::size_t>(yi) * static_cast<std::size_t>(w) + static_cast<std::size_t>(xi)) * 4];
-            const auto linear = [](std::uint8_t c) {
-                const float v = static_cast<float>(c) / 255.0f;
-                return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-            };
-            return glm::vec4(linear(p[0]), linear(p[1]), linear(p[2]), static_cast<float>(p[3]) / 255.0f);
-        };
-        const glm::vec4 top = glm::mix(at(fx0, fy0), at(fx0 + 1.0f, fy0), fx);
-        const glm::vec4 bottom = glm::mix(at(fx0, fy0 + 1.0f), at(fx0 + 1.0f, fy0 + 1.0f), fx);
-        return glm::mix(top, bottom, fy);
-    }
     // A translucent (blend) surface's transmittance at barycentrics (u, v)
     // of triangle `prim`: white through its clear parts, its colour where it
     // is opaque (alpha_test.h's surfaceTransmittance on the GPU).
     glm::vec3 transmittanceAt(unsigned prim, float u, float v) const {
         glm::vec4 c(baseColor, alpha);
-        if (texture && texture->width > 0 && texture->height > 0) c *= textureAt(uvAt(prim, u, v));
+        if (hasTexture()) c *= textureAt(uvAt(prim, u, v));
         return glm::mix(glm::vec3(1.0f), glm::vec3(c), c.a);
     }
     // Whether the surface is there at barycentrics (u, v) of triangle `prim`.
     bool solidAt(unsigned prim, float u, float v) const {
-        float a = alpha;
-        if (texture && !uvs.empty()) {
-            const std::size_t base = static_cast<std::size_t>(prim) * 3;
-            const glm::vec2 uv = (1.0f - u - v) * uvs[indices[base]] + u * uvs[indices[base + 1]] + v * uvs[indices[base + 2]];
-            a *= textureAlpha(uv);
-        } else if (texture) {
-            a *= textureAlpha(glm::vec2(0.0f));
-        }
+        const float a = alpha * (hasTexture() ? textureAlpha(uvAt(prim, u, v)) : 1.0f);
         return a >= cutoff;
     }
 };
@@ -503,8 +489,10 @@ RayTracer::RayTracer(const Scene& scene) {
             caster->translucent = material->alphaMode == AlphaMode::Blend;
             caster->baseColor = material->baseColor;
             if (material->baseColorTexture >= 0 && static_cast<std::size_t>(material->baseColorTexture) < scene.textures.size()) {
-                caster->textureCopy = scene.textures[static_cast<std::size_t>(material->baseColorTexture)];
-                caster->texture = &caster->textureCopy;
+                // One copy per texture, however many casters use it.
+                std::unique_ptr<ImageRGBA8>& copy = textures_[material->baseColorTexture];
+                if (!copy) copy = std::make_unique<ImageRGBA8>(scene.textures[static_cast<std::size_t>(material->baseColorTexture)]);
+                caster->texture = copy.get();
             }
             rtcSetGeometryUserData(geometry, caster.get());
             rtcSetGeometryOccludedFilterFunction(geometry, caster->translucent ? &translucentFilter : &alphaFilter);

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -132,6 +133,7 @@ private:
     // Declaration order matters: the scene is released before its device,
     // and both before the filters' data they point to.
     std::vector<std::unique_ptr<AlphaCaster>> alphaCasters_;
+    std::map<int, std::unique_ptr<ImageRGBA8>> textures_;  ///< by Scene::textures index, the ones the filters read
     std::unique_ptr<RTCDeviceTy, DeviceDeleter> device_;
     std::unique_ptr<RTCSceneTy, SceneDeleter> scene_;
     std::size_t triangleCount_ = 0;

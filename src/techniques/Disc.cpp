@@ -4,7 +4,7 @@
 // against each. It shares the base pass: no shadow pass, no map.
 #include "techniques/Disc.h"
 
-#include "core/Text.h"
+#include "techniques/NodeNames.h"
 
 #include <shadowlab/DiscOptions.h>
 #include <shadowlab/Error.h>
@@ -31,17 +31,15 @@ struct Disc {
     glm::vec3 centre{0.0f}, a{0.0f}, b{0.0f};
 };
 
-// Item i as a disc: its mesh is a disc shape's fan (shapes::disc: every
-// vertex in the object's XZ plane, one at the origin, the rest on one
-// circle), the circle's radius from its vertices.
-bool discOf(const FrameInfo& frame, std::size_t i, Disc& out) {
-    const DrawItem& item = frame.items[i];
-    const Mesh& mesh = frame.scene.meshes[static_cast<std::size_t>(item.mesh)];
-    if (mesh.positions.size() < 4) return false;
+// The circle's radius when `mesh` is a disc shape's fan (shapes::disc:
+// every vertex in the object's XZ plane, one at the origin, the rest on one
+// circle), else 0.
+float discRadius(const Mesh& mesh) {
+    if (mesh.positions.size() < 4) return 0.0f;
     float radius = 0.0f, smallest = 1e30f;
     int centres = 0;
     for (const glm::vec3& p : mesh.positions) {
-        if (p.y != 0.0f) return false;
+        if (p.y != 0.0f) return 0.0f;
         const float r = glm::length(glm::vec2(p.x, p.z));
         if (r == 0.0f) {
             ++centres;
@@ -50,7 +48,12 @@ bool discOf(const FrameInfo& frame, std::size_t i, Disc& out) {
         radius = std::max(radius, r);
         smallest = std::min(smallest, r);
     }
-    if (centres != 1 || smallest < radius * (1.0f - 1e-5f)) return false;
+    return centres == 1 && smallest >= radius * (1.0f - 1e-5f) ? radius : 0.0f;
+}
+
+// Item i as a disc in world space, given its mesh's disc radius (0: none).
+bool discOf(const DrawItem& item, float radius, Disc& out) {
+    if (radius <= 0.0f) return false;
     const glm::mat4& m = item.worldFromObject;
     out.centre = glm::vec3(m * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     out.a = glm::vec3(m * glm::vec4(radius, 0.0f, 0.0f, 0.0f));
@@ -68,28 +71,24 @@ public:
         Bounds scene;
         for (const Bounds& b : frame.itemBounds) scene.add(b);
         offset_ = scene.empty() ? 1e-5f : 1e-5f * std::max(glm::length(scene.size()), 1.0f);
+        // Which meshes are discs, found once per mesh contents.
+        radii_.resize(frame.scene.meshes.size());
+        for (std::size_t m = 0; m < frame.scene.meshes.size(); ++m) {
+            const Mesh& mesh = frame.scene.meshes[m];
+            Known& k = radii_[m];
+            if (k.positions != mesh.positions.data() || k.count != mesh.positions.size()) k = {mesh.positions.data(), mesh.positions.size(), discRadius(mesh)};
+        }
+        const auto radiusOf = [&](std::size_t i) { return radii_[static_cast<std::size_t>(frame.items[i].mesh)].radius; };
         discs_.clear();
         for (int index : lights) {
             const DiscOptions& o = frame.scene.lights[static_cast<std::size_t>(index)].shadow.get<DiscOptions>();
             const std::string at = "lights[" + std::to_string(index) + "].shadow.disc.casters";
             std::vector<Disc>& list = discs_[index];
-            const std::vector<std::string> names = text::splitNames(o.casters);
             Disc d;
-            if (names.empty()) {
-                for (std::size_t i = 0; i < frame.items.size(); ++i)
-                    if (frame.items[i].castsShadows && discOf(frame, i, d)) list.push_back(d);
-            } else {
-                for (const std::string& name : names) {
-                    bool found = false;
-                    for (std::size_t i = 0; i < frame.items.size(); ++i) {
-                        const int node = frame.items[i].node;
-                        if (node < 0 || frame.scene.nodes[static_cast<std::size_t>(node)].name != name) continue;
-                        found = true;
-                        if (!discOf(frame, i, d)) throw Error(at + ": node '" + text::escapeControl(name) + "' is not a disc shape");
-                        list.push_back(d);
-                    }
-                    if (!found) throw Error(at + ": no node named '" + text::escapeControl(name) + "'");
-                }
+            for (std::size_t i : itemsNamed(frame, o.casters, at, [&](std::size_t item) { return radiusOf(item) > 0.0f; }, "is not a disc shape",
+                                            [&](std::size_t item) { return frame.items[item].castsShadows; })) {
+                discOf(frame.items[i], radiusOf(i), d);
+                list.push_back(d);
             }
             if (list.size() > SL_DISC_MAX)
                 throw Error(at + ": " + std::to_string(list.size()) + " discs, more than the " + std::to_string(SL_DISC_MAX) + " one light tests");
@@ -111,6 +110,12 @@ public:
     }
 
 private:
+    struct Known {
+        const glm::vec3* positions = nullptr;
+        std::size_t count = 0;
+        float radius = 0.0f;  ///< discRadius() of the mesh
+    };
+    std::vector<Known> radii_;  ///< per mesh
     std::map<int, std::vector<Disc>> discs_;
     float offset_ = 1e-5f;
     gl::Buffer ubo_{gl::NoCreate};

@@ -525,9 +525,7 @@ public:
         // Translucent casters (alphaMode blend) colour the light: each 2D
         // array gets its transmittance layers (made once, kept with the array).
         translucent_ = false;
-        for (const DrawItem& item : frame.items)
-            translucent_ = translucent_ || (item.castsShadows && item.material >= 0 &&
-                                            frame.scene.materials[static_cast<std::size_t>(item.material)].alphaMode == AlphaMode::Blend);
+        for (std::size_t i = 0; i < frame.items.size(); ++i) translucent_ = translucent_ || (frame.items[i].castsShadows && translucentCaster(frame, i));
         for (Group& g : groups_)
             if (translucent_ && !g.transmit) {
                 g.transmit = gl::Texture(g.target());
@@ -757,10 +755,29 @@ private:
     // caster is nearer (the map's own depth, tested, not written).
     void drawTranslucent(TechniqueHost& host, const FrameInfo& frame, const Group& g, const PerLight& p, const LightCamera& camera, int layer) {
         const auto scope = host.timeScope("translucent");
+        const gl::Framebuffer fbo = beginTranslucent(host, g, layer, sharedDepthBuffer(g.key) ? 0 : layer, !camera.perspective);
+        const glm::mat4 lightClip = camera.clipFromWorld();
+        glNamedBufferSubData(ubo_.id(), 0, sizeof lightClip, &lightClip);
+        const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_transmit.frag"}},
+                                                   std::string("#define MAP_SPOT ") + (p.spot ? "1" : "0") + "\n"});
+        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && castsInto(camera, frame, i, true); });
+        endTranslucent(host);
+    }
+
+    static bool translucentCaster(const FrameInfo& frame, std::size_t i) {
+        const int m = frame.items[i].material;
+        return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend;
+    }
+
+    // The target of the translucent casters for one layer (a 2D map's, or a
+    // cube face's): its transmittance and nearest-depth layers as colours,
+    // cleared to white, over the opaque depth of `depthLayer`, tested, not
+    // written; transmittances multiply (dst x src), depths keep the least.
+    gl::Framebuffer beginTranslucent(TechniqueHost& host, const Group& g, int layer, int depthLayer, bool depthClamp) {
         gl::Framebuffer fbo;
         glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
         glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
-        glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, sharedDepthBuffer(g.key) ? 0 : layer);
+        glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, depthLayer);
         const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
         glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
         gl::checkFramebuffer(fbo, "translucent casters framebuffer");
@@ -772,23 +789,17 @@ private:
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, white);
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
         state.depthWrite = false;
-        state.depthClamp = !camera.perspective;
+        state.depthClamp = depthClamp;
         host.apply(state);
-        // Per target: transmittances multiply (dst x src), depths keep the least.
         glEnablei(GL_BLEND, 0);
         glBlendEquationi(0, GL_FUNC_ADD);
         glBlendFunci(0, GL_ZERO, GL_SRC_COLOR);
         glEnablei(GL_BLEND, 1);
         glBlendEquationi(1, GL_MIN);
         glBlendFunci(1, GL_ONE, GL_ONE);
-        const glm::mat4 lightClip = camera.clipFromWorld();
-        glNamedBufferSubData(ubo_.id(), 0, sizeof lightClip, &lightClip);
-        const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_transmit.frag"}},
-                                                   std::string("#define MAP_SPOT ") + (p.spot ? "1" : "0") + "\n"});
-        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
-            const int m = frame.items[i].material;
-            return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend && castsInto(camera, frame, i, true);
-        });
+        return fbo;
+    }
+    void endTranslucent(TechniqueHost& host) {
         glDisablei(GL_BLEND, 0);
         glDisablei(GL_BLEND, 1);
         host.apply(gl::RenderState{});
@@ -1149,37 +1160,11 @@ private:
                                                    "#define MAP_CUBE_ONE_PASS 0\n"});
         for (int f = 0; f < 6; ++f) {
             const int layer = 6 * p.layer + f;
-            gl::Framebuffer fbo;
-            glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
-            glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
-            glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, layer);
-            const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-            glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
-            gl::checkFramebuffer(fbo, "translucent casters framebuffer (cube face)");
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            glViewport(0, 0, g.size(), g.size());
-            gl::RenderState state;
-            host.apply(state);
-            const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, white);
-            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
-            state.depthWrite = false;
-            host.apply(state);
-            glEnablei(GL_BLEND, 0);
-            glBlendEquationi(0, GL_FUNC_ADD);
-            glBlendFunci(0, GL_ZERO, GL_SRC_COLOR);
-            glEnablei(GL_BLEND, 1);
-            glBlendEquationi(1, GL_MIN);
-            glBlendFunci(1, GL_ONE, GL_ONE);
+            const gl::Framebuffer fbo = beginTranslucent(host, g, layer, layer, false);
             glProgramUniform1i(program.id(), 1, f);
-            host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
-                const int m = frame.items[i].material;
-                return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend && (faceMask(p, i) & (1u << f)) != 0;
-            });
-            glDisablei(GL_BLEND, 0);
-            glDisablei(GL_BLEND, 1);
+            host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && (faceMask(p, i) & (1u << f)) != 0; });
+            endTranslucent(host);
         }
-        host.apply(gl::RenderState{});
     }
 
     // The cube faces item i is drawn into: those its bounds touch, or all

@@ -11,7 +11,7 @@
 #include "techniques/Planar.h"
 
 #include "core/LightCamera.h"
-#include "core/Text.h"
+#include "techniques/NodeNames.h"
 #include "techniques/Stencil.h"
 
 #include <shadowlab/Error.h>
@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <map>
 #include <span>
-#include <sstream>
 
 namespace shadowlab {
 
@@ -75,24 +74,9 @@ public:
             const PlanarOptions& o = light.shadow.get<PlanarOptions>();
             const std::string at = "lights[" + std::to_string(index) + "].shadow.planar.receivers";
             // Which items are receiver planes: named nodes, or every planar receiving item.
-            std::vector<std::size_t> chosen;
-            const std::vector<std::string> names = text::splitNames(o.receivers);
-            if (names.empty()) {
-                for (std::size_t i = 0; i < frame.items.size(); ++i)
-                    if (frame.items[i].receivesShadows && frame.itemPlanes[i]) chosen.push_back(i);
-            } else {
-                for (const std::string& name : names) {
-                    bool found = false;
-                    for (std::size_t i = 0; i < frame.items.size(); ++i) {
-                        const int node = frame.items[i].node;
-                        if (node < 0 || frame.scene.nodes[static_cast<std::size_t>(node)].name != name) continue;
-                        found = true;
-                        if (!frame.itemPlanes[i]) throw Error(at + ": node '" + name + "' is not planar (its mesh's vertices are not in one plane)");
-                        chosen.push_back(i);
-                    }
-                    if (!found) throw Error(at + ": no node named '" + name + "'");
-                }
-            }
+            const std::vector<std::size_t> chosen = itemsNamed(
+                frame, o.receivers, at, [&](std::size_t i) { return frame.itemPlanes[i].has_value(); },
+                "is not planar (its mesh's vertices are not in one plane)", [&](std::size_t i) { return frame.items[i].receivesShadows; });
             const glm::vec4 L = towardsLight(light);
             std::vector<Receiver>& list = receivers_[index];
             for (std::size_t i : chosen) {

@@ -123,8 +123,14 @@ TEST(CascadeTest, EachCascadeHoldsItsSliceOfTheView) {
                     EXPECT_LE(v.y, hi.y);
                 }
             } else {
-                // Tight: the slice's receivers (the ground under it) as far as casters reach over it.
-                EXPECT_LE(hi.x - lo.x, 2.0f * far[c] * 2.5f);
+                // Tight: within the slice's corners (which the stabilised
+                // sphere holds), cut to its receivers and the casters over
+                // them, so never wider than the stabilised box.
+                const LightCamera sphere = fitCascade(kSun, camera, kAspect, near, far[c], true, field.input(camera, kAspect));
+                glm::vec2 sphereLo, sphereHi;
+                box(sphere, sphereLo, sphereHi);
+                EXPECT_LE(hi.x - lo.x, sphereHi.x - sphereLo.x);
+                EXPECT_LE(hi.y - lo.y, sphereHi.y - sphereLo.y);
             }
             // Stabilised, nearer cascades have finer texels (tight ones are
             // also cut to the casters' footprint, which can make a far one smaller).
@@ -156,7 +162,9 @@ TEST(CascadeTest, AStabilisedCascadeKeepsItsTexelGridWhileTheCameraMovesAndTurns
         EXPECT_EQ(cam.nearPlane, first.nearPlane);
         EXPECT_EQ(cam.farPlane, first.farPlane);
         // ... and a box moved by whole texels only: the grid of texel
-        // centres is the same in the world.
+        // centres is the same in the world. 1e-2 texel: the box's edges are
+        // floats of at most a few hundred light-space units, whose rounding
+        // (under 3e-5 units) is a thousandth of this cascade's 2 cm texel.
         glm::vec2 lo, hi;
         box(cam, lo, hi);
         const glm::vec2 moved = (lo - lo0) / texel;
