@@ -3,7 +3,7 @@
 
 #include "gl/ShaderSource.h"
 #include "techniques/Disc.h"
-#include "techniques/Map.h"
+#include "techniques/map/Map.h"
 #include "techniques/None.h"
 #include "techniques/Planar.h"
 #include "techniques/Volume.h"

@@ -1,0 +1,131 @@
+// Technique "map": shadow maps for directional and spot lights, the lecture's
+// two passes (000, 002 §8.2-8.4, 004), and cube maps for point lights (001).
+// Shadow pass: the casters that can reach the light's frustum, drawn from
+// the light camera (src/core/LightCamera) into one layer of a texture array
+// shared by every light with the same format and size, colour writes off
+// (or depth packed into RGBA8); a point light's six faces are six layers of
+// a cube-map array, filled in one geometry-shader pass or six passes.
+// Light pass: shaders/shadow_map.glsl compares the fragment's depth in the
+// light's texture space with the map, filtered as the light asks.
+// This file is the Technique; map/Map.h lists the module's other files.
+#include "techniques/map/Map.h"
+
+#include "techniques/map/MapCameras.h"
+#include "techniques/map/MapDebugImages.h"
+#include "techniques/map/MapResources.h"
+#include "techniques/map/MapSettings.h"
+#include "techniques/map/MapTranslucent.h"
+#include "techniques/map/MapVariants.h"
+
+#include <shadowlab/Error.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+namespace shadowlab {
+
+namespace {
+
+using namespace shadowlab::map;
+
+class ShadowMap final : public Technique {
+public:
+    void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
+        res_.software = gl::isSoftwareRasterizer(host.glInfo().renderer);
+        res_.samplers.create();
+        res_.block.create();
+        // Lights with the same format and size share one texture array.
+        std::map<ArrayKey, int> layersWanted;
+        for (int index : lights) {
+            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+            const MapOptions o = effectiveHere(host, frame, light);
+            const int limit = host.glInfo().maxTextureSize;
+            if (o.size > limit)
+                throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
+                            " texels is past this GPU's limit of " + std::to_string(limit));
+            const bool cube = isCube(light);
+            layersWanted[ArrayKey::of(o, cube)] += cube ? 1 : cascadeCount(light, o);
+        }
+        res_.arrays.allocate(layersWanted, host.glInfo(), lights[0], lights.size());
+        // Translucent casters (alphaMode blend) colour the light: each
+        // array gets its transmittance layers (made once, kept with the array).
+        res_.translucent = hasTranslucentCasters(frame);
+        if (res_.translucent) res_.arrays.addTransmittance();
+        std::map<std::size_t, int> nextLayer;
+        std::map<int, MapLight> perLight;
+        for (int index : lights) {
+            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+            MapLight p;
+            p.options = effectiveHere(host, frame, light);
+            p.cube = isCube(light);
+            p.array = res_.arrays.indexOf(ArrayKey::of(p.options, p.cube));
+            p.layer = nextLayer[p.array];
+            nextLayer[p.array] += p.cube ? 1 : cascadeCount(light, p.options);
+            p.spot = light.type == LightType::Spot;
+            if (p.options.filter == MapFilter::Pcss && !(light.size > 0.0f))
+                host.note("lights[" + std::to_string(index) + "].shadow.map.filter \"pcss\": the light's size is 0, so its shadows stay hard (set lights[" +
+                          std::to_string(index) + "].size: a radius, or a directional light's angular diameter in degrees)");
+            fitCameras(p, light, frame);
+            if (auto old = lights_.find(index); old != lights_.end()) p.keepTargetsOf(old->second);
+            attachTargets(p, res_.arrays[p.array]);
+            perLight.emplace(index, std::move(p));
+        }
+        lights_ = std::move(perLight);
+    }
+
+    bool hasShadowPass(const Light&) const override { return true; }
+
+    void renderShadowPass(TechniqueHost& host, const FrameInfo& frame, const LightView& view) override {
+        MapLight& p = lights_.at(view.index);
+        if (p.cube)
+            renderCubePass(host, frame, view, res_, p);
+        else
+            renderMapPass(host, frame, view, res_, p);
+    }
+
+    std::string lightPassDefines(const Light& light) const override {
+        return LightPassVariant::of(light, res_.software).defines();
+    }
+
+    void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
+        const MapLight& p = lights_.at(view.index);
+        const MapArray& g = res_.arrays[p.array];
+        res_.block.upload(p, g, view.light, res_.translucent);
+        map::bindLightPass(p, g, res_.samplers, res_.translucent, bilinearGrid(p.options, res_.software));
+    }
+
+    void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, std::vector<DebugImage>& out) override {
+        map::debugImages(host, frame, view, res_, lights_.at(view.index), out);
+    }
+
+    void lightFrustums(const LightView& view, std::vector<glm::mat4>& out) const override {
+        const auto found = lights_.find(view.index);
+        if (found == lights_.end()) return;
+        const MapLight& p = found->second;
+        if (p.cube)
+            out.insert(out.end(), p.cubeCamera.faceClipFromWorld.begin(), p.cubeCamera.faceClipFromWorld.end());
+        else
+            for (const LightCamera& camera : p.cameras()) out.push_back(camera.clipFromWorld());
+    }
+
+private:
+    // The light's options with its preset, and lecture 000's map of the window's size.
+    static MapOptions effectiveHere(TechniqueHost& host, const FrameInfo& frame, const Light& light) {
+        MapOptions o = effective(light);
+        if (isLecture2D(o, light)) o.size = std::clamp(std::max(frame.viewport.x, frame.viewport.y), 16, host.glInfo().maxTextureSize);
+        return o;
+    }
+
+    MapResources res_;
+    std::map<int, MapLight> lights_;
+};
+
+} // namespace
+
+TechniqueEntry mapTechnique() {
+    return {"map", "a shadow map per light: orthographic for directional, perspective for spot lights", &mapOptionTable(),
+            "shadow_map.glsl", [] { return std::make_unique<ShadowMap>(); }, &map::unsupported, "shadow_map_vertex.glsl"};
+}
+
+} // namespace shadowlab

@@ -1,0 +1,28 @@
+#pragma once
+// Technique "map": shadow maps for directional (orthographic) and spot
+// (perspective) lights, cube maps for point lights; options in
+// include/shadowlab/MapOptions.h. The module's files (src/techniques/map/):
+//   Map.cpp            the Technique: per frame, which light gets which
+//                      array layer and cameras; each pass handed on
+//   MapOptionTable.cpp the options table and the combinations refused
+//   MapSettings        a light's options with its preset, and what follows
+//   MapArrays          the texture arrays lights share, and the memory budget
+//   MapLight.h         what is kept per light
+//   MapCameras         the lights' cameras and the casters each one draws
+//   MapTargets.cpp     the framebuffers on each light's layers
+//   MapPass2D.cpp      the shadow pass of a directional or spot light
+//   MapCubePass.cpp    the shadow pass of a point light's cube
+//   MapMoments         filterable moment maps: constants, clear, blur
+//   MapTranslucent     translucent casters' transmittance layers
+//   MapBlock           the uniform block (shaders/shadow_map_shared.h)
+//   MapBindings        the light pass's textures and samplers
+//   MapFloors          each pass's floor (a bare depth draw), for bench
+//   MapDebugImages     the maps, cube crosses, texel density, cascades as images
+#include "techniques/Technique.h"
+
+namespace shadowlab {
+
+/// The registry row of "map".
+TechniqueEntry mapTechnique();
+
+} // namespace shadowlab

@@ -1,0 +1,131 @@
+// Technique "map": the texture arrays (MapArrays.h).
+#include "techniques/map/MapArrays.h"
+
+#include "techniques/map/MapSettings.h"
+
+#include <shadowlab/Error.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace shadowlab::map {
+
+GLenum depthFormat(MapFormat f) {
+    switch (f) {
+    case MapFormat::Depth16: return GL_DEPTH_COMPONENT16;
+    case MapFormat::Depth24: return GL_DEPTH_COMPONENT24;
+    case MapFormat::Depth32F: return GL_DEPTH_COMPONENT32F;
+    case MapFormat::Rgba8:
+    case MapFormat::R8: return GL_DEPTH_COMPONENT24;  // the depth test's own buffer; the map is the colour
+    }
+    return GL_DEPTH_COMPONENT32F;
+}
+
+int momentCount(MapRepresentation r) { return r == MapRepresentation::Depth ? 0 : r == MapRepresentation::Vsm || r == MapRepresentation::Evsm2 ? 2 : 4; }
+
+bool sharedDepthBuffer(const ArrayKey& key) { return key.format == MapFormat::R8 && !key.cube; }
+
+double texelBytes(const ArrayKey& key) {
+    const double depth = sharedDepthBuffer(key) ? 0.0 : key.format == MapFormat::Depth16 ? 2.0 : 4.0;  // depth24 is stored in 4 bytes
+    const double colour = key.format == MapFormat::Rgba8 ? 4.0 : key.format == MapFormat::R8 ? 1.0 : 0.0;
+    return depth + colour + momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
+}
+
+GLenum momentFormatOf(const ArrayKey& k) {
+    const bool half = k.momentFormat == MapMomentFormat::Rgba16f;
+    return momentCount(k.representation) == 2 ? (half ? GL_RG16F : GL_RG32F) : (half ? GL_RGBA16F : GL_RGBA32F);
+}
+
+namespace {
+
+// Stated limits, before anything is allocated: layers per array, and all
+// maps together within kMapBudgetBytes (a 16384^2 depth32f map is 1 GiB;
+// more than that is almost always a typo, and on llvmpipe it would take
+// system memory and seconds per frame).
+void checkLimits(const std::map<ArrayKey, int>& layersWanted, const GlInfo& info, int firstLight, std::size_t lightCount) {
+    constexpr double kMapBudgetBytes = 1024.0 * 1024.0 * 1024.0;
+    double bytes = 0.0;
+    for (const auto& wanted : layersWanted) {
+        const ArrayKey& key = wanted.first;
+        const int perLight = key.cube ? 6 : 1;
+        bytes += texelBytes(key) * static_cast<double>(key.size) * static_cast<double>(key.size) * wanted.second * perLight +
+                 (sharedDepthBuffer(key) ? 4.0 * static_cast<double>(key.size) * static_cast<double>(key.size) : 0.0);
+        if (wanted.second * perLight > info.maxArrayLayers)
+            throw Error("lights[" + std::to_string(firstLight) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
+                        " map layers in one array (" + (perLight == 6 ? std::to_string(wanted.second) + " point light(s), six each" : "lights and cascades") +
+                        "), past this GPU's limit of " + std::to_string(info.maxArrayLayers) + " layers");
+    }
+    if (bytes > kMapBudgetBytes) {
+        char text[256];
+        std::snprintf(text, sizeof text, "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB (lower lights[i].shadow.map.size)",
+                      lightCount, bytes / kMapBudgetBytes);
+        throw Error("lights[" + std::to_string(firstLight) + "].shadow.map.size: " + text);
+    }
+}
+
+// A new array of `layers` maps for `key`, with the colour, moment and blur
+// textures its kind needs.
+MapArray makeArray(const ArrayKey& key, int layers, std::uint64_t generation) {
+    MapArray g;
+    g.key = key;
+    g.layers = layers;
+    g.generation = generation;
+    const int size = key.size;
+    const int levels = key.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(size)))) : 1;
+    const bool colour = isPacked(key.format) || g.hasMoments();  // the depth array only serves the depth test
+    g.depth = gl::Texture(g.target());
+    glTextureStorage3D(g.depth.id(), colour ? 1 : levels, depthFormat(key.format), size, size,
+                       sharedDepthBuffer(key) ? 1 : layers * g.layersPerLight());
+    if (isPacked(key.format)) {
+        g.packed = gl::Texture(g.target());
+        glTextureStorage3D(g.packed.id(), levels, key.format == MapFormat::R8 ? GL_R8 : GL_RGBA8, size, size, layers * g.layersPerLight());
+    }
+    if (g.hasMoments()) {
+        g.moments = gl::Texture(g.target());
+        glTextureStorage3D(g.moments.id(), levels, momentFormatOf(key), size, size, layers);
+        g.blurScratch = gl::Texture(GL_TEXTURE_2D);
+        glTextureStorage2D(g.blurScratch.id(), 1, momentFormatOf(key), size, size);
+        g.blurFbo = gl::Framebuffer();
+        glNamedFramebufferTexture(g.blurFbo.id(), GL_COLOR_ATTACHMENT0, g.blurScratch.id(), 0);
+        glNamedFramebufferDrawBuffer(g.blurFbo.id(), GL_COLOR_ATTACHMENT0);
+        gl::checkFramebuffer(g.blurFbo, "moment blur framebuffer");
+    }
+    return g;
+}
+
+} // namespace
+
+void MapArrays::allocate(const std::map<ArrayKey, int>& layersWanted, const GlInfo& info, int firstLight, std::size_t lightCount) {
+    checkLimits(layersWanted, info, firstLight, lightCount);
+    std::vector<MapArray> arrays;
+    for (const auto& [key, layers] : layersWanted) {
+        // Keep an existing array when it still fits, so maps are not reallocated every frame.
+        auto same = std::find_if(arrays_.begin(), arrays_.end(), [&](const MapArray& g) { return g.key == key && g.layers == layers; });
+        if (same != arrays_.end())
+            arrays.push_back(std::move(*same));
+        else
+            arrays.push_back(makeArray(key, layers, ++generations_));
+    }
+    arrays_ = std::move(arrays);
+}
+
+void MapArrays::addTransmittance() {
+    for (MapArray& g : arrays_)
+        if (!g.transmit) {
+            g.transmit = gl::Texture(g.target());
+            glTextureStorage3D(g.transmit.id(), 1, GL_RGBA8, g.size(), g.size(), g.layers * g.layersPerLight());
+            g.transmitDepth = gl::Texture(g.target());
+            glTextureStorage3D(g.transmitDepth.id(), 1, GL_R32F, g.size(), g.size(), g.layers * g.layersPerLight());
+        }
+}
+
+std::size_t MapArrays::indexOf(const ArrayKey& key) const {
+    std::size_t found = 0;
+    for (std::size_t g = 0; g < arrays_.size(); ++g)
+        if (arrays_[g].key == key) found = g;
+    return found;
+}
+
+} // namespace shadowlab::map

@@ -1,0 +1,98 @@
+// Technique "map": the light pass's textures and samplers (MapBindings.h).
+#include "techniques/map/MapBindings.h"
+
+#include "techniques/map/MapSettings.h"
+
+#include "shadowlab_shared.h"
+
+namespace shadowlab::map {
+
+namespace {
+
+gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
+    gl::Sampler s;
+    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, minFilter);
+    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, magFilter);
+    // Outside the map: the border, depth 1 (lit).
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glSamplerParameterfv(s.id(), GL_TEXTURE_BORDER_COLOR, one);
+    if (compare) {
+        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    }
+    return s;
+}
+
+// The translucent casters' transmittance and nearest depth, two units up.
+void bindTransmittance(const MapArray& g, const MapSamplers& samplers, bool translucent) {
+    if (!translucent || !g.transmit) return;
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 2, g.transmit.id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST + 2, samplers.plainNearest.id());  // outside the map: the border, white
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 3, g.transmitDepth.id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST + 3, samplers.plainNearest.id());  // and depth 1
+}
+
+// PCSS's blocker search reads the stored depths themselves: the same
+// depth array on the next unit through a sampler without comparison.
+void bindRawDepth(const MapLight& p, const MapArray& g, const MapSamplers& samplers) {
+    if (p.options.filter != MapFilter::Pcss || isPacked(g.format())) return;
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, g.depth.id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
+}
+
+void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent) {
+    // Filters read across face edges (the test with a plane over the seams).
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    const bool packed = isPacked(g.format());
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
+    const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss;
+    glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? samplers.plainNearest.id() : linear ? samplers.compareLinear.id() : samplers.compareNearest.id());
+    bindRawDepth(p, g, samplers);
+    bindTransmittance(g, samplers, translucent);
+}
+
+} // namespace
+
+void MapSamplers::create() {
+    if (compareNearest) return;
+    compareNearest = makeSampler(GL_NEAREST, GL_NEAREST, true);
+    compareLinear = makeSampler(GL_LINEAR, GL_LINEAR, true);
+    plainNearest = makeSampler(GL_NEAREST, GL_NEAREST, false);
+    compareNearestMip = makeSampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, true);
+    compareLinearMip = makeSampler(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, true);
+    plainNearestMip = makeSampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, false);
+    // Moments are filtered like colour; past the edge, the edge.
+    momentLinear = makeSampler(GL_LINEAR, GL_LINEAR, false);
+    momentLinearMip = makeSampler(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, false);
+    for (const gl::Sampler* m : {&momentLinear, &momentLinearMip}) {
+        glSamplerParameteri(m->id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glSamplerParameteri(m->id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+}
+
+void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool bilinearGrid) {
+    if (p.cube) {
+        bindCube(p, g, samplers, translucent);
+        return;
+    }
+    if (g.hasMoments()) {
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.moments.id());
+        glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? samplers.momentLinearMip.id() : samplers.momentLinear.id());
+    } else if (isPacked(g.format())) {
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
+        glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
+    } else {
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
+        // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
+        const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss ||
+                            (p.options.filter == MapFilter::Grid && bilinearGrid);
+        glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? (linear ? samplers.compareLinearMip.id() : samplers.compareNearestMip.id())
+                                                      : (linear ? samplers.compareLinear.id() : samplers.compareNearest.id()));
+        bindRawDepth(p, g, samplers);
+    }
+    bindTransmittance(g, samplers, translucent);
+}
+
+} // namespace shadowlab::map

@@ -1,0 +1,34 @@
+#pragma once
+// Technique "map": its uniform block (shaders/shadow_map_shared.h,
+// shared::MapUniforms at SL_BINDING_TECHNIQUE), filled per light.
+#include "gl/Object.h"
+#include "techniques/map/MapArrays.h"
+#include "techniques/map/MapLight.h"
+
+#include <shadowlab/Scene.h>
+
+#include "shadow_map_shared.h"
+
+namespace shadowlab::map {
+
+class MapBlock {
+public:
+    /// Creates the buffer (once; a no-op after).
+    void create();
+    /// The block for light `p` (in array `g`), written and bound.
+    void upload(const MapLight& p, const MapArray& g, const Light& light, bool translucent);
+    /// Only the shadow pass's camera (the block's first member).
+    void setLightClip(const glm::mat4& lightClipFromWorld);
+    /// The moment blur's pass: radius, axis and layer (MapUniforms::blur).
+    void setBlur(const glm::vec4& blur);
+    /// The last uploaded block with another shadow-pass camera, whole.
+    void writeWithLightClip(const glm::mat4& lightClipFromWorld);
+    /// The last uploaded block again, whole.
+    void restore();
+
+private:
+    gl::Buffer ubo_{gl::NoCreate};
+    shared::MapUniforms uniforms_{};  ///< what upload() last wrote
+};
+
+} // namespace shadowlab::map

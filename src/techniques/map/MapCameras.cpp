@@ -1,0 +1,72 @@
+// Technique "map": the lights' cameras and their casters (MapCameras.h).
+#include "techniques/map/MapCameras.h"
+
+#include "techniques/map/MapSettings.h"
+
+#include <algorithm>
+#include <string>
+
+namespace shadowlab::map {
+
+namespace {
+
+// A directional light's cascades: the view's depth split into slices
+// (core/LightCamera: cascadeSplits, fitCascade), one camera each.
+void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in) {
+    const Camera& camera = frame.scene.camera;
+    const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
+    // Stabilised slices must not move with the camera: they end at its far
+    // plane; tight ones at the farthest receiver it sees.
+    const float near = camera.nearPlane;
+    const float far = p.options.stabilize ? camera.farPlane : viewReach(camera, in);
+    std::string problem;  // checked when the scene was read (the registry's unsupported())
+    const std::vector<float> given = parseSplits(p.options, problem);
+    p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
+    p.cascades.clear();
+    for (std::size_t c = 0; c < p.cascadeFar.size(); ++c)
+        p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, c == 0 ? near : p.cascadeFar[c - 1], p.cascadeFar[c],
+                                        p.options.stabilize, in));
+    p.camera = p.cascades.front();
+    const glm::mat4& v = frame.viewFromWorld;
+    p.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
+}
+
+// Casters the fit found unable to shadow anything visible are skipped.
+bool mayCast(const LightCamera& camera, std::size_t item) { return camera.casts.empty() || camera.casts[item] != 0; }
+
+// Directional lights clamp depth, so only the four side planes cull.
+bool mayIntersectSides(const glm::mat4& clipFromWorld, const Bounds& box) {
+    glm::mat4 flattened = clipFromWorld;
+    for (int c = 0; c < 4; ++c) flattened[c][2] = 0.0f;  // z' = 0: never beyond near or far
+    return mayIntersect(flattened, box);
+}
+
+} // namespace
+
+void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame) {
+    const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld, p.options.size, footprint(p.options)};
+    if (p.cube) {
+        const auto [nearPlane, farPlane] = cubeNearFar(p.options);
+        p.cubeCamera = fitCube(light, p.options.fit, in, nearPlane, farPlane);
+    }
+    if (p.options.preset == MapPreset::LearnOpenGL && light.type == LightType::Directional)
+        p.camera = learnOpenGlCamera(light, p.options.size);
+    else if (light.type == LightType::Point && !p.cube)  // preset "lecture-000"
+        p.camera = lecturePointCamera(light, p.options.size);
+    else if (p.cube)
+        ;  // the cube's cameras above
+    else if (light.type == LightType::Spot)
+        p.camera = fitSpot(light, p.options.fit, in);
+    else if (cascadeCount(light, p.options) > 1)
+        fitCascades(p, light, frame, in);
+    else
+        p.camera = fitDirectional(glm::normalize(light.direction), p.options.fit, in);
+}
+
+bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i, bool moments) {
+    if (!moments && !mayCast(camera, i)) return false;
+    const glm::mat4 lightClip = camera.clipFromWorld();
+    return !camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
+}
+
+} // namespace shadowlab::map

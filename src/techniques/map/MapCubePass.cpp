@@ -1,0 +1,125 @@
+// Technique "map": a point light's cube-map pass (lecture 001; MapResources.h:
+// renderCubePass). The six faces are six layers of a cube-map array, drawn
+// in one geometry-shader pass (gl_Layer picks the faces each triangle
+// touches) or in six; only the texels that held casters or will are cleared.
+#include "techniques/map/MapResources.h"
+
+#include "techniques/map/MapSettings.h"
+#include "techniques/map/MapTranslucent.h"
+#include "techniques/map/MapVariants.h"
+
+#include <cmath>
+#include <string>
+
+namespace shadowlab::map {
+
+namespace {
+
+// The texels of a `size`-texel face that `box` may cover through
+// `faceClip` (a texel of margin; the whole face when a corner is behind the
+// face's camera).
+TexelRect projectedRect(const glm::mat4& faceClip, const Bounds& box, int size) {
+    float lo[2] = {1.0f, 1.0f}, hi[2] = {-1.0f, -1.0f};
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z);
+        const glm::vec4 clip = faceClip * glm::vec4(corner, 1.0f);
+        if (!(clip.w > 1e-6f)) return TexelRect::whole().clamped(size);
+        for (int a = 0; a < 2; ++a) {
+            lo[a] = std::min(lo[a], clip[a] / clip.w);
+            hi[a] = std::max(hi[a], clip[a] / clip.w);
+        }
+    }
+    auto texel = [&](float ndc) { return static_cast<int>(std::floor((ndc * 0.5f + 0.5f) * static_cast<float>(size))); };
+    return TexelRect{texel(lo[0]) - 1, texel(lo[1]) - 1, texel(hi[0]) + 2, texel(hi[1]) + 2}.clamped(size);
+}
+
+// What the frame's casters need of each face: whether it is drawn, the
+// texels they may cover, their triangles.
+struct FaceUse {
+    std::array<bool, 6> used{};
+    std::array<TexelRect, 6> covered{};
+    std::array<double, 6> triangles{};
+    std::size_t drawn = 0;  ///< triangles drawn, each once
+};
+
+FaceUse faceUse(const FrameInfo& frame, const MapLight& p, int size) {
+    FaceUse use;
+    for (std::size_t i = 0; i < frame.items.size(); ++i) {
+        const std::uint8_t mask = p.faceMask(i);
+        if (!mask || !frame.items[i].castsShadows) continue;
+        const auto triangles = static_cast<double>(frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount());
+        use.drawn += static_cast<std::size_t>(triangles);
+        for (std::size_t f = 0; f < 6; ++f)
+            if (mask & (1u << f)) {
+                use.used[f] = true;
+                use.triangles[f] += triangles;
+                use.covered[f] = use.covered[f].united(projectedRect(p.cubeCamera.faceClipFromWorld[f], frame.itemBounds[i], size));
+            }
+    }
+    return use;
+}
+
+// Clears, per face, only the texels that held casters or will: the rest is still clear.
+void clearFaces(TechniqueHost& host, const MapArray& g, MapLight& p, const FaceUse& use) {
+    const auto scope = host.timeScope("clear");
+    const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    for (int f = 0; f < 6; ++f) {
+        const auto face = static_cast<std::size_t>(f);
+        const TexelRect r = p.faceDirty[face].clamped(g.size()).united(use.covered[face]);
+        p.faceDirty[face] = use.covered[face];
+        if (r.empty()) continue;
+        glClearTexSubImage(g.depth.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, one);
+        if (isPacked(g.format()))
+            glClearTexSubImage(g.packed.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_RGBA, GL_FLOAT, one);
+    }
+}
+
+// The casters into the cube: once through the geometry shader, or once per face they touch.
+void drawCasters(TechniqueHost& host, const MapArray& g, const MapLight& p, const FaceUse& use) {
+    const bool onePass = p.options.cubePasses == MapCubePasses::One;
+    const std::string defines = CubePassVariant{g.format(), onePass, p.options.faceCulling}.defines();
+    glViewport(0, 0, g.size(), g.size());
+    if (onePass) {
+        const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"},
+                                                    {GL_GEOMETRY_SHADER, "shadow_map_cube.geom"},
+                                                    {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}},
+                                                   defines});
+        glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
+        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+            if (!p.faceMask(i)) return false;
+            glProgramUniform1ui(program.id(), 0, p.faceMask(i));
+            return true;
+        });
+        return;
+    }
+    const gl::Program& program = host.program(
+        {{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}}, defines});
+    for (int f = 0; f < 6; ++f) {
+        if (!use.used[static_cast<std::size_t>(f)]) continue;
+        glBindFramebuffer(GL_FRAMEBUFFER, p.faceFbos[static_cast<std::size_t>(f)].id());
+        glProgramUniform1i(program.id(), 1, f);
+        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return (p.faceMask(i) & (1u << f)) != 0; });
+    }
+}
+
+} // namespace
+
+void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView& view, MapResources& res, MapLight& p) {
+    const MapArray& g = res.arrays[p.array];
+    const FaceUse use = faceUse(frame, p, g.size());
+    res.block.upload(p, g, view.light, res.translucent);
+    gl::RenderState state;  // all writes on for the clears
+    host.apply(state);
+    clearFaces(host, g, p, use);
+    if (!isPacked(g.format())) state.noColor();
+    state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
+    host.apply(state);
+    drawCasters(host, g, p, use);
+    static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+    host.count("triangles", static_cast<double>(use.drawn));
+    for (std::size_t f = 0; f < 6; ++f) host.count(std::string("faceTriangles.") + faceNames[f], use.triangles[f]);
+    if (res.translucent) drawCubeTranslucent(host, frame, g, p);
+    if (frame.measureFloors) res.floors.drawCube(host, res.block, g, p, use.used);
+}
+
+} // namespace shadowlab::map

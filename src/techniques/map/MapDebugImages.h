@@ -1,0 +1,15 @@
+#pragma once
+// Technique "map": the images `shadowlab render --debug-images` writes of a
+// light: its map (each cascade's; perspective depth linearised), a cube as
+// a cross, the texel density over the frame and the cascades' colours.
+#include "techniques/Technique.h"
+#include "techniques/map/MapResources.h"
+
+#include <vector>
+
+namespace shadowlab::map {
+
+void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, MapResources& res, const MapLight& p,
+                 std::vector<DebugImage>& out);
+
+} // namespace shadowlab::map

@@ -1,0 +1,80 @@
+#pragma once
+// Technique "map": what the technique keeps per light from frame to frame:
+// its effective options, its cameras (one, a cascade each, or a cube's
+// six), its place in a texture array and the framebuffers on that place.
+#include "core/LightCamera.h"
+#include "gl/Object.h"
+
+#include <shadowlab/MapOptions.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace shadowlab::map {
+
+/// A rectangle of a map's texels, [x0, x1) x [y0, y1); empty when x0 >= x1.
+struct TexelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    static TexelRect whole() { return {0, 0, 1 << 30, 1 << 30}; }
+    bool empty() const { return x0 >= x1 || y0 >= y1; }
+    TexelRect united(const TexelRect& o) const {
+        if (empty()) return o;
+        if (o.empty()) return *this;
+        return {std::min(x0, o.x0), std::min(y0, o.y0), std::max(x1, o.x1), std::max(y1, o.y1)};
+    }
+    TexelRect clamped(int size) const { return {std::max(x0, 0), std::max(y0, 0), std::min(x1, size), std::min(y1, size)}; }
+};
+
+struct MapLight {
+    MapOptions options;
+    bool spot = false;  ///< the shadow pass discards outside the cone
+    LightCamera camera;
+    std::size_t array = 0;  ///< index into MapArrays
+    int layer = 0;
+    gl::Framebuffer fbo{gl::NoCreate};  ///< the layer attached (at prepare, when the array or layer changes); cube: the whole array, layered
+    std::uint64_t attachedGeneration = 0;
+    int attachedLayer = -1;
+    // Point lights.
+    bool cube = false;
+    CubeCamera cubeCamera;
+    std::array<gl::Framebuffer, 6> faceFbos{gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate},
+                                            gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}, gl::Framebuffer{gl::NoCreate}};
+    /// Per face, the texels that may hold casters' depths from an earlier
+    /// frame (cleared again only there, and where casters are drawn now);
+    /// whole faces after (re)attaching.
+    std::array<TexelRect, 6> faceDirty{TexelRect::whole(), TexelRect::whole(), TexelRect::whole(),
+                                       TexelRect::whole(), TexelRect::whole(), TexelRect::whole()};
+    // Directional lights with cascades: a camera per slice (the first is
+    // also `camera`) in layers layer .. layer + n - 1, each slice's far end
+    // along the view, and the view's forward direction (the light pass picks
+    // a cascade by the depth along it).
+    std::vector<LightCamera> cascades;
+    std::vector<float> cascadeFar;
+    glm::vec3 viewForward{0.0f, 0.0f, -1.0f};
+    std::vector<gl::Framebuffer> cascadeFbos;
+    /// The cameras its 2D map layers were drawn from: the cascades, or the one camera.
+    std::span<const LightCamera> cameras() const { return cascades.empty() ? std::span<const LightCamera>(&camera, 1) : std::span<const LightCamera>(cascades); }
+    /// The cube faces item i is drawn into: those its bounds touch, or all
+    /// six without face culling; none for an item that cannot shadow anything seen.
+    std::uint8_t faceMask(std::size_t i) const {
+        const std::uint8_t mask = cubeCamera.faceMasks[i];
+        return options.faceCulling || !mask ? mask : std::uint8_t{0x3F};
+    }
+    /// Takes what survives from last frame's state of the same light: its
+    /// framebuffers and which layer they hold, the cube faces' dirty texels.
+    void keepTargetsOf(MapLight& old) {
+        fbo = std::move(old.fbo);
+        attachedGeneration = old.attachedGeneration;
+        attachedLayer = old.attachedLayer;
+        faceFbos = std::move(old.faceFbos);
+        cascadeFbos = std::move(old.cascadeFbos);
+        faceDirty = old.faceDirty;
+    }
+};
+
+} // namespace shadowlab::map

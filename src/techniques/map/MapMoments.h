@@ -1,0 +1,32 @@
+#pragma once
+// Technique "map": filterable moment maps (VSM, EVSM, MSM; shaders
+// shadow_map_shared.h momentsOf, shadow_map.glsl momentVisibility): their
+// constants, their clear colour and the separable blur of a layer.
+#include "techniques/Technique.h"
+#include "techniques/map/MapArrays.h"
+#include "techniques/map/MapBlock.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace shadowlab::map {
+
+/// The exponents of EVSM's warps (32-bit floats: 40 and 5, as MJP's
+/// sample; 16-bit: 5.54 each, the most e^(2c) allows under 65504) and
+/// MSM's and VSM's floors; every program that writes or reads moments gets
+/// them as defines (MapVariants), the clear colour is made from them.
+struct MomentConstants {
+    double evsmPositive = 40.0;  ///< MAP_EVSM_POSITIVE
+    double evsmNegative = 5.0;   ///< MAP_EVSM_NEGATIVE
+    double momentBias = 3e-5;    ///< MAP_MOMENT_BIAS: MSM's pull towards the middle
+    double minVariance = 1e-6;   ///< MAP_MIN_VARIANCE: VSM's floor
+    static MomentConstants of(MapMomentFormat format);
+};
+/// The moments of depth 1 (nothing in front of the far plane): the clear colour.
+glm::vec4 farMoments(const ArrayKey& k);
+/// The separable Gaussian blur of one moment layer: across into the
+/// scratch texture, then down back into the layer (its framebuffer `fbo`).
+void blurLayer(TechniqueHost& host, MapBlock& block, const MapArray& g, int layer, int radius, const gl::Framebuffer& fbo);
+
+} // namespace shadowlab::map

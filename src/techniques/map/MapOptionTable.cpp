@@ -1,0 +1,102 @@
+// Technique "map": its options table (include/shadowlab/MapOptions.h) and
+// the combinations of options it refuses, with the reason.
+#include "techniques/map/MapSettings.h"
+
+#include "core/Text.h"
+
+namespace shadowlab {
+
+const OptionTable& mapOptionTable() {
+    static const OptionTable table =
+        OptionTableFor<MapOptions>("map")
+            .integer(&MapOptions::size, "size", 16, 16384, "texels", "side of the square shadow map")
+            .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
+                    "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
+            .choice(&MapOptions::fit, "fit", {"tight", "scene"},
+                    "light camera: around what the viewer sees and the casters over it, or around the whole scene")
+            .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson", "pcf20", "pcss"},
+                    "one nearest tap; one bilinear hardware compare; kernel x kernel taps (point lights: kernel^3 in a cube of side 2 diskRadius); the lecture's dithered 4 taps (2D maps); a rotated disk; the lecture's 20 directions (point lights); soft shadows for the light's size (PCSS)")
+            .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
+            .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
+                    "grid filter: the same comparisons from ceil(kernel/2)^2 bilinear or kernel^2 nearest fetches; auto: nearest on a software rasteriser")
+            .integer(&MapOptions::samples, "samples", 4, 64, "taps", "poisson and pcss filters: taps on the disk")
+            .integer(&MapOptions::blockerSamples, "blockerSamples", 4, 64, "taps", "pcss filter: taps of the blocker search")
+            .number(&MapOptions::radius, "radius", 0.0, 32.0, "texels", "poisson filter: disk radius")
+            .number(&MapOptions::constantBias, "constantBias", 0.0, 0.1, "depth (0..1)", "subtracted from the receiver's map depth")
+            .number(&MapOptions::slopeBias, "slopeBias", 0.0, 16.0, "polygon offset factor", "shadow pass: depth offset per unit of depth slope")
+            .number(&MapOptions::offsetUnits, "offsetUnits", 0.0, 1024.0, "polygon offset units", "shadow pass: constant depth offset in the format's smallest steps")
+            .number(&MapOptions::normalBias, "normalBias", 0.0, 16.0, "texels",
+                    "receiver moved along its normal by this many map texels (their world size) times 1 - N.L")
+            .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws back faces only (closed meshes; lecture 002 §8.4.1.1)")
+            .number(&MapOptions::shadowedLight, "shadowedLight", 0.0, 1.0, "share of the light",
+                    "what a shadowed point keeps of the light (lecture 002 listing 8.4: 0.6); compare judges the shadow test, not this look")
+            .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (lecture 002 exercise 8.6.1-4; docs/techniques.md says what it does)")
+            .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl", "lecture-000"},
+                    "replace the settings with the lecture's or LearnOpenGL's (docs/techniques.md); lecture-000: a point light through lecture 000's one 60-degree map")
+            .integer(&MapOptions::cascades, "cascades", 1, 8, "maps",
+                     "directional lights: cascaded shadow maps, one per slice of the view's depth (layers of one array); 1: one map")
+            .number(&MapOptions::cascadeLambda, "cascadeLambda", 0.0, 1.0, "0 uniform .. 1 logarithmic",
+                    "cascades: where the slices split, lambda x logarithmic + (1 - lambda) x uniform (the practical scheme)")
+            .text(&MapOptions::cascadeSplits, "cascadeSplits", "cascades - 1 increasing distances, scene units, e.g. \"4 15 50\"",
+                  "cascades: the slices' far ends along the view instead of cascadeLambda's (the last slice ends at the camera's far plane when stabilised, else at the farthest receiver in view)")
+            .boolean(&MapOptions::stabilize, "stabilize",
+                     "cascades: a bounding sphere per slice and the map snapped to whole texels, so shadows do not shimmer as the camera moves; false: each slice fitted tightly")
+            .number(&MapOptions::cascadeBlend, "cascadeBlend", 0.0, 0.5, "share of a slice",
+                    "cascades: the far part of each slice over which its shadow fades into the next cascade's")
+            .choice(&MapOptions::representation, "representation", {"depth", "vsm", "evsm2", "evsm4", "msm"},
+                    "directional and spot lights: what the map stores; depth, compared per tap, or moments of depth that are blurred and filtered like colour (variance, exponential variance with 2 or 4 moments, moment shadow maps)")
+            .choice(&MapOptions::momentFormat, "momentFormat", {"rgba32f", "rgba16f"},
+                    "moments: 32- or 16-bit floats (16: half the memory, more light bleeding)")
+            .integer(&MapOptions::blur, "blur", 0, 16, "texels each side", "moments: separable Gaussian blur of sigma blur / 2 texels before the light pass")
+            .number(&MapOptions::bleedReduction, "bleedReduction", 0.0, 0.9, "share of the bound",
+                    "moments: light-bleeding reduction, the upper bound's values under this become 0 and the rest is stretched to 0..1 (darkens penumbrae)")
+            .choice(&MapOptions::cubePasses, "cubePasses", {"one", "six"},
+                    "point lights: each caster drawn once through a geometry shader that picks its faces, or one pass per face (the same map)")
+            .boolean(&MapOptions::faceCulling, "faceCulling",
+                     "point lights: each caster drawn only into the cube faces its bounds (and, in one pass, each triangle) can touch; false: into all six")
+            .number(&MapOptions::diskRadius, "diskRadius", 0.0, 10.0, "world units",
+                    "point lights, filters grid, pcf20 and poisson: the filter's radius at the fragment")
+            .number(&MapOptions::diskGrowth, "diskGrowth", 0.0, 100.0, "per viewer distance / far",
+                    "point lights: the radius times 1 + diskGrowth x (viewer distance / far)")
+            .build();
+    return table;
+}
+
+namespace map {
+
+std::string unsupported(const Light& light) {
+    const MapOptions& o = light.shadow.get<MapOptions>();
+    if (isCube(light)) {
+        if (o.filter == MapFilter::Dither4)
+            return std::string("map: filter \"dither4\" is for 2D maps (directional and spot lights); a point light's cube takes none, hardware, grid, poisson or pcf20");
+        if (o.mipmaps) return std::string("map: mipmaps are for 2D maps (directional and spot lights), not a point light's cube");
+        if (o.representation != MapRepresentation::Depth)
+            return std::string("map: representation \"vsm\", \"evsm2\", \"evsm4\" and \"msm\" are for 2D maps (directional and spot lights), not a point light's cube");
+    } else if (o.filter == MapFilter::Pcf20 && o.preset == MapPreset::Default) {
+        return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
+    }
+    if (o.representation != MapRepresentation::Depth) {
+        if (isPacked(o.format)) return std::string("map: moment maps have their own format (momentFormat); formats \"rgba8\" and \"r8\" pack depth only");
+        if (o.filter != MapFilter::Hardware)
+            return std::string("map: a moment map is filtered by its blur and bilinear lookups; filter must be \"hardware\" (the default)");
+        if (o.preset != MapPreset::Default) return std::string("map: moment maps do not combine with a preset; use preset \"default\"");
+    }
+    if (o.cascades > 1) {
+        if (light.type != LightType::Directional)
+            return std::string("map: cascades are for directional lights; a spot or point light takes one map (cascades 1)");
+        if (o.preset != MapPreset::Default)
+            return std::string("map: cascades do not combine with a preset (each preset is one map); use preset \"default\"");
+        if (o.fit == MapFit::Scene)
+            return std::string("map: cascades fit each slice of the view; fit \"scene\" is one map around the whole scene");
+        std::string problem;
+        parseSplits(o, problem);
+        if (!problem.empty()) return "map: cascadeSplits \"" + text::escapeControl(o.cascadeSplits) + "\": " + problem;
+    } else if (!o.cascadeSplits.empty() && o.cascadeSplits.find_first_not_of(" ,\t") != std::string::npos) {
+        return std::string("map: cascadeSplits is given but cascades is 1");
+    }
+    return std::string();
+}
+
+} // namespace map
+
+} // namespace shadowlab

@@ -1,0 +1,89 @@
+// Technique "map": the shadow pass of a directional or spot light, one map
+// or a cascade per layer (MapResources.h: renderMapPass). Lecture 000 and
+// 002 §8.2-8.4: the casters drawn from the light camera, colour writes off
+// (or depth packed into RGBA8, or moments), a polygon offset against acne.
+#include "techniques/map/MapResources.h"
+
+#include "techniques/map/MapCameras.h"
+#include "techniques/map/MapMoments.h"
+#include "techniques/map/MapSettings.h"
+#include "techniques/map/MapTranslucent.h"
+#include "techniques/map/MapVariants.h"
+
+#include <string>
+
+namespace shadowlab::map {
+
+namespace {
+
+// Clears the layer `fbo` holds (all writes on): depth 1, and the colour
+// the pass writes, a packed depth of 1 or the moments of depth 1.
+void clearLayer(TechniqueHost& host, const MapArray& g, const gl::Framebuffer& fbo) {
+    host.apply(gl::RenderState{});
+    const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, one);
+    if (isPacked(g.format())) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, one);
+    if (g.hasMoments()) {
+        const glm::vec4 far = farMoments(g.key);
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, &far.x);
+    }
+}
+
+// The casters' draw state: depth (and the colour the map is, if any), the
+// light's polygon offset and culling.
+gl::RenderState casterState(const MapArray& g, const MapOptions& o, const LightCamera& camera) {
+    gl::RenderState state;
+    if (!isPacked(g.format()) && !g.hasMoments()) state.noColor();
+    state.polygonOffset = o.slopeBias != 0.0f || o.offsetUnits != 0.0f;
+    state.offsetFactor = o.slopeBias;
+    state.offsetUnits = o.offsetUnits;
+    state.cull = o.cullFront ? gl::Cull::Front : gl::Cull::None;
+    // An orthographic light pancakes casters nearer than its near plane onto it.
+    state.depthClamp = !camera.perspective;
+    return state;
+}
+
+} // namespace
+
+void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView& view, MapResources& res, MapLight& p) {
+    const MapArray& g = res.arrays[p.array];
+    const bool packed = isPacked(g.format());
+    res.block.upload(p, g, view.light, res.translucent);
+    const gl::Program& program = host.program(
+        {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
+         DepthPassVariant{g.format(), p.spot, g.key.representation, g.key.momentFormat}.defines()});
+    std::size_t drawn = 0;
+    const std::span<const LightCamera> cameras = p.cameras();
+    for (std::size_t c = 0; c < cameras.size(); ++c) {
+        const LightCamera& camera = cameras[c];
+        const gl::Framebuffer& fbo = p.cascades.empty() ? p.fbo : p.cascadeFbos[c];
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, g.size(), g.size());
+        clearLayer(host, g, fbo);
+        host.apply(casterState(g, p.options, camera));
+        // This cascade's camera for the depth pass (the block's first member).
+        res.block.setLightClip(camera.clipFromWorld());
+        // Casters that cannot reach the light's frustum are not drawn.
+        std::size_t drawnHere = 0;
+        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+            const bool inside = castsInto(camera, frame, i, g.hasMoments());
+            if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+            return inside;
+        });
+        if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
+        drawn += drawnHere;
+        if (g.hasMoments() && p.options.blur > 0) blurLayer(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, fbo);
+        if (res.translucent) drawTranslucent(host, res.block, frame, g, p, camera, p.layer + static_cast<int>(c));
+    }
+    host.count("triangles", static_cast<double>(drawn));
+    // The memory of this light's layers (the map the light pass reads and what its pass needs beside it).
+    host.count("mapBytes", texelBytes(g.key) * static_cast<double>(g.size()) * static_cast<double>(g.size()) * static_cast<double>(cameras.size()));
+    if (g.mipmaps()) {
+        // Every level from the map: averaged depths or moments (of all layers; each light's pass refreshes them).
+        const auto scope = host.timeScope("mipmaps");
+        glGenerateTextureMipmap(packed ? g.packed.id() : g.hasMoments() ? g.moments.id() : g.depth.id());
+    }
+    if (frame.measureFloors) res.floors.draw(host, res.block, frame, g, p);
+}
+
+} // namespace shadowlab::map

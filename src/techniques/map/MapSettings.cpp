@@ -1,0 +1,199 @@
+// Technique "map": the light's effective options and what follows from
+// them (MapSettings.h).
+#include "techniques/map/MapSettings.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace shadowlab::map {
+
+namespace {
+
+// What the lecture's and LearnOpenGL's presets share: a depth32f map and no
+// bias but the one they set themselves.
+void presetBase(MapOptions& o) {
+    o.format = MapFormat::Depth32F;
+    o.slopeBias = 0.0f;
+    o.offsetUnits = 0.0f;
+    o.normalBias = 0.0f;
+    o.constantBias = 0.0f;
+    o.cullFront = false;
+}
+
+} // namespace
+
+// Whether the map is depth packed into a colour target (rgba8's four
+// base-255 digits, or r8's one), compared in the shader.
+bool isPacked(MapFormat f) { return f == MapFormat::Rgba8 || f == MapFormat::R8; }
+
+bool bilinearGrid(const MapOptions& o, bool softwareRasterizer) {
+    return !isPacked(o.format) && (o.gridTaps == MapGridTaps::Bilinear || (o.gridTaps == MapGridTaps::Auto && !softwareRasterizer));
+}
+
+// Texels around the fitted region that the filter may read.
+float footprint(const MapOptions& o) {
+    if (o.representation != MapRepresentation::Depth) return static_cast<float>(o.blur) + 2.0f;  // the blur, then a bilinear lookup
+    switch (o.filter) {
+    case MapFilter::None: return 1.0f;
+    case MapFilter::Hardware: return 1.5f;
+    case MapFilter::Grid: return 0.5f * static_cast<float>(o.kernel) + 1.0f;
+    case MapFilter::Dither4: return 3.0f;
+    case MapFilter::Poisson: return o.radius + 1.0f;
+    case MapFilter::Pcf20: return 1.0f;  // point lights only
+    case MapFilter::Pcss: return 0.125f * static_cast<float>(o.size) + 1.0f;  // its search and filter reach an eighth of the map
+    }
+    return 1.0f;
+}
+
+// Texels from a filter's centre to its farthest tap (the receiver-plane
+// bias covers that distance; the presets keep their own biases instead).
+float reach(const MapOptions& o) {
+    if (o.preset != MapPreset::Default || o.representation != MapRepresentation::Depth) return 0.0f;  // moments bound the depths' spread instead
+    switch (o.filter) {
+    case MapFilter::None: return 0.0f;
+    case MapFilter::Hardware: return 1.0f;  // the 2x2 bilinear footprint
+    case MapFilter::Grid: return 0.5f * static_cast<float>(o.kernel - 1) * 1.41421356f;
+    case MapFilter::Dither4: return 1.5f * 1.41421356f;
+    case MapFilter::Poisson: return o.radius;
+    case MapFilter::Pcf20: return 0.0f;  // point lights only (shadow_map.glsl computes theirs)
+    case MapFilter::Pcss: return 0.0f;   // each tap compares against the receiver's plane (shadow_map.glsl)
+    }
+    return 0.0f;
+}
+
+// The light's options with its preset applied (docs/techniques.md cites each value).
+MapOptions effective(const Light& light) {
+    MapOptions o = light.shadow.get<MapOptions>();
+    const bool cube = light.type == LightType::Point && o.preset != MapPreset::Lecture000;
+    if (cube && o.preset == MapPreset::Lecture) {
+        // Lecture 001's cube: near 1, far 25 (cubeNearFar), no bias but a
+        // constant one in world units (upload() turns it into stored depth),
+        // and its three stages by the light's filter: "none", one sample with
+        // bias 0.05; "grid", the 64-sample 3-D grid (4 per axis, offsets to
+        // 0.1) with bias 0.05; anything else, the 20 offset directions with
+        // a fixed disk radius of 0.05 and bias 0.15.
+        presetBase(o);
+        o.diskGrowth = 0.0f;
+        if (o.filter == MapFilter::None) {
+            o.constantBias = 0.05f;
+        } else if (o.filter == MapFilter::Grid) {
+            o.kernel = 4;
+            o.diskRadius = 0.1f;
+            o.constantBias = 0.05f;
+        } else {
+            o.filter = MapFilter::Pcf20;
+            o.diskRadius = 0.05f;
+            o.constantBias = 0.15f;
+        }
+        return o;
+    }
+    if (cube && o.preset == MapPreset::LearnOpenGL) {
+        // LearnOpenGL 5.advanced_lighting/3.2.2: a 1024^2 cube, near 1, far
+        // 25, bias 0.15, 20 offset directions with radius (1 + d/far)/25.
+        presetBase(o);
+        o.size = 1024;
+        o.filter = MapFilter::Pcf20;
+        o.diskRadius = 0.04f;
+        o.diskGrowth = 1.0f;
+        o.constantBias = 0.15f;
+        return o;
+    }
+    if (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000) {
+        // Lecture 000: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map
+        // of the window's size (prepare() sets it), the 4-sample dithered
+        // PCF; no normal offset, no constant bias.
+        presetBase(o);
+        o.slopeBias = 2.0f;
+        o.offsetUnits = 4.0f;
+        o.cullFront = light.shadow.get<MapOptions>().cullFront;  // 000 says nothing of it
+        o.filter = MapFilter::Dither4;
+        o.fit = MapFit::Scene;
+        // Lecture 002 listing 8.4: a shadowed point keeps 60 % (color *= 0.6).
+        o.shadowedLight = 0.6f;
+    } else if (o.preset == MapPreset::LearnOpenGL) {
+        // LearnOpenGL 5.advanced_lighting/3.1.3: 1024^2 DEPTH_COMPONENT
+        // (float), 3x3 PCF of nearest taps, bias max(0.05 (1 - N.L), 0.005),
+        // no polygon offset or normal offset; the light camera is fixed (learnOpenGlCamera).
+        presetBase(o);
+        o.size = 1024;
+        o.filter = MapFilter::Grid;
+        o.kernel = 3;
+    }
+    return o;
+}
+
+// LearnOpenGL's light camera: lookAt((-2, 4, -1), origin, +Y) with
+// ortho(-10, 10, -10, 10, 1, 7.5). Its light position is minus the light's
+// direction scaled to that length, so the scene file keeps one direction.
+LightCamera learnOpenGlCamera(const Light& light, int size) {
+    LightCamera cam;
+    const glm::vec3 eye = -glm::normalize(light.direction) * std::sqrt(21.0f);
+    cam.viewFromWorld = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    cam.nearPlane = 1.0f;
+    cam.farPlane = 7.5f;
+    cam.clipFromView = glm::ortho(-10.0f, 10.0f, -10.0f, 10.0f, cam.nearPlane, cam.farPlane);
+    cam.texelSize = 20.0f / static_cast<float>(size);
+    return cam;
+}
+
+// Lecture 000's camera for its point light (the torus-and-pyramid scene):
+// lookAt(light, origin, +Y) and perspective(60 degrees, 0.1, 1000), one map
+// towards the origin instead of a cube.
+LightCamera lecturePointCamera(const Light& light, int size) {
+    LightCamera cam;
+    const glm::vec3 towards = -light.position;
+    const glm::vec3 up = glm::length(glm::cross(towards, glm::vec3(0.0f, 1.0f, 0.0f))) > 1e-6f * glm::length(towards)
+                             ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    cam.viewFromWorld = glm::lookAt(light.position, glm::vec3(0.0f), up);
+    cam.nearPlane = 0.1f;
+    cam.farPlane = 1000.0f;
+    cam.clipFromView = glm::perspective(glm::radians(60.0f), 1.0f, cam.nearPlane, cam.farPlane);
+    cam.perspective = true;
+    cam.texelSize = 2.0f * std::tan(glm::radians(30.0f)) / static_cast<float>(size);
+    return cam;
+}
+
+// The maps of a directional light's cascades (1 for any other light).
+int cascadeCount(const Light& light, const MapOptions& o) { return light.type == LightType::Directional ? o.cascades : 1; }
+
+// cascadeSplits' distances; `problem` says what is wrong with them, if anything.
+std::vector<float> parseSplits(const MapOptions& o, std::string& problem) {
+    std::vector<float> out;
+    if (o.cascadeSplits.find_first_not_of(" ,\t") == std::string::npos) return out;
+    std::string text = o.cascadeSplits;
+    std::replace(text.begin(), text.end(), ',', ' ');
+    const char* at = text.c_str();
+    for (;;) {
+        while (*at == ' ' || *at == '\t') ++at;
+        if (*at == '\0') break;
+        char* end = nullptr;
+        const float v = std::strtof(at, &end);
+        if (end == at || !std::isfinite(v) || v <= 0.0f || (!out.empty() && v <= out.back())) {
+            problem = "expected increasing distances > 0";
+            return {};
+        }
+        out.push_back(v);
+        at = end;
+    }
+    if (static_cast<int>(out.size()) != o.cascades - 1)
+        problem = "expected " + std::to_string(o.cascades - 1) + " distance(s) for " + std::to_string(o.cascades) + " cascades, got " + std::to_string(out.size());
+    return out;
+}
+
+// A point light's map is a cube unless preset lecture-000 asks for 000's single map.
+bool isCube(const Light& light) {
+    return light.type == LightType::Point && light.shadow.get<MapOptions>().preset != MapPreset::Lecture000;
+}
+// Lecture 000's 2D settings (the window-sized map, the dither spread).
+bool isLecture2D(const MapOptions& o, const Light& light) {
+    return !isCube(light) && (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000);
+}
+// The presets' fixed near and far planes for a cube (001 and LearnOpenGL: 1 and 25); 0: fitted.
+std::pair<float, float> cubeNearFar(const MapOptions& o) {
+    return o.preset == MapPreset::Lecture || o.preset == MapPreset::LearnOpenGL ? std::pair{1.0f, 25.0f} : std::pair{0.0f, 0.0f};
+}
+
+} // namespace shadowlab::map

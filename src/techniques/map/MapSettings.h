@@ -1,0 +1,53 @@
+#pragma once
+// Technique "map": a light's effective options (its preset applied) and
+// what follows from them alone, with no GL: the kind of map it gets, its
+// preset cameras, the filter's footprint and reach, cascadeSplits' values.
+#include "core/LightCamera.h"
+
+#include <shadowlab/MapOptions.h>
+#include <shadowlab/Scene.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shadowlab::map {
+
+/// The light's options with its preset applied (docs/techniques.md cites each value).
+MapOptions effective(const Light& light);
+
+/// A point light's map is a cube unless preset lecture-000 asks for 000's single map.
+bool isCube(const Light& light);
+/// Lecture 000's 2D settings (the window-sized map, the dither spread).
+bool isLecture2D(const MapOptions& o, const Light& light);
+/// The presets' fixed near and far planes for a cube (001 and LearnOpenGL: 1 and 25); 0: fitted.
+std::pair<float, float> cubeNearFar(const MapOptions& o);
+/// The maps of a directional light's cascades (1 for any other light).
+int cascadeCount(const Light& light, const MapOptions& o);
+/// cascadeSplits' distances; `problem` says what is wrong with them, if anything.
+std::vector<float> parseSplits(const MapOptions& o, std::string& problem);
+
+/// Whether the map is depth packed into a colour target (rgba8's four
+/// base-255 digits, or r8's one), compared in the shader.
+bool isPacked(MapFormat f);
+
+/// Whether the grid filter takes its comparisons from bilinear compares
+/// (gridTaps; auto: not on a software rasteriser, which compares four
+/// texels for a bilinear fetch, so that the nearest fetches are faster).
+bool bilinearGrid(const MapOptions& o, bool softwareRasterizer);
+
+/// Why "map" cannot shadow this light with its options, or "" (the registry's unsupported()).
+std::string unsupported(const Light& light);
+
+/// Texels around the fitted region that the filter may read.
+float footprint(const MapOptions& o);
+/// Texels from a filter's centre to its farthest tap (the receiver-plane
+/// bias covers that distance; the presets keep their own biases instead).
+float reach(const MapOptions& o);
+
+/// LearnOpenGL's light camera for a directional light.
+LightCamera learnOpenGlCamera(const Light& light, int size);
+/// Lecture 000's camera for its point light: one map towards the origin.
+LightCamera lecturePointCamera(const Light& light, int size);
+
+} // namespace shadowlab::map

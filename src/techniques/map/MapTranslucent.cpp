@@ -1,0 +1,87 @@
+// Technique "map": translucent casters' transmittance layers (MapTranslucent.h).
+#include "techniques/map/MapTranslucent.h"
+
+#include "techniques/map/MapCameras.h"
+#include "techniques/map/MapVariants.h"
+
+#include <string>
+
+namespace shadowlab::map {
+
+namespace {
+
+// The target of the translucent casters for one layer (a 2D map's, or a
+// cube face's): its transmittance and nearest-depth layers as colours,
+// cleared to white, over the opaque depth of `depthLayer`, tested, not
+// written; transmittances multiply (dst x src), depths keep the least.
+gl::Framebuffer beginTranslucent(TechniqueHost& host, const MapArray& g, int layer, int depthLayer, bool depthClamp) {
+    gl::Framebuffer fbo;
+    glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
+    glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
+    glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, depthLayer);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
+    gl::checkFramebuffer(fbo, "translucent casters framebuffer");
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(0, 0, g.size(), g.size());
+    gl::RenderState state;
+    host.apply(state);
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, white);
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
+    state.depthWrite = false;
+    state.depthClamp = depthClamp;
+    host.apply(state);
+    glEnablei(GL_BLEND, 0);
+    glBlendEquationi(0, GL_FUNC_ADD);
+    glBlendFunci(0, GL_ZERO, GL_SRC_COLOR);
+    glEnablei(GL_BLEND, 1);
+    glBlendEquationi(1, GL_MIN);
+    glBlendFunci(1, GL_ONE, GL_ONE);
+    return fbo;
+}
+
+void endTranslucent(TechniqueHost& host) {
+    glDisablei(GL_BLEND, 0);
+    glDisablei(GL_BLEND, 1);
+    host.apply(gl::RenderState{});
+}
+
+} // namespace
+
+bool translucentCaster(const FrameInfo& frame, std::size_t i) {
+    const int m = frame.items[i].material;
+    return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend;
+}
+
+bool hasTranslucentCasters(const FrameInfo& frame) {
+    bool translucent = false;
+    for (std::size_t i = 0; i < frame.items.size(); ++i) translucent = translucent || (frame.items[i].castsShadows && translucentCaster(frame, i));
+    return translucent;
+}
+
+void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p, const LightCamera& camera,
+                     int layer) {
+    const auto scope = host.timeScope("translucent");
+    const gl::Framebuffer fbo = beginTranslucent(host, g, layer, sharedDepthBuffer(g.key) ? 0 : layer, !camera.perspective);
+    block.setLightClip(camera.clipFromWorld());
+    const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_transmit.frag"}},
+                                               TranslucentVariant{p.spot}.defines()});
+    host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && castsInto(camera, frame, i, true); });
+    endTranslucent(host);
+}
+
+void drawCubeTranslucent(TechniqueHost& host, const FrameInfo& frame, const MapArray& g, const MapLight& p) {
+    const auto scope = host.timeScope("translucent");
+    const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube_transmit.frag"}},
+                                               CubePassVariant{.onePass = false}.defines()});
+    for (int f = 0; f < 6; ++f) {
+        const int layer = 6 * p.layer + f;
+        const gl::Framebuffer fbo = beginTranslucent(host, g, layer, layer, false);
+        glProgramUniform1i(program.id(), 1, f);
+        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && (p.faceMask(i) & (1u << f)) != 0; });
+        endTranslucent(host);
+    }
+}
+
+} // namespace shadowlab::map

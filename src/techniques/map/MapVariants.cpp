@@ -1,0 +1,94 @@
+// Technique "map": its typed shader variants (MapVariants.h).
+#include "techniques/map/MapVariants.h"
+
+#include "techniques/map/MapMoments.h"
+#include "techniques/map/MapSettings.h"
+
+#include "shadow_map_shared.h"
+
+#include <cstdio>
+
+namespace shadowlab::map {
+
+// The GLSL tests MAP_FILTER and MAP_MOMENTS against these values.
+static_assert(static_cast<int>(MapFilter::None) == SL_MAP_FILTER_NONE && static_cast<int>(MapFilter::Hardware) == SL_MAP_FILTER_HARDWARE &&
+              static_cast<int>(MapFilter::Grid) == SL_MAP_FILTER_GRID && static_cast<int>(MapFilter::Dither4) == SL_MAP_FILTER_DITHER4 &&
+              static_cast<int>(MapFilter::Poisson) == SL_MAP_FILTER_POISSON && static_cast<int>(MapFilter::Pcf20) == SL_MAP_FILTER_PCF20 &&
+              static_cast<int>(MapFilter::Pcss) == SL_MAP_FILTER_PCSS,
+              "MapFilter's values must be shadow_map_shared.h's SL_MAP_FILTER_*");
+static_assert(static_cast<int>(MapRepresentation::Depth) == 0 && static_cast<int>(MapRepresentation::Vsm) == SL_MAP_MOMENTS_VSM &&
+              static_cast<int>(MapRepresentation::Evsm2) == SL_MAP_MOMENTS_EVSM2 && static_cast<int>(MapRepresentation::Evsm4) == SL_MAP_MOMENTS_EVSM4 &&
+              static_cast<int>(MapRepresentation::Msm) == SL_MAP_MOMENTS_MSM,
+              "MapRepresentation's values must be shadow_map_shared.h's SL_MAP_MOMENTS_* (0: depth)");
+
+namespace {
+
+// `#define NAME VALUE` lines, in the order given.
+class Defines {
+public:
+    Defines& set(const char* name, int value) {
+        text_ += std::string("#define ") + name + " " + std::to_string(value) + "\n";
+        return *this;
+    }
+    Defines& set(const char* name, bool value) { return set(name, value ? 1 : 0); }
+    // A packed format's: rgba8's four digits or r8's one byte (shadow_map_shared.h packDepth).
+    Defines& packing(MapFormat f) { return set("MAP_RGBA8", isPacked(f)).set("MAP_R8", f == MapFormat::R8); }
+    // A moment map's constants (MapMoments.h), as the GLSL reads them.
+    Defines& moments(MapMomentFormat format) {
+        const MomentConstants c = MomentConstants::of(format);
+        char text[200];
+        std::snprintf(text, sizeof text, "#define MAP_EVSM_POSITIVE %.4f\n#define MAP_EVSM_NEGATIVE %.4f\n#define MAP_MOMENT_BIAS %.1e\n#define MAP_MIN_VARIANCE %.1e\n",
+                      c.evsmPositive, c.evsmNegative, c.momentBias, c.minVariance);
+        text_ += text;
+        return *this;
+    }
+    std::string str() const { return text_; }
+
+private:
+    std::string text_;
+};
+
+} // namespace
+
+LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterizer) {
+    const MapOptions o = effective(light);
+    LightPassVariant v;
+    v.filter = o.filter;
+    v.kernel = o.kernel;
+    v.format = o.format;
+    v.gridBilinear = bilinearGrid(o, softwareRasterizer);
+    v.cube = isCube(light);
+    v.cascades = cascadeCount(light, o);
+    v.representation = v.cube ? MapRepresentation::Depth : o.representation;
+    v.momentFormat = o.momentFormat;
+    return v;
+}
+
+std::string LightPassVariant::defines() const {
+    return Defines()
+        .set("MAP_FILTER", static_cast<int>(filter))
+        .set("MAP_KERNEL", kernel)
+        .packing(format)
+        .set("MAP_GRID_BILINEAR", gridBilinear)
+        .set("MAP_CUBE", cube)
+        .set("MAP_CASCADES", cascades)
+        .set("MAP_MOMENTS", static_cast<int>(representation))
+        .moments(momentFormat)
+        .str();
+}
+
+std::string DepthPassVariant::defines() const {
+    return Defines().packing(format).set("MAP_SPOT", spot).set("MAP_MOMENTS", static_cast<int>(representation)).moments(momentFormat).str();
+}
+
+std::string CubePassVariant::defines() const {
+    return Defines().packing(format).set("MAP_CUBE_ONE_PASS", onePass).set("MAP_CUBE_CULL", faceCulling).str();
+}
+
+std::string TranslucentVariant::defines() const { return Defines().set("MAP_SPOT", spot).str(); }
+
+std::string FrameViewVariant::defines() const { return Defines().set("MAP_CASCADES", cascades).str(); }
+
+std::string BlurVariant::defines() const { return Defines().set("BLUR_FROM_ARRAY", fromArray).str(); }
+
+} // namespace shadowlab::map

@@ -1,0 +1,66 @@
+#pragma once
+// Technique "map": its shader variants as typed values. Each program the
+// technique compiles is described by one of these; defines() turns it into
+// the `#define` lines its GLSL tests, in this one place (MapVariants.cpp,
+// which also checks at compile time that the enums agree with the GLSL
+// values in shaders/shadow_map_shared.h). Everything else, the kernel's
+// radius, the taps, the biases, is a uniform (MapBlock).
+#include <shadowlab/MapOptions.h>
+#include <shadowlab/Scene.h>
+
+#include <string>
+
+namespace shadowlab::map {
+
+/// The light pass: shadow_map.glsl and shadow_map_vertex.glsl, per light.
+struct LightPassVariant {
+    MapFilter filter = MapFilter::Hardware;
+    int kernel = 3;                 ///< grid: taps per side (a loop bound)
+    MapFormat format = MapFormat::Depth32F;
+    bool gridBilinear = false;      ///< grid: the taps from bilinear compares (MapSettings: bilinearGrid)
+    bool cube = false;              ///< a point light's cube map
+    int cascades = 1;               ///< directional lights: cascaded maps, 1..SL_MAP_MAX_CASCADES
+    MapRepresentation representation = MapRepresentation::Depth;  ///< Depth for cubes
+    MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;
+    /// The variant of `light` (its effective options); `softwareRasterizer` picks the grid's taps.
+    static LightPassVariant of(const Light& light, bool softwareRasterizer);
+    std::string defines() const;
+};
+
+/// The 2D shadow pass: shadow_map_depth.vert/.frag (the floors' bare draw: the defaults).
+struct DepthPassVariant {
+    MapFormat format = MapFormat::Depth32F;
+    bool spot = false;              ///< discard outside the cone
+    MapRepresentation representation = MapRepresentation::Depth;
+    MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;
+    std::string defines() const;
+};
+
+/// The cube pass: shadow_map_cube.vert/.geom/.frag.
+struct CubePassVariant {
+    MapFormat format = MapFormat::Depth32F;
+    bool onePass = true;            ///< the geometry shader picks the faces (else one draw per face)
+    bool faceCulling = true;        ///< one pass: each triangle only to the faces it touches
+    std::string defines() const;
+};
+
+/// The translucent casters' pass: shadow_map_transmit.frag (2D; a cube's
+/// faces take CubePassVariant{.onePass = false}'s vertex stage).
+struct TranslucentVariant {
+    bool spot = false;
+    std::string defines() const;
+};
+
+/// The views of the frame coloured per light (shadow_map_density.frag, shadow_map_cascades.frag).
+struct FrameViewVariant {
+    int cascades = 1;
+    std::string defines() const;
+};
+
+/// The moment blur: shadow_map_blur.frag, across from the array or down from the scratch.
+struct BlurVariant {
+    bool fromArray = true;
+    std::string defines() const;
+};
+
+} // namespace shadowlab::map
