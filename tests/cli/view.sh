@@ -9,7 +9,7 @@
 set -u
 tool=$1; src=$2; diff=$3
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT; cd "$work"
-panel=340  # Viewer.cpp: kPanelWidth
+panel=340  # ViewerPanel.cpp: kPanelWidth
 cat > steps.txt <<'SCRIPT'
 set lights[0].shadow.technique="map"
 wait 2

@@ -1,0 +1,104 @@
+// The viewer's --script files (ViewerScript.h): read and checked whole before
+// the window opens, then run one action a frame.
+#include "ViewerScript.h"
+#include "ViewerSession.h"
+
+#include <shadowlab/Error.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace shadowlab::viewer {
+
+std::vector<Action> readScript(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(path + ": cannot open the script");
+    std::vector<Action> out;
+    std::string text;
+    for (int line = 1; std::getline(in, text); ++line) {
+        const auto hash = text.find('#');
+        if (hash != std::string::npos) text.resize(hash);
+        std::istringstream words(text);
+        Action a;
+        a.line = line;
+        if (!(words >> a.verb)) continue;
+        std::getline(words, a.argument);
+        a.argument.erase(0, a.argument.find_first_not_of(" \t"));
+        while (!a.argument.empty() && (a.argument.back() == ' ' || a.argument.back() == '\t' || a.argument.back() == '\r')) a.argument.pop_back();
+        const std::string where = path + ":" + std::to_string(line) + ": ";
+        if (a.verb == "set") {
+            if (a.argument.find('=') == std::string::npos) throw Error(where + "set: expected KEY=VALUE, got '" + a.argument + "'");
+        } else if (a.verb == "wait") {
+            char* end = nullptr;
+            const long n = std::strtol(a.argument.c_str(), &end, 10);
+            if (a.argument.empty() || *end != '\0' || n < 0 || n > 100000) throw Error(where + "wait: expected a number of frames 0..100000, got '" + a.argument + "'");
+        } else if (a.verb == "screenshot" || a.verb == "save") {
+            if (a.argument.empty()) throw Error(where + a.verb + ": expected a file name");
+        } else if (a.verb == "resize") {
+            std::istringstream size(a.argument);
+            int w = 0, h = 0;
+            std::string rest;
+            if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
+                throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
+        } else if (a.verb == "compare") {
+            // An optional directory for the error images.
+        } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "show-light" &&
+                   a.verb != "show-density") {
+            throw Error(where + "unknown action '" + a.verb +
+                        "' (expected set, wait, screenshot, save, show-maps, show-light, show-density, compare, resize, minimize, restore or quit)");
+        } else if (!a.argument.empty()) {
+            throw Error(where + a.verb + ": expected nothing after it, got '" + a.argument + "'");
+        }
+        out.push_back(a);
+    }
+    return out;
+}
+
+void ViewerSession::runScript() {
+    // The script: one action per frame, "wait N" holds it N frames, a
+    // comparison holds it until the reference is traced.
+    while (waitFrames == 0 && nextAction < script.size() && !referenceAsked && !tracing) {
+        const Action& a = script[nextAction++];
+        if (a.verb == "set") {
+            const auto eq = a.argument.find('=');
+            apply(a.argument.substr(0, eq), a.argument.substr(eq + 1));
+            if (!error.empty()) throw Error(args.script + ":" + std::to_string(a.line) + ": " + error);
+        } else if (a.verb == "wait") {
+            waitFrames = std::stoi(a.argument);
+        } else if (a.verb == "screenshot") {
+            --nextAction;  // taken after this frame is drawn
+            break;
+        } else if (a.verb == "save") {
+            save(a.argument);
+            std::cout << a.argument << "\n";
+        } else if (a.verb == "resize") {
+            std::istringstream size(a.argument);
+            int w = 0, h = 0;
+            size >> w >> h;
+            glfwSetWindowSize(window, w, h);
+        } else if (a.verb == "show-maps") {
+            showDebug = true;
+        } else if (a.verb == "show-light") {
+            showLight = true;
+        } else if (a.verb == "show-density") {
+            showDensity = true;
+        } else if (a.verb == "compare") {
+            referenceAsked = true;
+            compareDirectory = a.argument;
+            break;
+        } else if (a.verb == "minimize") {
+            glfwIconifyWindow(window);
+        } else if (a.verb == "restore") {
+            glfwRestoreWindow(window);
+        } else if (a.verb == "quit") {
+            quit = true;
+        }
+    }
+}
+
+} // namespace shadowlab::viewer

@@ -1,0 +1,180 @@
+#pragma once
+// One run of `shadowlab view` (Viewer.h): the window, the scene and the
+// settings made on it, the camera, and what the panel and the picture show.
+// Its work is split by part: the window loop and the scene read again or
+// saved (Viewer.cpp), the script (ViewerScript.cpp), mouse and keys
+// (ViewerControls.cpp), the panel (ViewerPanel.cpp), what is drawn over the
+// picture (ViewerOverlay.cpp), and the images read back for them: the
+// comparison with the reference and the techniques' debug images
+// (ViewerImages.cpp).
+#include "Viewer.h"
+#include "ViewerScript.h"
+
+#include <shadowlab/Compare.h>
+#include <shadowlab/Context.h>
+#include <shadowlab/Image.h>
+#include <shadowlab/Renderer.h>
+#include <shadowlab/Techniques.h>
+
+#include "gl/Object.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <any>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace shadowlab::viewer {
+
+// The settings made in the viewer, in the order made (a later one of the
+// same key replaces an earlier one), after the command line's --set lines.
+struct Overrides {
+    std::vector<std::string> fromCommandLine;
+    std::vector<std::pair<std::string, std::string>> made;
+    void set(const std::string& key, const std::string& value) {
+        for (auto& [k, v] : made)
+            if (k == key) {
+                v = value;
+                return;
+            }
+        made.emplace_back(key, value);
+    }
+    std::vector<std::string> all() const {
+        std::vector<std::string> out = fromCommandLine;
+        for (const auto& [k, v] : made) out.push_back(k + "=" + v);
+        return out;
+    }
+};
+
+// An orbiting camera around the scene camera's target.
+struct Orbit {
+    glm::vec3 target{0.0f};
+    float distance = 10.0f, yaw = 0.0f, pitch = 0.3f;
+    void from(const Camera& c) {
+        target = c.target;
+        const glm::vec3 d = c.position - c.target;
+        distance = std::max(glm::length(d), 1e-3f);
+        yaw = std::atan2(d.x, d.z);
+        pitch = std::asin(std::clamp(d.y / distance, -1.0f, 1.0f));
+    }
+    glm::vec3 position() const {
+        return target + distance * glm::vec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+    }
+};
+
+// A comparison with the ray-traced reference in flight: the technique's
+// frame was read when it was asked for; the tracing runs on a worker thread
+// while the window goes on drawing; the result is classified on the window's
+// thread once `done`. Destroying it cancels the tracing and waits for it.
+struct ReferenceRun {
+    std::unique_ptr<ComparisonJob> job;
+    std::thread worker;
+    std::atomic<bool> done{false};
+    std::string error;  ///< the worker's failure, written before `done`
+    std::string directory;  ///< the script's "compare DIR": where the error images go
+    int startFrame = 0;     ///< the window's frame when it started
+    ReferenceRun() = default;
+    ReferenceRun(const ReferenceRun&) = delete;
+    ReferenceRun& operator=(const ReferenceRun&) = delete;
+    ~ReferenceRun() {
+        if (job) job->cancel();
+        if (worker.joinable()) worker.join();
+    }
+};
+
+class ViewerSession {
+public:
+    /// Reads the script and the scene (a bad one is the command's error,
+    /// before any window), then opens the window.
+    explicit ViewerSession(const ViewArgs& viewArgs);
+    ViewerSession(const ViewerSession&) = delete;
+    ViewerSession& operator=(const ViewerSession&) = delete;
+
+    /// Draws frames until the window is closed or --frames / the script ends
+    /// it; returns the exit code.
+    int run();
+
+private:
+    // Viewer.cpp: the scene with every setting, and the window loop's steps.
+    Scene load() const;
+    void reload();
+    void save(const std::filesystem::path& path);
+    void apply(const std::string& key, const std::string& value);
+    void reloadIfChanged();
+    void renderFrame(int width, int height);
+    void endFrame(int width, int height, bool screenshotKey);
+    void timeFrame();
+    // ViewerScript.cpp
+    void runScript();
+    // ViewerImages.cpp
+    void startComparison(int width, int height);
+    void finishComparison();
+    void refreshDebugImages();
+    void freeReferenceTextures() { referenceTextures.clear(); }
+    void freeDebugTextures() { debugTextures.clear(); }
+    // ViewerControls.cpp
+    void handleMouse(int height);
+    bool handleKeys();
+    // ViewerPanel.cpp
+    void drawPanel(int height, bool& screenshotKey);
+    void drawComparison();
+    void drawLight(std::size_t l, const std::vector<TechniqueInfo>& all);
+    void drawOptions(const Light& light, const std::string& at);
+    void drawOption(const OptionField& f, const std::any& current, const std::string& key);
+    // ViewerOverlay.cpp
+    void drawOverlay(int width, int height);
+
+    // Declared in the order made: destroyed in reverse, the GL objects
+    // before the renderer and the window's context.
+    const ViewArgs& args;
+    const bool fromFile;
+    std::vector<Action> script;
+    Overrides overrides;
+    Scene scene;
+    Context context;
+    GLFWwindow* window;
+    Renderer renderer;
+    Orbit orbit;
+    bool cameraMoved = false;
+    std::string error;  // the last failed reload or setting, shown in the panel
+    std::filesystem::file_time_type fileTime;
+    std::deque<float> frameTimes;
+    FrameStats stats;
+    double seconds = 0.0;
+    bool playing = false;
+    int frame = 0, waitFrames = 0;
+    std::size_t nextAction = 0;
+    bool quit = false;
+    std::map<int, bool> keysDown;
+    int viewFromLight = -1;   // a light's own camera as the viewer's, -1: the orbit
+    int selectedLight = 0;    // the light Shift + drag moves, and whose cone is drawn
+    bool showLight = false;   // the selected light in wireframe over the picture
+    bool showDebug = false;   // the techniques' debug images (maps, cube crosses) in the panel
+    bool showDensity = false; // the selected light's texel density over the picture
+    gl::Texture densityTexture{gl::NoCreate};
+    std::vector<DebugImage> debugImages;
+    std::vector<gl::Texture> debugTextures;  // one per debug image, for ImGui::Image
+    Scene lastShown;                     // what the last frame drew (its debug images are read from it)
+    // The error image against the ray-traced reference: asked for (C, the
+    // button or the script), traced on a worker thread, then shown.
+    bool referenceAsked = false;
+    std::unique_ptr<ReferenceRun> tracing;
+    std::vector<std::string> referenceLines;
+    std::vector<gl::Texture> referenceTextures;
+    std::vector<ImageRGBA8> referenceImages;
+    std::string compareDirectory;  // the script's pending "compare DIR"
+    std::chrono::steady_clock::time_point lastFrame;
+};
+
+} // namespace shadowlab::viewer

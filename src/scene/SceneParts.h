@@ -1,0 +1,56 @@
+#pragma once
+// The parts of a scene file, each read from a Reader (SceneJson.h) in its
+// own file: the camera (CameraFile.cpp); the lights, their paths and shadow
+// options (LightFile.cpp); textures and materials (MaterialFile.cpp); shapes
+// (ShapeFile.cpp); the nodes and their meshes (NodeFile.cpp). SceneFile.cpp
+// reads a whole file through them. Private to the scene loader.
+#include "scene/SceneJson.h"
+
+#include <shadowlab/Scene.h>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace shadowlab::scenefile {
+
+/// `camera` into `cam`, whose values are the defaults (CameraFile.cpp).
+void readCamera(const Reader& r, Camera& cam);
+
+/// One of `lights` (LightFile.cpp).
+Light readLight(const Reader& r);
+
+/// An image file named at `r`, as RGBA8 (MaterialFile.cpp).
+ImageRGBA8 loadTexture(const Reader& r, const std::filesystem::path& file);
+
+/// A node's `shape`: a procedural mesh (ShapeFile.cpp).
+Mesh readShape(const Reader& r);
+
+/// Builds the scene's materials and nodes: materials first, as nodes name
+/// them. Materials are read in MaterialFile.cpp, nodes in NodeFile.cpp.
+class SceneBuilder {
+public:
+    SceneBuilder(Scene& scene, const ParseContext& ctx) : scene_(scene), ctx_(ctx) {}
+
+    void readMaterials(const Reader& r);
+    void readNodes(const Reader& r, int parent);
+
+    /// Every world transform and every transformed vertex must be finite:
+    /// translations near 3e38 in a parent and a child, or a large scale on a
+    /// large mesh, overflow only once composed.
+    void checkFinite() const;
+
+private:
+    int material(const Reader& r) const;
+    void readNode(const Reader& r, int parent);
+    int addMesh(Mesh mesh);
+    void importMesh(const Reader& r, int parent, int materialOverride, const Node& owner);
+
+    Scene& scene_;
+    const ParseContext& ctx_;
+    std::map<std::string, int> materialIndex_;
+    std::vector<std::string> nodeSources_; ///< JSON path (and mesh file node) per scene_.nodes entry
+};
+
+} // namespace shadowlab::scenefile
