@@ -18,9 +18,7 @@ void main() {
     int c = cascadeOf(depth);
     vec3 colour = kCascadeColour[c];
     if (c < MAP_CASCADES - 1) {
-        float far = cascadeFarOf(c);
-        float band = map.cascade.w * (far - (c > 0 ? cascadeFarOf(c - 1) : 0.0));
-        float t = band > 0.0 ? (depth - (far - band)) / band : 0.0;
+        float t = cascadeBlend(depth, c);
         if (t > 0.0) colour = mix(colour, kCascadeColour[c + 1], min(t, 1.0));
     }
     float lit = 0.55 + 0.45 * clamp(dot(normalize(vWorldNormal), map.light.xyz), 0.0, 1.0);

@@ -25,7 +25,7 @@ void main() {
     // Perspective depth is far from linear: the moments take the distance
     // along the axis between the near and far planes instead.
     float n = map.pcss.y, f = map.pcss.z;
-    z = (2.0 * n * f / (f + n - (2.0 * z - 1.0) * (f - n)) - n) / (f - n);
+    z = (perspectiveDistance(z, n, f) - n) / (f - n);
 #endif
     outMoments = momentsOf(z);
 #endif

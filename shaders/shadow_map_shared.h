@@ -91,9 +91,13 @@ float unpackDepth(vec4 v) {
 #endif
 }
 
-// Cascades (MAP_CASCADES > 1, defined by every program that includes this
-// with the map block): the view depth of a world point, and the slice it
-// lies in (the first whose far end is beyond it).
+// A perspective camera's window depth in [0, 1] as the distance along its
+// axis, between its near and far planes n and f.
+float perspectiveDistance(float depth, float n, float f) {
+    float z = 2.0 * depth - 1.0;
+    return 2.0 * n * f / (f + n - z * (f - n));
+}
+
 #if defined(MAP_MOMENTS) && MAP_MOMENTS > 0
 // The moments a map stores for depth z in [0, 1] (a spot's: linear between
 // its near and far planes): VSM (z, z^2); EVSM the warps e^(c+ z') and
@@ -112,6 +116,11 @@ vec4 momentsOf(float z) {
 }
 #endif
 
+// Cascades (MAP_CASCADES > 1, defined by every program that includes this
+// with the map block): the view depth of a world point, the slice it lies
+// in (the first whose far end is beyond it), and how far it is into the
+// band at the slice's far end where it fades into the next cascade (0
+// before the band, 1 at its end).
 #ifdef MAP_CASCADES
 float cascadeDepth(vec3 worldPosition) { return dot(worldPosition - frame.cameraPosition.xyz, map.cascade.xyz); }
 float cascadeFarOf(int c) { return map.cascadeFar[c >> 2][c & 3]; }
@@ -119,6 +128,11 @@ int cascadeOf(float depth) {
     int c = 0;
     while (c < MAP_CASCADES - 1 && depth > cascadeFarOf(c)) ++c;
     return c;
+}
+float cascadeBlend(float depth, int c) {
+    float far = cascadeFarOf(c);
+    float band = map.cascade.w * (far - (c > 0 ? cascadeFarOf(c - 1) : 0.0));
+    return band > 0.0 ? (depth - (far - band)) / band : 0.0;
 }
 #endif
 #endif

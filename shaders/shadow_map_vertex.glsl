@@ -4,6 +4,7 @@
 // vShadowPosition in the vertex shader too). Offsets are linear in the
 // position over a flat triangle, so interpolating them is exact there.
 #include "shadow_map_shared.h"
+#include "shadow_map_bias.glsl"
 #define SHADOW_VERTEX_HOOK 1
 
 #if MAP_CUBE || MAP_CASCADES > 1
@@ -30,15 +31,8 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     // which is affine in the position, so it interpolates exactly across
     // even a wall-sized triangle.
     if (map.params.w > 0.5) texel *= max(dot(worldPosition - map.light.xyz, map.axis.xyz), 0.0);
-    // Normal offset: `normalBias` texels times 1 - N.L, along the normal.
-    vec3 p = worldPosition + n * (map.bias.w * texel * (1.0 - NdotL));
-    // Receiver-plane bias for filters: a filter compares the centre's depth
-    // with occluders up to `reach` texels away, where the surface tilted by
-    // theta is tan(theta) x that distance nearer the light; move the point
-    // towards the light by as much. sin(theta) from the cross product stays
-    // accurate at small angles, where 1 - (N.L)^2 rounds to 0.
-    float tanTheta = min(length(cross(n, toLight)) / max(NdotL, 1e-4), 10.0);
-    p += toLight * (map.params.y * texel * tanTheta);
+    // The normal offset, then the receiver-plane bias for the filter's reach (shadow_map_bias.glsl).
+    vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), toLight, texel, mapTanTheta(n, toLight, NdotL));
     vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);
     vShadowNdotL = NdotL;
 }

@@ -1,0 +1,141 @@
+// Technique "map", the light pass for 2D maps (directional and spot lights,
+// one map or cascades; shadow_map.glsl includes it unless MAP_CUBE). The
+// vertex goes to the light's texture space through one matrix (the bias
+// matrix times the light's projection and view; shadow_map_vertex.glsl,
+// which also applies the normal offset and the filter's receiver-plane
+// bias), and the fragment, after the perspective divide, is compared with
+// the map by the filter's kernel (shadow_map_filter_*.glsl): in hardware
+// through a sampler2DArrayShadow, or unpacked from RGBA8 and compared here
+// (MAP_RGBA8), or bounded from moments (shadow_map_moments.glsl).
+// Cascades (MAP_CASCADES > 1, directional lights): the fragment's view
+// depth picks a cascade, each a layer of the array with its own matrix,
+// offsets applied per fragment; the far share cascade.w of each slice
+// fades into the next.
+
+#if MAP_MOMENTS > 0
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapMoments;
+#elif MAP_RGBA8
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
+// 1 where the receiver at depth `ref` is nearer than the map's occluder.
+float mapTap(float layer, vec2 uv, float ref) {
+    return ref <= unpackDepth(texture(mapPacked, vec3(uv, layer))) ? 1.0 : 0.0;
+}
+#else
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
+float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec4(uv, layer, ref)); }
+#endif
+
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+// PCSS reads stored depths in its blocker search: the same array through a
+// sampler without comparison (rgba8: unpacked).
+#if MAP_RGBA8
+float mapDepthAt(float layer, vec2 uv) { return unpackDepth(texture(mapPacked, vec3(uv, layer))); }
+#else
+layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform sampler2DArray mapRaw;
+float mapDepthAt(float layer, vec2 uv) { return texture(mapRaw, vec3(uv, layer)).r; }
+#endif
+#endif
+
+// The map a test reads: its array layer, its camera's near and far
+// planes, its texel's world size (perspective: per unit of distance), and
+// the receiver's texture-space point (uv, depth) per screen pixel in x and
+// y, taken where every fragment of a quad runs (PCSS's receiver-plane bias
+// of the taps).
+struct MapLookup {
+    float layer;
+    vec2 planes;
+    float texelWorld;
+    vec3 dx, dy;
+};
+MapLookup mapLookup(float layer) { return MapLookup(layer, vec2(0.0, 1.0), 0.0, vec3(0.0), vec3(0.0)); }
+
+// A stored depth as distance along the light (perspective: linearised).
+float mapDistance(float depth, vec2 planes) {
+    float n = planes.x, f = planes.y;
+    if (map.params.w > 0.5) return perspectiveDistance(depth, n, f);
+    return n + depth * (f - n);
+}
+
+// Translucent casters (alphaMode blend): the layer's transmittance and the
+// nearest translucent depth (shadow_map_transmit.frag); a receiver behind
+// that depth gets the light through them, coloured.
+layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform sampler2DArray mapTransmitColour;
+layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform sampler2DArray mapTransmitDepth;
+vec3 transmittanceAt(float layer, vec2 uv, float ref) {
+    if (map.transmit.x < 0.5) return vec3(1.0);
+    float nearest = texture(mapTransmitDepth, vec3(uv, layer)).r;
+    return ref > nearest ? texture(mapTransmitColour, vec3(uv, layer)).rgb : vec3(1.0);
+}
+
+// The filtered test at map point `uv` for reference depth `ref` (the filter's kernel file).
+float mapFilter(MapLookup m, vec2 uv, float ref);
+
+// The test in a map, at texture-space point s (before the divide);
+// `transmit` becomes the translucent casters' transmittance there (left as
+// it was outside the map).
+float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
+    if (s.w <= 0.0) return 1.0;
+    s.xyz /= s.w;
+    // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
+    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return 1.0;
+    float ref = s.z - map.bias.x - max(map.bias.y * (1.0 - NdotL), map.bias.z);
+    transmit = transmittanceAt(m.layer, s.xy, ref);
+    return mapFilter(m, s.xy, ref);
+}
+
+#if MAP_CASCADES > 1
+// Cascade c's test: the offsets of shadow_map_vertex.glsl, here per
+// fragment with the cascade's own texel size.
+float cascadeTest(int c, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 worldDx, vec3 worldDy, inout vec3 transmit) {
+    float texel = map.cascadeTexel[c >> 2][c & 3];
+    vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), map.light.xyz, texel, tanTheta);
+    MapLookup m = mapLookup(map.params.x + float(c));
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+    m.texelWorld = texel;
+    m.planes = map.cascadeRange[c].xy;
+    mat3 affine = mat3(map.cascadeShadowFromWorld[c]);  // orthographic: the point's change is linear
+    m.dx = affine * worldDx;
+    m.dy = affine * worldDy;
+#endif
+    return mapTest(m, map.cascadeShadowFromWorld[c] * vec4(p, 1.0), NdotL, transmit);
+}
+
+// The shadow test's visibility, 0 (shadowed) to 1 (lit): the slice's
+// cascade, fading into the next one over the far `blend` share of the
+// slice; `transmit`, the translucent casters' transmittance (the last
+// cascade tested).
+float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
+    vec3 n = worldNormal;
+    float NdotL = clamp(dot(n, map.light.xyz), 0.0, 1.0);
+    float tanTheta = mapTanTheta(n, map.light.xyz, NdotL);
+    vec3 worldDx = dFdx(worldPosition), worldDy = dFdy(worldPosition);
+    float depth = cascadeDepth(worldPosition);
+    int c = cascadeOf(depth);
+    float v = cascadeTest(c, worldPosition, n, NdotL, tanTheta, worldDx, worldDy, transmit);
+    if (c < MAP_CASCADES - 1) {
+        float t = cascadeBlend(depth, c);
+        if (t > 0.0) v = mix(v, cascadeTest(c + 1, worldPosition, n, NdotL, tanTheta, worldDx, worldDy, transmit), min(t, 1.0));
+    }
+    return v;
+}
+#else
+in vec4 vShadowCoord;   // from shadow_map_vertex.glsl: the offset point in texture space
+in float vShadowNdotL;
+
+// The shadow test's visibility, 0 (shadowed) to 1 (lit); `transmit`, the
+// translucent casters' transmittance.
+float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
+    MapLookup m = mapLookup(map.params.x);
+#if MAP_MOMENTS > 0
+    m.planes = map.pcss.yz;
+#endif
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+    m.texelWorld = map.params.z;
+    m.planes = map.pcss.yz;
+    vec3 q = vShadowCoord.xyz / vShadowCoord.w;
+    m.dx = dFdx(q);
+    m.dy = dFdy(q);
+#endif
+    return mapTest(m, vShadowCoord, vShadowNdotL, transmit);
+}
+#endif

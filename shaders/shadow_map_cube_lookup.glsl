@@ -1,0 +1,74 @@
+// Technique "map", the light pass for a point light's cube map (lecture
+// 001; shadow_map.glsl includes it when MAP_CUBE): the fragment's vector
+// from the light looks the map up, its distance over the far plane is the
+// reference (all per fragment: a point light's texel size and N.L change
+// too much across a wall-sized triangle to interpolate), and the filter's
+// kernel (shadow_map_filter_*.glsl) compares around it.
+
+#if MAP_RGBA8
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePacked;
+float cubeTap(vec3 direction, float ref) {
+    return ref <= unpackDepth(texture(mapCubePacked, vec4(direction, map.params.x))) ? 1.0 : 0.0;
+}
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, vec4(direction, map.params.x))); }
+#endif
+#else
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
+float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.params.x), ref); }
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+// The stored depths for PCSS's blocker search: a sampler without comparison.
+layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
+float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.params.x)).r; }
+#endif
+#endif
+
+// Translucent casters (alphaMode blend): the cube's transmittance and the
+// nearest translucent depth (shadow_map_cube_transmit.frag).
+layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform samplerCubeArray mapCubeTransmitColour;
+layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform samplerCubeArray mapCubeTransmitDepth;
+vec3 cubeTransmittanceAt(vec3 direction, float ref) {
+    if (map.transmit.x < 0.5) return vec3(1.0);
+    float nearest = texture(mapCubeTransmitDepth, vec4(direction, map.params.x)).r;
+    return ref > nearest ? texture(mapCubeTransmitColour, vec4(direction, map.params.x)).rgb : vec3(1.0);
+}
+
+// The filter's kernel (shadow_map_filter_*.glsl): its reach from the
+// centre in world units for a texel of world size `texel` and the radius
+// at the fragment, and the filtered test around the vector v from the
+// light for reference depth `ref` (n: the receiver's normal).
+float cubeReach(float texel, float radius);
+float cubeFilter(vec3 v, float ref, vec3 n, float radius);
+
+// The shadow test's visibility, 0 (shadowed) to 1 (lit); `transmit`, the
+// translucent casters' transmittance.
+float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
+    vec3 toLight = map.light.xyz - worldPosition;
+    float d = length(toLight);
+    if (d <= 0.0) return 1.0;
+    vec3 L = toLight / d;
+    vec3 n = worldNormal;
+    float NdotL = clamp(dot(n, L), 0.0, 1.0);
+    // World size of one texel at this distance (largest at a face's centre).
+    float texel = d * map.cube.z;
+    // Filter radius at the fragment, growing with the viewer's distance (001).
+    float radius = map.cube.w * (1.0 + map.cubeMore.x * length(frame.cameraPosition.xyz - worldPosition) / map.cube.x);
+    float reachWorld = cubeReach(texel, radius);
+    vec3 p = worldPosition;
+    float ref;
+    if (map.cubeMore.z > 0.5) {
+        // The presets: their constant bias only (in stored-depth units).
+        ref = length(p - map.light.xyz) / map.cube.x - map.bias.x;
+    } else {
+        // The normal offset, then the receiver-plane bias for the filter's
+        // reach (as for 2D maps, along the ray: shadow_map_bias.glsl).
+        p = mapNormalOffset(p, n, NdotL, texel);
+        float tanTheta = mapTanTheta(n, L, NdotL);
+        ref = (length(p - map.light.xyz) - reachWorld * tanTheta) / map.cube.x - map.bias.x;
+    }
+    vec3 v = p - map.light.xyz;
+    // Beyond the far plane: lit (004).
+    if (length(v) > map.cube.x) return 1.0;
+    transmit = cubeTransmittanceAt(v, ref);
+    return cubeFilter(v, ref, n, radius);
+}

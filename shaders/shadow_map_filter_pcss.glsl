@@ -1,0 +1,100 @@
+// Technique "map", filter "pcss": percentage-closer soft shadows (Fernando
+// 2005) for a light of size map.pcss.x: a blocker search of map.pcss.w
+// taps, the penumbra's width by similar triangles, then map.taps.z taps
+// of percentage-closer filtering over it, each tap compared against the
+// receiver's plane at its own place, not the centre's depth.
+#if MAP_MOMENTS == 0 && MAP_FILTER == SL_MAP_FILTER_PCSS
+#if MAP_CUBE
+float cubeReach(float texel, float radius) { return 0.0; }  // each tap compares against the receiver's plane itself
+
+// The reference depth of the receiver's plane (normal n, nv = n.v at the
+// centre) where the tap's direction w meets it; the centre's `ref` when
+// the plane does not face the light there.
+float cubePlaneRef(vec3 w, vec3 n, float nv, float ref) {
+    float nw = dot(n, w);
+    return nv < 0.0 && nw < 0.0 ? length(w) * nv / nw / map.cube.x - map.bias.x : ref;
+}
+
+// On a disk across the ray, for a sphere light of radius `size`.
+float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
+    float size = map.pcss.x;
+    float dr = length(v);
+    vec3 axis = v / dr;
+    vec3 t = normalize(abs(axis.y) < 0.99 ? cross(axis, vec3(0.0, 1.0, 0.0)) : cross(axis, vec3(1.0, 0.0, 0.0)));
+    vec3 b = cross(axis, t);
+    float nv = dot(n, v);
+    float rotation = mapRotation();
+    // 1. Blockers within three radii of the ray at the receiver (those at
+    // least a quarter of the way from the light).
+    int blockerTaps = int(map.pcss.w);
+    float blockers = 0.0, blockerSum = 0.0;
+    for (int k = 0; k < blockerTaps; ++k) {
+        vec3 w = v + vogelOffset3D(k, blockerTaps, 3.0 * size, rotation, t, b);
+        float d = cubeDepthAt(w);
+        if (d < cubePlaneRef(w, n, nv, ref)) {
+            blockers += 1.0;
+            blockerSum += d * map.cube.x;
+        }
+    }
+    if (blockers == 0.0) return 1.0;
+    float db = blockerSum / blockers;
+    // 2. The penumbra's half width at the receiver, by similar triangles.
+    float penumbra = size * (dr - db) / max(db, 1e-6);
+    // 3. Percentage-closer filtering over it.
+    int taps = int(map.taps.z);
+    float sum = 0.0;
+    for (int k = 0; k < taps; ++k) {
+        vec3 w = v + vogelOffset3D(k, taps, penumbra, rotation, t, b);
+        sum += cubeTap(w, cubePlaneRef(w, n, nv, ref));
+    }
+    return sum / float(taps);
+}
+#else
+// The receiver plane's depth change per uv, from the screen derivatives of
+// its texture-space point (m.dx, m.dy), clamped.
+vec2 receiverDepthSlope(MapLookup m) {
+    float det = m.dx.x * m.dy.y - m.dx.y * m.dy.x;
+    vec2 dzduv = abs(det) > 1e-20 ? vec2(m.dy.y * m.dx.z - m.dx.y * m.dy.z, m.dx.x * m.dy.z - m.dy.x * m.dx.z) / det : vec2(0.0);
+    return clamp(dzduv, vec2(-1e4), vec2(1e4));
+}
+
+float mapFilter(MapLookup m, vec2 uv, float ref) {
+    float du = map.taps.x;
+    vec2 dzduv = receiverDepthSlope(m);
+    bool perspective = map.params.w > 0.5;
+    float dr = mapDistance(ref, m.planes);
+    float texel = perspective ? m.texelWorld * dr : m.texelWorld;
+    float size = map.pcss.x;
+    float rotation = mapRotation();
+    // 1. Blockers: stored depths nearer the light than the receiver's plane
+    // within the region a blocker can shade it from: directional, the light's
+    // angular radius over the depth up to the light camera's near plane;
+    // spot, three radii at the receiver (blockers at least a quarter of the
+    // way from the light). At most an eighth of the map.
+    float limit = 0.125 / du;
+    float search = clamp((perspective ? 3.0 * size : (dr - m.planes.x) * size) / texel, 1.0, limit);
+    int blockerTaps = int(map.pcss.w);
+    float blockers = 0.0, blockerSum = 0.0;
+    for (int k = 0; k < blockerTaps; ++k) {
+        vec2 o = vogelOffset2D(k, blockerTaps, search, rotation, du);
+        float d = mapDepthAt(m.layer, uv + o);
+        if (d < ref + dot(dzduv, o)) {
+            blockers += 1.0;
+            blockerSum += mapDistance(d, m.planes);
+        }
+    }
+    if (blockers == 0.0) return 1.0;
+    float db = blockerSum / blockers;
+    // 2. The penumbra's half width at the receiver, by similar triangles.
+    float radius = min((perspective ? size * (dr - db) / max(db, 1e-6) : (dr - db) * size) / texel, limit);
+    // 3. Percentage-closer filtering over it.
+    int taps = int(map.taps.z);
+    float sum = 0.0;
+    for (int k = 0; k < taps; ++k) {
+        vec2 o = vogelOffset2D(k, taps, radius, rotation, du);
+        sum += mapTap(m.layer, uv + o, ref + dot(dzduv, o));
+    }
+    return sum / float(taps);
+}
+#endif
+#endif
