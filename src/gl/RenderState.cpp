@@ -25,10 +25,19 @@ void apply(const RenderState& s) {
     enable(GL_BLEND, s.blend);
     glBlendFunc(s.blendSrc, s.blendDst);
     glBlendEquation(s.blendEquation);
+    for (int i = 0; i < kBlendTargets; ++i) {
+        const std::optional<TargetBlend>& t = s.targetBlend[static_cast<std::size_t>(i)];
+        if (!t) continue;
+        glEnablei(GL_BLEND, static_cast<GLuint>(i));
+        glBlendFunci(static_cast<GLuint>(i), t->src, t->dst);
+        glBlendEquationi(static_cast<GLuint>(i), t->equation);
+    }
     enable(GL_POLYGON_OFFSET_FILL, s.polygonOffset);
     glPolygonOffset(s.offsetFactor, s.offsetUnits);
     enable(GL_DEPTH_CLAMP, s.depthClamp);
     enable(GL_FRAMEBUFFER_SRGB, s.framebufferSrgb);
+    for (int i = 0; i < kClipDistances; ++i) enable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i), i < s.clipDistances);
+    enable(GL_TEXTURE_CUBE_MAP_SEAMLESS, s.seamlessCubeMaps);
 }
 
 } // namespace shadowlab::gl

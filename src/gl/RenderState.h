@@ -4,6 +4,9 @@
 // culling, ...) leaks from one pass into the next.
 #include <epoxy/gl.h>
 
+#include <array>
+#include <optional>
+
 namespace shadowlab::gl {
 
 /// One face's stencil test and operations (glStencilFuncSeparate / OpSeparate).
@@ -19,8 +22,21 @@ struct StencilFace {
 
 enum class Cull { None, Back, Front };
 
+/// One colour attachment's blending (glBlendFunci / glBlendEquationi).
+struct TargetBlend {
+    GLenum src = GL_ONE;
+    GLenum dst = GL_ONE;
+    GLenum equation = GL_FUNC_ADD;
+};
+
+/// Colour attachments a state can blend one by one (the frame has three).
+constexpr int kBlendTargets = 4;
+/// Clip distances a state can enable (GL guarantees at least 8).
+constexpr int kClipDistances = 8;
+
 /// Defaults: depth test LESS with writes, no stencil, no culling, all colour
-/// channels written, no blending, no polygon offset, no depth clamp.
+/// channels written, no blending, no polygon offset, no depth clamp, no clip
+/// distances, seamless cube-map filtering.
 struct RenderState {
     bool depthTest = true;
     GLenum depthFunc = GL_LESS;
@@ -34,11 +50,17 @@ struct RenderState {
     GLenum blendSrc = GL_ONE;
     GLenum blendDst = GL_ONE;
     GLenum blendEquation = GL_FUNC_ADD;
+    /// Colour attachments blended unlike the rest (blending on, with their
+    /// own function and equation: translucent casters multiply one target
+    /// and keep the least of another); the others as blend/blendSrc/... say.
+    std::array<std::optional<TargetBlend>, kBlendTargets> targetBlend{};
     bool polygonOffset = false;
     float offsetFactor = 0.0f;   ///< glPolygonOffset factor (slope), units of max depth slope
     float offsetUnits = 0.0f;    ///< glPolygonOffset units (constant), units of minimum resolvable depth
     bool depthClamp = false;
     bool framebufferSrgb = false; ///< linear-to-sRGB conversion on writes to sRGB targets
+    int clipDistances = 0;        ///< GL_CLIP_DISTANCE0 .. this - 1 on (the vertex stage writes gl_ClipDistance), 0..kClipDistances
+    bool seamlessCubeMaps = true; ///< cube-map filters read across face edges (a context-wide switch in GL)
 
     /// The same stencil test and operations on both faces.
     RenderState& stencil(const StencilFace& both) {

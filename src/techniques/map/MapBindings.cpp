@@ -42,9 +42,8 @@ void bindRawDepth(const MapLight& p, const MapArray& g, const MapSamplers& sampl
     glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
 }
 
+// Filters read across face edges (RenderState::seamlessCubeMaps; the test with a plane over the seams).
 void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent) {
-    // Filters read across face edges (the test with a plane over the seams).
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     const bool packed = isPacked(g.format());
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
     const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss;

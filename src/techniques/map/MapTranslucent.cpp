@@ -14,7 +14,7 @@ namespace {
 // cube face's): its transmittance and nearest-depth layers as colours,
 // cleared to white, over the opaque depth of `depthLayer`, tested, not
 // written; transmittances multiply (dst x src), depths keep the least.
-gl::Framebuffer beginTranslucent(TechniqueHost& host, const MapArray& g, int layer, int depthLayer, bool depthClamp) {
+gl::Framebuffer bindTranslucentTarget(TechniqueHost& host, const MapArray& g, int layer, int depthLayer, bool depthClamp) {
     gl::Framebuffer fbo;
     glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
     glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
@@ -31,20 +31,10 @@ gl::Framebuffer beginTranslucent(TechniqueHost& host, const MapArray& g, int lay
     glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
     state.depthWrite = false;
     state.depthClamp = depthClamp;
+    state.targetBlend[0] = gl::TargetBlend{GL_ZERO, GL_SRC_COLOR, GL_FUNC_ADD};
+    state.targetBlend[1] = gl::TargetBlend{GL_ONE, GL_ONE, GL_MIN};
     host.apply(state);
-    glEnablei(GL_BLEND, 0);
-    glBlendEquationi(0, GL_FUNC_ADD);
-    glBlendFunci(0, GL_ZERO, GL_SRC_COLOR);
-    glEnablei(GL_BLEND, 1);
-    glBlendEquationi(1, GL_MIN);
-    glBlendFunci(1, GL_ONE, GL_ONE);
     return fbo;
-}
-
-void endTranslucent(TechniqueHost& host) {
-    glDisablei(GL_BLEND, 0);
-    glDisablei(GL_BLEND, 1);
-    host.apply(gl::RenderState{});
 }
 
 } // namespace
@@ -63,12 +53,11 @@ bool hasTranslucentCasters(const FrameInfo& frame) {
 void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p, const LightCamera& camera,
                      int layer) {
     const auto scope = host.timeScope("translucent");
-    const gl::Framebuffer fbo = beginTranslucent(host, g, layer, sharedDepthBuffer(g.key) ? 0 : layer, !camera.perspective);
+    const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, sharedDepthBuffer(g.key) ? 0 : layer, !camera.perspective);
     block.setLightClip(camera.clipFromWorld());
     const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_transmit.frag"}},
                                                TranslucentVariant{p.spot}.defines()});
     host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && castsInto(camera, frame, i, true); });
-    endTranslucent(host);
 }
 
 void drawCubeTranslucent(TechniqueHost& host, const FrameInfo& frame, const MapArray& g, const MapLight& p) {
@@ -77,10 +66,9 @@ void drawCubeTranslucent(TechniqueHost& host, const FrameInfo& frame, const MapA
                                                CubePassVariant{.onePass = false}.defines()});
     for (int f = 0; f < 6; ++f) {
         const int layer = 6 * p.layer + f;
-        const gl::Framebuffer fbo = beginTranslucent(host, g, layer, layer, false);
+        const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, layer, false);
         glProgramUniform1i(program.id(), 1, f);
         host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && (p.faceMask(i) & (1u << f)) != 0; });
-        endTranslucent(host);
     }
 }
 
