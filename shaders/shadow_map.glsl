@@ -17,15 +17,10 @@
 #include "shadow_map_2d.glsl"
 #endif
 
-// The kernels: each file holds one filter for both kinds of map and is
-// empty unless MAP_FILTER (and MAP_MOMENTS) select it.
-#include "shadow_map_filter_tap.glsl"
-#include "shadow_map_filter_grid.glsl"
-#include "shadow_map_filter_dither4.glsl"
-#include "shadow_map_filter_poisson.glsl"
-#include "shadow_map_filter_pcf20.glsl"
-#include "shadow_map_filter_pcss.glsl"
-#include "shadow_map_moments.glsl"
+// The filter's kernel (shadow_map_filter_<name>.glsl, for both kinds of
+// map) or a moment map's bound (shadow_map_moments.glsl): the variant
+// fills the slot (LightPassVariant::kernelFile).
+#include "@map_filter"
 
 vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     vec3 transmit = vec3(1.0);  // coloured by the translucent casters in the way

@@ -1,7 +1,6 @@
 // Technique "map", filter "dither4": the lecture's 4-sample dithered PCF
 // (000), one of four patterns from gl_FragCoord mod 2, taps `spread`
 // texels apart (map.taps.w). 2D maps only.
-#if MAP_MOMENTS == 0 && MAP_FILTER == SL_MAP_FILTER_DITHER4
 #if MAP_CUBE
 #error filter dither4 is for 2D maps
 #endif
@@ -12,4 +11,3 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
                 mapTap(m.layer, uv + vec2(0.5 * w + o.x, 1.5 * w - o.y), ref) + mapTap(m.layer, uv + vec2(0.5 * w + o.x, -0.5 * w - o.y), ref);
     return 0.25 * sum;
 }
-#endif

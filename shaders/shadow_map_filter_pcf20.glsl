@@ -1,6 +1,5 @@
 // Technique "map", filter "pcf20": the lecture's 20 offset directions
 // (001) times the radius, far apart, none along the ray. Cube maps only.
-#if MAP_MOMENTS == 0 && MAP_FILTER == SL_MAP_FILTER_PCF20
 #if !MAP_CUBE
 #error filter pcf20 is for point lights' cube maps
 #endif
@@ -18,4 +17,3 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     for (int k = 0; k < 20; ++k) sum += cubeTap(v + kPcf20[k] * radius, ref);
     return sum / 20.0;
 }
-#endif

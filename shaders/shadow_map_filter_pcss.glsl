@@ -3,7 +3,6 @@
 // taps, the penumbra's width by similar triangles, then map.taps.z taps
 // of percentage-closer filtering over it, each tap compared against the
 // receiver's plane at its own place, not the centre's depth.
-#if MAP_MOMENTS == 0 && MAP_FILTER == SL_MAP_FILTER_PCSS
 #if MAP_CUBE
 float cubeReach(float texel, float radius) { return 0.0; }  // each tap compares against the receiver's plane itself
 
@@ -96,5 +95,4 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     }
     return sum / float(taps);
 }
-#endif
 #endif

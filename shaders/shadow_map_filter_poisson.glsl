@@ -2,7 +2,6 @@
 // uniform by area) of map.taps.z taps rotated per pixel, within
 // map.taps.y texels (2D maps) or across the ray within the radius (cube
 // maps: no taps wasted along the ray).
-#if MAP_MOMENTS == 0 && MAP_FILTER == SL_MAP_FILTER_POISSON
 #if MAP_CUBE
 float cubeReach(float texel, float radius) { return radius; }
 
@@ -24,5 +23,4 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     for (int k = 0; k < taps; ++k) sum += mapTap(m.layer, uv + vogelOffset2D(k, taps, map.taps.y, rotation, map.taps.x), ref);
     return sum / float(taps);
 }
-#endif
 #endif

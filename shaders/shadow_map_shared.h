@@ -5,14 +5,8 @@
 
 #include "shadowlab_shared.h"
 
-// MAP_FILTER variant values (MapFilter's order).
-#define SL_MAP_FILTER_NONE 0
-#define SL_MAP_FILTER_HARDWARE 1
-#define SL_MAP_FILTER_GRID 2
-#define SL_MAP_FILTER_DITHER4 3
-#define SL_MAP_FILTER_POISSON 4
-#define SL_MAP_FILTER_PCF20 5
-#define SL_MAP_FILTER_PCSS 6
+// MAP_FILTER's values, SL_MAP_FILTER_<NAME>, come with the light pass's
+// variant (src/techniques/map/MapFilters.cpp: the filters' table).
 
 // MAP_MOMENTS variant values (MapRepresentation's order): 0 a depth map.
 #define SL_MAP_MOMENTS_VSM 1

@@ -199,6 +199,7 @@ struct Renderer::Impl final : TechniqueHost {
         variant.techniqueFile = entry->shaderFile;
         variant.techniqueVertexFile = entry->vertexShaderFile;
         variant.techniqueDefines = technique(light.shadow.technique).lightPassDefines(light);
+        variant.techniqueIncludes = technique(light.shadow.technique).lightPassIncludes(light);
     }
 
     void setLight(std::size_t i) {

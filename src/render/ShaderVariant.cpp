@@ -35,6 +35,7 @@ gl::ProgramKey ShaderVariant::program() const {
                        preamble(),
                        {{"@shadow", technique ? techniqueFile : std::string("shadow_none.glsl")}}};
     if (technique && !techniqueVertexFile.empty()) key.aliases.emplace_back("@shadow_vertex", techniqueVertexFile);
+    if (technique) key.aliases.insert(key.aliases.end(), techniqueIncludes.begin(), techniqueIncludes.end());
     return key;
 }
 

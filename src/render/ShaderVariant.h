@@ -17,6 +17,7 @@ struct ShaderVariant {
     std::string techniqueFile = "shadow_none.glsl"; ///< with `light`: fills "@shadow"
     std::string techniqueDefines;   ///< with `light`: the technique's own `#define` lines
     std::string techniqueVertexFile; ///< with `light`: fills "@shadow_vertex?" in scene.vert; empty for none
+    gl::IncludeAliases techniqueIncludes; ///< with `light`: the technique's own slots (Technique::lightPassIncludes)
     bool baseColorTexture = false;
     bool projector = false;         ///< with a spot `light`: its projected image multiplies its colour
     bool writeSurfaces = false;     ///< world position and geometric normal (compare)

@@ -131,6 +131,9 @@ public:
     virtual bool needsInfiniteFar(const Light&) const { return false; }
     /// `#define` lines for this light's variant of the technique's GLSL file.
     virtual std::string lightPassDefines(const Light&) const { return {}; }
+    /// Files that fill the technique's own `#include "@slot"` lines in this
+    /// light's variant (slot, embedded file), e.g. a filter's kernel.
+    virtual gl::IncludeAliases lightPassIncludes(const Light&) const { return {}; }
     /// Binds what the GLSL hook reads (textures, the technique's block).
     virtual void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView&) {}
     /// The light's pass after the base pass; the frame target is bound. The

@@ -88,6 +88,10 @@ public:
         return LightPassVariant::of(light, res_.software).defines();
     }
 
+    gl::IncludeAliases lightPassIncludes(const Light& light) const override {
+        return {{"@map_filter", LightPassVariant::of(light, res_.software).kernelFile()}};
+    }
+
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
         const MapLight& p = lights_.at(view.index);
         const MapArray& g = res_.arrays[p.array];

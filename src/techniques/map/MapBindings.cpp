@@ -1,6 +1,7 @@
 // Technique "map": the light pass's textures and samplers (MapBindings.h).
 #include "techniques/map/MapBindings.h"
 
+#include "techniques/map/MapFilters.h"
 #include "techniques/map/MapSettings.h"
 
 #include "shadowlab_shared.h"
@@ -37,7 +38,7 @@ void bindTransmittance(const MapArray& g, const MapSamplers& samplers, bool tran
 // PCSS's blocker search reads the stored depths themselves: the same
 // depth array on the next unit through a sampler without comparison.
 void bindRawDepth(const MapLight& p, const MapArray& g, const MapSamplers& samplers) {
-    if (p.options.filter != MapFilter::Pcss || isPacked(g.format())) return;
+    if (!filterInfo(p.options.filter).rawDepth || isPacked(g.format())) return;
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, g.depth.id());
     glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
 }
@@ -46,7 +47,7 @@ void bindRawDepth(const MapLight& p, const MapArray& g, const MapSamplers& sampl
 void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent) {
     const bool packed = isPacked(g.format());
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
-    const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss;
+    const bool linear = filterInfo(p.options.filter).linearCube;
     glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? samplers.plainNearest.id() : linear ? samplers.compareLinear.id() : samplers.compareNearest.id());
     bindRawDepth(p, g, samplers);
     bindTransmittance(g, samplers, translucent);
@@ -85,8 +86,7 @@ void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samp
     } else {
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
         // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
-        const bool linear = p.options.filter == MapFilter::Hardware || p.options.filter == MapFilter::Pcss ||
-                            (p.options.filter == MapFilter::Grid && bilinearGrid);
+        const bool linear = filterInfo(p.options.filter).linear2D(bilinearGrid);
         glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? (linear ? samplers.compareLinearMip.id() : samplers.compareNearestMip.id())
                                                       : (linear ? samplers.compareLinear.id() : samplers.compareNearest.id()));
         bindRawDepth(p, g, samplers);

@@ -2,9 +2,29 @@
 // the combinations of options it refuses, with the reason.
 #include "techniques/map/MapSettings.h"
 
+#include "techniques/map/MapFilters.h"
+
 #include "core/Text.h"
 
 namespace shadowlab {
+
+namespace map {
+namespace {
+
+// The "filter" row's names and doc, from the filters' table.
+std::vector<std::string> filterNames() {
+    std::vector<std::string> names;
+    for (const FilterInfo& f : filters()) names.emplace_back(f.name);
+    return names;
+}
+std::string filterDoc() {
+    std::string doc;
+    for (const FilterInfo& f : filters()) doc += (doc.empty() ? "" : "; ") + std::string(f.doc);
+    return doc;
+}
+
+} // namespace
+} // namespace map
 
 const OptionTable& mapOptionTable() {
     static const OptionTable table =
@@ -14,8 +34,7 @@ const OptionTable& mapOptionTable() {
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene"},
                     "light camera: around what the viewer sees and the casters over it, or around the whole scene")
-            .choice(&MapOptions::filter, "filter", {"none", "hardware", "grid", "dither4", "poisson", "pcf20", "pcss"},
-                    "one nearest tap; one bilinear hardware compare; kernel x kernel taps (point lights: kernel^3 in a cube of side 2 diskRadius); the lecture's dithered 4 taps (2D maps); a rotated disk; the lecture's 20 directions (point lights); soft shadows for the light's size (PCSS)")
+            .choice(&MapOptions::filter, "filter", map::filterNames(), map::filterDoc())
             .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
                     "grid filter: the same comparisons from ceil(kernel/2)^2 bilinear or kernel^2 nearest fetches; auto: nearest on a software rasteriser")

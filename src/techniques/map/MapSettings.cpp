@@ -2,6 +2,8 @@
 // them (MapSettings.h).
 #include "techniques/map/MapSettings.h"
 
+#include "techniques/map/MapFilters.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -36,32 +38,14 @@ bool bilinearGrid(const MapOptions& o, bool softwareRasterizer) {
 // Texels around the fitted region that the filter may read.
 float footprint(const MapOptions& o) {
     if (o.representation != MapRepresentation::Depth) return static_cast<float>(o.blur) + 2.0f;  // the blur, then a bilinear lookup
-    switch (o.filter) {
-    case MapFilter::None: return 1.0f;
-    case MapFilter::Hardware: return 1.5f;
-    case MapFilter::Grid: return 0.5f * static_cast<float>(o.kernel) + 1.0f;
-    case MapFilter::Dither4: return 3.0f;
-    case MapFilter::Poisson: return o.radius + 1.0f;
-    case MapFilter::Pcf20: return 1.0f;  // point lights only
-    case MapFilter::Pcss: return 0.125f * static_cast<float>(o.size) + 1.0f;  // its search and filter reach an eighth of the map
-    }
-    return 1.0f;
+    return filterInfo(o.filter).footprint(o);
 }
 
 // Texels from a filter's centre to its farthest tap (the receiver-plane
 // bias covers that distance; the presets keep their own biases instead).
 float reach(const MapOptions& o) {
     if (o.preset != MapPreset::Default || o.representation != MapRepresentation::Depth) return 0.0f;  // moments bound the depths' spread instead
-    switch (o.filter) {
-    case MapFilter::None: return 0.0f;
-    case MapFilter::Hardware: return 1.0f;  // the 2x2 bilinear footprint
-    case MapFilter::Grid: return 0.5f * static_cast<float>(o.kernel - 1) * 1.41421356f;
-    case MapFilter::Dither4: return 1.5f * 1.41421356f;
-    case MapFilter::Poisson: return o.radius;
-    case MapFilter::Pcf20: return 0.0f;  // point lights only (shadow_map.glsl computes theirs)
-    case MapFilter::Pcss: return 0.0f;   // each tap compares against the receiver's plane (shadow_map.glsl)
-    }
-    return 0.0f;
+    return filterInfo(o.filter).reach(o);
 }
 
 // The light's options with its preset applied (docs/techniques.md cites each value).

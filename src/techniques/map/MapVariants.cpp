@@ -1,21 +1,19 @@
 // Technique "map": its typed shader variants (MapVariants.h).
 #include "techniques/map/MapVariants.h"
 
+#include "techniques/map/MapFilters.h"
 #include "techniques/map/MapMoments.h"
 #include "techniques/map/MapSettings.h"
 
 #include "shadow_map_shared.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 namespace shadowlab::map {
 
-// The GLSL tests MAP_FILTER and MAP_MOMENTS against these values.
-static_assert(static_cast<int>(MapFilter::None) == SL_MAP_FILTER_NONE && static_cast<int>(MapFilter::Hardware) == SL_MAP_FILTER_HARDWARE &&
-              static_cast<int>(MapFilter::Grid) == SL_MAP_FILTER_GRID && static_cast<int>(MapFilter::Dither4) == SL_MAP_FILTER_DITHER4 &&
-              static_cast<int>(MapFilter::Poisson) == SL_MAP_FILTER_POISSON && static_cast<int>(MapFilter::Pcf20) == SL_MAP_FILTER_PCF20 &&
-              static_cast<int>(MapFilter::Pcss) == SL_MAP_FILTER_PCSS,
-              "MapFilter's values must be shadow_map_shared.h's SL_MAP_FILTER_*");
+// The GLSL tests MAP_MOMENTS against these values (MAP_FILTER's come from the filters' table).
 static_assert(static_cast<int>(MapRepresentation::Depth) == 0 && static_cast<int>(MapRepresentation::Vsm) == SL_MAP_MOMENTS_VSM &&
               static_cast<int>(MapRepresentation::Evsm2) == SL_MAP_MOMENTS_EVSM2 && static_cast<int>(MapRepresentation::Evsm4) == SL_MAP_MOMENTS_EVSM4 &&
               static_cast<int>(MapRepresentation::Msm) == SL_MAP_MOMENTS_MSM,
@@ -33,6 +31,15 @@ public:
     Defines& set(const char* name, bool value) { return set(name, value ? 1 : 0); }
     // A packed format's: rgba8's four digits or r8's one byte (shadow_map_shared.h packDepth).
     Defines& packing(MapFormat f) { return set("MAP_RGBA8", isPacked(f)).set("MAP_R8", f == MapFormat::R8); }
+    // Every filter's SL_MAP_FILTER_<NAME> (its enum value), then this one's as MAP_FILTER.
+    Defines& filter(MapFilter f) {
+        for (const FilterInfo& info : filters()) {
+            std::string name = std::string("SL_MAP_FILTER_") + info.name;
+            std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+            set(name.c_str(), static_cast<int>(info.filter));
+        }
+        return set("MAP_FILTER", static_cast<int>(f));
+    }
     // A moment map's constants (MapMoments.h), as the GLSL reads them.
     Defines& moments(MapMomentFormat format) {
         const MomentConstants c = MomentConstants::of(format);
@@ -66,7 +73,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
 
 std::string LightPassVariant::defines() const {
     return Defines()
-        .set("MAP_FILTER", static_cast<int>(filter))
+        .filter(filter)
         .set("MAP_KERNEL", kernel)
         .packing(format)
         .set("MAP_GRID_BILINEAR", gridBilinear)
@@ -75,6 +82,10 @@ std::string LightPassVariant::defines() const {
         .set("MAP_MOMENTS", static_cast<int>(representation))
         .moments(momentFormat)
         .str();
+}
+
+std::string LightPassVariant::kernelFile() const {
+    return representation != MapRepresentation::Depth ? std::string("shadow_map_moments.glsl") : map::kernelFile(filter);
 }
 
 std::string DepthPassVariant::defines() const {

@@ -25,6 +25,8 @@ struct LightPassVariant {
     /// The variant of `light` (its effective options); `softwareRasterizer` picks the grid's taps.
     static LightPassVariant of(const Light& light, bool softwareRasterizer);
     std::string defines() const;
+    /// shadow_map.glsl's "@map_filter" slot: the filter's kernel file, or the moments'.
+    std::string kernelFile() const;
 };
 
 /// The 2D shadow pass: shadow_map_depth.vert/.frag (the floors' bare draw: the defaults).
