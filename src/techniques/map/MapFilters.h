@@ -18,6 +18,8 @@ struct FilterInfo {
     MapFilter filter;
     const char* name;        ///< the JSON value, and the kernel file's and SL_MAP_FILTER_<NAME>'s
     const char* doc;         ///< a clause of the "filter" option's doc
+    bool for2D;              ///< has a kernel for 2D maps (directional and spot lights, cascades)
+    bool forCube;            ///< has a kernel for point lights' cube maps
     /// Whether the taps are bilinear hardware compares (2D maps; the grid
     /// asks `bilinearGrid`), and on a cube.
     bool (*linear2D)(bool bilinearGrid);

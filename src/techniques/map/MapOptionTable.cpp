@@ -94,6 +94,11 @@ std::string unsupported(const Light& light) {
     } else if (o.filter == MapFilter::Pcf20 && o.preset == MapPreset::Default) {
         return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
     }
+    const FilterInfo& filter = filterInfo(o.filter);
+    if (isCube(light) && !filter.forCube)
+        return "map: filter \"" + std::string(filter.name) + "\" is for 2D maps (directional and spot lights), not a point light's cube";
+    if (!isCube(light) && !filter.for2D && o.preset == MapPreset::Default)
+        return "map: filter \"" + std::string(filter.name) + "\" is for point lights' cube maps";
     if (o.representation != MapRepresentation::Depth) {
         if (isPacked(o.format)) return std::string("map: moment maps have their own format (momentFormat); formats \"rgba8\" and \"r8\" pack depth only");
         if (o.filter != MapFilter::Hardware)
