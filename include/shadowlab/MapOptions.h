@@ -33,6 +33,7 @@ enum class MapFilter {
     Poisson,  ///< "poisson": a rotated Vogel disk of `samples` taps within `radius` texels (point lights: within `diskRadius`, across the light's ray)
     Pcf20,    ///< "pcf20": point lights only: the lecture's 20 offset directions times `diskRadius` (001)
     Pcss,     ///< "pcss": percentage-closer soft shadows (Fernando 2005) for the light's `size`: a blocker search of `blockerSamples` taps, then `samples` taps over the penumbra it predicts
+    Box,      ///< "box": four bilinear hardware compares half a texel from the point, a tent over 3x3 texels (point lights: eight at the corners of a cube of side one texel)
 };
 
 enum class MapGridTaps {

@@ -169,7 +169,7 @@ TEST_F(MapGLTest, OutsideTheMapIsLitAndOutsideTheConeIsUnlit) {
 
 // PCF: across a straight shadow edge visibility rises monotonically from 0
 // to 1, over a width that grows with the kernel; dither4 stays within the
-// values four taps can give.
+// values four taps can give; box is wider than one bilinear compare.
 TEST_F(MapGLTest, FilteredEdgesRiseMonotonicallyAndWidenWithTheKernel) {
     // A slab's straight shadow edge across the view: the slab hangs above
     // the camera (which looks straight down, so it does not see it) and
@@ -215,6 +215,13 @@ TEST_F(MapGLTest, FilteredEdgesRiseMonotonicallyAndWidenWithTheKernel) {
     EXPECT_GT(width(dither), 0);
     const std::vector<float> poisson = edgeProfile(R"("filter": "poisson", "samples": 16, "radius": 2)");
     EXPECT_GT(width(poisson), 0);
+    // box: four bilinear compares half a texel apart, a tent over three
+    // texels: monotonic, and wider than one bilinear compare's two texels.
+    const std::vector<float> box = edgeProfile(R"("filter": "box")");
+    EXPECT_EQ(box.front(), 1.0f);
+    EXPECT_EQ(box.back(), 0.0f);
+    for (std::size_t x = 1; x < box.size(); ++x) EXPECT_LE(box[x], box[x - 1] + 1e-6f) << "box, x " << x;
+    EXPECT_GT(width(box), width(edgeProfile(R"("filter": "hardware")")));
 }
 
 // Four shadowed lights, two directional and two spot, in one frame.

@@ -32,6 +32,10 @@ const FilterInfo kFilters[] = {
     {MapFilter::Pcss, "pcss", "soft shadows for the light's size (PCSS)", true, true, always, true, true,
      [](const MapOptions&) { return 0.0f; },  // each tap compares against the receiver's plane (its kernel file)
      [](const MapOptions& o) { return 0.125f * static_cast<float>(o.size) + 1.0f; }},  // its search and filter reach an eighth of the map
+    {MapFilter::Box, "box", "four bilinear compares half a texel around the point, a tent over 3x3 texels (point lights: eight at the corners of a cube of side one texel)", true, true,
+     always, true, false,  //
+     [](const MapOptions&) { return 1.5f * kSqrt2; },  // the compared texels' centres, up to 1.5 texels on each axis
+     [](const MapOptions&) { return 3.0f; }},
 };
 
 } // namespace
