@@ -62,6 +62,156 @@ std::vector<Extension> surfaceExtensions(const Scene& scene, const SurfaceBuffer
         }
     return out;
 }
+
+// One light's visibility per surface pixel, the technique's (read back with
+// its frame) and the reference's, their means and RGB; and the reference's
+// at the extensions.
+struct LightVisibility {
+    const std::vector<float>& technique;
+    const std::vector<float>& exact;
+    const std::vector<glm::vec3>& techniqueRgb;
+    const std::vector<glm::vec3>& truthRgb;
+    const std::vector<float>& extensionExact;
+};
+
+// Per pixel of a w x h image, for one light: its receivers, the
+// reference's classes and the edge band.
+struct PixelClasses {
+    int w = 0, h = 0;
+    std::vector<std::uint8_t> receiver, exactLit, edge;
+};
+
+// Receivers (reached by the light, facing it, receiving shadows) and the
+// reference's classes; `reach` shows the receivers.
+PixelClasses classify(const Light& light, const std::vector<reference::SurfaceSample>& samples, const SurfaceBuffer& surfaces,
+                      const std::vector<float>& exact, float litThreshold, ImageGray8& reach) {
+    const int w = surfaces.width, h = surfaces.height;
+    const std::size_t n = static_cast<std::size_t>(w) * h;
+    PixelClasses classes{w, h, reference::lightReach(light, samples), std::vector<std::uint8_t>(n, 0), {}};
+    std::vector<std::uint8_t>& receiver = classes.receiver;
+    std::vector<std::uint8_t>& exactLit = classes.exactLit;
+    reach = {w, h, std::vector<std::uint8_t>(n, 0)};
+    for (std::size_t i = 0; i < n; ++i) {
+        receiver[i] = receiver[i] && surfaces.normal[i].w >= 0.5f;
+        reach.pixels[i] = receiver[i] ? 255 : 0;
+        exactLit[i] = receiver[i] && exact[i] >= litThreshold;
+    }
+    return classes;
+}
+
+// The edge band: receivers the exact shadow boundary passes within a
+// pixel of. A receiver is in it when an 8-neighbour receiver has the
+// other true class, or when a neighbour lies on another surface (a
+// silhouette in between) and the pixel's own surface, extended under
+// that neighbour's pixel centre, has the other true class there: the
+// boundary then runs on past the pixel, hidden behind what is drawn
+// next to it.
+void markEdgeBand(PixelClasses& classes, const std::vector<Extension>& extensions, const std::vector<float>& extensionExact,
+                  float litThreshold) {
+    const int w = classes.w, h = classes.h;
+    const std::vector<std::uint8_t>& receiver = classes.receiver;
+    const std::vector<std::uint8_t>& exactLit = classes.exactLit;
+    std::vector<std::uint8_t>& edge = classes.edge;
+    edge.assign(static_cast<std::size_t>(w) * h, 0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            if (!receiver[i]) continue;
+            for (int dy = -1; dy <= 1 && !edge[i]; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                    const std::size_t j = static_cast<std::size_t>(ny) * w + nx;
+                    if (receiver[j] && exactLit[j] != exactLit[i]) { edge[i] = 1; break; }
+                }
+        }
+    for (const Extension& e : extensions)
+        if (receiver[e.pixel] && !edge[e.pixel] && (extensionExact[e.index] >= litThreshold) != (exactLit[e.pixel] != 0))
+            edge[e.pixel] = 1;
+}
+
+// One light's counts and sums over its receivers, made rates by summarise().
+struct Tally {
+    std::size_t falseShadow = 0, falseLit = 0, falseShadowAway = 0, falseLitAway = 0;
+    double absSum = 0.0, sqSum = 0.0, leakSum = 0.0;
+    double sqSumRgb[3] = {0.0, 0.0, 0.0};
+};
+
+// Both visibility images, the error image over the dimmed `reference` image,
+// and the receivers' counts: c's pixel counts directly, the rest in the tally.
+Tally measure(LightComparison& c, const PixelClasses& classes, const LightVisibility& vis, const ImageRGBA8& reference,
+              float litThreshold) {
+    const int w = classes.w, h = classes.h;
+    const std::size_t n = static_cast<std::size_t>(w) * h;
+    const std::vector<std::uint8_t>& receiver = classes.receiver;
+    const std::vector<std::uint8_t>& exactLit = classes.exactLit;
+    const std::vector<std::uint8_t>& edge = classes.edge;
+    const std::vector<float>& technique = vis.technique;
+    const std::vector<float>& exact = vis.exact;
+    Tally tally;
+    c.referenceVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
+    c.techniqueVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
+    c.errorImage = {w, h, std::vector<std::uint8_t>(n * 4, 0)};
+    for (std::size_t i = 0; i < n; ++i) {
+        c.referenceVisibility.pixels[i] = static_cast<std::uint16_t>(std::lround(std::clamp(exact[i], 0.0f, 1.0f) * 65535.0f));
+        c.techniqueVisibility.pixels[i] = static_cast<std::uint16_t>(std::lround(std::clamp(technique[i], 0.0f, 1.0f) * 65535.0f));
+        // Grey: the reference image's own luminance, dimmed, so the scene stays readable.
+        const std::uint8_t* ref = &reference.pixels[i * 4];
+        std::uint8_t rgb[3];
+        const float grey = (0.3f * ref[0] + 0.59f * ref[1] + 0.11f * ref[2]) / 255.0f;
+        const std::uint8_t g = toByte(receiver[i] ? 0.25f + 0.5f * grey : 0.1f + 0.25f * grey);
+        rgb[0] = rgb[1] = rgb[2] = g;
+        if (receiver[i]) {
+            ++c.receiverPixels;
+            c.referenceShadowedPixels += !exactLit[i];
+            c.edgePixels += edge[i];
+            const bool techniqueLit = technique[i] >= litThreshold;
+            const double e = static_cast<double>(technique[i]) - exact[i];
+            tally.absSum += std::fabs(e);
+            tally.sqSum += e * e;
+            const glm::vec3& t = vis.techniqueRgb[i];
+            const glm::vec3& r = vis.truthRgb[i];
+            for (int ch = 0; ch < 3; ++ch) tally.sqSumRgb[ch] += static_cast<double>(t[ch] - r[ch]) * static_cast<double>(t[ch] - r[ch]);
+            c.coloured = c.coloured || std::fabs(r.r - r.g) > 1e-3f || std::fabs(r.g - r.b) > 1e-3f;
+            const auto penumbra = [](float v) { return v > 0.02f && v < 0.98f; };
+            c.referencePenumbraPixels += penumbra(exact[i]);
+            c.techniquePenumbraPixels += penumbra(technique[i]);
+            if (exact[i] <= 0.0f && !edge[i]) {
+                ++c.umbraPixels;
+                tally.leakSum += std::clamp(technique[i], 0.0f, 1.0f);
+            }
+            if (techniqueLit && !exactLit[i]) {
+                ++tally.falseLit;
+                tally.falseLitAway += !edge[i];
+                const std::uint8_t red[3] = {235, 40, 30}, pale[3] = {240, 150, 140};
+                std::copy_n(edge[i] ? pale : red, 3, rgb);
+            } else if (!techniqueLit && exactLit[i]) {
+                ++tally.falseShadow;
+                tally.falseShadowAway += !edge[i];
+                const std::uint8_t blue[3] = {40, 110, 240}, pale[3] = {150, 180, 240};
+                std::copy_n(edge[i] ? pale : blue, 3, rgb);
+            }
+        }
+        std::copy_n(rgb, 3, &c.errorImage.pixels[i * 4]);
+        c.errorImage.pixels[i * 4 + 3] = 255;
+    }
+    return tally;
+}
+
+// c's shares, errors and leak: the tally over its receivers (or over those
+// away from the edge band, or in the umbra).
+void summarise(LightComparison& c, const Tally& tally) {
+    const double receivers = static_cast<double>(std::max<std::size_t>(c.receiverPixels, 1));
+    const double away = static_cast<double>(std::max<std::size_t>(c.receiverPixels - c.edgePixels, 1));
+    c.falseShadow = static_cast<double>(tally.falseShadow) / receivers;
+    c.falseLit = static_cast<double>(tally.falseLit) / receivers;
+    c.falseShadowAwayFromEdges = static_cast<double>(tally.falseShadowAway) / away;
+    c.falseLitAwayFromEdges = static_cast<double>(tally.falseLitAway) / away;
+    c.meanAbsError = tally.absSum / receivers;
+    c.rmse = std::sqrt(tally.sqSum / receivers);
+    for (int ch = 0; ch < 3; ++ch) c.rmseRgb[ch] = std::sqrt(tally.sqSumRgb[ch] / receivers);
+    c.leakedInUmbra = c.umbraPixels ? tally.leakSum / static_cast<double>(c.umbraPixels) : 0.0;
+}
 #endif
 
 } // namespace
@@ -185,122 +335,24 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
     const CompareOptions& options = d.options;
     Comparison& out = d.out;
     const SurfaceBuffer& surfaces = out.surfaces;
-    const int w = surfaces.width, h = surfaces.height;
-    const std::size_t n = static_cast<std::size_t>(w) * h;
-    const std::vector<reference::SurfaceSample>& samples = d.samples;
-    const std::vector<Extension>& extensions = d.extensions;
-    const std::vector<std::vector<float>>& truth = d.truth;
-    const std::vector<std::vector<float>>& extensionTruth = d.extensionTruth;
-    const std::vector<std::vector<float>>& techniqueVisibility = d.techniqueVisibility;
 
     // The reference image (same shading, exact visibility) for the error images' backdrop.
     RenderOptions referenceOptions;
     referenceOptions.width = options.width;
     referenceOptions.height = options.height;
     referenceOptions.timeSeconds = options.timeSeconds;
-    renderer.renderWithVisibility(scene, referenceOptions, truth);
+    renderer.renderWithVisibility(scene, referenceOptions, d.truth);
     out.reference = renderer.readColor();
 
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
         const Light& light = scene.lights[l];
-        const std::vector<float>& technique = techniqueVisibility[l];
-        const std::vector<float>& exact = truth[l];
+        const LightVisibility vis{d.techniqueVisibility[l], d.truth[l], d.techniqueRgb[l], d.truthRgb[l], d.extensionTruth[l]};
         LightComparison c;
         c.name = light.name;
         c.soft = light.size > 0.0f;
-
-        // Receivers (reached by the light, facing it, receiving shadows) and
-        // the reference's classes.
-        std::vector<std::uint8_t> receiver = reference::lightReach(light, samples), exactLit(n, 0);
-        c.reach = {w, h, std::vector<std::uint8_t>(n, 0)};
-        for (std::size_t i = 0; i < n; ++i) {
-            receiver[i] = receiver[i] && surfaces.normal[i].w >= 0.5f;
-            c.reach.pixels[i] = receiver[i] ? 255 : 0;
-            exactLit[i] = receiver[i] && exact[i] >= options.litThreshold;
-        }
-        // The edge band: receivers the exact shadow boundary passes within a
-        // pixel of. A receiver is in it when an 8-neighbour receiver has the
-        // other true class, or when a neighbour lies on another surface (a
-        // silhouette in between) and the pixel's own surface, extended under
-        // that neighbour's pixel centre, has the other true class there: the
-        // boundary then runs on past the pixel, hidden behind what is drawn
-        // next to it.
-        std::vector<std::uint8_t> edge(n, 0);
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                const std::size_t i = static_cast<std::size_t>(y) * w + x;
-                if (!receiver[i]) continue;
-                for (int dy = -1; dy <= 1 && !edge[i]; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const int nx = x + dx, ny = y + dy;
-                        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-                        const std::size_t j = static_cast<std::size_t>(ny) * w + nx;
-                        if (receiver[j] && exactLit[j] != exactLit[i]) { edge[i] = 1; break; }
-                    }
-            }
-        for (const Extension& e : extensions)
-            if (receiver[e.pixel] && !edge[e.pixel] && (extensionTruth[l][e.index] >= options.litThreshold) != (exactLit[e.pixel] != 0))
-                edge[e.pixel] = 1;
-
-        std::size_t falseShadow = 0, falseLit = 0, falseShadowAway = 0, falseLitAway = 0;
-        double absSum = 0.0, sqSum = 0.0, leakSum = 0.0;
-        double sqSumRgb[3] = {0.0, 0.0, 0.0};
-        c.referenceVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
-        c.techniqueVisibility = {w, h, std::vector<std::uint16_t>(n, 0)};
-        c.errorImage = {w, h, std::vector<std::uint8_t>(n * 4, 0)};
-        for (std::size_t i = 0; i < n; ++i) {
-            c.referenceVisibility.pixels[i] = static_cast<std::uint16_t>(std::lround(std::clamp(exact[i], 0.0f, 1.0f) * 65535.0f));
-            c.techniqueVisibility.pixels[i] = static_cast<std::uint16_t>(std::lround(std::clamp(technique[i], 0.0f, 1.0f) * 65535.0f));
-            // Grey: the reference image's own luminance, dimmed, so the scene stays readable.
-            const std::uint8_t* ref = &out.reference.pixels[i * 4];
-            std::uint8_t rgb[3];
-            const float grey = (0.3f * ref[0] + 0.59f * ref[1] + 0.11f * ref[2]) / 255.0f;
-            const std::uint8_t g = toByte(receiver[i] ? 0.25f + 0.5f * grey : 0.1f + 0.25f * grey);
-            rgb[0] = rgb[1] = rgb[2] = g;
-            if (receiver[i]) {
-                ++c.receiverPixels;
-                c.referenceShadowedPixels += !exactLit[i];
-                c.edgePixels += edge[i];
-                const bool techniqueLit = technique[i] >= options.litThreshold;
-                const double e = static_cast<double>(technique[i]) - exact[i];
-                absSum += std::fabs(e);
-                sqSum += e * e;
-                const glm::vec3& t = d.techniqueRgb[l][i];
-                const glm::vec3& r = d.truthRgb[l][i];
-                for (int ch = 0; ch < 3; ++ch) sqSumRgb[ch] += static_cast<double>(t[ch] - r[ch]) * static_cast<double>(t[ch] - r[ch]);
-                c.coloured = c.coloured || std::fabs(r.r - r.g) > 1e-3f || std::fabs(r.g - r.b) > 1e-3f;
-                const auto penumbra = [](float v) { return v > 0.02f && v < 0.98f; };
-                c.referencePenumbraPixels += penumbra(exact[i]);
-                c.techniquePenumbraPixels += penumbra(technique[i]);
-                if (exact[i] <= 0.0f && !edge[i]) {
-                    ++c.umbraPixels;
-                    leakSum += std::clamp(technique[i], 0.0f, 1.0f);
-                }
-                if (techniqueLit && !exactLit[i]) {
-                    ++falseLit;
-                    falseLitAway += !edge[i];
-                    const std::uint8_t red[3] = {235, 40, 30}, pale[3] = {240, 150, 140};
-                    std::copy_n(edge[i] ? pale : red, 3, rgb);
-                } else if (!techniqueLit && exactLit[i]) {
-                    ++falseShadow;
-                    falseShadowAway += !edge[i];
-                    const std::uint8_t blue[3] = {40, 110, 240}, pale[3] = {150, 180, 240};
-                    std::copy_n(edge[i] ? pale : blue, 3, rgb);
-                }
-            }
-            std::copy_n(rgb, 3, &c.errorImage.pixels[i * 4]);
-            c.errorImage.pixels[i * 4 + 3] = 255;
-        }
-        const double receivers = static_cast<double>(std::max<std::size_t>(c.receiverPixels, 1));
-        const double away = static_cast<double>(std::max<std::size_t>(c.receiverPixels - c.edgePixels, 1));
-        c.falseShadow = static_cast<double>(falseShadow) / receivers;
-        c.falseLit = static_cast<double>(falseLit) / receivers;
-        c.falseShadowAwayFromEdges = static_cast<double>(falseShadowAway) / away;
-        c.falseLitAwayFromEdges = static_cast<double>(falseLitAway) / away;
-        c.meanAbsError = absSum / receivers;
-        c.rmse = std::sqrt(sqSum / receivers);
-        for (int ch = 0; ch < 3; ++ch) c.rmseRgb[ch] = std::sqrt(sqSumRgb[ch] / receivers);
-        c.leakedInUmbra = c.umbraPixels ? leakSum / static_cast<double>(c.umbraPixels) : 0.0;
+        PixelClasses classes = classify(light, d.samples, surfaces, vis.exact, options.litThreshold, c.reach);
+        markEdgeBand(classes, d.extensions, vis.extensionExact, options.litThreshold);
+        summarise(c, measure(c, classes, vis, out.reference, options.litThreshold));
         out.lights.push_back(std::move(c));
     }
     return std::move(out);

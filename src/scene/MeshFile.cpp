@@ -178,6 +178,157 @@ struct ObjFace {
     std::vector<ObjCorner> corners;
 };
 
+// What an OBJ file defines, line by line: its vertex data, faces and names.
+struct ObjData {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<bool> normalValid; // false for zero-length vn (treated as absent)
+    std::vector<glm::vec2> texcoords;
+    std::vector<ObjFace> faces;
+    std::string objectName, groupName;
+};
+
+// An "f" line's corners (words[0] is "f"), indexed against what `obj`
+// defines so far.
+ObjFace readFace(const ObjParser& p, const std::vector<std::string_view>& words, const ObjData& obj) {
+    if (words.size() < 4) p.fail("face needs at least 3 vertices, got " + std::to_string(words.size() - 1));
+    ObjFace face{p.line, {}};
+    for (std::size_t i = 1; i < words.size(); ++i) {
+        // Forms: v, v/vt, v//vn, v/vt/vn.
+        const std::string_view corner = words[i];
+        std::array<std::string_view, 3> parts{};
+        std::size_t part = 0, start = 0;
+        for (std::size_t k = 0; k <= corner.size(); ++k) {
+            if (k == corner.size() || corner[k] == '/') {
+                if (part == 3) p.fail("bad face corner '" + std::string(corner) + "'");
+                parts[part++] = corner.substr(start, k - start);
+                start = k + 1;
+            }
+        }
+        ObjCorner c;
+        c.v = p.index(parts[0], corner, static_cast<int>(obj.positions.size()), "vertex");
+        if (!parts[1].empty()) c.vt = p.index(parts[1], corner, static_cast<int>(obj.texcoords.size()), "texture coordinate");
+        if (!parts[2].empty()) c.vn = p.index(parts[2], corner, static_cast<int>(obj.normals.size()), "normal");
+        face.corners.push_back(c);
+    }
+    return face;
+}
+
+// One line of the file (line p.line) into `obj`.
+void readLine(const ObjParser& p, std::string_view lineText, ObjData& obj) {
+    if (const std::size_t hash = lineText.find('#'); hash != std::string_view::npos) lineText = lineText.substr(0, hash);
+    lineText = trim(lineText);
+    if (lineText.empty()) return;
+    const std::vector<std::string_view> words = splitWords(lineText);
+    const std::string_view key = words[0];
+
+    if (key == "v") {
+        const auto v = p.numbers(words, 3, 3); // optional w / vertex colours ignored
+        obj.positions.emplace_back(v[0], v[1], v[2]);
+    } else if (key == "vt") {
+        const auto t = p.numbers(words, 1, 2); // v defaults to 0, w ignored
+        obj.texcoords.emplace_back(t[0], 1.0f - (t.size() > 1 ? t[1] : 0.0f));
+    } else if (key == "vn") {
+        const auto n = p.numbers(words, 3, 3);
+        const glm::vec3 v(n[0], n[1], n[2]);
+        const float len = glm::length(v);
+        const bool ok = std::isfinite(len) && len > 0.0f;
+        obj.normals.push_back(ok ? v / len : glm::vec3(0.0f));
+        obj.normalValid.push_back(ok);
+    } else if (key == "f") {
+        obj.faces.push_back(readFace(p, words, obj));
+    } else if (key == "o") {
+        if (obj.objectName.empty() && words.size() > 1) obj.objectName = std::string(trim(lineText.substr(1)));
+    } else if (key == "g") {
+        if (obj.groupName.empty() && words.size() > 1) obj.groupName = std::string(trim(lineText.substr(1)));
+    }
+    // Everything else (mtllib, usemtl, s, l, p, vp, curves, ...) is ignored.
+}
+
+// The whole file, line by line (p.line counts them).
+ObjData readObj(std::string_view text, ObjParser& p) {
+    ObjData obj;
+    std::size_t pos = 0;
+    while (pos <= text.size()) {
+        std::size_t eol = text.find('\n', pos);
+        if (eol == std::string::npos) eol = text.size();
+        std::string_view lineText(text.data() + pos, eol - pos);
+        pos = eol + 1;
+        ++p.line;
+        readLine(p, lineText, obj);
+    }
+    return obj;
+}
+
+// Range-checks the indices against the whole file (forward references are
+// legal). Returns whether any corner has a texture coordinate.
+bool checkRanges(ObjParser& p, const ObjData& obj) {
+    const auto checkRange = [&](int line, int index, std::size_t count, const char* kind) {
+        if (index >= static_cast<int>(count)) {
+            p.line = line;
+            p.fail(std::string(kind) + " index " + std::to_string(index + 1) + " out of range (file has " + countOf(count, kind) + ")");
+        }
+    };
+    bool anyTexcoords = false;
+    for (const ObjFace& f : obj.faces) {
+        for (const ObjCorner& c : f.corners) {
+            checkRange(f.line, c.v, obj.positions.size(), "vertex");
+            checkRange(f.line, c.vt, obj.texcoords.size(), "texture coordinate");
+            checkRange(f.line, c.vn, obj.normals.size(), "normal");
+            anyTexcoords = anyTexcoords || c.vt >= 0;
+        }
+    }
+    return anyTexcoords;
+}
+
+// Flat normal of the polygon by Newell's method (exact for planar
+// polygons, a sensible average otherwise).
+glm::vec3 newellNormal(const std::vector<glm::vec3>& positions, const ObjFace& f) {
+    glm::vec3 n(0.0f);
+    for (std::size_t i = 0; i < f.corners.size(); ++i) {
+        const glm::vec3& a = positions[f.corners[i].v];
+        const glm::vec3& b = positions[f.corners[(i + 1) % f.corners.size()].v];
+        n += glm::vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    const float len = glm::length(n);
+    n = (std::isfinite(len) && len > 0.0f) ? n / len : glm::vec3(0.0f, 1.0f, 0.0f); // degenerate face
+    return n;
+}
+
+// The mesh of the file `name`'s faces, as triangle fans: corners with the
+// same (v, vt, vn) share a vertex, a face without (valid) normals gets its
+// own vertices with its flat normal; uvs only when the file uses them.
+Mesh buildMesh(const ObjData& obj, bool anyTexcoords, const std::string& name) {
+    Mesh mesh;
+    mesh.name = !obj.objectName.empty() ? obj.objectName : !obj.groupName.empty() ? obj.groupName : fs::path(name).stem().string();
+    std::unordered_map<ObjCorner, std::uint32_t, ObjCornerHash> shared; // dedup of (v, vt, vn)
+    const auto addVertex = [&](const ObjCorner& c, const glm::vec3& normal) {
+        mesh.positions.push_back(obj.positions[c.v]);
+        mesh.normals.push_back(normal);
+        if (anyTexcoords) mesh.uvs.push_back(c.vt >= 0 ? obj.texcoords[c.vt] : glm::vec2(0.0f));
+        return static_cast<std::uint32_t>(mesh.positions.size() - 1);
+    };
+
+    std::vector<std::uint32_t> ids;
+    for (const ObjFace& f : obj.faces) {
+        ids.clear();
+        const bool hasNormals = std::all_of(f.corners.begin(), f.corners.end(), [&](const ObjCorner& c) { return c.vn >= 0 && obj.normalValid[c.vn]; });
+        if (hasNormals) {
+            for (const ObjCorner& c : f.corners) {
+                const auto [it, inserted] = shared.try_emplace(c, 0u);
+                if (inserted) it->second = addVertex(c, obj.normals[c.vn]);
+                ids.push_back(it->second);
+            }
+        } else {
+            // The face gets its own vertices, with its flat normal.
+            const glm::vec3 n = newellNormal(obj.positions, f);
+            for (const ObjCorner& c : f.corners) ids.push_back(addVertex(c, n));
+        }
+        for (std::size_t i = 1; i + 1 < ids.size(); ++i) // triangle fan
+            mesh.indices.insert(mesh.indices.end(), {ids[0], ids[i], ids[i + 1]});
+    }
+    return mesh;
+}
+
 } // namespace
 
 ImportedModel loadObj(const fs::path& path) { return parseObj(readWholeFile(path), displayName(path)); }
@@ -187,124 +338,11 @@ ImportedModel parseObj(std::string_view text, const std::string& name) {
     // OBJ is text; a NUL byte means some other file with an .obj name.
     if (text.find('\0') != std::string_view::npos) throw Error(p.file + ": not a Wavefront OBJ file (binary data)");
 
-    std::vector<glm::vec3> positions, normals;
-    std::vector<bool> normalValid; // false for zero-length vn (treated as absent)
-    std::vector<glm::vec2> texcoords;
-    std::vector<ObjFace> faces;
-    std::string objectName, groupName;
+    const ObjData obj = readObj(text, p);
+    const bool anyTexcoords = checkRanges(p, obj);
+    if (obj.faces.empty()) throw Error(p.file + ": no triangles");
 
-    std::size_t pos = 0;
-    while (pos <= text.size()) {
-        std::size_t eol = text.find('\n', pos);
-        if (eol == std::string::npos) eol = text.size();
-        std::string_view lineText(text.data() + pos, eol - pos);
-        pos = eol + 1;
-        ++p.line;
-
-        if (const std::size_t hash = lineText.find('#'); hash != std::string_view::npos) lineText = lineText.substr(0, hash);
-        lineText = trim(lineText);
-        if (lineText.empty()) continue;
-        const std::vector<std::string_view> words = splitWords(lineText);
-        const std::string_view key = words[0];
-
-        if (key == "v") {
-            const auto v = p.numbers(words, 3, 3); // optional w / vertex colours ignored
-            positions.emplace_back(v[0], v[1], v[2]);
-        } else if (key == "vt") {
-            const auto t = p.numbers(words, 1, 2); // v defaults to 0, w ignored
-            texcoords.emplace_back(t[0], 1.0f - (t.size() > 1 ? t[1] : 0.0f));
-        } else if (key == "vn") {
-            const auto n = p.numbers(words, 3, 3);
-            const glm::vec3 v(n[0], n[1], n[2]);
-            const float len = glm::length(v);
-            const bool ok = std::isfinite(len) && len > 0.0f;
-            normals.push_back(ok ? v / len : glm::vec3(0.0f));
-            normalValid.push_back(ok);
-        } else if (key == "f") {
-            if (words.size() < 4) p.fail("face needs at least 3 vertices, got " + std::to_string(words.size() - 1));
-            ObjFace face{p.line, {}};
-            for (std::size_t i = 1; i < words.size(); ++i) {
-                // Forms: v, v/vt, v//vn, v/vt/vn.
-                const std::string_view corner = words[i];
-                std::array<std::string_view, 3> parts{};
-                std::size_t part = 0, start = 0;
-                for (std::size_t k = 0; k <= corner.size(); ++k) {
-                    if (k == corner.size() || corner[k] == '/') {
-                        if (part == 3) p.fail("bad face corner '" + std::string(corner) + "'");
-                        parts[part++] = corner.substr(start, k - start);
-                        start = k + 1;
-                    }
-                }
-                ObjCorner c;
-                c.v = p.index(parts[0], corner, static_cast<int>(positions.size()), "vertex");
-                if (!parts[1].empty()) c.vt = p.index(parts[1], corner, static_cast<int>(texcoords.size()), "texture coordinate");
-                if (!parts[2].empty()) c.vn = p.index(parts[2], corner, static_cast<int>(normals.size()), "normal");
-                face.corners.push_back(c);
-            }
-            faces.push_back(std::move(face));
-        } else if (key == "o") {
-            if (objectName.empty() && words.size() > 1) objectName = std::string(trim(lineText.substr(1)));
-        } else if (key == "g") {
-            if (groupName.empty() && words.size() > 1) groupName = std::string(trim(lineText.substr(1)));
-        }
-        // Everything else (mtllib, usemtl, s, l, p, vp, curves, ...) is ignored.
-    }
-
-    // Range-check the indices against the whole file (forward references are legal).
-    const auto checkRange = [&](int line, int index, std::size_t count, const char* kind) {
-        if (index >= static_cast<int>(count)) {
-            p.line = line;
-            p.fail(std::string(kind) + " index " + std::to_string(index + 1) + " out of range (file has " + countOf(count, kind) + ")");
-        }
-    };
-    bool anyTexcoords = false;
-    for (const ObjFace& f : faces) {
-        for (const ObjCorner& c : f.corners) {
-            checkRange(f.line, c.v, positions.size(), "vertex");
-            checkRange(f.line, c.vt, texcoords.size(), "texture coordinate");
-            checkRange(f.line, c.vn, normals.size(), "normal");
-            anyTexcoords = anyTexcoords || c.vt >= 0;
-        }
-    }
-    if (faces.empty()) throw Error(p.file + ": no triangles");
-
-    Mesh mesh;
-    mesh.name = !objectName.empty() ? objectName : !groupName.empty() ? groupName : fs::path(name).stem().string();
-    std::unordered_map<ObjCorner, std::uint32_t, ObjCornerHash> shared; // dedup of (v, vt, vn)
-    const auto addVertex = [&](const ObjCorner& c, const glm::vec3& normal) {
-        mesh.positions.push_back(positions[c.v]);
-        mesh.normals.push_back(normal);
-        if (anyTexcoords) mesh.uvs.push_back(c.vt >= 0 ? texcoords[c.vt] : glm::vec2(0.0f));
-        return static_cast<std::uint32_t>(mesh.positions.size() - 1);
-    };
-
-    std::vector<std::uint32_t> ids;
-    for (const ObjFace& f : faces) {
-        ids.clear();
-        const bool hasNormals = std::all_of(f.corners.begin(), f.corners.end(), [&](const ObjCorner& c) { return c.vn >= 0 && normalValid[c.vn]; });
-        if (hasNormals) {
-            for (const ObjCorner& c : f.corners) {
-                const auto [it, inserted] = shared.try_emplace(c, 0u);
-                if (inserted) it->second = addVertex(c, normals[c.vn]);
-                ids.push_back(it->second);
-            }
-        } else {
-            // Flat normal of the polygon by Newell's method (exact for planar
-            // polygons, a sensible average otherwise); the face gets its own vertices.
-            glm::vec3 n(0.0f);
-            for (std::size_t i = 0; i < f.corners.size(); ++i) {
-                const glm::vec3& a = positions[f.corners[i].v];
-                const glm::vec3& b = positions[f.corners[(i + 1) % f.corners.size()].v];
-                n += glm::vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-            }
-            const float len = glm::length(n);
-            n = (std::isfinite(len) && len > 0.0f) ? n / len : glm::vec3(0.0f, 1.0f, 0.0f); // degenerate face
-            for (const ObjCorner& c : f.corners) ids.push_back(addVertex(c, n));
-        }
-        for (std::size_t i = 1; i + 1 < ids.size(); ++i) // triangle fan
-            mesh.indices.insert(mesh.indices.end(), {ids[0], ids[i], ids[i + 1]});
-    }
-
+    Mesh mesh = buildMesh(obj, anyTexcoords, name);
     ImportedModel model;
     ImportedModel::Node node;
     node.name = mesh.name;

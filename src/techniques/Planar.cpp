@@ -104,32 +104,6 @@ public:
                                      defines});
             return host.program({{{GL_VERTEX_SHADER, "shadow_planar_project.vert"}, {GL_FRAGMENT_SHADER, "shadow_planar_project.frag"}}, defines});
         };
-        // Casters drawn flattened onto `planes` (receivers_ indices), skipping
-        // the receiver itself and casters entirely behind every plane.
-        auto drawProjected = [&](const gl::Program& program, std::span<const Receiver> planes) {
-            shared::PlanarUniforms u{};
-            for (std::size_t p = 0; p < planes.size(); ++p) {
-                u.shadowFromWorld[p] = planes[p].projection;
-                u.plane[p] = planes[p].plane;
-            }
-            u.params = glm::vec4(static_cast<float>(planes.size()), o.darkness, 0.0f, 0.0f);
-            glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
-            glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
-            glEnable(GL_CLIP_DISTANCE0);
-            glEnable(GL_CLIP_DISTANCE1);
-            host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
-                bool any = false;
-                GLint self = -1;  // a receiver plane is not projected onto itself
-                for (std::size_t p = 0; p < planes.size(); ++p) {
-                    if (planes[p].item == i) self = static_cast<GLint>(p);
-                    else any = any || above(planes[p].plane, frame.itemBounds[i]);
-                }
-                if (any && geometry) glProgramUniform1i(program.id(), 2, self);
-                return any;
-            });
-            glDisable(GL_CLIP_DISTANCE0);
-            glDisable(GL_CLIP_DISTANCE1);
-        };
 
         if (o.style == PlanarStyle::Lecture) {
             // 000's look: the light everywhere, then the flattened casters
@@ -145,9 +119,9 @@ public:
             const gl::Program& program = projector(true);
             if (geometry) {
                 for (std::size_t first = 0; first < receivers.size(); first += SL_PLANAR_MAX_PLANES)
-                    drawProjected(program, std::span(receivers).subspan(first, std::min<std::size_t>(SL_PLANAR_MAX_PLANES, receivers.size() - first)));
+                    drawProjected(host, frame, o, geometry, program, std::span(receivers).subspan(first, std::min<std::size_t>(SL_PLANAR_MAX_PLANES, receivers.size() - first)));
             } else {
-                for (std::size_t r = 0; r < receivers.size(); ++r) drawProjected(program, std::span(receivers).subspan(r, 1));
+                for (std::size_t r = 0; r < receivers.size(); ++r) drawProjected(host, frame, o, geometry, program, std::span(receivers).subspan(r, 1));
             }
             return;
         }
@@ -170,7 +144,7 @@ public:
             p.noColor();
             p.stencil({GL_EQUAL, 1, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_INCR});
             host.apply(p);
-            drawProjected(program, std::span(receivers).subspan(r, 1));
+            drawProjected(host, frame, o, geometry, program, std::span(receivers).subspan(r, 1));
             // The receiver's unshadowed pixels back to 0, so the next plane's casters cannot mark them.
             s.stencil({GL_EQUAL, 1, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_ZERO});
             host.apply(s);
@@ -183,6 +157,35 @@ public:
     }
 
 private:
+    // Casters drawn flattened onto `planes` (receivers_ entries) by `program`
+    // (its geometry-shader variant when `geometry`), skipping the receiver
+    // itself and casters entirely behind every plane.
+    void drawProjected(TechniqueHost& host, const FrameInfo& frame, const PlanarOptions& o, bool geometry, const gl::Program& program,
+                       std::span<const Receiver> planes) {
+        shared::PlanarUniforms u{};
+        for (std::size_t p = 0; p < planes.size(); ++p) {
+            u.shadowFromWorld[p] = planes[p].projection;
+            u.plane[p] = planes[p].plane;
+        }
+        u.params = glm::vec4(static_cast<float>(planes.size()), o.darkness, 0.0f, 0.0f);
+        glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
+        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
+        glEnable(GL_CLIP_DISTANCE0);
+        glEnable(GL_CLIP_DISTANCE1);
+        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+            bool any = false;
+            GLint self = -1;  // a receiver plane is not projected onto itself
+            for (std::size_t p = 0; p < planes.size(); ++p) {
+                if (planes[p].item == i) self = static_cast<GLint>(p);
+                else any = any || above(planes[p].plane, frame.itemBounds[i]);
+            }
+            if (any && geometry) glProgramUniform1i(program.id(), 2, self);
+            return any;
+        });
+        glDisable(GL_CLIP_DISTANCE0);
+        glDisable(GL_CLIP_DISTANCE1);
+    }
+
     // True when some corner of `box` is strictly on the light's side of `plane`.
     static bool above(const glm::vec4& plane, const Bounds& box) {
         for (int c = 0; c < 8; ++c) {
@@ -191,7 +194,6 @@ private:
         }
         return false;
     }
-
 
     std::map<int, std::vector<Receiver>> receivers_;
     gl::Buffer ubo_{gl::NoCreate};

@@ -101,14 +101,7 @@ public:
         const VolumeOptions& o = view.light.shadow.get<VolumeOptions>();
         const bool depthFail = o.method != VolumeMethod::DepthPass;
         const bool book = o.method == VolumeMethod::Book;
-        shared::VolumeUniforms u{};
-        u.light = towardsLight(view.light);
-        // The book's extrusion: past every point of the scene seen from the light.
-        Bounds scene;
-        for (const Bounds& b : frame.itemBounds) scene.add(b);
-        const float diagonal = scene.empty() ? 1.0f : glm::length(scene.size());
-        const float fromLight = scene.empty() || u.light.w == 0.0f ? 0.0f : glm::length(scene.centre() - glm::vec3(u.light));
-        u.params = glm::vec4(2.0f * (diagonal + fromLight) + 1.0f, 0.0f, 0.0f, 0.0f);
+        const shared::VolumeUniforms u = volumeUniforms(frame, view.light);
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
         const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_volume.vert"},
@@ -116,25 +109,7 @@ public:
                                                     {GL_FRAGMENT_SHADER, "shadow_volume.frag"}},
                                                    std::string("#define CAPS ") + (depthFail ? "1" : "0") + "\n#define BOOK " + (book ? "1" : "0") + "\n"});
         clearStencil(host);
-        gl::RenderState s;
-        s.depthFunc = GL_LESS;  // a front cap lying in the lit surface fails: it is counted with the faces behind
-        s.depthWrite = false;
-        s.noColor();
-        s.stencilTest = true;
-        if (depthFail) {
-            s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_INCR_WRAP, GL_KEEP};
-            s.stencilFront = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_DECR_WRAP, GL_KEEP};
-        } else {
-            s.stencilFront = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_INCR_WRAP};
-            s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_DECR_WRAP};
-        }
-        // Volume faces are pushed two depth units away from the camera, so
-        // that a front cap never passes where it coincides with the lit
-        // surface (1 left two pixels on the resting torus's terminator; 4
-        // and more start to shift the shadows' edges).
-        s.polygonOffset = true;
-        s.offsetFactor = 0.0f;
-        s.offsetUnits = 2.0f;
+        gl::RenderState s = countingState(depthFail);
         const bool triangles = o.openMeshes == VolumeOpenMeshes::Triangles;
         std::size_t drawn = 0;
         const bool cpu = o.extrusion == VolumeExtrusion::Cpu;
@@ -190,6 +165,47 @@ public:
     }
 
 private:
+    // The volumes' uniforms for `light`: the light (its position with w = 1,
+    // or the direction towards it with w = 0) and the book's extrusion
+    // distance.
+    static shared::VolumeUniforms volumeUniforms(const FrameInfo& frame, const Light& light) {
+        shared::VolumeUniforms u{};
+        u.light = towardsLight(light);
+        // The book's extrusion: past every point of the scene seen from the light.
+        Bounds scene;
+        for (const Bounds& b : frame.itemBounds) scene.add(b);
+        const float diagonal = scene.empty() ? 1.0f : glm::length(scene.size());
+        const float fromLight = scene.empty() || u.light.w == 0.0f ? 0.0f : glm::length(scene.centre() - glm::vec3(u.light));
+        u.params = glm::vec4(2.0f * (diagonal + fromLight) + 1.0f, 0.0f, 0.0f, 0.0f);
+        return u;
+    }
+
+    // The state the volume faces are counted in the stencil with: no colour
+    // or depth written, two-sided stencil operations for depth-fail (faces
+    // behind the visible surface) or depth-pass (in front of it).
+    static gl::RenderState countingState(bool depthFail) {
+        gl::RenderState s;
+        s.depthFunc = GL_LESS;  // a front cap lying in the lit surface fails: it is counted with the faces behind
+        s.depthWrite = false;
+        s.noColor();
+        s.stencilTest = true;
+        if (depthFail) {
+            s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_INCR_WRAP, GL_KEEP};
+            s.stencilFront = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_DECR_WRAP, GL_KEEP};
+        } else {
+            s.stencilFront = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_INCR_WRAP};
+            s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_DECR_WRAP};
+        }
+        // Volume faces are pushed two depth units away from the camera, so
+        // that a front cap never passes where it coincides with the lit
+        // surface (1 left two pixels on the resting torus's terminator; 4
+        // and more start to shift the shadows' edges).
+        s.polygonOffset = true;
+        s.offsetFactor = 0.0f;
+        s.offsetUnits = 2.0f;
+        return s;
+    }
+
     // The light (position with w = 1, or the direction towards it with w =
     // 0) in the item's object space.
     static glm::dvec4 lightInObject(const DrawItem& item, const Light& light) {
@@ -224,46 +240,8 @@ private:
             }
             const bool perTriangle = perTriangleForOpen && open_[m].edges > 0;
             CpuRange range{i, cpuVertices_.size(), 0};
-            // The facing test in object space and double precision, as the geometry shader does it.
-            const glm::dvec4 lo = lightInObject(item, view.light);
-            auto before = [&](std::uint32_t p, std::uint32_t q) {
-                const glm::vec3 &u = mesh.positions[p], &v = mesh.positions[q];
-                return u.x < v.x || (u.x == v.x && (u.y < v.y || (u.y == v.y && u.z < v.z)));
-            };
-            auto faces = [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
-                // From the smallest corner on, as shadow_volume.geom does.
-                if (before(i1, i0) && !before(i2, i1)) std::tie(i0, i1, i2) = std::tuple(i1, i2, i0);
-                else if (before(i2, i0) && before(i2, i1)) std::tie(i0, i1, i2) = std::tuple(i2, i0, i1);
-                const glm::dvec3 a(mesh.positions[i0]), b(mesh.positions[i1]), c(mesh.positions[i2]);
-                const glm::dvec3 towards = lo.w > 0.5 ? glm::dvec3(lo) - a : glm::dvec3(lo);
-                const glm::dvec3 n = glm::cross(b - a, c - a);
-                return n.x * towards.x + n.y * towards.y + n.z * towards.z > 0.0;
-            };
-            auto put = [&](std::uint32_t k, float extruded) { cpuVertices_.push_back({mesh.positions[k], extruded}); };
-            auto side = [&](std::uint32_t a, std::uint32_t b) {
-                put(a, 0.0f), put(a, 1.0f), put(b, 0.0f);
-                put(b, 0.0f), put(a, 1.0f), put(b, 1.0f);
-            };
-            const std::vector<std::uint32_t>& x = adj.indices;
-            for (std::size_t t = 0; t + 5 < x.size(); t += 6) {
-                const bool lit = faces(x[t], x[t + 2], x[t + 4]);
-                if (!perTriangle && !lit) continue;
-                const std::uint32_t a = x[t], b = lit ? x[t + 2] : x[t + 4], c = lit ? x[t + 4] : x[t + 2];
-                if (perTriangle) {
-                    side(a, b), side(b, c), side(c, a);
-                } else {
-                    for (int e = 0; e < 3; ++e) {
-                        const std::uint32_t p = x[t + 2 * e], q = x[t + (2 * e + 2) % 6], n = x[t + 2 * e + 1];
-                        const bool open = mesh.positions[n] == mesh.positions[x[t + (2 * e + 4) % 6]];
-                        if (open || !faces(p, n, q)) side(p, q);
-                    }
-                }
-                if (caps) {
-                    put(a, 0.0f), put(b, 0.0f), put(c, 0.0f);
-                    put(a, 1.0f), put(c, 1.0f), put(b, 1.0f);
-                }
-            }
-            triangles += x.size() / 6;
+            extrude(mesh, adj.indices, lightInObject(item, view.light), perTriangle, caps);
+            triangles += adj.indices.size() / 6;
             range.count = cpuVertices_.size() - range.first;
             if (range.count) cpuRanges_.push_back(range);
         }
@@ -287,6 +265,49 @@ private:
         }
         glNamedBufferData(cpuBuffer_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, cpuVertices_.size()) * sizeof(CpuVertex)),
                           cpuVertices_.empty() ? nullptr : cpuVertices_.data(), GL_STREAM_DRAW);
+    }
+
+    // One mesh's volume, appended to cpuVertices_: from its welded adjacency
+    // x (six indices a triangle) and the light lo in its object space
+    // (lightInObject); every triangle its own volume when perTriangle.
+    void extrude(const Mesh& mesh, const std::vector<std::uint32_t>& x, const glm::dvec4& lo, bool perTriangle, bool caps) {
+        // The facing test in object space and double precision, as the geometry shader does it.
+        auto before = [&](std::uint32_t p, std::uint32_t q) {
+            const glm::vec3 &u = mesh.positions[p], &v = mesh.positions[q];
+            return u.x < v.x || (u.x == v.x && (u.y < v.y || (u.y == v.y && u.z < v.z)));
+        };
+        auto faces = [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
+            // From the smallest corner on, as shadow_volume.geom does.
+            if (before(i1, i0) && !before(i2, i1)) std::tie(i0, i1, i2) = std::tuple(i1, i2, i0);
+            else if (before(i2, i0) && before(i2, i1)) std::tie(i0, i1, i2) = std::tuple(i2, i0, i1);
+            const glm::dvec3 a(mesh.positions[i0]), b(mesh.positions[i1]), c(mesh.positions[i2]);
+            const glm::dvec3 towards = lo.w > 0.5 ? glm::dvec3(lo) - a : glm::dvec3(lo);
+            const glm::dvec3 n = glm::cross(b - a, c - a);
+            return n.x * towards.x + n.y * towards.y + n.z * towards.z > 0.0;
+        };
+        auto put = [&](std::uint32_t k, float extruded) { cpuVertices_.push_back({mesh.positions[k], extruded}); };
+        auto side = [&](std::uint32_t a, std::uint32_t b) {
+            put(a, 0.0f), put(a, 1.0f), put(b, 0.0f);
+            put(b, 0.0f), put(a, 1.0f), put(b, 1.0f);
+        };
+        for (std::size_t t = 0; t + 5 < x.size(); t += 6) {
+            const bool lit = faces(x[t], x[t + 2], x[t + 4]);
+            if (!perTriangle && !lit) continue;
+            const std::uint32_t a = x[t], b = lit ? x[t + 2] : x[t + 4], c = lit ? x[t + 4] : x[t + 2];
+            if (perTriangle) {
+                side(a, b), side(b, c), side(c, a);
+            } else {
+                for (int e = 0; e < 3; ++e) {
+                    const std::uint32_t p = x[t + 2 * e], q = x[t + (2 * e + 2) % 6], n = x[t + 2 * e + 1];
+                    const bool open = mesh.positions[n] == mesh.positions[x[t + (2 * e + 4) % 6]];
+                    if (open || !faces(p, n, q)) side(p, q);
+                }
+            }
+            if (caps) {
+                put(a, 0.0f), put(b, 0.0f), put(c, 0.0f);
+                put(a, 1.0f), put(c, 1.0f), put(b, 1.0f);
+            }
+        }
     }
 
     struct Adjacency {
