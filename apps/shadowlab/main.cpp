@@ -213,6 +213,16 @@ private:
     std::vector<std::pair<fs::path, fs::path>> files_; ///< temporary, target
 };
 
+// Whether --debug's list asks for images of `kind`: shadow-maps (2D maps and
+// cube crosses), texel-density, cascades, or all (every image).
+bool debugWanted(DebugImageKind kind, const std::vector<std::string>& wanted) {
+    for (const std::string& w : wanted)
+        if (w == "all" || (w == "shadow-maps" && (kind == DebugImageKind::ShadowMap || kind == DebugImageKind::CubeCross)) ||
+            (w == "texel-density" && kind == DebugImageKind::TexelDensity) || (w == "cascades" && kind == DebugImageKind::Cascades))
+            return true;
+    return false;
+}
+
 int runRender(const RenderArgs& args) {
     checkTime(args.timeSeconds, "--time");
     checkFps(args.fps);
@@ -267,20 +277,8 @@ int runRender(const RenderArgs& args) {
         requireNoGlErrors(context);  // before writing: no image from a failed frame
         pending.write(output, image);
         // --debug KIND: the images of that kind beside the output, <stem>-<image>.png.
-        for (const DebugImage& d : debug) {
-            auto endsWith = [&](const char* tail) {
-                const std::size_t n = std::char_traits<char>::length(tail);
-                return d.name.size() >= n && d.name.compare(d.name.size() - n, n, tail) == 0;
-            };
-            const bool isMap = endsWith("-map") || endsWith("-cube");  // a 2D map, or a cube's six faces as a cross
-            const bool isDensity = d.name.find("texel-density") != std::string::npos;
-            const bool isCascades = endsWith("-cascades");
-            for (const std::string& kind : args.debug)
-                if (kind == "all" || (kind == "shadow-maps" && isMap) || (kind == "texel-density" && isDensity) || (kind == "cascades" && isCascades)) {
-                    pending.write(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), d.image);
-                    break;
-                }
-        }
+        for (const DebugImage& d : debug)
+            if (debugWanted(d.kind, args.debug)) pending.write(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), d.image);
         // --debug-images DIR: <image>.png, or <frame stem>-<image>.png for a sequence.
         if (!args.debugImages.empty()) {
             const fs::path dir(args.debugImages);

@@ -139,8 +139,9 @@ public:
         bindLightPass(host, frame, light);
         host.drawLit(host.litState());
     }
-    /// Images worth looking at (depth maps, cube crosses, texel density);
-    /// `shadowlab render --debug-images DIR` writes them.
+    /// Images worth looking at (depth maps, cube crosses, texel density),
+    /// each with the kind that `shadowlab render --debug` picks it by;
+    /// `shadowlab render --debug-images DIR` writes them all.
     virtual void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, std::vector<DebugImage>&) {}
     /// The clip-from-world matrices of the light's cameras in the last frame
     /// (a 2D map's one, a cube's six faces), for drawing their frustums;
