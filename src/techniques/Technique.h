@@ -18,6 +18,7 @@
 #include <shadowlab/Options.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/Scene.h>
+#include <shadowlab/Techniques.h>
 
 #include <optional>
 
@@ -164,6 +165,10 @@ struct TechniqueEntry {
     /// worldNormal)`, which writes outputs the fragment file reads (e.g.
     /// light-space coordinates computed per vertex instead of per fragment).
     std::string vertexShaderFile = {};
+    /// The light's shadow at the technique's baseline, the plainest form of
+    /// it that bench times its variants against (shadowBaseline(),
+    /// Techniques.h); default: the light is its own baseline.
+    std::function<ShadowBaseline(const Light&)> baseline = {};
 };
 
 } // namespace shadowlab
