@@ -154,11 +154,9 @@ std::string scatterPlot(const json& records) {
     return s.str();
 }
 
-} // namespace
-
-void writeReport(const json& results, const fs::path& directory) {
+// The page's head and its first paragraph: the run's parameters.
+void introduction(std::ostream& h, const json& results) {
     const json& records = results["results"];
-    std::ostringstream h;
     h << R"(<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>shadowlab bench report</title>
 <style>
@@ -189,6 +187,56 @@ figcaption { font-size: 12px; color: #555; }
              "consecutive frames while the reference's does not, median and maximum over the pairs of frames, beside the share "
              "whose reference changed (true motion, left out of the flips).";
     h << "</p>\n";
+}
+
+// Where a row's time goes: its top-level passes' medians summed by kind.
+struct PassSums {
+    double shadowMs = 0, baseMs = 0, lightMs = 0;
+};
+
+PassSums passSums(const json& r) {
+    PassSums sums;
+    for (const auto& [name, st] : r["passMs"].items()) {
+        if (name.find('.') != std::string::npos) continue;  // nested scopes are inside their pass
+        if (name.rfind("shadow", 0) == 0) sums.shadowMs += st["median"].get<double>();
+        if (name == "base") sums.baseMs += st["median"].get<double>();
+        if (name.rfind("light", 0) == 0) sums.lightMs += st["median"].get<double>();
+    }
+    return sums;
+}
+
+// Row `index`'s line for its light `l` in the table.
+void lightRow(std::ostream& h, const json& records, int index, const json& l, double fastest, bool flips) {
+    const json& r = records[static_cast<std::size_t>(index)];
+    const auto [shadowMs, baseMs, lightMs] = passSums(r);
+    const json& g = r["frameMs"];
+    h << "<tr><td>" << index << "</td><td class=\"l\">" << escape(r["scene"].get<std::string>()) << "</td><td class=\"l\">"
+      << escape(settingsText(r)) << "</td><td class=\"l\">" << escape(l["name"].get<std::string>()) << " ("
+      << escape(l["type"].get<std::string>()) << (l["soft"].get<bool>() ? ", soft" : "") << ")</td><td class=\"l\">"
+      << escape(l["technique"].get<std::string>()) << "</td><td>" << r["triangles"] << "</td><td>"
+      << fixed(g["median"], 1) << " (" << fixed(g["min"], 1) << "&ndash;" << fixed(g["max"], 1) << ")</td><td>"
+      << (fastest > 0.0 ? fixed(g["median"].get<double>() / fastest, 2) : std::string("&ndash;")) << "</td><td>"
+      << (r.contains("frameOverUnshadowed") ? fixed(r["frameOverUnshadowed"], 2) : std::string("&ndash;")) << "</td><td>"
+      << fixed(shadowMs, 1) << "</td><td>" << (l.contains("shadowFloorMs") ? fixed(l["shadowFloorMs"], 1) : std::string("&ndash;")) << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
+      << escape(r["clock"].get<std::string>())
+      << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
+      << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
+      << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4)
+      << (l.value("coloured", false) ? " (r " + fixed(l["rmseRgb"][0], 4) + ", g " + fixed(l["rmseRgb"][1], 4) + ", b " + fixed(l["rmseRgb"][2], 4) + ")"
+                                     : std::string())
+      << "</td><td>"
+      << (l.contains("leakedInUmbra") ? percent(l["leakedInUmbra"]) : std::string("&ndash;")) << "</td><td>"
+      << (l.value("soft", false) && l.contains("penumbraRatio") ? fixed(l["penumbraRatio"], 2) : std::string("&ndash;")) << "</td><td>"
+      << (r.contains("frameOverHardMap") ? fixed(r["frameOverHardMap"], 2) : std::string("&ndash;")) << "</td><td>"
+      << (onFront(records, static_cast<std::size_t>(index)) ? "&#9679;" : "") << "</td>";
+    if (flips && l.contains("flips"))
+        h << "<td>" << percent(l["flips"]["median"]) << "</td><td>" << percent(l["flips"]["max"]) << "</td><td>"
+          << percent(l["referenceChanges"]["median"]) << "</td>";
+    h << "</tr>\n";
+}
+
+// The table: one line per row and light.
+void resultsTable(std::ostream& h, const json& records, bool flips) {
     double fastest = 0.0;
     for (const json& r : records) {
         const double m = r["frameMs"]["median"].get<double>();
@@ -201,49 +249,17 @@ figcaption { font-size: 12px; color: #555; }
       << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";
     int index = 0;
     for (const json& r : records) {
-        double shadowMs = 0, baseMs = 0, lightMs = 0;
-        for (const auto& [name, st] : r["passMs"].items()) {
-            if (name.find('.') != std::string::npos) continue;  // nested scopes are inside their pass
-            if (name.rfind("shadow", 0) == 0) shadowMs += st["median"].get<double>();
-            if (name == "base") baseMs += st["median"].get<double>();
-            if (name.rfind("light", 0) == 0) lightMs += st["median"].get<double>();
-        }
-        const json& g = r["frameMs"];
-        for (const json& l : r["lights"]) {
-            h << "<tr><td>" << index << "</td><td class=\"l\">" << escape(r["scene"].get<std::string>()) << "</td><td class=\"l\">"
-              << escape(settingsText(r)) << "</td><td class=\"l\">" << escape(l["name"].get<std::string>()) << " ("
-              << escape(l["type"].get<std::string>()) << (l["soft"].get<bool>() ? ", soft" : "") << ")</td><td class=\"l\">"
-              << escape(l["technique"].get<std::string>()) << "</td><td>" << r["triangles"] << "</td><td>"
-              << fixed(g["median"], 1) << " (" << fixed(g["min"], 1) << "&ndash;" << fixed(g["max"], 1) << ")</td><td>"
-              << (fastest > 0.0 ? fixed(g["median"].get<double>() / fastest, 2) : std::string("&ndash;")) << "</td><td>"
-              << (r.contains("frameOverUnshadowed") ? fixed(r["frameOverUnshadowed"], 2) : std::string("&ndash;")) << "</td><td>"
-              << fixed(shadowMs, 1) << "</td><td>" << (l.contains("shadowFloorMs") ? fixed(l["shadowFloorMs"], 1) : std::string("&ndash;")) << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
-              << escape(r["clock"].get<std::string>())
-              << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
-              << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
-              << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4)
-              << (l.value("coloured", false) ? " (r " + fixed(l["rmseRgb"][0], 4) + ", g " + fixed(l["rmseRgb"][1], 4) + ", b " + fixed(l["rmseRgb"][2], 4) + ")"
-                                             : std::string())
-              << "</td><td>"
-              << (l.contains("leakedInUmbra") ? percent(l["leakedInUmbra"]) : std::string("&ndash;")) << "</td><td>"
-              << (l.value("soft", false) && l.contains("penumbraRatio") ? fixed(l["penumbraRatio"], 2) : std::string("&ndash;")) << "</td><td>"
-              << (r.contains("frameOverHardMap") ? fixed(r["frameOverHardMap"], 2) : std::string("&ndash;")) << "</td><td>"
-              << (onFront(records, static_cast<std::size_t>(index)) ? "&#9679;" : "") << "</td>";
-            if (flips && l.contains("flips"))
-                h << "<td>" << percent(l["flips"]["median"]) << "</td><td>" << percent(l["flips"]["max"]) << "</td><td>"
-                  << percent(l["referenceChanges"]["median"]) << "</td>";
-            h << "</tr>\n";
-        }
+        for (const json& l : r["lights"]) lightRow(h, records, index, l, fastest, flips);
         ++index;
     }
-    h << "</table></div>\n<h2>Time against error</h2>\n<p>Each point is a row of the table (its number); lower left is better. "
-         "Orange, and &#9679; in the table's front column: the rows on their scene's time&ndash;error front (the Pareto front), "
-         "those no other row of the same scene beats in both frame time and error: for a frame-time budget, the least error "
-         "is among them. Error: misclassified away from edges for hard lights, RMSE for soft ones, averaged over the lights.</p>\n"
-      << scatterPlot(records);
+    h << "</table></div>\n";
+}
+
+// Every row's technique, reference and error images, inlined.
+void imageSections(std::ostream& h, const json& records, const fs::path& directory) {
     h << "<h2>Images</h2>\n<p class=\"legend\">Error images: <span style=\"background:#eb281e\">false lit</span>"
          "<span style=\"background:#286ef0\">false shadow</span> paler in the 1-pixel band around true shadow edges; grey: agrees.</p>\n";
-    index = 0;
+    int index = 0;
     for (const json& r : records) {
         h << "<section class=\"row\"><h3>" << index << ". " << escape(r["scene"].get<std::string>()) << " &mdash; "
           << escape(settingsText(r)) << "</h3>\n";
@@ -257,6 +273,22 @@ figcaption { font-size: 12px; color: #555; }
         h << "</section>\n";
         ++index;
     }
+}
+
+} // namespace
+
+void writeReport(const json& results, const fs::path& directory) {
+    const json& records = results["results"];
+    std::ostringstream h;
+    introduction(h, results);
+    const bool flips = results.value("flips", false);
+    resultsTable(h, records, flips);
+    h << "<h2>Time against error</h2>\n<p>Each point is a row of the table (its number); lower left is better. "
+         "Orange, and &#9679; in the table's front column: the rows on their scene's time&ndash;error front (the Pareto front), "
+         "those no other row of the same scene beats in both frame time and error: for a frame-time budget, the least error "
+         "is among them. Error: misclassified away from edges for hard lights, RMSE for soft ones, averaged over the lights.</p>\n"
+      << scatterPlot(records);
+    imageSections(h, records, directory);
     // Lets a test (or a person) see that every image decoded.
     h << R"(<script>
 window.addEventListener('load', () => {

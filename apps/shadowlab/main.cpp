@@ -11,6 +11,7 @@
 #include "Viewer.h"
 #endif
 #include "Metrics.h"
+#include "OutputFiles.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/Context.h>
@@ -33,7 +34,6 @@
 #include <map>
 #include <set>
 #include <sstream>
-#include <string_view>
 
 namespace fs = std::filesystem;
 using namespace shadowlab;
@@ -75,46 +75,6 @@ void checkFps(double fps) {
     if (!std::isfinite(fps) || !(fps > 0.0)) throw Error("--fps " + numberText(fps) + ": expected a finite number of frames per second > 0");
 }
 
-// An output name with a printf-style integer field (`frame_%03d.png`): one
-// `%[flags][width]d` (or `i`), `%%` for a literal percent sign, nothing else.
-struct FramePattern {
-    std::string before, field, after; ///< the name split around its integer field ("" when it has none)
-    bool hasField() const { return !field.empty(); }
-    std::string name(int frame) const {
-        if (!hasField()) return before;
-        char number[64];
-        std::snprintf(number, sizeof number, field.c_str(), frame);  // field was checked to be one integer conversion
-        return before + number + after;
-    }
-};
-
-FramePattern parseFramePattern(const std::string& output) {
-    FramePattern p;
-    std::string* part = &p.before;
-    for (std::size_t i = 0; i < output.size(); ++i) {
-        if (output[i] != '%') {
-            *part += output[i];
-            continue;
-        }
-        if (i + 1 < output.size() && output[i + 1] == '%') {
-            *part += '%';
-            ++i;
-            continue;
-        }
-        const std::size_t start = i++;
-        while (i < output.size() && std::string_view("-+ 0#").find(output[i]) != std::string_view::npos) ++i;
-        const std::size_t widthStart = i;
-        while (i < output.size() && std::isdigit(static_cast<unsigned char>(output[i]))) ++i;
-        if (i - widthStart > 3) throw Error("-o " + output + ": the frame number's width is too large");
-        if (i >= output.size() || (output[i] != 'd' && output[i] != 'i'))
-            throw Error("-o " + output + ": '%' starts a frame number field such as %d or %03d (write %% for a percent sign)");
-        if (p.hasField()) throw Error("-o " + output + ": more than one frame number field");
-        p.field = output.substr(start, i + 1 - start);
-        part = &p.after;
-    }
-    return p;
-}
-
 // --view-from-light I: the scene seen from light I (lecture 002 exercise 8.6.1-1).
 void applyViewFromLight(Scene& scene, int light) {
     if (light < 0) return;
@@ -129,18 +89,6 @@ void applyViewFromLight(Scene& scene, int light) {
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
     return path.empty() ? defaultScene(overrides) : loadSceneFile(path, overrides);
-}
-
-// Checks an output path before any work is done, so bad paths fail fast.
-fs::path checkOutput(const std::string& output, const std::string& flag) {
-    const fs::path path(output);
-    if (fs::is_directory(path)) throw Error(flag + " " + output + ": is a directory (expected a .png file name)");
-    if (path.extension() != ".png" && path.extension() != ".PNG")
-        throw Error(flag + " " + output + ": expected a .png file name");
-    const fs::path dir = path.parent_path();
-    if (!dir.empty() && !fs::is_directory(dir))
-        throw Error(flag + " " + output + ": directory " + dir.string() + " does not exist");
-    return path;
 }
 
 // Bytes per output pixel, estimated: the colour, depth and G-buffer targets
@@ -178,40 +126,15 @@ void requireNoGlErrors(const Context& context) {
         throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
 }
 
-// Images written under temporary names beside their targets and renamed
-// into place together by commit(): a failure at frame 7 of 10 leaves no
-// frame behind. Destroyed without commit(), the temporaries are removed.
-class PendingImages {
-public:
-    PendingImages() = default;
-    PendingImages(const PendingImages&) = delete;
-    PendingImages& operator=(const PendingImages&) = delete;
-    ~PendingImages() {
-        std::error_code ec;
-        for (const auto& [temporary, target] : files_) fs::remove(temporary, ec);
-    }
-    void write(const fs::path& target, const ImageRGBA8& image) {
-        fs::path temporary = target;
-        temporary += ".pending-" + std::to_string(getpid());
-        files_.emplace_back(temporary, target);  // first: removed even if writePng fails half way
-        writePng(temporary, image);
-    }
-    /// Renames every image into place, in the order written; returns their names.
-    std::vector<fs::path> commit() {
-        std::vector<fs::path> written;
-        for (const auto& [temporary, target] : files_) {
-            std::error_code ec;
-            fs::rename(temporary, target, ec);
-            if (ec) throw Error(target.string() + ": cannot write (" + ec.message() + ")");
-            written.push_back(target);
-        }
-        files_.clear();
-        return written;
-    }
-
-private:
-    std::vector<std::pair<fs::path, fs::path>> files_; ///< temporary, target
-};
+// Whether --debug's list asks for images of `kind`: shadow-maps (2D maps and
+// cube crosses), texel-density, cascades, or all (every image).
+bool debugWanted(DebugImageKind kind, const std::vector<std::string>& wanted) {
+    for (const std::string& w : wanted)
+        if (w == "all" || (w == "shadow-maps" && (kind == DebugImageKind::ShadowMap || kind == DebugImageKind::CubeCross)) ||
+            (w == "texel-density" && kind == DebugImageKind::TexelDensity) || (w == "cascades" && kind == DebugImageKind::Cascades))
+            return true;
+    return false;
+}
 
 int runRender(const RenderArgs& args) {
     checkTime(args.timeSeconds, "--time");
@@ -222,13 +145,13 @@ int runRender(const RenderArgs& args) {
     for (std::size_t at = stem.find('%'); at != std::string::npos; at = stem.find('%', at + 2)) stem.insert(at, "%");
     const std::string defaultName = stem + (args.frames > 1 ? "-%03d" : "") + ".png";
     const std::string outputName = args.output.empty() ? defaultName : args.output;
-    const FramePattern pattern = parseFramePattern(outputName);
+    const tool::FramePattern pattern = tool::parseFramePattern(outputName);
     if (args.frames > 1 && !pattern.hasField())
         throw Error("-o " + outputName + ": --frames " + std::to_string(args.frames) +
                     " needs a frame number field in the name, e.g. frame_%03d.png");
     // Every name is checked before anything is rendered.
     std::vector<fs::path> outputs;
-    for (int k = 0; k < args.frames; ++k) outputs.push_back(checkOutput(pattern.name(k), "-o"));
+    for (int k = 0; k < args.frames; ++k) outputs.push_back(tool::checkOutput(pattern.name(k), "-o"));
     // Frame k at --time + k / --fps: the times are checked before the first frame too.
     std::vector<double> times;
     for (int k = 0; k < args.frames; ++k) {
@@ -246,7 +169,7 @@ int runRender(const RenderArgs& args) {
     checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(loaded);
-    PendingImages pending;
+    tool::PendingImages pending;
     Scene scene = loaded;
     for (int k = 0; k < args.frames; ++k) {
         const fs::path& output = outputs[static_cast<std::size_t>(k)];
@@ -267,20 +190,8 @@ int runRender(const RenderArgs& args) {
         requireNoGlErrors(context);  // before writing: no image from a failed frame
         pending.write(output, image);
         // --debug KIND: the images of that kind beside the output, <stem>-<image>.png.
-        for (const DebugImage& d : debug) {
-            auto endsWith = [&](const char* tail) {
-                const std::size_t n = std::char_traits<char>::length(tail);
-                return d.name.size() >= n && d.name.compare(d.name.size() - n, n, tail) == 0;
-            };
-            const bool isMap = endsWith("-map") || endsWith("-cube");  // a 2D map, or a cube's six faces as a cross
-            const bool isDensity = d.name.find("texel-density") != std::string::npos;
-            const bool isCascades = endsWith("-cascades");
-            for (const std::string& kind : args.debug)
-                if (kind == "all" || (kind == "shadow-maps" && isMap) || (kind == "texel-density" && isDensity) || (kind == "cascades" && isCascades)) {
-                    pending.write(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), d.image);
-                    break;
-                }
-        }
+        for (const DebugImage& d : debug)
+            if (debugWanted(d.kind, args.debug)) pending.write(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), d.image);
         // --debug-images DIR: <image>.png, or <frame stem>-<image>.png for a sequence.
         if (!args.debugImages.empty()) {
             const fs::path dir(args.debugImages);
@@ -303,14 +214,6 @@ struct CompareArgs {
     double timeSeconds = 0.0; ///< --time: the lights and the camera where their paths put them at this time, seconds
 };
 
-fs::path checkOutputDirectory(const std::string& output) {
-    const fs::path dir(output);
-    if (fs::exists(dir) && !fs::is_directory(dir)) throw Error("-o " + output + ": exists and is not a directory");
-    if (!dir.parent_path().empty() && !fs::is_directory(dir.parent_path()))
-        throw Error("-o " + output + ": directory " + dir.parent_path().string() + " does not exist");
-    return dir;
-}
-
 std::string pct(double share) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3f%%", 100.0 * share);
@@ -321,7 +224,7 @@ int runCompare(const CompareArgs& args) {
     checkTime(args.timeSeconds, "--time");
     // Both sides, technique and reference, see the lights and the camera at --time.
     const Scene scene = sceneAtTime(loadScene(args.scene, args.overrides), args.timeSeconds);
-    const fs::path dir = checkOutputDirectory(args.output);
+    const fs::path dir = tool::checkOutputDirectory(args.output);
     checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
     checkSize(args.width, args.height, context.info());
@@ -401,7 +304,7 @@ int runBenchCommand(const tool::BenchArgs& args) {
         if (!fs::exists(status)) throw Error(file + ": file not found");
         if (!fs::is_regular_file(status)) throw Error(file + ": not a regular file (expected a scene file)");
     }
-    checkOutputDirectory(args.output.string());
+    tool::checkOutputDirectory(args.output.string());
     checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
     checkSize(args.width, args.height, context.info());
@@ -469,6 +372,89 @@ int runInfo() {
     return 0;
 }
 
+// Each subcommand's options, into the arguments its run function takes.
+CLI::App* addRender(CLI::App& app, RenderArgs& args) {
+    CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG image");
+    render->add_option("scene", args.scene, "Scene file (JSON); the built-in default scene when omitted");
+    render->add_option("-o,--output", args.output, "Output PNG (default: <scene name>.png)");
+    render->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    render->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    render->add_option("--set", args.overrides, "Override a scene value by JSON path, e.g. lights[0].intensity=2")->take_all();
+    render->add_option("--view-from-light", args.viewFromLight, "See the scene from light I's camera (spot: along its cone; directional: along its direction)")
+        ->check(CLI::NonNegativeNumber);
+    render->add_option("--debug", args.debug,
+                       "Also write debug images beside the output as <name>-<image>.png: shadow-maps (each light's map, "
+                       "perspective depth linearised; a point light's cube as a cross), texel-density (map texels per pixel), cascades (the frame coloured by cascade), all")
+        ->check(CLI::IsMember({"shadow-maps", "texel-density", "cascades", "all"}))
+        ->delimiter(',');
+    render->add_option("--debug-images", args.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
+    render->add_option("--time", args.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are (the first frame's time)")
+        ->capture_default_str();
+    render->add_option("--frames", args.frames, "Render this many frames, frame k at --time + k / --fps; -o then needs a field such as %03d")
+        ->check(CLI::Range(1, 100000))->capture_default_str();
+    render->add_option("--fps", args.fps, "Frames per second of the sequence")->capture_default_str();
+    return render;
+}
+
+CLI::App* addCompare(CLI::App& app, CompareArgs& args) {
+    CLI::App* compare = app.add_subcommand("compare", "Compare a scene's shadow techniques with exact ray-traced shadows");
+    compare->add_option("scene", args.scene, "Scene file (JSON); the built-in default scene when omitted");
+    compare->add_option("-o,--output", args.output, "Output directory")->capture_default_str();
+    compare->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    compare->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    compare->add_option("--samples", args.softSamples, "Reference rays per pixel for lights with a size")
+        ->check(CLI::Range(1, 65536))->capture_default_str();
+    compare->add_option("--set", args.overrides, "Override a scene value by JSON path")->take_all();
+    compare->add_option("--time", args.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are")
+        ->capture_default_str();
+    return compare;
+}
+
+// -o into `output`, checked in main before it becomes args.output.
+CLI::App* addBench(CLI::App& app, tool::BenchArgs& args, std::string& output) {
+    CLI::App* bench = app.add_subcommand("bench", "Time and accuracy of every combination of settings, with results.json and report.html");
+    bench->add_option("scenes", args.scenes, "Scene files (JSON); the built-in default scene when omitted");
+    bench->add_option("--set", args.overrides, "Override a scene value for every run")->take_all();
+    bench->add_option("--vary", args.vary, "key=v1,v2,...: run once per value (several --vary: every combination)")->take_all();
+    bench->add_option("--frames", args.frames, "Timed frames per combination; timed frame k at --time + k / --fps")
+        ->check(CLI::Range(1, 100000))->capture_default_str();
+    bench->add_option("--time", args.timeSeconds, "Seconds since the start of the animation: the first timed frame's time, and the "
+                                                   "time of the warm-up frames and the accuracy comparison")
+        ->capture_default_str();
+    bench->add_option("--fps", args.fps, "Frames per second of the timed sequence")->capture_default_str();
+    bench->add_flag("--flips", args.flips,
+                    "Temporal stability: compare every timed frame with the reference and report per light the share of receiver "
+                    "pixels whose shadow flips between consecutive frames while the reference's does not (needs --frames >= 2)");
+    bench->add_option("--warmup", args.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
+    bench->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    bench->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    bench->add_option("--samples", args.softSamples, "Reference rays per pixel for lights with a size")
+        ->check(CLI::Range(1, 65536))->capture_default_str();
+    bench->add_option("-o,--output", output, "Output directory")->capture_default_str();
+    const std::map<std::string, TimingClock> clocks{{"auto", TimingClock::Auto},
+                                                    {"cpu-finish", TimingClock::CpuFinish},
+                                                    {"gpu-timestamp", TimingClock::GpuTimestamp}};
+    bench->add_option("--clock", args.clock,
+                      "Per-pass clock: auto (cpu-finish on a software rasteriser, gpu-timestamp on a GPU), cpu-finish, gpu-timestamp")
+        ->transform(CLI::CheckedTransformer(clocks, CLI::ignore_case))
+        ->default_str("auto");
+    return bench;
+}
+
+#if SHADOWLAB_VIEWER
+CLI::App* addView(CLI::App& app, ViewArgs& args) {
+    CLI::App* view = app.add_subcommand("view", "Open a window on a scene with a panel of every light's technique and options (needs a display)");
+    view->add_option("scene", args.scene, "Scene file (JSON); the built-in default scene when omitted");
+    view->add_option("--set", args.overrides, "Override a scene value by JSON path, as for render")->take_all();
+    view->add_option("--width", args.width, "Window width")->check(CLI::Range(64, 16384))->capture_default_str();
+    view->add_option("--height", args.height, "Window height")->check(CLI::Range(64, 16384))->capture_default_str();
+    view->add_option("--frames", args.frames, "Quit after this many frames (0: run until closed)")->check(CLI::Range(0, 1000000))->capture_default_str();
+    view->add_option("--screenshot", args.screenshot, "With --frames: write the window's last frame (panel included) as this PNG");
+    view->add_option("--script", args.script, "Run a file of actions, one per frame: set KEY=VALUE, wait N, screenshot FILE, quit");
+    return view;
+}
+#endif
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -477,66 +463,12 @@ int main(int argc, char** argv) {
     app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + text::escapeControl(e.what()) + "\n"; });
 
     RenderArgs renderArgs;
-    CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG image");
-    render->add_option("scene", renderArgs.scene, "Scene file (JSON); the built-in default scene when omitted");
-    render->add_option("-o,--output", renderArgs.output, "Output PNG (default: <scene name>.png)");
-    render->add_option("--width", renderArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-    render->add_option("--height", renderArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-    render->add_option("--set", renderArgs.overrides, "Override a scene value by JSON path, e.g. lights[0].intensity=2")->take_all();
-    render->add_option("--view-from-light", renderArgs.viewFromLight, "See the scene from light I's camera (spot: along its cone; directional: along its direction)")
-        ->check(CLI::NonNegativeNumber);
-    render->add_option("--debug", renderArgs.debug,
-                       "Also write debug images beside the output as <name>-<image>.png: shadow-maps (each light's map, "
-                       "perspective depth linearised; a point light's cube as a cross), texel-density (map texels per pixel), cascades (the frame coloured by cascade), all")
-        ->check(CLI::IsMember({"shadow-maps", "texel-density", "cascades", "all"}))
-        ->delimiter(',');
-    render->add_option("--debug-images", renderArgs.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
-    render->add_option("--time", renderArgs.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are (the first frame's time)")
-        ->capture_default_str();
-    render->add_option("--frames", renderArgs.frames, "Render this many frames, frame k at --time + k / --fps; -o then needs a field such as %03d")
-        ->check(CLI::Range(1, 100000))->capture_default_str();
-    render->add_option("--fps", renderArgs.fps, "Frames per second of the sequence")->capture_default_str();
-
+    CLI::App* render = addRender(app, renderArgs);
     CompareArgs compareArgs;
-    CLI::App* compare = app.add_subcommand("compare", "Compare a scene's shadow techniques with exact ray-traced shadows");
-    compare->add_option("scene", compareArgs.scene, "Scene file (JSON); the built-in default scene when omitted");
-    compare->add_option("-o,--output", compareArgs.output, "Output directory")->capture_default_str();
-    compare->add_option("--width", compareArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-    compare->add_option("--height", compareArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-    compare->add_option("--samples", compareArgs.softSamples, "Reference rays per pixel for lights with a size")
-        ->check(CLI::Range(1, 65536))->capture_default_str();
-    compare->add_option("--set", compareArgs.overrides, "Override a scene value by JSON path")->take_all();
-    compare->add_option("--time", compareArgs.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are")
-        ->capture_default_str();
-
+    CLI::App* compare = addCompare(app, compareArgs);
     tool::BenchArgs benchArgs;
     std::string benchOutput = "bench";
-    CLI::App* bench = app.add_subcommand("bench", "Time and accuracy of every combination of settings, with results.json and report.html");
-    bench->add_option("scenes", benchArgs.scenes, "Scene files (JSON); the built-in default scene when omitted");
-    bench->add_option("--set", benchArgs.overrides, "Override a scene value for every run")->take_all();
-    bench->add_option("--vary", benchArgs.vary, "key=v1,v2,...: run once per value (several --vary: every combination)")->take_all();
-    bench->add_option("--frames", benchArgs.frames, "Timed frames per combination; timed frame k at --time + k / --fps")
-        ->check(CLI::Range(1, 100000))->capture_default_str();
-    bench->add_option("--time", benchArgs.timeSeconds, "Seconds since the start of the animation: the first timed frame's time, and the "
-                                                        "time of the warm-up frames and the accuracy comparison")
-        ->capture_default_str();
-    bench->add_option("--fps", benchArgs.fps, "Frames per second of the timed sequence")->capture_default_str();
-    bench->add_flag("--flips", benchArgs.flips,
-                    "Temporal stability: compare every timed frame with the reference and report per light the share of receiver "
-                    "pixels whose shadow flips between consecutive frames while the reference's does not (needs --frames >= 2)");
-    bench->add_option("--warmup", benchArgs.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
-    bench->add_option("--width", benchArgs.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-    bench->add_option("--height", benchArgs.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
-    bench->add_option("--samples", benchArgs.softSamples, "Reference rays per pixel for lights with a size")
-        ->check(CLI::Range(1, 65536))->capture_default_str();
-    bench->add_option("-o,--output", benchOutput, "Output directory")->capture_default_str();
-    const std::map<std::string, TimingClock> clocks{{"auto", TimingClock::Auto},
-                                                    {"cpu-finish", TimingClock::CpuFinish},
-                                                    {"gpu-timestamp", TimingClock::GpuTimestamp}};
-    bench->add_option("--clock", benchArgs.clock,
-                      "Per-pass clock: auto (cpu-finish on a software rasteriser, gpu-timestamp on a GPU), cpu-finish, gpu-timestamp")
-        ->transform(CLI::CheckedTransformer(clocks, CLI::ignore_case))
-        ->default_str("auto");
+    CLI::App* bench = addBench(app, benchArgs, benchOutput);
 
     bool techniquesMarkdown = false;
     CLI::App* techniquesCommand = app.add_subcommand("techniques", "List the shadow techniques and their options");
@@ -546,14 +478,7 @@ int main(int argc, char** argv) {
 
 #if SHADOWLAB_VIEWER
     ViewArgs viewArgs;
-    CLI::App* view = app.add_subcommand("view", "Open a window on a scene with a panel of every light's technique and options (needs a display)");
-    view->add_option("scene", viewArgs.scene, "Scene file (JSON); the built-in default scene when omitted");
-    view->add_option("--set", viewArgs.overrides, "Override a scene value by JSON path, as for render")->take_all();
-    view->add_option("--width", viewArgs.width, "Window width")->check(CLI::Range(64, 16384))->capture_default_str();
-    view->add_option("--height", viewArgs.height, "Window height")->check(CLI::Range(64, 16384))->capture_default_str();
-    view->add_option("--frames", viewArgs.frames, "Quit after this many frames (0: run until closed)")->check(CLI::Range(0, 1000000))->capture_default_str();
-    view->add_option("--screenshot", viewArgs.screenshot, "With --frames: write the window's last frame (panel included) as this PNG");
-    view->add_option("--script", viewArgs.script, "Run a file of actions, one per frame: set KEY=VALUE, wait N, screenshot FILE, quit");
+    CLI::App* view = addView(app, viewArgs);
 #endif
 
     try {

@@ -31,4 +31,18 @@ std::string techniquesMarkdown();
 /// handle yet), or an empty string when it can.
 std::string unsupportedReason(std::string_view technique, const Light& light);
 
+/// A light's shadow at its technique's baseline: the plainest form of the
+/// technique, which bench times a frame against (results.json's
+/// `frameOverHardMap`; for `map`, one 2D map of the same size with the
+/// default filter and representation).
+struct ShadowBaseline {
+    ShadowSettings shadow;  ///< the light's shadow settings at the baseline
+    /// Whether the light's own settings are a variant worth timing against
+    /// the baseline (a map's cascades, filter or representation).
+    bool differs = false;
+};
+/// `light`'s baseline, from its technique's registry entry; a technique
+/// without one (or an unknown one): the light's own settings, not differing.
+ShadowBaseline shadowBaseline(const Light& light);
+
 } // namespace shadowlab

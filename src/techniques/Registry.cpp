@@ -105,4 +105,9 @@ std::string unsupportedReason(std::string_view technique, const Light& light) {
     return e->unsupported ? e->unsupported(light) : std::string();
 }
 
+ShadowBaseline shadowBaseline(const Light& light) {
+    const TechniqueEntry* e = findTechniqueEntry(light.shadow.technique);
+    return e && e->baseline ? e->baseline(light) : ShadowBaseline{light.shadow, false};
+}
+
 } // namespace shadowlab

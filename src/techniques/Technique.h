@@ -18,6 +18,7 @@
 #include <shadowlab/Options.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/Scene.h>
+#include <shadowlab/Techniques.h>
 
 #include <optional>
 
@@ -142,8 +143,9 @@ public:
         bindLightPass(host, frame, light);
         host.drawLit(host.litState());
     }
-    /// Images worth looking at (depth maps, cube crosses, texel density);
-    /// `shadowlab render --debug-images DIR` writes them.
+    /// Images worth looking at (depth maps, cube crosses, texel density),
+    /// each with the kind that `shadowlab render --debug` picks it by;
+    /// `shadowlab render --debug-images DIR` writes them all.
     virtual void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, std::vector<DebugImage>&) {}
     /// The clip-from-world matrices of the light's cameras in the last frame
     /// (a 2D map's one, a cube's six faces), for drawing their frustums;
@@ -166,6 +168,10 @@ struct TechniqueEntry {
     /// worldNormal)`, which writes outputs the fragment file reads (e.g.
     /// light-space coordinates computed per vertex instead of per fragment).
     std::string vertexShaderFile = {};
+    /// The light's shadow at the technique's baseline, the plainest form of
+    /// it that bench times its variants against (shadowBaseline(),
+    /// Techniques.h); default: the light is its own baseline.
+    std::function<ShadowBaseline(const Light&)> baseline = {};
 };
 
 } // namespace shadowlab

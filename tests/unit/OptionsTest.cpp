@@ -3,6 +3,7 @@
 #include "ErrorText.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
 #include <shadowlab/Options.h>
 #include <shadowlab/SceneFile.h>
 #include <shadowlab/Techniques.h>
@@ -83,6 +84,35 @@ TEST(SceneFileShadow, TechniqueNamesComeFromTheRegistry) {
               "s.json: lights[0].shadow.none.size: unknown key (technique 'none' has no options)");
     EXPECT_EQ(errorOf([] { parseScene(R"({"lights": [{"type": "directional"}]})", "s.json", ".", {"lights[0].shadow.technique=mapp"}); }),
               "--set lights[0].shadow.technique=mapp: lights[0].shadow.technique: unknown technique 'mapp' (expected one of: " + names + ")");
+}
+
+// Bench's baseline comes from the technique's registry entry: a map light's
+// is the plainest map of the same size (one 2D map, depth, the hardware
+// filter), worth timing against where the light has cascades, another
+// filter or another representation; a technique without the hook is its
+// own baseline.
+TEST(TechniqueBaseline, AMapsIsThePlainestMapOfTheSameSize) {
+    const Scene scene = parseScene(R"({"lights": [
+        {"type": "directional", "shadow": {"technique": "map", "map": {"size": 512, "filter": "pcss", "cascades": 3}}},
+        {"type": "directional", "shadow": {"technique": "map", "map": {"size": 256, "format": "r8"}}},
+        {"type": "directional", "shadow": {"technique": "none"}}]})", "s.json", ".");
+    const ShadowBaseline soft = shadowBaseline(scene.lights[0]);
+    EXPECT_TRUE(soft.differs);
+    EXPECT_EQ(soft.shadow.technique, "map");
+    const MapOptions& plainest = soft.shadow.get<MapOptions>();
+    EXPECT_EQ(plainest.size, 512);
+    EXPECT_EQ(plainest.cascades, 1);
+    EXPECT_EQ(plainest.filter, MapFilter::Hardware);
+    EXPECT_EQ(plainest.representation, MapRepresentation::Depth);
+    // A format is not a variant timed against the baseline, but the
+    // baseline is the plainest map still (when another light is timed).
+    const ShadowBaseline r8 = shadowBaseline(scene.lights[1]);
+    EXPECT_FALSE(r8.differs);
+    EXPECT_EQ(r8.shadow.get<MapOptions>().size, 256);
+    EXPECT_EQ(r8.shadow.get<MapOptions>().format, MapFormat::Depth32F);
+    const ShadowBaseline none = shadowBaseline(scene.lights[2]);
+    EXPECT_FALSE(none.differs);
+    EXPECT_EQ(none.shadow.technique, "none");
 }
 
 TEST(SceneFormatDoc, CarriesExactlyTheGeneratedTechniqueTables) {

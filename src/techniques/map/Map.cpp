@@ -125,11 +125,23 @@ private:
     std::map<int, MapLight> lights_;
 };
 
+// The registry's baseline: the plainest map of the same size (one 2D map,
+// depth, the default filter: the lecture's technique), which cascades, PCSS
+// and moment maps are timed against.
+ShadowBaseline plainestMap(const Light& light) {
+    const MapOptions& o = light.shadow.get<MapOptions>();
+    MapOptions plainest;
+    plainest.size = o.size;
+    ShadowBaseline baseline{light.shadow, o.cascades != 1 || o.filter != plainest.filter || o.representation != plainest.representation};
+    baseline.shadow.options[MapOptions::kTechnique] = plainest;
+    return baseline;
+}
+
 } // namespace
 
 TechniqueEntry mapTechnique() {
     return {"map", "a shadow map per light: orthographic for directional, perspective for spot lights", &mapOptionTable(),
-            "shadow_map.glsl", [] { return std::make_unique<ShadowMap>(); }, &map::unsupported, "shadow_map_vertex.glsl"};
+            "shadow_map.glsl", [] { return std::make_unique<ShadowMap>(); }, &map::unsupported, "shadow_map_vertex.glsl", &plainestMap};
 }
 
 } // namespace shadowlab

@@ -140,14 +140,14 @@ void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& v
     if (p.cube) {
         std::vector<float> values;
         ImageRGBA8 cross = cubeCross(g, p, values);
-        out.push_back({"cube", std::move(cross), std::move(values)});
+        out.push_back({"cube", std::move(cross), std::move(values), DebugImageKind::CubeCross});
         return;
     }
     const std::span<const LightCamera> cameras = p.cameras();
     for (std::size_t c = 0; c < cameras.size(); ++c)
-        out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), mapImage(g, p.layer + static_cast<int>(c), cameras[c]), {}});
-    out.push_back({"texel-density", frameView(host, frame, view, res, p, "shadow_map_density.frag"), {}});
-    if (cameras.size() > 1) out.push_back({"cascades", frameView(host, frame, view, res, p, "shadow_map_cascades.frag"), {}});
+        out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), mapImage(g, p.layer + static_cast<int>(c), cameras[c]), {}, DebugImageKind::ShadowMap});
+    out.push_back({"texel-density", frameView(host, frame, view, res, p, "shadow_map_density.frag"), {}, DebugImageKind::TexelDensity});
+    if (cameras.size() > 1) out.push_back({"cascades", frameView(host, frame, view, res, p, "shadow_map_cascades.frag"), {}, DebugImageKind::Cascades});
 }
 
 } // namespace shadowlab::map

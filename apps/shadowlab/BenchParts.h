@@ -1,0 +1,116 @@
+#pragma once
+// shadowlab bench's parts, one responsibility a file, which runBench
+// (Bench.cpp) calls in order: the runs its arguments expand into, each scene
+// and combination parsed once (BenchRuns.cpp); a run's timed frames
+// (BenchTiming.cpp); its accuracy against the reference and its temporal
+// stability (BenchAccuracy.cpp); the record it leaves in results.json, with
+// its images (BenchRecord.cpp).
+#include "Bench.h"
+
+#include <shadowlab/Compare.h>
+#include <shadowlab/Renderer.h>
+#include <shadowlab/Scene.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace shadowlab::tool {
+
+/// One scene with one combination of the varied values.
+struct BenchRun {
+    std::string file;               ///< the scene file; empty for the built-in default scene
+    std::vector<std::string> combo; ///< the combination as `key=value` overrides, after --set's
+    Scene loaded;                   ///< the scene as parsed with them (paths not evaluated)
+};
+
+/// Every scene with every combination of args.vary, scene by scene, each
+/// parsed once, before anything is rendered: a bad value throws Error, one
+/// that --vary gave naming that flag.
+std::vector<BenchRun> loadRuns(const BenchArgs& args);
+
+/// `scene`, a copy of `loaded` (its techniques may have been changed), with
+/// its lights and camera where their paths are at `seconds`; the meshes are
+/// not copied again.
+void moveToTime(Scene& scene, const Scene& loaded, double seconds);
+
+/// What a run's timed frames measured, per timed frame.
+struct TimedFrames {
+    std::map<std::string, std::vector<double>> passTimes, counters; ///< by pass (counter) name, from the clocked frames
+    std::vector<double> frameTimes;      ///< the plain frames' wall times, ms
+    std::vector<double> unshadowedTimes; ///< the same scene with every technique "none"
+    /// The same scene with every light at its technique's baseline
+    /// (shadowBaseline); timed only where some light differs from it.
+    std::vector<double> baselineTimes;
+    bool timedBaseline = false;
+    std::vector<double> passTotal;       ///< the top-level passes summed
+    std::string clock = "off";           ///< the clocked frames' clock
+    int baseLight = -1;                  ///< FrameStats::baseLight
+};
+
+/// The warm-up frames at args.timeSeconds, then args.frames steps, step i at
+/// args.timeSeconds + i / args.fps, each a plain frame, an unshadowed one, the
+/// baseline's where timed and one with the pass clock. Leaves `scene` (a copy
+/// of `loaded` at args.timeSeconds, uploaded to `renderer`) at the last step.
+TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args);
+
+/// Temporal stability (--flips), per light over consecutive frames: the share
+/// of receiver pixels (receivers in both frames) whose technique class (lit:
+/// visibility >= the threshold) changes while the reference's class there does
+/// not, away from the edges: in both frames every receiver among the pixel's
+/// 8 neighbours has its technique class and its reference class. A shadow
+/// edge that slides by less than a pixel as the view moves is motion, not
+/// flicker; one that jumps by more (a texel grid sliding under the world)
+/// flips whole blocks of pixels. Where the truth changes (a light that moved,
+/// an edge that crossed the pixel) the change is right and is counted apart,
+/// as a reference change.
+class FlipCounter {
+public:
+    explicit FlipCounter(float litThreshold) : threshold_(litThreshold) {}
+
+    /// One frame: its comparison and each light's technique visibility, read
+    /// back with the comparison's technique frame.
+    void add(const Comparison& c, const std::vector<std::vector<float>>& techniqueVisibility);
+
+    /// Light l's `flips` and `referenceChanges`: median, maximum and every
+    /// pair's share, in frame order.
+    void addTo(nlohmann::json& record, std::size_t l) const;
+
+private:
+    struct Classes {
+        int width = 0;
+        std::vector<std::uint8_t> receiver, techniqueLit, referenceLit;
+        // Whether every receiver among pixel i's 8 neighbours has its classes.
+        bool interior(std::size_t i) const;
+    };
+    float threshold_;
+    std::vector<Classes> previous_;  ///< per light, the last frame's
+    std::vector<std::vector<double>> flips_, referenceChanges_;  ///< per light, per pair of frames
+};
+
+/// A run's accuracy: the comparison at args.timeSeconds, as `compare --time`
+/// gives it, and with --flips the flips over every timed frame's time.
+struct Accuracy {
+    Comparison comparison;
+    FlipCounter flips;
+};
+
+/// Compares `scene` (as timeFrames left it) with the reference at
+/// args.timeSeconds, and with --flips at every timed frame's time too (the
+/// first of them is the one at args.timeSeconds); leaves `scene` at
+/// args.timeSeconds.
+Accuracy measureAccuracy(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args);
+
+/// The median of `values`; 0 when there are none.
+double median(std::vector<double> values);
+
+/// Run `index`'s record for results.json (`scene` at args.timeSeconds, named
+/// `label` in its image files), its technique, reference and error images
+/// written into args.output / "images".
+nlohmann::json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed, const Accuracy& accuracy,
+                         std::size_t index, const std::string& label, const BenchArgs& args);
+
+} // namespace shadowlab::tool

@@ -1,0 +1,125 @@
+// shadowlab bench: the record a run leaves in results.json (BenchParts.h),
+// its medians and ratios, and its technique, reference and error images.
+#include "BenchParts.h"
+#include "Metrics.h"
+
+#include <shadowlab/Image.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace shadowlab::tool {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+namespace {
+
+json stats(std::vector<double> values) {
+    if (values.empty()) return json{{"median", 0.0}, {"min", 0.0}, {"max", 0.0}};
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    return json{{"median", median(values)}, {"min", *lo}, {"max", *hi}};
+}
+
+// A file-name part from a label, at most kMaxSlug characters: a 300-character
+// scene name must not make a name past the file system's 255-byte limit.
+std::string slug(const std::string& label) {
+    constexpr std::size_t kMaxSlug = 80;
+    std::string out;
+    for (char c : label.substr(0, kMaxSlug)) out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' ? c : '_';
+    return out;
+}
+
+// Light l's shadow pass in `record`: the pass beside its floor (a bare
+// depth-only draw of the same casters into a target of the same size),
+// which it contains as a nested scope, its triangles, and every other
+// number the technique reported for its shadow pass (a cube's triangles per
+// face) and for its light pass (a stencil technique's CPU silhouettes), by
+// name, medians.
+void addPassNumbers(json& record, const TimedFrames& timed, std::size_t l) {
+    const auto& passTimes = timed.passTimes;
+    const auto& counters = timed.counters;
+    const std::string pass = "shadow[" + std::to_string(l) + "]";
+    if (passTimes.count(pass)) {
+        const double whole = median(passTimes.at(pass));
+        const double floor = passTimes.count(pass + ".floor") ? median(passTimes.at(pass + ".floor")) : 0.0;
+        record["shadowPassMs"] = whole - floor;
+        if (floor > 0.0) {
+            record["shadowFloorMs"] = floor;
+            record["shadowPassOverFloor"] = (whole - floor) / floor;
+        }
+    }
+    if (counters.count(pass + ".triangles")) record["shadowTriangles"] = median(counters.at(pass + ".triangles"));
+    auto reportedUnder = [&](const std::string& prefix, const std::string& skip) {
+        json out = json::object();
+        for (const auto& [name, values] : counters)
+            if (name.rfind(prefix, 0) == 0 && name != skip) out[name.substr(prefix.size())] = median(values);
+        return out;
+    };
+    if (json r = reportedUnder(pass + ".", pass + ".triangles"); !r.empty()) record["shadowCounters"] = std::move(r);
+    if (json r = reportedUnder("light[" + std::to_string(l) + "].", ""); !r.empty()) record["lightCounters"] = std::move(r);
+}
+
+// Every light's record, its error image written as images/<stem>-error-<l>.png.
+json lightRecords(const Scene& scene, const TimedFrames& timed, const Accuracy& accuracy, const std::string& stem,
+                  const BenchArgs& args) {
+    json lights = json::array();
+    for (std::size_t l = 0; l < accuracy.comparison.lights.size(); ++l) {
+        const LightComparison& c = accuracy.comparison.lights[l];
+        const std::string errorName = stem + "-error-" + std::to_string(l) + ".png";
+        writePng(args.output / "images" / errorName, c.errorImage);
+        json record = lightRecord(scene.lights[l], c, {{"errorImage", "images/" + errorName}});
+        addPassNumbers(record, timed, l);
+        if (args.flips) accuracy.flips.addTo(record, l);
+        lights.push_back(std::move(record));
+    }
+    return lights;
+}
+
+} // namespace
+
+json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed, const Accuracy& accuracy, std::size_t index,
+               const std::string& label, const BenchArgs& args) {
+    const std::string stem = std::to_string(index) + "-" + slug(label);
+    const fs::path images = args.output / "images";
+    writePng(images / (stem + "-technique.png"), accuracy.comparison.technique);
+    writePng(images / (stem + "-reference.png"), accuracy.comparison.reference);
+    json lights = lightRecords(scene, timed, accuracy, stem, args);
+    json passes = json::object();
+    for (const auto& [name, times] : timed.passTimes) passes[name] = stats(times);
+    json settings = json::object();
+    for (const std::string& c : run.combo) {
+        const auto eq = c.find('=');
+        settings[c.substr(0, eq)] = c.substr(eq + 1);
+    }
+    std::size_t triangles = 0;
+    for (const DrawItem& item : scene.drawItems()) triangles += scene.meshes[static_cast<std::size_t>(item.mesh)].triangleCount();
+    const double frame = median(timed.frameTimes);
+    // frameOverHardMap: over the technique's baseline (for a map, the hard map).
+    return {{"scene", scene.name},
+            {"sceneFile", run.file.empty() ? "<default>" : run.file},
+            {"settings", settings},
+            {"triangles", triangles},
+            {"frames", args.frames},
+            {"clock", timed.clock},
+            {"baseLight", timed.baseLight},
+            {"passMs", passes},
+            {"passTotalMs", stats(timed.passTotal)},
+            {"frameMs", stats(timed.frameTimes)},
+            {"unshadowedFrameMs", stats(timed.unshadowedTimes)},
+            {"frameOverUnshadowed", frame / std::max(median(timed.unshadowedTimes), 1e-9)},
+            {"frameOverHardMap", timed.timedBaseline ? frame / std::max(median(timed.baselineTimes), 1e-9) : 1.0},
+            {"referenceMs", accuracy.comparison.referenceMs},
+            {"lights", lights},
+            {"techniqueImage", "images/" + stem + "-technique.png"},
+            {"referenceImage", "images/" + stem + "-reference.png"}};
+}
+
+} // namespace shadowlab::tool

@@ -1,0 +1,81 @@
+// shadowlab bench: a run's timed frames (BenchParts.h): the scene, the same
+// unshadowed and at its techniques' baseline, frame by frame through time.
+#include "BenchParts.h"
+
+#include <shadowlab/Techniques.h>
+
+namespace shadowlab::tool {
+
+void moveToTime(Scene& scene, const Scene& loaded, double seconds) {
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l].position = lightAtTime(loaded.lights[l], seconds).position;
+    scene.camera = cameraAtTime(loaded.camera, seconds);
+}
+
+namespace {
+
+// The clocked frame's passes and counters into `timed`.
+void addClocked(TimedFrames& timed, const FrameStats& frame) {
+    double sum = 0.0;
+    for (const PassTiming& p : frame.passes) {
+        timed.passTimes[p.name].push_back(p.ms);
+        if (p.name.find('.') == std::string::npos) sum += p.ms;  // nested scopes are inside their pass
+    }
+    for (const auto& [name, value] : frame.counters) timed.counters[name].push_back(value);
+    timed.passTotal.push_back(sum);
+    timed.clock = frame.clock;
+    timed.baseLight = frame.baseLight;
+}
+
+} // namespace
+
+TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args) {
+    TimedFrames timed;
+    // Interleaved: a frame as users get it (no per-pass clock) for
+    // the frame time, then a frame with the pass clock for where the
+    // time goes. On a software rasteriser the pass clock finishes
+    // every pass, which costs the overlap a plain frame has.
+    RenderOptions plain;
+    plain.width = args.width;
+    plain.height = args.height;
+    plain.timeSeconds = args.timeSeconds;
+    RenderOptions clocked = plain;
+    clocked.clock = args.clock;
+    clocked.measureFloors = true;
+    // The same scene unshadowed: every technique's ratio rests on it.
+    Scene unshadowed = scene;
+    for (Light& light : unshadowed.lights) light.shadow.technique = "none";
+    // And with every light at its technique's baseline (a map at its
+    // plainest: one 2D map of the same size, depth, the hardware filter,
+    // the lecture's technique), for cascades, PCSS and moment maps' ratio
+    // to it; timed only where some light differs from it.
+    Scene baseline = scene;
+    for (Light& light : baseline.lights) {
+        ShadowBaseline b = shadowBaseline(light);
+        timed.timedBaseline = timed.timedBaseline || b.differs;
+        light.shadow = std::move(b.shadow);
+    }
+    for (int i = 0; i < args.warmup; ++i) {
+        renderer.render(scene, plain);
+        renderer.render(unshadowed, plain);
+        if (timed.timedBaseline) renderer.render(baseline, plain);
+    }
+    // Timed frame i shows the animation at --time + i / --fps: the
+    // lights and the camera are moved (outside the timed render())
+    // and the three frames of a step see them at the same place.
+    for (int i = 0; i < args.frames; ++i) {
+        const double t = args.timeSeconds + i / args.fps;
+        moveToTime(scene, loaded, t);
+        moveToTime(unshadowed, loaded, t);
+        plain.timeSeconds = clocked.timeSeconds = t;
+        timed.frameTimes.push_back(renderer.render(scene, plain).cpuMs);
+        timed.unshadowedTimes.push_back(renderer.render(unshadowed, plain).cpuMs);
+        if (timed.timedBaseline) {
+            moveToTime(baseline, loaded, t);
+            timed.baselineTimes.push_back(renderer.render(baseline, plain).cpuMs);
+        }
+        addClocked(timed, renderer.render(scene, clocked));
+    }
+    return timed;
+}
+
+} // namespace shadowlab::tool

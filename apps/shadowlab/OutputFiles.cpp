@@ -1,0 +1,94 @@
+// The files the subcommands write (OutputFiles.h).
+#include "OutputFiles.h"
+
+#include <shadowlab/Error.h>
+
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdio>
+#include <string_view>
+#include <system_error>
+
+namespace shadowlab::tool {
+
+namespace fs = std::filesystem;
+
+std::string FramePattern::name(int frame) const {
+    if (!hasField()) return before;
+    char number[64];
+    std::snprintf(number, sizeof number, field.c_str(), frame);  // field was checked to be one integer conversion
+    return before + number + after;
+}
+
+FramePattern parseFramePattern(const std::string& output) {
+    FramePattern p;
+    std::string* part = &p.before;
+    for (std::size_t i = 0; i < output.size(); ++i) {
+        if (output[i] != '%') {
+            *part += output[i];
+            continue;
+        }
+        if (i + 1 < output.size() && output[i + 1] == '%') {
+            *part += '%';
+            ++i;
+            continue;
+        }
+        const std::size_t start = i++;
+        while (i < output.size() && std::string_view("-+ 0#").find(output[i]) != std::string_view::npos) ++i;
+        const std::size_t widthStart = i;
+        while (i < output.size() && std::isdigit(static_cast<unsigned char>(output[i]))) ++i;
+        if (i - widthStart > 3) throw Error("-o " + output + ": the frame number's width is too large");
+        if (i >= output.size() || (output[i] != 'd' && output[i] != 'i'))
+            throw Error("-o " + output + ": '%' starts a frame number field such as %d or %03d (write %% for a percent sign)");
+        if (p.hasField()) throw Error("-o " + output + ": more than one frame number field");
+        p.field = output.substr(start, i + 1 - start);
+        part = &p.after;
+    }
+    return p;
+}
+
+fs::path checkOutput(const std::string& output, const std::string& flag) {
+    const fs::path path(output);
+    if (fs::is_directory(path)) throw Error(flag + " " + output + ": is a directory (expected a .png file name)");
+    if (path.extension() != ".png" && path.extension() != ".PNG")
+        throw Error(flag + " " + output + ": expected a .png file name");
+    const fs::path dir = path.parent_path();
+    if (!dir.empty() && !fs::is_directory(dir))
+        throw Error(flag + " " + output + ": directory " + dir.string() + " does not exist");
+    return path;
+}
+
+fs::path checkOutputDirectory(const std::string& output) {
+    const fs::path dir(output);
+    if (fs::exists(dir) && !fs::is_directory(dir)) throw Error("-o " + output + ": exists and is not a directory");
+    if (!dir.parent_path().empty() && !fs::is_directory(dir.parent_path()))
+        throw Error("-o " + output + ": directory " + dir.parent_path().string() + " does not exist");
+    return dir;
+}
+
+PendingImages::~PendingImages() {
+    std::error_code ec;
+    for (const auto& [temporary, target] : files_) fs::remove(temporary, ec);
+}
+
+void PendingImages::write(const fs::path& target, const ImageRGBA8& image) {
+    fs::path temporary = target;
+    temporary += ".pending-" + std::to_string(getpid());
+    files_.emplace_back(temporary, target);  // first: removed even if writePng fails half way
+    writePng(temporary, image);
+}
+
+std::vector<fs::path> PendingImages::commit() {
+    std::vector<fs::path> written;
+    for (const auto& [temporary, target] : files_) {
+        std::error_code ec;
+        fs::rename(temporary, target, ec);
+        if (ec) throw Error(target.string() + ": cannot write (" + ec.message() + ")");
+        written.push_back(target);
+    }
+    files_.clear();
+    return written;
+}
+
+} // namespace shadowlab::tool
