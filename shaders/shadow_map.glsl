@@ -28,7 +28,7 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
 #if !OUTPUT_VISIBILITY
     // The look of lecture 002 listing 8.4 (color *= 0.6 in shadow) when
     // shadowedLight > 0; compare reads the test itself (OUTPUT_VISIBILITY).
-    v = mix(map.light.w, 1.0, v);
+    v = mix(map.shadowedLight, 1.0, v);
 #endif
     return v * transmit;
 }

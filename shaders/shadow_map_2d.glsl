@@ -52,7 +52,7 @@ MapLookup mapLookup(float layer) { return MapLookup(layer, vec2(0.0, 1.0), 0.0, 
 // A stored depth as distance along the light (perspective: linearised).
 float mapDistance(float depth, vec2 planes) {
     float n = planes.x, f = planes.y;
-    if (map.params.w > 0.5) return perspectiveDistance(depth, n, f);
+    if (map.perspective > 0.5) return perspectiveDistance(depth, n, f);
     return n + depth * (f - n);
 }
 
@@ -62,7 +62,7 @@ float mapDistance(float depth, vec2 planes) {
 layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform sampler2DArray mapTransmitColour;
 layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform sampler2DArray mapTransmitDepth;
 vec3 transmittanceAt(float layer, vec2 uv, float ref) {
-    if (map.transmit.x < 0.5) return vec3(1.0);
+    if (map.transmittance < 0.5) return vec3(1.0);
     float nearest = texture(mapTransmitDepth, vec3(uv, layer)).r;
     return ref > nearest ? texture(mapTransmitColour, vec3(uv, layer)).rgb : vec3(1.0);
 }
@@ -78,7 +78,7 @@ float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
     s.xyz /= s.w;
     // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return 1.0;
-    float ref = s.z - map.bias.x - max(map.bias.y * (1.0 - NdotL), map.bias.z);
+    float ref = s.z - map.constantBias - max(map.slopeDepthBias * (1.0 - NdotL), map.minDepthBias);
     transmit = transmittanceAt(m.layer, s.xy, ref);
     return mapFilter(m, s.xy, ref);
 }
@@ -88,8 +88,8 @@ float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
 // fragment with the cascade's own texel size.
 float cascadeTest(int c, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 worldDx, vec3 worldDy, inout vec3 transmit) {
     float texel = map.cascadeTexel[c >> 2][c & 3];
-    vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), map.light.xyz, texel, tanTheta);
-    MapLookup m = mapLookup(map.params.x + float(c));
+    vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), map.towardsLight, texel, tanTheta);
+    MapLookup m = mapLookup(map.layer + float(c));
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
     m.texelWorld = texel;
     m.planes = map.cascadeRange[c].xy;
@@ -106,8 +106,8 @@ float cascadeTest(int c, vec3 worldPosition, vec3 n, float NdotL, float tanTheta
 // cascade tested).
 float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     vec3 n = worldNormal;
-    float NdotL = clamp(dot(n, map.light.xyz), 0.0, 1.0);
-    float tanTheta = mapTanTheta(n, map.light.xyz, NdotL);
+    float NdotL = clamp(dot(n, map.towardsLight), 0.0, 1.0);
+    float tanTheta = mapTanTheta(n, map.towardsLight, NdotL);
     vec3 worldDx = dFdx(worldPosition), worldDy = dFdy(worldPosition);
     float depth = cascadeDepth(worldPosition);
     int c = cascadeOf(depth);
@@ -125,13 +125,13 @@ in float vShadowNdotL;
 // The shadow test's visibility, 0 (shadowed) to 1 (lit); `transmit`, the
 // translucent casters' transmittance.
 float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
-    MapLookup m = mapLookup(map.params.x);
+    MapLookup m = mapLookup(map.layer);
 #if MAP_MOMENTS > 0
-    m.planes = map.pcss.yz;
+    m.planes = vec2(map.nearPlane, map.farPlane);
 #endif
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
-    m.texelWorld = map.params.z;
-    m.planes = map.pcss.yz;
+    m.texelWorld = map.texelWorld;
+    m.planes = vec2(map.nearPlane, map.farPlane);
     vec3 q = vShadowCoord.xyz / vShadowCoord.w;
     m.dx = dFdx(q);
     m.dy = dFdy(q);

@@ -9,13 +9,13 @@
 float mapTanTheta(vec3 n, vec3 L, float NdotL) { return min(length(cross(n, L)) / max(NdotL, 1e-4), 10.0); }
 
 // Normal offset: the point moved along its normal by `normalBias` texels
-// (map.bias.w) of world size `texel`, times 1 - N.L.
-vec3 mapNormalOffset(vec3 p, vec3 n, float NdotL, float texel) { return p + n * (map.bias.w * texel * (1.0 - NdotL)); }
+// (map.normalBiasTexels) of world size `texel`, times 1 - N.L.
+vec3 mapNormalOffset(vec3 p, vec3 n, float NdotL, float texel) { return p + n * (map.normalBiasTexels * texel * (1.0 - NdotL)); }
 
 // Receiver-plane bias for filters: a filter compares the centre's depth
-// with occluders up to `reach` texels away (map.params.y), where the
+// with occluders up to `reach` texels away (map.reachTexels), where the
 // surface tilted by theta is tan(theta) x that distance nearer the light;
 // the point moved towards the light (L) by as much.
-vec3 mapReceiverPlaneOffset(vec3 p, vec3 L, float texel, float tanTheta) { return p + L * (map.params.y * texel * tanTheta); }
+vec3 mapReceiverPlaneOffset(vec3 p, vec3 L, float texel, float tanTheta) { return p + L * (map.reachTexels * texel * tanTheta); }
 
 #endif

@@ -7,7 +7,7 @@
 
 #if BLUR_FROM_ARRAY
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray blurSource;
-vec4 fetch(ivec2 t) { return texelFetch(blurSource, ivec3(t, int(map.blur.z)), 0); }
+vec4 fetch(ivec2 t) { return texelFetch(blurSource, ivec3(t, int(map.blurLayer)), 0); }
 ivec2 sourceSize() { return textureSize(blurSource, 0).xy; }
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D blurSource;
@@ -18,8 +18,8 @@ ivec2 sourceSize() { return textureSize(blurSource, 0); }
 layout(location = 0) out vec4 outMoments;
 
 void main() {
-    int radius = int(map.blur.x);
-    ivec2 step = map.blur.y < 0.5 ? ivec2(1, 0) : ivec2(0, 1);
+    int radius = int(map.blurRadius);
+    ivec2 step = map.blurAxis < 0.5 ? ivec2(1, 0) : ivec2(0, 1);
     ivec2 centre = ivec2(gl_FragCoord.xy), last = sourceSize() - 1;
     float sigma = max(0.5 * float(radius), 0.5);
     vec4 sum = vec4(0.0);

@@ -21,6 +21,6 @@ void main() {
         float t = cascadeBlend(depth, c);
         if (t > 0.0) colour = mix(colour, kCascadeColour[c + 1], min(t, 1.0));
     }
-    float lit = 0.55 + 0.45 * clamp(dot(normalize(vWorldNormal), map.light.xyz), 0.0, 1.0);
+    float lit = 0.55 + 0.45 * clamp(dot(normalize(vWorldNormal), map.towardsLight), 0.0, 1.0);
     outColor = vec4(colour * lit, 1.0);
 }

@@ -15,9 +15,9 @@ layout(location = 0) out vec4 outPacked;
 
 void main() {
     if (alphaCutOut(gCubeUv) || translucentSurface()) discard;  // holes; translucent casters cast no depth
-    float distance = length(gCubeWorld - map.light.xyz);
+    float distance = length(gCubeWorld - map.lightPosition);
     float slope = max(abs(dFdx(distance)), abs(dFdy(distance)));
-    float depth = (distance + map.cube.y * slope) / map.cube.x + map.cubeMore.y;
+    float depth = (distance + map.cubeSlopeBias * slope) / map.cubeFar + map.cubeOffset;
     gl_FragDepth = clamp(depth, 0.0, 1.0);
 #if MAP_RGBA8
     outPacked = packDepth(gl_FragDepth);

@@ -15,7 +15,7 @@ out vec3 gCubeWorld;
 out vec2 gCubeUv;
 
 void main() {
-    int first = 6 * int(map.params.x);
+    int first = 6 * int(map.layer);
     for (int f = 0; f < 6; ++f) {
         if ((faceMask & (1u << uint(f))) == 0u) continue;
         vec4 c[3];

@@ -8,18 +8,18 @@
 #if MAP_RGBA8
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePacked;
 float cubeTap(vec3 direction, float ref) {
-    return ref <= unpackDepth(texture(mapCubePacked, vec4(direction, map.params.x))) ? 1.0 : 0.0;
+    return ref <= unpackDepth(texture(mapCubePacked, vec4(direction, map.layer))) ? 1.0 : 0.0;
 }
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
-float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, vec4(direction, map.params.x))); }
+float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, vec4(direction, map.layer))); }
 #endif
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
-float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.params.x), ref); }
+float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.layer), ref); }
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
 // The stored depths for PCSS's blocker search: a sampler without comparison.
 layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
-float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.params.x)).r; }
+float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.layer)).r; }
 #endif
 #endif
 
@@ -28,9 +28,9 @@ float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, m
 layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform samplerCubeArray mapCubeTransmitColour;
 layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform samplerCubeArray mapCubeTransmitDepth;
 vec3 cubeTransmittanceAt(vec3 direction, float ref) {
-    if (map.transmit.x < 0.5) return vec3(1.0);
-    float nearest = texture(mapCubeTransmitDepth, vec4(direction, map.params.x)).r;
-    return ref > nearest ? texture(mapCubeTransmitColour, vec4(direction, map.params.x)).rgb : vec3(1.0);
+    if (map.transmittance < 0.5) return vec3(1.0);
+    float nearest = texture(mapCubeTransmitDepth, vec4(direction, map.layer)).r;
+    return ref > nearest ? texture(mapCubeTransmitColour, vec4(direction, map.layer)).rgb : vec3(1.0);
 }
 
 // The filter's kernel (shadow_map_filter_*.glsl): its reach from the
@@ -43,32 +43,32 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius);
 // The shadow test's visibility, 0 (shadowed) to 1 (lit); `transmit`, the
 // translucent casters' transmittance.
 float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
-    vec3 toLight = map.light.xyz - worldPosition;
+    vec3 toLight = map.lightPosition - worldPosition;
     float d = length(toLight);
     if (d <= 0.0) return 1.0;
     vec3 L = toLight / d;
     vec3 n = worldNormal;
     float NdotL = clamp(dot(n, L), 0.0, 1.0);
     // World size of one texel at this distance (largest at a face's centre).
-    float texel = d * map.cube.z;
+    float texel = d * map.cubeTexelPerDistance;
     // Filter radius at the fragment, growing with the viewer's distance (001).
-    float radius = map.cube.w * (1.0 + map.cubeMore.x * length(frame.cameraPosition.xyz - worldPosition) / map.cube.x);
+    float radius = map.diskRadius * (1.0 + map.diskGrowth * length(frame.cameraPosition.xyz - worldPosition) / map.cubeFar);
     float reachWorld = cubeReach(texel, radius);
     vec3 p = worldPosition;
     float ref;
-    if (map.cubeMore.z > 0.5) {
+    if (map.presetBiasOnly > 0.5) {
         // The presets: their constant bias only (in stored-depth units).
-        ref = length(p - map.light.xyz) / map.cube.x - map.bias.x;
+        ref = length(p - map.lightPosition) / map.cubeFar - map.constantBias;
     } else {
         // The normal offset, then the receiver-plane bias for the filter's
         // reach (as for 2D maps, along the ray: shadow_map_bias.glsl).
         p = mapNormalOffset(p, n, NdotL, texel);
         float tanTheta = mapTanTheta(n, L, NdotL);
-        ref = (length(p - map.light.xyz) - reachWorld * tanTheta) / map.cube.x - map.bias.x;
+        ref = (length(p - map.lightPosition) - reachWorld * tanTheta) / map.cubeFar - map.constantBias;
     }
-    vec3 v = p - map.light.xyz;
+    vec3 v = p - map.lightPosition;
     // Beyond the far plane: lit (004).
-    if (length(v) > map.cube.x) return 1.0;
+    if (length(v) > map.cubeFar) return 1.0;
     transmit = cubeTransmittanceAt(v, ref);
     return cubeFilter(v, ref, n, radius);
 }

@@ -12,7 +12,7 @@ layout(location = 0) out vec4 outTransmit;
 layout(location = 1) out vec4 outDepth;
 
 void main() {
-    float depth = clamp(length(gCubeWorld - map.light.xyz) / map.cube.x, 0.0, 1.0);
+    float depth = clamp(length(gCubeWorld - map.lightPosition) / map.cubeFar, 0.0, 1.0);
     gl_FragDepth = depth;
     outTransmit = vec4(surfaceTransmittance(gCubeUv), 1.0);
     outDepth = vec4(depth);

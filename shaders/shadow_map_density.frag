@@ -18,7 +18,7 @@ void main() {
     vec4 s = map.shadowFromWorld * vec4(vWorldPosition, 1.0);
 #endif
     vec2 uv = s.xy / s.w;
-    vec2 perPixel = vec2(length(dFdx(uv)), length(dFdy(uv))) / map.taps.x;  // texels a pixel step crosses
+    vec2 perPixel = vec2(length(dFdx(uv)), length(dFdy(uv))) / map.texelUv;  // texels a pixel step crosses
     float l = clamp(log2(max(max(perPixel.x, perPixel.y), 1e-6)) / 4.0, -1.0, 1.0);
     vec3 c = l < 0.0 ? mix(vec3(0.1, 0.8, 0.2), vec3(0.9, 0.1, 0.1), -l) : mix(vec3(0.1, 0.8, 0.2), vec3(0.1, 0.2, 0.9), l);
     if (s.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) c = vec3(0.35);

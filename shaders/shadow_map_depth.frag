@@ -24,7 +24,7 @@ void main() {
 #if MAP_SPOT
     // Perspective depth is far from linear: the moments take the distance
     // along the axis between the near and far planes instead.
-    float n = map.pcss.y, f = map.pcss.z;
+    float n = map.nearPlane, f = map.farPlane;
     z = (perspectiveDistance(z, n, f) - n) / (f - n);
 #endif
     outMoments = momentsOf(z);

@@ -9,7 +9,7 @@
 float cubeReach(float texel, float radius) { return 0.5 * texel * 1.7320508 + texel; }  // a corner, and its bilinear footprint
 
 float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
-    float h = 0.5 * length(v) * map.cube.z;  // half a texel, world units
+    float h = 0.5 * length(v) * map.cubeTexelPerDistance;  // half a texel, world units
     float sum = 0.0;
     for (int k = 0; k < 8; ++k) {
         vec3 corner = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
@@ -19,7 +19,7 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
 }
 #else
 float mapFilter(MapLookup m, vec2 uv, float ref) {
-    float h = 0.5 * map.taps.x;
+    float h = 0.5 * map.texelUv;
     return 0.25 * (mapTap(m.layer, uv + vec2(-h, -h), ref) + mapTap(m.layer, uv + vec2(h, -h), ref) + mapTap(m.layer, uv + vec2(-h, h), ref) +
                    mapTap(m.layer, uv + vec2(h, h), ref));
 }

@@ -17,7 +17,7 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
 #elif !MAP_GRID_BILINEAR
 // MAP_KERNEL x MAP_KERNEL nearest taps one texel apart, centred on the point.
 float mapFilter(MapLookup m, vec2 uv, float ref) {
-    float du = map.taps.x;
+    float du = map.texelUv;
     float sum = 0.0;
     float start = -0.5 * float(MAP_KERNEL - 1);
     for (int j = 0; j < MAP_KERNEL; ++j)
@@ -35,7 +35,7 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
 // texel one tap of weight 1: ceil(N / 2)^2 taps (4 for 3x3, 16 for 8x8)
 // give the box average of the N^2 comparisons.
 float mapFilter(MapLookup m, vec2 uv, float ref) {
-    float du = map.taps.x;
+    float du = map.texelUv;
     vec2 t = uv / du;
     vec2 k0 = floor(t - 0.5 * float(MAP_KERNEL - 1));
     const int taps = (MAP_KERNEL + 1) / 2;

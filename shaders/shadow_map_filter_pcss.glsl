@@ -1,6 +1,6 @@
 // Technique "map", filter "pcss": percentage-closer soft shadows (Fernando
-// 2005) for a light of size map.pcss.x: a blocker search of map.pcss.w
-// taps, the penumbra's width by similar triangles, then map.taps.z taps
+// 2005) for a light of size map.lightSize: a blocker search of map.blockerTaps
+// taps, the penumbra's width by similar triangles, then map.filterTaps taps
 // of percentage-closer filtering over it, each tap compared against the
 // receiver's plane at its own place, not the centre's depth.
 #if MAP_CUBE
@@ -11,12 +11,12 @@ float cubeReach(float texel, float radius) { return 0.0; }  // each tap compares
 // the plane does not face the light there.
 float cubePlaneRef(vec3 w, vec3 n, float nv, float ref) {
     float nw = dot(n, w);
-    return nv < 0.0 && nw < 0.0 ? length(w) * nv / nw / map.cube.x - map.bias.x : ref;
+    return nv < 0.0 && nw < 0.0 ? length(w) * nv / nw / map.cubeFar - map.constantBias : ref;
 }
 
 // On a disk across the ray, for a sphere light of radius `size`.
 float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
-    float size = map.pcss.x;
+    float size = map.lightSize;
     float dr = length(v);
     vec3 axis = v / dr;
     vec3 t = normalize(abs(axis.y) < 0.99 ? cross(axis, vec3(0.0, 1.0, 0.0)) : cross(axis, vec3(1.0, 0.0, 0.0)));
@@ -25,14 +25,14 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     float rotation = mapRotation();
     // 1. Blockers within three radii of the ray at the receiver (those at
     // least a quarter of the way from the light).
-    int blockerTaps = int(map.pcss.w);
+    int blockerTaps = int(map.blockerTaps);
     float blockers = 0.0, blockerSum = 0.0;
     for (int k = 0; k < blockerTaps; ++k) {
         vec3 w = v + vogelOffset3D(k, blockerTaps, 3.0 * size, rotation, t, b);
         float d = cubeDepthAt(w);
         if (d < cubePlaneRef(w, n, nv, ref)) {
             blockers += 1.0;
-            blockerSum += d * map.cube.x;
+            blockerSum += d * map.cubeFar;
         }
     }
     if (blockers == 0.0) return 1.0;
@@ -40,7 +40,7 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     // 2. The penumbra's half width at the receiver, by similar triangles.
     float penumbra = size * (dr - db) / max(db, 1e-6);
     // 3. Percentage-closer filtering over it.
-    int taps = int(map.taps.z);
+    int taps = int(map.filterTaps);
     float sum = 0.0;
     for (int k = 0; k < taps; ++k) {
         vec3 w = v + vogelOffset3D(k, taps, penumbra, rotation, t, b);
@@ -58,12 +58,12 @@ vec2 receiverDepthSlope(MapLookup m) {
 }
 
 float mapFilter(MapLookup m, vec2 uv, float ref) {
-    float du = map.taps.x;
+    float du = map.texelUv;
     vec2 dzduv = receiverDepthSlope(m);
-    bool perspective = map.params.w > 0.5;
+    bool perspective = map.perspective > 0.5;
     float dr = mapDistance(ref, m.planes);
     float texel = perspective ? m.texelWorld * dr : m.texelWorld;
-    float size = map.pcss.x;
+    float size = map.lightSize;
     float rotation = mapRotation();
     // 1. Blockers: stored depths nearer the light than the receiver's plane
     // within the region a blocker can shade it from: directional, the light's
@@ -72,7 +72,7 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     // way from the light). At most an eighth of the map.
     float limit = 0.125 / du;
     float search = clamp((perspective ? 3.0 * size : (dr - m.planes.x) * size) / texel, 1.0, limit);
-    int blockerTaps = int(map.pcss.w);
+    int blockerTaps = int(map.blockerTaps);
     float blockers = 0.0, blockerSum = 0.0;
     for (int k = 0; k < blockerTaps; ++k) {
         vec2 o = vogelOffset2D(k, blockerTaps, search, rotation, du);
@@ -87,7 +87,7 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     // 2. The penumbra's half width at the receiver, by similar triangles.
     float radius = min((perspective ? size * (dr - db) / max(db, 1e-6) : (dr - db) * size) / texel, limit);
     // 3. Percentage-closer filtering over it.
-    int taps = int(map.taps.z);
+    int taps = int(map.filterTaps);
     float sum = 0.0;
     for (int k = 0; k < taps; ++k) {
         vec2 o = vogelOffset2D(k, taps, radius, rotation, du);

@@ -1,6 +1,6 @@
 // Technique "map", filter "poisson": a Vogel disk (golden-angle spiral,
-// uniform by area) of map.taps.z taps rotated per pixel, within
-// map.taps.y texels (2D maps) or across the ray within the radius (cube
+// uniform by area) of map.filterTaps taps rotated per pixel, within
+// map.poissonRadius texels (2D maps) or across the ray within the radius (cube
 // maps: no taps wasted along the ray).
 #if MAP_CUBE
 float cubeReach(float texel, float radius) { return radius; }
@@ -9,7 +9,7 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     vec3 axis = normalize(v);
     vec3 t = normalize(abs(axis.y) < 0.99 ? cross(axis, vec3(0.0, 1.0, 0.0)) : cross(axis, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(axis, t);
-    int taps = int(map.taps.z);
+    int taps = int(map.filterTaps);
     float rotation = mapRotation();
     float sum = 0.0;
     for (int k = 0; k < taps; ++k) sum += cubeTap(v + vogelOffset3D(k, taps, radius, rotation, t, b), ref);
@@ -17,10 +17,10 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
 }
 #else
 float mapFilter(MapLookup m, vec2 uv, float ref) {
-    int taps = int(map.taps.z);
+    int taps = int(map.filterTaps);
     float rotation = mapRotation();
     float sum = 0.0;
-    for (int k = 0; k < taps; ++k) sum += mapTap(m.layer, uv + vogelOffset2D(k, taps, map.taps.y, rotation, map.taps.x), ref);
+    for (int k = 0; k < taps; ++k) sum += mapTap(m.layer, uv + vogelOffset2D(k, taps, map.poissonRadius, rotation, map.texelUv), ref);
     return sum / float(taps);
 }
 #endif

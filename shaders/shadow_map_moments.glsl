@@ -45,7 +45,7 @@ float msmShadow(vec4 b, float z) {
 // values under bleedReduction are cut (less light bleeding, darker
 // penumbrae).
 float mapFilter(MapLookup m, vec2 uv, float ref) {
-    float z = map.params.w > 0.5 ? (mapDistance(ref, m.planes) - m.planes.x) / (m.planes.y - m.planes.x) : ref;
+    float z = map.perspective > 0.5 ? (mapDistance(ref, m.planes) - m.planes.x) / (m.planes.y - m.planes.x) : ref;
     vec4 moments = texture(mapMoments, vec3(uv, m.layer));
 #if MAP_MOMENTS == SL_MAP_MOMENTS_VSM
     float v = chebyshev(moments.xy, z, MAP_MIN_VARIANCE);
@@ -63,7 +63,7 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     v = min(v, chebyshev(moments.zw, negative, slopeN * slopeN));
 #endif
 #endif
-    return clamp((v - map.moments.x) / (1.0 - map.moments.x), 0.0, 1.0);
+    return clamp((v - map.bleedReduction) / (1.0 - map.bleedReduction), 0.0, 1.0);
 }
 #endif
 

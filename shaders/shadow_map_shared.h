@@ -1,5 +1,5 @@
 // Technique "map": constants and the uniform block shared by its C++
-// (src/techniques/Map.cpp) and its GLSL (shadow_map*.glsl/vert/frag).
+// (src/techniques/map/) and its GLSL (shadow_map*.glsl/vert/frag).
 #ifndef SHADOWLAB_SHADOW_MAP_SHARED_H
 #define SHADOWLAB_SHADOW_MAP_SHARED_H
 
@@ -17,42 +17,68 @@
 // Cascaded maps of a directional light, at most.
 #define SL_MAP_MAX_CASCADES 8
 
+// The block: matrices, then vec4 arrays, then each vec3 with a float, then
+// floats four at a time, so std140 lays it out as C++ does (a vec3 starts
+// on 16 bytes, a float packs after it; MapBlock.cpp checks the offsets).
+// Every member has one meaning, in the units it says.
 #ifdef __cplusplus
 #include <glm/glm.hpp>
 namespace shadowlab::shared {
 struct MapUniforms {
+#define SL_MAP_VEC3 glm::vec3
 #define SL_MAP_VEC4 glm::vec4
 #define SL_MAP_MAT4 glm::mat4
 #else
 layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
+#define SL_MAP_VEC3 vec3
 #define SL_MAP_VEC4 vec4
 #define SL_MAP_MAT4 mat4
 #endif
     SL_MAP_MAT4 lightClipFromWorld; // the light camera (shadow pass)
     SL_MAP_MAT4 shadowFromWorld;    // bias matrix * lightClipFromWorld: map uv in xy, depth in z (after /w)
     SL_MAP_MAT4 faceClipFromWorld[6]; // cube maps: each face's camera (+X, -X, +Y, -Y, +Z, -Z)
-    SL_MAP_VEC4 params;  // x array layer, y the filter's reach (texels from the centre to its farthest tap), z world size of a texel (spot: per unit of distance along the axis), w 1 perspective / 0 ortho
-    SL_MAP_VEC4 bias;    // map depth units: x constant, y times (1 - N.L), z the least of the two (max(y (1 - N.L), z) + x); w normal bias, texels
-    SL_MAP_VEC4 taps;    // x one texel in uv (1 / size), y poisson radius (texels), z poisson taps, w dither spread (texels)
-    SL_MAP_VEC4 light;   // xyz: spot position or -direction (towards the light), w the light a shadowed point keeps (shadowedLight)
-    SL_MAP_VEC4 axis;    // xyz: perspective light camera's unit view direction (texels grow along it), w unused
-    SL_MAP_VEC4 cube;    // cube maps: x far (stored depth = distance / far), y slope bias (shadow pass), z world size of a texel per unit of distance (2 / size), w filter radius (world units)
-    SL_MAP_VEC4 cubeMore;// cube maps: x radius growth per (viewer distance / far), y constant offset (stored depth units, shadow pass), z 1 when the bias is the presets' constant only, w unused
     SL_MAP_MAT4 cascadeShadowFromWorld[SL_MAP_MAX_CASCADES]; // cascades: the bias matrix times each cascade's light camera
     SL_MAP_VEC4 cascadeFar[SL_MAP_MAX_CASCADES / 4];   // cascades: each slice's far end, scene units along the view
     SL_MAP_VEC4 cascadeTexel[SL_MAP_MAX_CASCADES / 4]; // cascades: world size of one texel of each cascade
-    SL_MAP_VEC4 cascade;  // cascades: xyz the view's forward direction (unit), w the blend share of a slice
     SL_MAP_VEC4 cascadeRange[SL_MAP_MAX_CASCADES]; // cascades: x near, y far plane of each cascade's light camera, scene units
-    SL_MAP_VEC4 pcss;     // x the light's size for filter pcss (directional: tan of half its angular diameter; spot, point: its radius, scene units), y near, z far plane of the light camera, w pcss's blocker-search taps
-    SL_MAP_VEC4 blur;     // moment maps' blur passes: x radius (texels), y axis (0 across, 1 down), z the layer blurred, w unused
-    SL_MAP_VEC4 moments;  // moment maps: x light-bleeding reduction, yzw unused
-    SL_MAP_VEC4 transmit; // x 1 when the transmittance layers hold translucent casters (2D maps), yzw unused
+    SL_MAP_VEC3 lightPosition; float shadowedLight; // spot and point lights: world position; the light a shadowed point keeps (share, shadowedLight)
+    SL_MAP_VEC3 towardsLight; float reachTexels;    // directional lights: unit vector towards the light; the filter's reach (texels from the centre to its farthest tap)
+    SL_MAP_VEC3 lightAxis; float cascadeBlend;      // a perspective light camera's unit view direction (texels grow along it); cascades: the blend share of a slice
+    SL_MAP_VEC3 viewForward; float layer;           // cascades: the view's unit forward direction; the light's array layer (a cube's: its index among the cubes)
+    float texelWorld;       // world size of a map texel (perspective: per unit of distance along the axis)
+    float perspective;      // 1 for a perspective light camera, 0 orthographic
+    float constantBias;     // stored depth units, subtracted from the receiver's depth
+    float slopeDepthBias;   // stored depth units times (1 - N.L) (preset learnopengl) ...
+    float minDepthBias;     // ... and the least of it: max(slopeDepthBias (1 - N.L), minDepthBias) + constantBias
+    float normalBiasTexels; // the receiver moved along its normal by this many texels times 1 - N.L
+    float texelUv;          // one texel in uv (1 / size)
+    float poissonRadius;    // poisson: disk radius, texels
+    float filterTaps;       // poisson and pcss: taps
+    float ditherSpread;     // dither4: the taps' spread, texels
+    float cubeFar;          // cube maps: far plane, world units (stored depth = distance / far)
+    float cubeSlopeBias;    // cube maps, shadow pass: times the distance's largest change to a neighbouring texel
+    float cubeTexelPerDistance; // cube maps: world size of a texel per unit of distance (2 / size)
+    float diskRadius;       // cube maps: filter radius at the fragment, world units
+    float diskGrowth;       // cube maps: the radius's growth per (viewer distance / far)
+    float cubeOffset;       // cube maps, shadow pass: constant offset, stored depth units
+    float presetBiasOnly;   // cube maps: 1 when the bias is the presets' constant only (no normal or receiver-plane offset)
+    float lightSize;        // pcss: directional, tan of half its angular diameter; spot, point: its radius, scene units
+    float nearPlane;        // the light camera's near plane, scene units
+    float farPlane;         // and far plane
+    float blockerTaps;      // pcss: blocker-search taps
+    float blurRadius;       // moment blur pass: radius, texels
+    float blurAxis;         // moment blur pass: 0 across, 1 down
+    float blurLayer;        // moment blur pass: the layer blurred
+    float bleedReduction;   // moment maps: light-bleeding reduction (share of the bound)
+    float transmittance;    // 1 when the transmittance layers hold translucent casters
+    float padding0, padding1; // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared
 #else
 } map;
 #endif
+#undef SL_MAP_VEC3
 #undef SL_MAP_VEC4
 #undef SL_MAP_MAT4
 
@@ -116,7 +142,7 @@ vec4 momentsOf(float z) {
 // band at the slice's far end where it fades into the next cascade (0
 // before the band, 1 at its end).
 #ifdef MAP_CASCADES
-float cascadeDepth(vec3 worldPosition) { return dot(worldPosition - frame.cameraPosition.xyz, map.cascade.xyz); }
+float cascadeDepth(vec3 worldPosition) { return dot(worldPosition - frame.cameraPosition.xyz, map.viewForward); }
 float cascadeFarOf(int c) { return map.cascadeFar[c >> 2][c & 3]; }
 int cascadeOf(float depth) {
     int c = 0;
@@ -125,7 +151,7 @@ int cascadeOf(float depth) {
 }
 float cascadeBlend(float depth, int c) {
     float far = cascadeFarOf(c);
-    float band = map.cascade.w * (far - (c > 0 ? cascadeFarOf(c - 1) : 0.0));
+    float band = map.cascadeBlend * (far - (c > 0 ? cascadeFarOf(c - 1) : 0.0));
     return band > 0.0 ? (depth - (far - band)) / band : 0.0;
 }
 #endif

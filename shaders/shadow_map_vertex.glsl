@@ -18,7 +18,7 @@ out vec4 vShadowCoord;  // map.shadowFromWorld times the offset point
 out float vShadowNdotL; // N.L at the vertex, for the learnopengl preset's bias
 
 void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
-    vec3 toLight = map.params.w > 0.5 ? normalize(map.light.xyz - worldPosition) : map.light.xyz;
+    vec3 toLight = map.perspective > 0.5 ? normalize(map.lightPosition - worldPosition) : map.towardsLight;
     // The normal as modelled: turning it per vertex (towards the camera or
     // the light) would flip it on some vertices of a silhouette triangle and
     // not on others. A two-sided surface lit from its back gets no offset
@@ -26,11 +26,11 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     vec3 n = worldNormal;
     float NdotL = clamp(dot(n, toLight), 0.0, 1.0);
     // World size of one map texel here.
-    float texel = map.params.z;
+    float texel = map.texelWorld;
     // Perspective: texels grow with the depth along the light camera's axis,
     // which is affine in the position, so it interpolates exactly across
     // even a wall-sized triangle.
-    if (map.params.w > 0.5) texel *= max(dot(worldPosition - map.light.xyz, map.axis.xyz), 0.0);
+    if (map.perspective > 0.5) texel *= max(dot(worldPosition - map.lightPosition, map.lightAxis), 0.0);
     // The normal offset, then the receiver-plane bias for the filter's reach (shadow_map_bias.glsl).
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), toLight, texel, mapTanTheta(n, toLight, NdotL));
     vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);

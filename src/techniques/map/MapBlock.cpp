@@ -9,6 +9,15 @@
 
 namespace shadowlab::map {
 
+// std140 places a vec3 on 16 bytes and packs the float after it; C++ does
+// the same only where the members before fill whole 16 bytes.
+static_assert(offsetof(shared::MapUniforms, lightPosition) % 16 == 0 && offsetof(shared::MapUniforms, towardsLight) % 16 == 0 &&
+                  offsetof(shared::MapUniforms, lightAxis) % 16 == 0 && offsetof(shared::MapUniforms, viewForward) % 16 == 0 &&
+                  offsetof(shared::MapUniforms, texelWorld) % 16 == 0 && sizeof(shared::MapUniforms) % 16 == 0,
+              "MapUniforms must keep std140's layout (shaders/shadow_map_shared.h)");
+static_assert(offsetof(shared::MapUniforms, blurLayer) == offsetof(shared::MapUniforms, blurRadius) + 2 * sizeof(float),
+              "setBlur writes blurRadius, blurAxis and blurLayer as one range");
+
 namespace {
 
 // Texture space from clip space: the lecture's bias matrix (scale and offset by 0.5).
@@ -20,11 +29,16 @@ void cubeMembers(shared::MapUniforms& u, const MapLight& p, const MapArray& g) {
     for (std::size_t f = 0; f < 6; ++f) u.faceClipFromWorld[f] = c.faceClipFromWorld[f];
     const bool presetBias = p.options.preset != MapPreset::Default;
     // The presets give their constant bias in world units (001, LearnOpenGL: 0.15).
-    u.bias.x = presetBias ? p.options.constantBias / c.farPlane : p.options.constantBias;
+    u.constantBias = presetBias ? p.options.constantBias / c.farPlane : p.options.constantBias;
     // The constant offset in the format's smallest steps.
     const float step = g.format() == MapFormat::Depth16 ? 1.0f / 65535.0f : g.format() == MapFormat::Depth24 ? 1.0f / 16777215.0f : 1.0f / 16777216.0f;
-    u.cube = glm::vec4(c.farPlane, p.options.slopeBias, 2.0f / static_cast<float>(g.size()), p.options.diskRadius);
-    u.cubeMore = glm::vec4(p.options.diskGrowth, p.options.offsetUnits * step, presetBias ? 1.0f : 0.0f, 0.0f);
+    u.cubeFar = c.farPlane;
+    u.cubeSlopeBias = p.options.slopeBias;
+    u.cubeTexelPerDistance = 2.0f / static_cast<float>(g.size());
+    u.diskRadius = p.options.diskRadius;
+    u.diskGrowth = p.options.diskGrowth;
+    u.cubeOffset = p.options.offsetUnits * step;
+    u.presetBiasOnly = presetBias ? 1.0f : 0.0f;
 }
 
 // The cascades' members: each one's texture-space matrix, far end, texel and planes.
@@ -34,7 +48,8 @@ void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
         u.cascadeFar[c / 4][static_cast<int>(c % 4)] = p.cascadeFar[c];
         u.cascadeTexel[c / 4][static_cast<int>(c % 4)] = p.cascades[c].texelSize;
     }
-    u.cascade = glm::vec4(glm::normalize(p.viewForward), p.options.cascadeBlend);
+    u.viewForward = glm::normalize(p.viewForward);
+    u.cascadeBlend = p.options.cascadeBlend;
     for (std::size_t c = 0; c < p.cascades.size(); ++c) u.cascadeRange[c] = glm::vec4(p.cascades[c].nearPlane, p.cascades[c].farPlane, 0.0f, 0.0f);
 }
 
@@ -50,24 +65,42 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     shared::MapUniforms u{};
     u.lightClipFromWorld = p.camera.clipFromWorld();
     u.shadowFromWorld = kBias * u.lightClipFromWorld;
-    u.params = glm::vec4(static_cast<float>(p.layer), reach(p.options), p.camera.texelSize, p.camera.perspective ? 1.0f : 0.0f);
-    u.bias = glm::vec4(p.options.constantBias, 0.0f, 0.0f, p.options.normalBias);
-    if (p.options.preset == MapPreset::LearnOpenGL && !p.cube) u.bias = glm::vec4(0.0f, 0.05f, 0.005f, 0.0f);
+    u.layer = static_cast<float>(p.layer);
+    u.reachTexels = reach(p.options);
+    u.texelWorld = p.camera.texelSize;
+    u.perspective = p.camera.perspective ? 1.0f : 0.0f;
+    u.constantBias = p.options.constantBias;
+    u.normalBiasTexels = p.options.normalBias;
+    if (p.options.preset == MapPreset::LearnOpenGL && !p.cube) {
+        // LearnOpenGL's bias: max(0.05 (1 - N.L), 0.005), nothing else.
+        u.constantBias = 0.0f;
+        u.slopeDepthBias = 0.05f;
+        u.minDepthBias = 0.005f;
+        u.normalBiasTexels = 0.0f;
+    }
     // Dither spread: one texel (the lecture's 2.5 x 0.001 uv at 1024 texels, about 2.5 texels, with preset lecture).
-    const float spread = isLecture2D(p.options, light) ? 2.5f * 0.001f * static_cast<float>(g.size()) : 1.0f;
-    u.taps = glm::vec4(1.0f / static_cast<float>(g.size()), p.options.radius, static_cast<float>(p.options.samples), spread);
-    u.light = light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), p.options.shadowedLight)
-                                                     : glm::vec4(light.position, p.options.shadowedLight);
+    u.ditherSpread = isLecture2D(p.options, light) ? 2.5f * 0.001f * static_cast<float>(g.size()) : 1.0f;
+    u.texelUv = 1.0f / static_cast<float>(g.size());
+    u.poissonRadius = p.options.radius;
+    u.filterTaps = static_cast<float>(p.options.samples);
+    if (light.type == LightType::Directional)
+        u.towardsLight = -glm::normalize(light.direction);
+    else
+        u.lightPosition = light.position;
+    u.shadowedLight = p.options.shadowedLight;
     // The light camera's view direction: minus the view matrix's third row.
     const glm::mat4& v = p.camera.viewFromWorld;
-    u.axis = glm::vec4(-glm::vec3(v[0][2], v[1][2], v[2][2]), 0.0f);
+    u.lightAxis = -glm::vec3(v[0][2], v[1][2], v[2][2]);
     if (p.cube) cubeMembers(u, p, g);
     cascadeMembers(u, p);
     // PCSS: the light's size as the similar triangles take it.
     const float size = light.type == LightType::Directional ? std::tan(glm::radians(0.5f * light.size)) : light.size;
-    u.pcss = glm::vec4(size, p.camera.nearPlane, p.camera.farPlane, static_cast<float>(p.options.blockerSamples));
-    u.moments = glm::vec4(p.options.bleedReduction, 0.0f, 0.0f, 0.0f);
-    u.transmit = glm::vec4(translucent ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    u.lightSize = size;
+    u.nearPlane = p.camera.nearPlane;
+    u.farPlane = p.camera.farPlane;
+    u.blockerTaps = static_cast<float>(p.options.blockerSamples);
+    u.bleedReduction = p.options.bleedReduction;
+    u.transmittance = translucent ? 1.0f : 0.0f;
     uniforms_ = u;
     glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
     glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
@@ -77,8 +110,9 @@ void MapBlock::setLightClip(const glm::mat4& lightClipFromWorld) {
     glNamedBufferSubData(ubo_.id(), 0, sizeof lightClipFromWorld, &lightClipFromWorld);
 }
 
-void MapBlock::setBlur(const glm::vec4& blur) {
-    glNamedBufferSubData(ubo_.id(), offsetof(shared::MapUniforms, blur), sizeof blur, &blur);
+void MapBlock::setBlur(float radius, float axis, float layer) {
+    const float blur[3] = {radius, axis, layer};  // blurRadius, blurAxis, blurLayer: adjacent
+    glNamedBufferSubData(ubo_.id(), offsetof(shared::MapUniforms, blurRadius), sizeof blur, blur);
 }
 
 void MapBlock::writeWithLightClip(const glm::mat4& lightClipFromWorld) {

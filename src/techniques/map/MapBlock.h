@@ -19,8 +19,8 @@ public:
     void upload(const MapLight& p, const MapArray& g, const Light& light, bool translucent);
     /// Only the shadow pass's camera (the block's first member).
     void setLightClip(const glm::mat4& lightClipFromWorld);
-    /// The moment blur's pass: radius, axis and layer (MapUniforms::blur).
-    void setBlur(const glm::vec4& blur);
+    /// The moment blur's pass: radius (texels), axis (0 across, 1 down) and the layer blurred.
+    void setBlur(float radius, float axis, float layer);
     /// The last uploaded block with another shadow-pass camera, whole.
     void writeWithLightClip(const glm::mat4& lightClipFromWorld);
     /// The last uploaded block again, whole.

@@ -27,7 +27,7 @@ void blurLayer(TechniqueHost& host, MapBlock& block, const MapArray& g, int laye
     const auto scope = host.timeScope("blur");
     host.apply(gl::RenderState{.depthTest = false, .depthWrite = false});
     for (int axis = 0; axis < 2; ++axis) {
-        block.setBlur(glm::vec4(static_cast<float>(radius), static_cast<float>(axis), static_cast<float>(layer), 0.0f));
+        block.setBlur(static_cast<float>(radius), static_cast<float>(axis), static_cast<float>(layer));
         glBindFramebuffer(GL_FRAMEBUFFER, axis == 0 ? g.blurFbo.id() : fbo.id());
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST, axis == 0 ? g.moments.id() : g.blurScratch.id());
         glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
