@@ -210,12 +210,22 @@ Mesh torus(float majorRadius, float minorRadius, int majorSegments, int minorSeg
     return std::move(b.mesh);
 }
 
+namespace {
+// A solid of revolution about +Y (cylinder, cone): its sizes checked, and
+// its bottom and top heights, centred on the origin.
+struct Revolution {
+    float y0, y1;
+    Revolution(const char* shape, float radius, float height, int segments) : y0(-0.5f * height), y1(0.5f * height) {
+        requireSize(shape, "radius", radius);
+        requireSize(shape, "height", height);
+        requireSegments(shape, "segments", segments, 3);
+    }
+};
+} // namespace
+
 Mesh cylinder(float radius, float height, int segments) {
-    requireSize("cylinder", "radius", radius);
-    requireSize("cylinder", "height", height);
-    requireSegments("cylinder", "segments", segments, 3);
+    const auto [y0, y1] = Revolution("cylinder", radius, height, segments);
     Builder b("cylinder");
-    const float y0 = -0.5f * height, y1 = 0.5f * height;
     // Side: two rows of segments+1 vertices (seam duplicated), radial normals.
     for (int s = 0; s <= segments; ++s) {
         const glm::vec2 d = Builder::direction(s, segments);
@@ -235,11 +245,8 @@ Mesh cylinder(float radius, float height, int segments) {
 }
 
 Mesh cone(float radius, float height, int segments) {
-    requireSize("cone", "radius", radius);
-    requireSize("cone", "height", height);
-    requireSegments("cone", "segments", segments, 3);
+    const auto [y0, y1] = Revolution("cone", radius, height, segments);
     Builder b("cone");
-    const float y0 = -0.5f * height, y1 = 0.5f * height;
     // The side surface of a cone of radius R and height h makes the slant
     // (-R, h) in the (radial, y) plane; the outward normal is perpendicular:
     // (h, R) normalised, i.e. h*radial + R*Y.
