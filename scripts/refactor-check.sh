@@ -293,7 +293,7 @@ if $bench; then
         tool=$base_tool
         [[ $which == head ]] && tool=$head_tool
         # shellcheck disable=SC2086
-        "$tool" bench "$S/$scene.json" $sets --width 800 --height 600 --frames 40 -o "$out/bench-$which" > /dev/null
+        "$tool" bench "$S/$scene.json" $sets --width 800 --height 600 --frames 40 -o "$out/bench-$which" > /dev/null 2> "$out/bench-$which.log"
         ms=$(python3 -c 'import json,sys; print("%.2f" % json.load(open(sys.argv[1]))["results"][0]["frameMs"]["median"])' "$out/bench-$which/results.json")
         if [[ $which == base ]]; then before+=("$ms"); else after+=("$ms"); fi
       done

@@ -39,19 +39,19 @@ struct ImageRGBA8 {
     std::vector<std::uint8_t> pixels; ///< width*height*4 bytes
 };
 
-/// Blinn-Phong material as in the lecture material (ambient, diffuse,
-/// specular, shininess), with a base colour that tints ambient and diffuse.
-/// Lit colour = globalAmbient*ambient*base
-///            + sum_lights visibility * light * (diffuse*base*max(N.L,0)
-///                                               + specular*max(N.H,0)^shininess)
 /// How a material's alpha (Material::alpha times the base-colour texture's
 /// alpha) decides where the surface is, as glTF's alphaMode.
 enum class AlphaMode {
     Opaque, ///< "opaque": alpha ignored (default)
     Mask,   ///< "mask": the surface is absent where alpha < alphaCutoff, for the camera, every shadow technique's map and the reference
-    Blend,  ///< "blend": glTF's translucent surfaces; for now drawn opaque and casting like "mask" at alphaCutoff
+    Blend,  ///< "blend": glTF's translucent surfaces: drawn opaque by the camera for now; as casters they let light through coloured, mix(white, base colour, alpha) (technique map and the reference)
 };
 
+/// Blinn-Phong material as in the lecture material (ambient, diffuse,
+/// specular, shininess), with a base colour that tints ambient and diffuse.
+/// Lit colour = globalAmbient*ambient*base
+///            + sum_lights visibility * light * (diffuse*base*max(N.L,0)
+///                                               + specular*max(N.H,0)^shininess)
 struct Material {
     std::string name;
     glm::vec3 baseColor{0.8f};   ///< linear RGB, default 0.8 grey

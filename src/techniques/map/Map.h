@@ -6,6 +6,8 @@
 //                      array layer and cameras; each pass handed on
 //   MapOptionTable.cpp the options table and the combinations refused
 //   MapSettings        a light's options with its preset, and what follows
+//   MapFilters         the filters as data: names, samplers, reach, kernel files
+//   MapVariants        its programs as typed values, and their #defines
 //   MapArrays          the texture arrays lights share, and the memory budget
 //   MapLight.h         what is kept per light
 //   MapCameras         the lights' cameras and the casters each one draws
