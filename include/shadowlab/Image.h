@@ -1,14 +1,20 @@
 #pragma once
 /// @file Image.h
-/// PNG files. Writes go to a temporary file in the same directory that is
-/// renamed into place, so a failure never leaves a partial image behind.
-#include <shadowlab/Scene.h>
-
+/// Images in memory and PNG files. Writes go to a temporary file in the
+/// same directory that is renamed into place, so a failure never leaves a
+/// partial image behind.
 #include <cstdint>
 #include <filesystem>
 #include <vector>
 
 namespace shadowlab {
+
+/// 8-bit RGBA image in memory, rows top to bottom.
+struct ImageRGBA8 {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> pixels; ///< width*height*4 bytes
+};
 
 /// 16-bit single-channel image, rows top to bottom.
 struct ImageGray16 {

@@ -9,6 +9,7 @@
 /// base pass's depth. Colour is written as 8-bit sRGB with lit passes
 /// blended in linear light, so there is no separate resolve pass.
 #include <shadowlab/Context.h>
+#include <shadowlab/DebugImage.h>
 #include <shadowlab/Scene.h>
 
 #include <memory>
@@ -68,27 +69,6 @@ struct SurfaceBuffer {
     int width = 0, height = 0;
     std::vector<glm::vec4> position; ///< world xyz, w = 1 where geometry was drawn, 0 on background
     std::vector<glm::vec4> normal;   ///< geometric normal facing the camera, w = 1 if the surface receives shadows
-};
-
-/// What a debug image shows, set by the technique that makes it: tools pick
-/// images by kind (`shadowlab render --debug shadow-maps`), never by name.
-enum class DebugImageKind {
-    Other,        ///< anything else (the default)
-    ShadowMap,    ///< a 2D shadow map's stored depth (one per cascade)
-    CubeCross,    ///< a cube map's six faces as a cross (a point light's map)
-    TexelDensity, ///< the frame coloured by shadow-map texels per screen pixel
-    Cascades,     ///< the frame coloured by the cascade each point falls in
-};
-
-/// An image a technique offers for inspection (a depth map, a cube cross).
-struct DebugImage {
-    std::string name;   ///< file-name friendly, e.g. "light0-depth"
-    ImageRGBA8 image;
-    /// The exact values behind the picture where a technique has them (a
-    /// cube map's stored depths: its six faces, +X..-Z, one after another,
-    /// rows as GL stores them); empty otherwise. Not written by the CLI.
-    std::vector<float> values;
-    DebugImageKind kind = DebugImageKind::Other; ///< what it shows
 };
 
 /// One camera a technique rendered from a light (a shadow map's frustum).

@@ -5,6 +5,7 @@
 /// Units: lengths in scene units (treated as metres in the docs), angles in
 /// degrees in the scene file and in these structs, colours linear RGB.
 /// World space is right-handed with +Y up (as glTF).
+#include <shadowlab/Image.h>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -30,13 +31,6 @@ struct Mesh {
     std::vector<std::uint32_t> indices;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
-};
-
-/// 8-bit RGBA image in memory, rows top to bottom.
-struct ImageRGBA8 {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint8_t> pixels; ///< width*height*4 bytes
 };
 
 /// How a material's alpha (Material::alpha times the base-colour texture's

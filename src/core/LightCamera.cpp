@@ -122,12 +122,12 @@ float diagonalOf(const Bounds& scene) { return scene.empty() ? 1.0f : std::max(g
 
 } // namespace
 
-LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInput& in) {
+LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitInput& in) {
     const Bounds scene = all(in);
     const float diagonal = diagonalOf(scene);
     LightCamera cam = directionalView(direction, in, scene, diagonal);
     Bounds region; // light view space: x, y across the light, z = -distance from the eye
-    if (fit == MapFit::Scene) {
+    if (fit == LightFit::Scene) {
         // The lecture's box: sides equal to the diagonal, centred on the scene.
         const float h = 0.5f * diagonal;
         region.add(glm::vec3(-h, -h, -diagonal - h));
@@ -209,7 +209,7 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
     FitInput slice = in;
     slice.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, near, far) * camera.viewFromWorld();
-    if (!stabilize) return fitDirectional(direction, MapFit::Tight, slice);
+    if (!stabilize) return fitDirectional(direction, LightFit::Tight, slice);
 
     // A view of fixed orientation and origin: it moves with neither the camera nor the slice.
     const Bounds scene = all(in);
@@ -241,7 +241,7 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     return cam;
 }
 
-LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
+LightCamera fitSpot(const Light& light, LightFit fit, const FitInput& in) {
     LightCamera cam;
     const glm::vec3 axis = glm::normalize(light.direction);
     cam.viewFromWorld = glm::lookAt(light.position, light.position + axis, lightCameraUp(axis));
@@ -249,7 +249,7 @@ LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in) {
     cam.casts = castersThatMatter(towardsLight(light), cam.viewFromWorld, in);
     // Far: the farthest projection on the axis of what must be covered.
     Bounds covered;
-    if (fit == MapFit::Scene) covered = all(in);
+    if (fit == LightFit::Scene) covered = all(in);
     else covered = visibleReceivers(in, glm::mat4(1.0f));
     if (covered.empty()) covered = all(in);
     float far = 0.0f;
@@ -291,10 +291,10 @@ glm::mat4 cubeFaceView(const glm::vec3& position, int face) {
     return glm::lookAt(position, position + directions[f], ups[f]);
 }
 
-CubeCamera fitCube(const Light& light, MapFit fit, const FitInput& in, float nearPlane, float farPlane) {
+CubeCamera fitCube(const Light& light, LightFit fit, const FitInput& in, float nearPlane, float farPlane) {
     CubeCamera cam;
     cam.position = light.position;
-    Bounds covered = fit == MapFit::Scene ? all(in) : visibleReceivers(in, glm::mat4(1.0f));
+    Bounds covered = fit == LightFit::Scene ? all(in) : visibleReceivers(in, glm::mat4(1.0f));
     if (covered.empty()) covered = all(in);
     float far = 0.0f;
     for (int c = 0; c < 8 && !covered.empty(); ++c) {

@@ -4,7 +4,6 @@
 // fitted to the casters and receivers that matter. GPU-free.
 #include "core/Bounds.h"
 
-#include <shadowlab/MapOptions.h>
 #include <shadowlab/Scene.h>
 
 #include <array>
@@ -13,6 +12,12 @@
 #include <vector>
 
 namespace shadowlab {
+
+/// What a light camera is fitted around.
+enum class LightFit {
+    Tight, ///< the casters that can shadow what the camera sees
+    Scene, ///< the whole scene (directional) or the whole cone (spot)
+};
 
 struct LightCamera {
     glm::mat4 viewFromWorld{1.0f};
@@ -68,7 +73,7 @@ std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const
 /// farthest receiver; the shadow pass clamps depth (casters nearer than
 /// the near plane still occlude). Scene: the lecture's cube around the
 /// scene's bounds, sides equal to their diagonal.
-LightCamera fitDirectional(const glm::vec3& direction, MapFit fit, const FitInput& in);
+LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitInput& in);
 
 /// A point light's cube: six 90-degree cameras from its position with the
 /// cube-map convention's directions and up vectors (+X, -X, +Y, -Y, +Z, -Z).
@@ -89,7 +94,7 @@ glm::mat4 cubeFaceView(const glm::vec3& position, int face);
 /// the receivers the camera sees; scene: everything), within the light's
 /// range; near proportional to far (far / 10^4). `nearPlane`/`farPlane` > 0
 /// replace the fitted values (the presets' fixed planes).
-CubeCamera fitCube(const Light& light, MapFit fit, const FitInput& in, float nearPlane = 0.0f, float farPlane = 0.0f);
+CubeCamera fitCube(const Light& light, LightFit fit, const FitInput& in, float nearPlane = 0.0f, float farPlane = 0.0f);
 
 /// Cascaded shadow maps (directional lights): the view's depth range
 /// [near, far] split into `count` slices, each slice's far distance along
@@ -117,6 +122,6 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
 /// the outer cone (plus the padding), far at the farthest projection of the
 /// (tight: visible receivers', scene: all) bounds on the axis, near at the
 /// nearest caster in the cone (at least far / 10000).
-LightCamera fitSpot(const Light& light, MapFit fit, const FitInput& in);
+LightCamera fitSpot(const Light& light, LightFit fit, const FitInput& in);
 
 } // namespace shadowlab

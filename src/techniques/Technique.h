@@ -16,7 +16,7 @@
 
 #include <shadowlab/Context.h>
 #include <shadowlab/Options.h>
-#include <shadowlab/Renderer.h>
+#include <shadowlab/DebugImage.h>
 #include <shadowlab/Scene.h>
 #include <shadowlab/Techniques.h>
 

@@ -31,6 +31,9 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
     p.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
 }
 
+// The map's fit option as core/LightCamera takes it.
+LightFit lightFit(MapFit fit) { return fit == MapFit::Scene ? LightFit::Scene : LightFit::Tight; }
+
 // Casters the fit found unable to shadow anything visible are skipped.
 bool mayCast(const LightCamera& camera, std::size_t item) { return camera.casts.empty() || camera.casts[item] != 0; }
 
@@ -47,7 +50,7 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame) {
     const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld, p.options.size, footprint(p.options)};
     if (p.cube) {
         const auto [nearPlane, farPlane] = cubeNearFar(p.options);
-        p.cubeCamera = fitCube(light, p.options.fit, in, nearPlane, farPlane);
+        p.cubeCamera = fitCube(light, lightFit(p.options.fit), in, nearPlane, farPlane);
     }
     if (p.options.preset == MapPreset::LearnOpenGL && light.type == LightType::Directional)
         p.camera = learnOpenGlCamera(light, p.options.size);
@@ -56,11 +59,11 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame) {
     else if (p.cube)
         ;  // the cube's cameras above
     else if (light.type == LightType::Spot)
-        p.camera = fitSpot(light, p.options.fit, in);
+        p.camera = fitSpot(light, lightFit(p.options.fit), in);
     else if (cascadeCount(light, p.options) > 1)
         fitCascades(p, light, frame, in);
     else
-        p.camera = fitDirectional(glm::normalize(light.direction), p.options.fit, in);
+        p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in);
 }
 
 bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i, bool moments) {

@@ -1,0 +1,33 @@
+#pragma once
+/// @file DebugImage.h
+/// The images a shadow technique offers for inspection
+/// (Renderer::debugImages, `shadowlab render --debug-images`).
+#include <shadowlab/Image.h>
+
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+/// What a debug image shows, set by the technique that makes it: tools pick
+/// images by kind (`shadowlab render --debug shadow-maps`), never by name.
+enum class DebugImageKind {
+    Other,        ///< anything else (the default)
+    ShadowMap,    ///< a 2D shadow map's stored depth (one per cascade)
+    CubeCross,    ///< a cube map's six faces as a cross (a point light's map)
+    TexelDensity, ///< the frame coloured by shadow-map texels per screen pixel
+    Cascades,     ///< the frame coloured by the cascade each point falls in
+};
+
+/// An image a technique offers for inspection (a depth map, a cube cross).
+struct DebugImage {
+    std::string name;   ///< file-name friendly, e.g. "light0-depth"
+    ImageRGBA8 image;
+    /// The exact values behind the picture where a technique has them (a
+    /// cube map's stored depths: its six faces, +X..-Z, one after another,
+    /// rows as GL stores them); empty otherwise. Not written by the CLI.
+    std::vector<float> values;
+    DebugImageKind kind = DebugImageKind::Other; ///< what it shows
+};
+
+} // namespace shadowlab
