@@ -115,6 +115,7 @@ public:
             dark.blend = true;
             dark.blendSrc = GL_ZERO;
             dark.blendDst = GL_SRC_COLOR;  // colour x (1 - darkness), once per polygon
+            dark.clipDistances = 2;        // drawProjected's casters, kept on the light's side of their planes
             host.apply(dark);
             const gl::Program& program = projector(true);
             if (geometry) {
@@ -143,6 +144,7 @@ public:
             p.depthWrite = false;
             p.noColor();
             p.stencil({GL_EQUAL, 1, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_INCR});
+            p.clipDistances = 2;  // drawProjected's casters, kept on the light's side of their planes
             host.apply(p);
             drawProjected(host, frame, o, geometry, program, std::span(receivers).subspan(r, 1));
             // The receiver's unshadowed pixels back to 0, so the next plane's casters cannot mark them.
@@ -159,7 +161,8 @@ public:
 private:
     // Casters drawn flattened onto `planes` (receivers_ entries) by `program`
     // (its geometry-shader variant when `geometry`), skipping the receiver
-    // itself and casters entirely behind every plane.
+    // itself and casters entirely behind every plane; the caller's state
+    // has clip distances 0 and 1 on (the two sides the vertex stage writes).
     void drawProjected(TechniqueHost& host, const FrameInfo& frame, const PlanarOptions& o, bool geometry, const gl::Program& program,
                        std::span<const Receiver> planes) {
         shared::PlanarUniforms u{};
@@ -170,8 +173,6 @@ private:
         u.params = glm::vec4(static_cast<float>(planes.size()), o.darkness, 0.0f, 0.0f);
         glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
         glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
-        glEnable(GL_CLIP_DISTANCE0);
-        glEnable(GL_CLIP_DISTANCE1);
         host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
             bool any = false;
             GLint self = -1;  // a receiver plane is not projected onto itself
@@ -182,8 +183,6 @@ private:
             if (any && geometry) glProgramUniform1i(program.id(), 2, self);
             return any;
         });
-        glDisable(GL_CLIP_DISTANCE0);
-        glDisable(GL_CLIP_DISTANCE1);
     }
 
     // True when some corner of `box` is strictly on the light's side of `plane`.

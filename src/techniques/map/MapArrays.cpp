@@ -100,7 +100,9 @@ MapArray makeArray(const ArrayKey& key, int layers, std::uint64_t generation) {
 void MapArrays::allocate(const std::map<ArrayKey, int>& layersWanted, const GlInfo& info, int firstLight, std::size_t lightCount) {
     checkLimits(layersWanted, info, firstLight, lightCount);
     std::vector<MapArray> arrays;
-    for (const auto& [key, layers] : layersWanted) {
+    for (const auto& wanted : layersWanted) {
+        const ArrayKey& key = wanted.first;  // not a structured binding: clang 14 cannot capture one
+        const int layers = wanted.second;
         // Keep an existing array when it still fits, so maps are not reallocated every frame.
         auto same = std::find_if(arrays_.begin(), arrays_.end(), [&](const MapArray& g) { return g.key == key && g.layers == layers; });
         if (same != arrays_.end())
