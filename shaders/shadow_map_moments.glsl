@@ -1,7 +1,9 @@
 // Technique "map", filterable moment maps (representation vsm, evsm2,
 // evsm4, msm; shadow_map_shared.h momentsOf writes them): the filtered
 // moments bound the share of occluders nearer than the receiver.
-#if !MAP_CUBE && MAP_MOMENTS > 0
+#if MAP_CUBE
+#error moment maps are for 2D maps
+#endif
 // Chebyshev's upper bound on the share of the filtered region at least as
 // far as t, from its mean and mean square (VSM, each EVSM warp).
 float chebyshev(vec2 m, float t, float minVariance) {
@@ -65,5 +67,3 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
 #endif
     return clamp((v - map.bleedReduction) / (1.0 - map.bleedReduction), 0.0, 1.0);
 }
-#endif
-

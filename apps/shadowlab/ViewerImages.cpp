@@ -99,9 +99,8 @@ void ViewerSession::refreshDebugImages() {
         if (showDebug)
             for (const DebugImage& d : debugImages) debugTextures.push_back(textureOf(d.image));
         densityTexture = gl::Texture(gl::NoCreate);
-        const std::string selected = "light" + std::to_string(selectedLight) + "-";  // Renderer::debugImages names images by light
         for (const DebugImage& d : debugImages)
-            if (showDensity && d.kind == DebugImageKind::TexelDensity && d.name.rfind(selected, 0) == 0) densityTexture = textureOf(d.image);
+            if (showDensity && d.kind == DebugImageKind::TexelDensity && d.light == selectedLight) densityTexture = textureOf(d.image);
     }
     if (!showDebug && !debugTextures.empty()) freeDebugTextures();
     if (!showDensity) densityTexture = gl::Texture(gl::NoCreate);

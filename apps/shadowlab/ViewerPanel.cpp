@@ -117,7 +117,7 @@ void ViewerSession::drawLight(std::size_t l, const std::vector<TechniqueInfo>& a
         // Its debug images (a map, a cube's cross), refreshed every few frames.
         if (showDebug)
             for (std::size_t d = 0; d < debugImages.size() && d < debugTextures.size(); ++d)
-                if (debugImages[d].name.rfind("light" + std::to_string(l) + "-", 0) == 0) {
+                if (debugImages[d].light == static_cast<int>(l)) {
                     const float w = kPanelWidth - 30.0f;
                     const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
                     ImGui::TextUnformatted(debugImages[d].name.c_str());

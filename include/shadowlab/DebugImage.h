@@ -28,6 +28,7 @@ struct DebugImage {
     /// rows as GL stores them); empty otherwise. Not written by the CLI.
     std::vector<float> values;
     DebugImageKind kind = DebugImageKind::Other; ///< what it shows
+    int light = -1;     ///< the light it belongs to, into Scene::lights (Renderer::debugImages sets it)
 };
 
 } // namespace shadowlab

@@ -503,6 +503,7 @@ std::vector<DebugImage> Renderer::debugImages(const Scene& scene) {
         d.technique(scene.lights[i].shadow.technique).debugImages(d, *d.info, d.view(i), images);
         for (DebugImage& image : images) {
             image.name = "light" + std::to_string(i) + "-" + image.name;
+            image.light = static_cast<int>(i);
             out.push_back(std::move(image));
         }
     }
