@@ -5,7 +5,7 @@
 
 #include <shadowlab/Error.h>
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <algorithm>
 #include <cmath>

@@ -158,7 +158,7 @@ int ViewerSession::run() {
     tracing.reset();
     freeDebugTextures();
     freeReferenceTextures();
-    densityTexture = gl::Texture(gl::NoCreate);
+    densityTexture = ImageTexture();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

@@ -6,8 +6,6 @@
 
 #include <shadowlab/Error.h>
 
-#include <epoxy/gl.h>
-
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -15,20 +13,6 @@
 namespace fs = std::filesystem;
 
 namespace shadowlab::viewer {
-
-namespace {
-
-// An image as a texture for ImGui::Image.
-gl::Texture textureOf(const ImageRGBA8& image) {
-    gl::Texture texture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture.id(), 1, GL_RGBA8, image.width, image.height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
-    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    return texture;
-}
-
-} // namespace
 
 void ViewerSession::startComparison(int width, int height) {
     referenceAsked = false;
@@ -79,7 +63,7 @@ void ViewerSession::finishComparison() {
                           lc.receiverPixels);
             referenceLines.push_back(line);
             referenceImages.push_back(lc.errorImage);
-            referenceTextures.push_back(textureOf(lc.errorImage));
+            referenceTextures.push_back(ImageTexture(lc.errorImage));
             if (!script.empty()) std::cout << "compare: light " << l << " " << line << "\n";
             if (!run->directory.empty()) {
                 const std::string file = (fs::path(run->directory) / ("error-" + std::to_string(l) + ".png")).string();
@@ -97,13 +81,13 @@ void ViewerSession::refreshDebugImages() {
         debugImages = renderer.debugImages(lastShown);
         freeDebugTextures();
         if (showDebug)
-            for (const DebugImage& d : debugImages) debugTextures.push_back(textureOf(d.image));
-        densityTexture = gl::Texture(gl::NoCreate);
+            for (const DebugImage& d : debugImages) debugTextures.push_back(ImageTexture(d.image));
+        densityTexture = ImageTexture();
         for (const DebugImage& d : debugImages)
-            if (showDensity && d.kind == DebugImageKind::TexelDensity && d.light == selectedLight) densityTexture = textureOf(d.image);
+            if (showDensity && d.kind == DebugImageKind::TexelDensity && d.light == selectedLight) densityTexture = ImageTexture(d.image);
     }
     if (!showDebug && !debugTextures.empty()) freeDebugTextures();
-    if (!showDensity) densityTexture = gl::Texture(gl::NoCreate);
+    if (!showDensity) densityTexture = ImageTexture();
     if (!showDebug && !showDensity) debugImages.clear();
 }
 

@@ -13,10 +13,9 @@
 #include <shadowlab/Compare.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/Image.h>
+#include <shadowlab/ImageTexture.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/Techniques.h>
-
-#include "gl/Object.h"
 
 #include <glm/glm.hpp>
 
@@ -162,16 +161,16 @@ private:
     bool showLight = false;   // the selected light in wireframe over the picture
     bool showDebug = false;   // the techniques' debug images (maps, cube crosses) in the panel
     bool showDensity = false; // the selected light's texel density over the picture
-    gl::Texture densityTexture{gl::NoCreate};
+    ImageTexture densityTexture;
     std::vector<DebugImage> debugImages;
-    std::vector<gl::Texture> debugTextures;  // one per debug image, for ImGui::Image
+    std::vector<ImageTexture> debugTextures;  // one per debug image, for ImGui::Image
     Scene lastShown;                     // what the last frame drew (its debug images are read from it)
     // The error image against the ray-traced reference: asked for (C, the
     // button or the script), traced on a worker thread, then shown.
     bool referenceAsked = false;
     std::unique_ptr<ReferenceRun> tracing;
     std::vector<std::string> referenceLines;
-    std::vector<gl::Texture> referenceTextures;
+    std::vector<ImageTexture> referenceTextures;
     std::vector<ImageRGBA8> referenceImages;
     std::string compareDirectory;  // the script's pending "compare DIR"
     std::chrono::steady_clock::time_point lastFrame;

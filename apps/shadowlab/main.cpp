@@ -21,7 +21,7 @@
 #include <shadowlab/SceneFile.h>
 #include <shadowlab/Techniques.h>
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <CLI/CLI.hpp>
 

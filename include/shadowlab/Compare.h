@@ -4,6 +4,7 @@
 /// pixels it shadows wrongly, and how far its visibility is from the truth.
 /// Only in builds with SHADOWLAB_WITH_EMBREE (the default). Metrics are
 /// explained in docs/metrics.md.
+#include <shadowlab/Export.h>
 #include <shadowlab/Image.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/Scene.h>
@@ -89,7 +90,7 @@ struct Comparison {
 /// points, and compares them per light. Throws shadowlab::Error for bad
 /// options, or when built without Embree. The same as a ComparisonJob's
 /// three steps in a row.
-Comparison compareWithReference(Renderer& renderer, const Scene& scene, const CompareOptions& options = {});
+SHADOWLAB_API Comparison compareWithReference(Renderer& renderer, const Scene& scene, const CompareOptions& options = {});
 
 /// compareWithReference in three steps, so that a window stays responsive
 /// while the reference is traced:
@@ -99,7 +100,7 @@ Comparison compareWithReference(Renderer& renderer, const Scene& scene, const Co
 ///     with progress() and cancel() callable from any thread meanwhile;
 ///  3. finish() shades the reference image and classifies the pixels (on the
 ///     GL thread again, after trace() returned, the scene still uploaded).
-class ComparisonJob {
+class SHADOWLAB_API ComparisonJob {
 public:
     /// Throws shadowlab::Error for bad options, or when built without Embree.
     ComparisonJob(Renderer& renderer, const Scene& scene, const CompareOptions& options = {});
@@ -118,7 +119,7 @@ public:
     Comparison finish(Renderer& renderer);
 
 private:
-    struct Impl;
+    struct SHADOWLAB_HIDDEN Impl;
     std::unique_ptr<Impl> impl_;
 };
 

@@ -2,6 +2,7 @@
 /// @file Context.h
 /// An OpenGL 4.5 core context. Everything shadowlab draws needs one current
 /// on the calling thread.
+#include <shadowlab/Export.h>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -37,9 +38,9 @@ struct GlInfo {
 /// GL objects (buffers, textures, framebuffers, programs ...) the library
 /// holds right now, over all contexts: for leak checks (a scene reloaded a
 /// hundred times must not grow it).
-long liveGlObjects();
+SHADOWLAB_API long liveGlObjects();
 
-class Context {
+class SHADOWLAB_API Context {
 public:
     static Context createHeadless(const ContextOptions& options = {});
     /// A window of `width` x `height` screen coordinates with an OpenGL 4.5
@@ -62,7 +63,7 @@ public:
     /// The window of a createWindow context, nullptr when headless.
     GLFWwindow* window() const;
 
-    struct Impl;
+    struct SHADOWLAB_HIDDEN Impl;
     explicit Context(std::unique_ptr<Impl> impl);
     /// The implementation (library-internal: program cache, debug state).
     Impl& impl() { return *impl_; }

@@ -4,6 +4,7 @@
 /// the light pass, with no shadow pass and no map (lecture 002 exercise
 /// 8.6.2-1: UFOs over the ground, and its variation 1, discs in any
 /// orientation), under lights[i].shadow.disc in a scene file.
+#include <shadowlab/Export.h>
 #include <shadowlab/Options.h>
 
 #include <string>
@@ -19,6 +20,6 @@ struct DiscOptions {
 };
 
 /// The options table of "disc".
-const OptionTable& discOptionTable();
+SHADOWLAB_API const OptionTable& discOptionTable();
 
 } // namespace shadowlab

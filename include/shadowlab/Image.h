@@ -3,6 +3,7 @@
 /// Images in memory and PNG files. Writes go to a temporary file in the
 /// same directory that is renamed into place, so a failure never leaves a
 /// partial image behind.
+#include <shadowlab/Export.h>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
@@ -31,14 +32,14 @@ struct ImageGray8 {
 };
 
 /// Writes 8-bit RGBA PNG. Throws shadowlab::Error naming the path on failure.
-void writePng(const std::filesystem::path& path, const ImageRGBA8& image);
+SHADOWLAB_API void writePng(const std::filesystem::path& path, const ImageRGBA8& image);
 /// Writes 8-bit greyscale PNG. Throws shadowlab::Error naming the path on failure.
-void writePng(const std::filesystem::path& path, const ImageGray8& image);
+SHADOWLAB_API void writePng(const std::filesystem::path& path, const ImageGray8& image);
 /// Writes 16-bit greyscale PNG (libpng). Throws shadowlab::Error naming the path.
-void writePng16(const std::filesystem::path& path, const ImageGray16& image);
+SHADOWLAB_API void writePng16(const std::filesystem::path& path, const ImageGray16& image);
 /// Reads any PNG as 8-bit RGBA. Throws shadowlab::Error naming the path.
-ImageRGBA8 readPng(const std::filesystem::path& path);
+SHADOWLAB_API ImageRGBA8 readPng(const std::filesystem::path& path);
 /// Reads a 16-bit greyscale PNG written by writePng16.
-ImageGray16 readPng16(const std::filesystem::path& path);
+SHADOWLAB_API ImageGray16 readPng16(const std::filesystem::path& path);
 
 } // namespace shadowlab

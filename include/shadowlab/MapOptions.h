@@ -6,6 +6,7 @@
 /// them), spot lights a perspective one, point lights a cube map.
 /// Every field's JSON key, unit, range and default is in its OptionTable
 /// (mapOptionTable(), and docs/scene-format.md).
+#include <shadowlab/Export.h>
 #include <shadowlab/Options.h>
 
 #include <string>
@@ -105,6 +106,6 @@ struct MapOptions {
 };
 
 /// The options table of "map" (JSON keys, units, ranges, defaults, docs).
-const OptionTable& mapOptionTable();
+SHADOWLAB_API const OptionTable& mapOptionTable();
 
 } // namespace shadowlab

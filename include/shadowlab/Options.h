@@ -6,6 +6,7 @@
 /// parser (`lights[i].shadow.<technique>.<key>`, errors with the JSON path),
 /// `--set` and `bench --vary` (which use the same JSON paths), the
 /// scene-format doc's tables (a test compares them) and the viewer's controls.
+#include <shadowlab/Export.h>
 #include <any>
 #include <functional>
 #include <string>
@@ -40,7 +41,7 @@ struct OptionField {
 };
 
 /// The fields of one options struct. Build it with OptionTableFor<T>.
-class OptionTable {
+class SHADOWLAB_API OptionTable {
 public:
     std::string block;                ///< the JSON block's key: the technique's name
     std::vector<OptionField> fields;
@@ -102,6 +103,11 @@ public:
         f.getText = [member](const std::any& a) { return std::any_cast<const T&>(a).*member; };
         f.setText = [member](std::any& a, const std::string& v) { std::any_cast<T&>(a).*member = v; };
         return *this;
+    }
+    /// A text option naming scene nodes, comma-separated (which nodes a
+    /// technique treats as its casters or receivers; empty: the technique's own choice).
+    OptionTableFor& nodeNames(std::string T::*member, std::string key, std::string doc) {
+        return text(member, std::move(key), "node names, comma-separated", std::move(doc));
     }
     OptionTable build() { return std::move(table_); }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Options of technique "planar": projected planar shadows (lecture 000,
 // "Projective Shadows"), under lights[i].shadow.planar in a scene file.
+#include <shadowlab/Export.h>
 #include <shadowlab/Options.h>
 
 #include <string>
@@ -28,6 +29,6 @@ struct PlanarOptions {
 };
 
 /// The options table of "planar".
-const OptionTable& planarOptionTable();
+SHADOWLAB_API const OptionTable& planarOptionTable();
 
 } // namespace shadowlab

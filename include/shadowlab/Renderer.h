@@ -8,6 +8,7 @@
 /// each further light its technique's light pass ("light[i]"), added on the
 /// base pass's depth. Colour is written as 8-bit sRGB with lit passes
 /// blended in linear light, so there is no separate resolve pass.
+#include <shadowlab/Export.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/DebugImage.h>
 #include <shadowlab/Scene.h>
@@ -77,7 +78,7 @@ struct LightFrustum {
     glm::mat4 clipFromWorld{1.0f};    ///< its volume is clip space's [-1, 1]^3
 };
 
-class Renderer {
+class SHADOWLAB_API Renderer {
 public:
     /// Needs `context` current on this thread for the Renderer's lifetime.
     explicit Renderer(Context& context);
@@ -120,7 +121,7 @@ public:
     SurfaceBuffer readSurfaces() const;
 
 private:
-    struct Impl;
+    struct SHADOWLAB_HIDDEN Impl;
     std::unique_ptr<Impl> impl_;
 };
 

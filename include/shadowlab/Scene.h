@@ -5,6 +5,7 @@
 /// Units: lengths in scene units (treated as metres in the docs), angles in
 /// degrees in the scene file and in these structs, colours linear RGB.
 /// World space is right-handed with +Y up (as glTF).
+#include <shadowlab/Export.h>
 #include <shadowlab/Image.h>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -98,7 +99,7 @@ enum class LightType { Directional, Spot, Point };
 /// (RenderOptions::timeSeconds, `render --time`). Only the position moves:
 /// a spot light keeps its direction. Evaluate it with lightAtTime() or
 /// sceneAtTime(); the Renderer itself draws Light::position as it is.
-struct LightPath {
+struct SHADOWLAB_API LightPath {
     enum class Type {
         /// position(t) = Light::position + amplitude * sin(angularFrequency * t + phase),
         /// per component: a closed-form oscillation around the light's position.
@@ -150,14 +151,14 @@ struct Light {
 /// its position evaluated along its path, and the path removed, so the result
 /// is a static light (evaluating it again changes nothing). A light without
 /// a path is returned unchanged. A spot light keeps its direction.
-Light lightAtTime(const Light& light, double seconds);
+SHADOWLAB_API Light lightAtTime(const Light& light, double seconds);
 
 /// How the camera moves over time (the scene file's `camera.path`): the eye
 /// and the point looked at, each piecewise-linear between world-space keys,
 /// with the same times, clamping and looping as a light's keyframe path
 /// (LightPath::Type::Keyframes). Up, field of view, near and far stay as the
 /// Camera has them. Evaluate it with cameraAtTime() or sceneAtTime().
-struct CameraPath {
+struct SHADOWLAB_API CameraPath {
     std::vector<double> times;        ///< seconds, finite, strictly increasing, at least one
     std::vector<glm::vec3> positions; ///< world-space eye, one per time (replaces Camera::position)
     std::vector<glm::vec3> targets;   ///< world-space point looked at, one per time (replaces Camera::target)
@@ -168,7 +169,7 @@ struct CameraPath {
 };
 
 /// Perspective camera.
-struct Camera {
+struct SHADOWLAB_API Camera {
     glm::vec3 position{0.0f, 4.0f, 10.0f}; ///< world space; a `path` replaces it when evaluated
     glm::vec3 target{0.0f};                ///< world-space point looked at; a `path` replaces it when evaluated
     glm::vec3 up{0.0f, 1.0f, 0.0f};        ///< world-space up hint
@@ -191,11 +192,11 @@ struct Camera {
 /// `camera` at `seconds` (finite; seconds since the start of the animation):
 /// position and target evaluated along its path, and the path removed, so
 /// the result is a static camera. A camera without a path is returned unchanged.
-Camera cameraAtTime(const Camera& camera, double seconds);
+SHADOWLAB_API Camera cameraAtTime(const Camera& camera, double seconds);
 
 /// A node of the hierarchy. Transform = translation * rotation * scale,
 /// relative to the parent.
-struct Node {
+struct SHADOWLAB_API Node {
     std::string name;
     int parent = -1;            ///< index into Scene::nodes, -1 for a root
     glm::vec3 translation{0.0f};
@@ -219,7 +220,7 @@ struct DrawItem {
     bool receivesShadows = true;
 };
 
-struct Scene {
+struct SHADOWLAB_API Scene {
     std::string name;
     Camera camera;
     glm::vec3 ambient{0.15f};       ///< global ambient light, linear RGB, default 0.15
@@ -241,21 +242,21 @@ struct Scene {
 /// seconds) and the camera by cameraAtTime(camera, seconds). Copies the
 /// scene (meshes included); to step a scene through many frames, update a
 /// copy's lights with lightAtTime() and its camera with cameraAtTime() instead.
-Scene sceneAtTime(const Scene& scene, double seconds);
+SHADOWLAB_API Scene sceneAtTime(const Scene& scene, double seconds);
 
 /// The up vector of a light's own camera looking along `axis` (unit): +Y,
 /// or +X when the axis is within about 8 degrees of vertical. Shadow maps,
 /// a spot's projected image and cameraFromLight all use it.
-glm::vec3 lightCameraUp(const glm::vec3& axis);
+SHADOWLAB_API glm::vec3 lightCameraUp(const glm::vec3& axis);
 
 /// The light's own view as a camera (lecture 002 exercise 8.6.1-1): a spot
 /// light looks along its axis with a field of view of twice its outer cone;
 /// a directional light looks along its direction from outside the scene's
 /// bounds, with a field of view just containing them. Near and far enclose
 /// the scene. Throws shadowlab::Error for a point light (it has six views).
-Camera cameraFromLight(const Scene& scene, const Light& light);
+SHADOWLAB_API Camera cameraFromLight(const Scene& scene, const Light& light);
 
 /// The scene file's name of a light type: "directional", "spot", "point".
-const char* toString(LightType t);
+SHADOWLAB_API const char* toString(LightType t);
 
 } // namespace shadowlab

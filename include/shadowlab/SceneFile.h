@@ -1,6 +1,7 @@
 #pragma once
 /// @file SceneFile.h
 /// JSON scene files (format: docs/scene-format.md) and `--set` overrides.
+#include <shadowlab/Export.h>
 #include <shadowlab/Scene.h>
 
 #include <filesystem>
@@ -20,22 +21,22 @@ constexpr std::size_t kMaxLights = 256;
 /// plain string when it is not valid JSON. Throws shadowlab::Error with a
 /// one-line message naming the file (or the `--set` flag), the JSON path of
 /// the bad value and what was expected.
-Scene loadSceneFile(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+SHADOWLAB_API Scene loadSceneFile(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
 
 /// Parses scene JSON text. `sourceName` names it in errors; `baseDir`
 /// resolves relative mesh and texture paths.
-Scene parseScene(const std::string& jsonText, const std::string& sourceName,
-                 const std::filesystem::path& baseDir, const std::vector<std::string>& overrides = {});
+SHADOWLAB_API Scene parseScene(const std::string& jsonText, const std::string& sourceName,
+                               const std::filesystem::path& baseDir, const std::vector<std::string>& overrides = {});
 
 /// The built-in default scene (a torus floating over a ground plane, one
 /// directional light): what `shadowlab render` draws without a scene file.
-Scene defaultScene(const std::vector<std::string>& overrides = {});
+SHADOWLAB_API Scene defaultScene(const std::vector<std::string>& overrides = {});
 /// The default scene's JSON text.
-const std::string& defaultSceneJson();
+SHADOWLAB_API const std::string& defaultSceneJson();
 
 /// Scene JSON text with `overrides` written into it (the `--set` lines, or
 /// the viewer's settings), pretty-printed: it loads again as the scene those
 /// overrides give. Throws shadowlab::Error as parseScene does.
-std::string sceneJsonWithOverrides(const std::string& jsonText, const std::string& sourceName, const std::vector<std::string>& overrides);
+SHADOWLAB_API std::string sceneJsonWithOverrides(const std::string& jsonText, const std::string& sourceName, const std::vector<std::string>& overrides);
 
 } // namespace shadowlab

@@ -4,6 +4,7 @@
 /// `lights[i].shadow.technique`), a one-line summary, and the options table
 /// of their block `lights[i].shadow.<name>` (Options.h). Each technique is a
 /// module of its own (src/techniques/<Name>.cpp) with one registry line.
+#include <shadowlab/Export.h>
 #include <shadowlab/Options.h>
 #include <shadowlab/Scene.h>
 
@@ -20,16 +21,16 @@ struct TechniqueInfo {
 };
 
 /// Every registered technique, in registry order.
-std::vector<TechniqueInfo> techniques();
+SHADOWLAB_API std::vector<TechniqueInfo> techniques();
 /// The technique named `name`, or nullptr.
-const TechniqueInfo* findTechnique(std::string_view name);
+SHADOWLAB_API const TechniqueInfo* findTechnique(std::string_view name);
 /// The Markdown that docs/scene-format.md carries between its "generated"
 /// markers: the `technique` values and each technique's options table
 /// (`shadowlab techniques --markdown` prints it; a test compares the doc).
-std::string techniquesMarkdown();
+SHADOWLAB_API std::string techniquesMarkdown();
 /// Why `technique` cannot shadow `light` (e.g. a light type it does not
 /// handle yet), or an empty string when it can.
-std::string unsupportedReason(std::string_view technique, const Light& light);
+SHADOWLAB_API std::string unsupportedReason(std::string_view technique, const Light& light);
 
 /// A light's shadow at its technique's baseline: the plainest form of the
 /// technique, which bench times a frame against (results.json's
@@ -43,6 +44,6 @@ struct ShadowBaseline {
 };
 /// `light`'s baseline, from its technique's registry entry; a technique
 /// without one (or an unknown one): the light's own settings, not differing.
-ShadowBaseline shadowBaseline(const Light& light);
+SHADOWLAB_API ShadowBaseline shadowBaseline(const Light& light);
 
 } // namespace shadowlab

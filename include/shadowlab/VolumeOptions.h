@@ -1,6 +1,7 @@
 #pragma once
 // Options of technique "volume": stencil shadow volumes (lecture 002 §8.5),
 // under lights[i].shadow.volume in a scene file.
+#include <shadowlab/Export.h>
 #include <shadowlab/Options.h>
 
 namespace shadowlab {
@@ -29,6 +30,6 @@ struct VolumeOptions {
 };
 
 /// The options table of "volume".
-const OptionTable& volumeOptionTable();
+SHADOWLAB_API const OptionTable& volumeOptionTable();
 
 } // namespace shadowlab

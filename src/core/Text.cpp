@@ -1,4 +1,4 @@
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <cstdint>
 #include <sstream>

@@ -42,8 +42,8 @@ struct RenderState {
     GLenum depthFunc = GL_LESS;
     bool depthWrite = true;
     bool stencilTest = false;
-    StencilFace stencilFront;
-    StencilFace stencilBack;
+    StencilFace stencilFront{};
+    StencilFace stencilBack{};
     Cull cull = Cull::None;
     bool colorWrite[4] = {true, true, true, true};
     bool blend = false;

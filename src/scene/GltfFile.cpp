@@ -5,7 +5,7 @@
 // with an explicit stack, so a deep hierarchy cannot overflow the call stack.
 #include "scene/MeshFile.h"
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <shadowlab/Error.h>
 

@@ -4,7 +4,7 @@
 
 #include "scene/MeshFile.h"
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <stb_image.h>
 

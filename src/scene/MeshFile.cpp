@@ -5,7 +5,7 @@
 // so OBJ texture coordinates are flipped on import (v' = 1 - v).
 #include "scene/MeshFile.h"
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <shadowlab/Error.h>
 

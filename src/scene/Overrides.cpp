@@ -2,7 +2,7 @@
 // writing values into the document.
 #include "scene/Overrides.h"
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <shadowlab/Error.h>
 

@@ -7,7 +7,7 @@
 #include "scene/Overrides.h"
 #include "scene/SceneParts.h"
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <shadowlab/Error.h>
 

@@ -2,7 +2,7 @@
 // the JSON path or the `--set` flag; the Reader's checked values; keyframes.
 #include "scene/SceneJson.h"
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <shadowlab/Error.h>
 

@@ -5,6 +5,7 @@
 #include "techniques/Disc.h"
 
 #include "techniques/NodeNames.h"
+#include "techniques/TechniqueBlock.h"
 
 #include <shadowlab/DiscOptions.h>
 #include <shadowlab/Error.h>
@@ -15,15 +16,6 @@
 #include <map>
 
 namespace shadowlab {
-
-const OptionTable& discOptionTable() {
-    static const OptionTable table =
-        OptionTableFor<DiscOptions>("disc")
-            .text(&DiscOptions::casters, "casters", "node names, comma-separated",
-                  "the disc casters (disc shapes); empty: every casting node whose shape is a disc")
-            .build();
-    return table;
-}
 
 namespace {
 
@@ -63,11 +55,9 @@ bool discOf(const DrawItem& item, float radius, Disc& out) {
 
 class DiscShadow final : public Technique {
 public:
+    static constexpr const char* summary = "exact shadows of flat discs in the light pass, no shadow pass or map (lecture 002 exercise 8.6.2-1)";
+
     void prepare(TechniqueHost&, const FrameInfo& frame, std::span<const int> lights) override {
-        if (!ubo_) {
-            ubo_ = gl::Buffer();
-            glNamedBufferStorage(ubo_.id(), sizeof(shared::DiscUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
-        }
         Bounds scene;
         for (const Bounds& b : frame.itemBounds) scene.add(b);
         offset_ = scene.empty() ? 1e-5f : 1e-5f * std::max(glm::length(scene.size()), 1.0f);
@@ -105,8 +95,7 @@ public:
         }
         u.light = view.light.type == LightType::Directional ? glm::vec4(-glm::normalize(view.light.direction), 0.0f) : glm::vec4(view.light.position, 1.0f);
         u.params = glm::vec4(static_cast<float>(list.size()), offset_, 0.0f, 0.0f);
-        glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
-        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
+        block_.write(u);
     }
 
 private:
@@ -118,14 +107,20 @@ private:
     std::vector<Known> radii_;  ///< per mesh
     std::map<int, std::vector<Disc>> discs_;
     float offset_ = 1e-5f;
-    gl::Buffer ubo_{gl::NoCreate};
+    TechniqueBlock<shared::DiscUniforms> block_;
 };
 
 } // namespace
 
-TechniqueEntry discTechnique() {
-    return {"disc", "exact shadows of flat discs in the light pass, no shadow pass or map (lecture 002 exercise 8.6.2-1)", &discOptionTable(),
-            "shadow_disc.glsl", [] { return std::make_unique<DiscShadow>(); }};
+const OptionTable& discOptionTable() {
+    static const OptionTable table =
+        OptionTableFor<DiscOptions>("disc")
+            .nodeNames(&DiscOptions::casters, "casters",
+                       "the disc casters (disc shapes); empty: every casting node whose shape is a disc")
+            .build();
+    return table;
 }
+
+TechniqueEntry discTechnique() { return entryOf<DiscShadow>("disc", &discOptionTable(), "shadow_disc.glsl"); }
 
 } // namespace shadowlab

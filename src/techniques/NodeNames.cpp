@@ -1,6 +1,6 @@
 #include "techniques/NodeNames.h"
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 #include <shadowlab/Error.h>
 

@@ -10,13 +10,15 @@ struct NoneOptions {
     static constexpr const char* kTechnique = "none";
 };
 
-class NoShadow final : public Technique {};
+class NoShadow final : public Technique {
+public:
+    static constexpr const char* summary = "no shadows: visibility 1 everywhere (the unshadowed baseline)";
+};
 } // namespace
 
 TechniqueEntry noneTechnique() {
     static const OptionTable table = OptionTableFor<NoneOptions>("none").build();
-    return {"none", "no shadows: visibility 1 everywhere (the unshadowed baseline)", &table, "shadow_none.glsl",
-            [] { return std::make_unique<NoShadow>(); }};
+    return entryOf<NoShadow>("none", &table, "shadow_none.glsl");
 }
 
 } // namespace shadowlab

@@ -13,6 +13,7 @@
 #include "core/LightCamera.h"
 #include "techniques/NodeNames.h"
 #include "techniques/Stencil.h"
+#include "techniques/TechniqueBlock.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/PlanarOptions.h>
@@ -28,8 +29,8 @@ namespace shadowlab {
 const OptionTable& planarOptionTable() {
     static const OptionTable table =
         OptionTableFor<PlanarOptions>("planar")
-            .text(&PlanarOptions::receivers, "receivers", "node names, comma-separated",
-                  "the receiver planes; empty: every node whose mesh is planar and receives shadows")
+            .nodeNames(&PlanarOptions::receivers, "receivers",
+                       "the receiver planes; empty: every node whose mesh is planar and receives shadows")
             .choice(&PlanarOptions::style, "style", {"stencil", "lecture"},
                     "stencil: each receiver pixel darkened once, clipped to the receiver; lecture: 000's dark polygons with depth only (double blending, z-fighting)")
             .choice(&PlanarOptions::projection, "projection", {"vertex", "geometry"},
@@ -61,13 +62,11 @@ struct Receiver {
 
 class PlanarShadow final : public Technique {
 public:
+    static constexpr const char* summary = "projected planar shadows: casters flattened onto receiver planes, kept to the receiver by the stencil";
+
     bool sharesBasePass(const Light&) const override { return false; }  // the light goes after the stencil
 
     void prepare(TechniqueHost&, const FrameInfo& frame, std::span<const int> lights) override {
-        if (!ubo_) {
-            ubo_ = gl::Buffer();
-            glNamedBufferStorage(ubo_.id(), sizeof(shared::PlanarUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
-        }
         receivers_.clear();
         for (int index : lights) {
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
@@ -171,8 +170,7 @@ private:
             u.plane[p] = planes[p].plane;
         }
         u.params = glm::vec4(static_cast<float>(planes.size()), o.darkness, 0.0f, 0.0f);
-        glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
-        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
+        block_.write(u);
         host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
             bool any = false;
             GLint self = -1;  // a receiver plane is not projected onto itself
@@ -195,14 +193,11 @@ private:
     }
 
     std::map<int, std::vector<Receiver>> receivers_;
-    gl::Buffer ubo_{gl::NoCreate};
+    TechniqueBlock<shared::PlanarUniforms> block_;
 };
 
 } // namespace
 
-TechniqueEntry planarTechnique() {
-    return {"planar", "projected planar shadows: casters flattened onto receiver planes, kept to the receiver by the stencil", &planarOptionTable(),
-            "shadow_planar.glsl", [] { return std::make_unique<PlanarShadow>(); }};
-}
+TechniqueEntry planarTechnique() { return entryOf<PlanarShadow>("planar", &planarOptionTable(), "shadow_planar.glsl"); }
 
 } // namespace shadowlab

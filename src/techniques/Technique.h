@@ -174,4 +174,12 @@ struct TechniqueEntry {
     std::function<ShadowBaseline(const Light&)> baseline = {};
 };
 
+/// The registry row of technique class T: its name (`lights[i].shadow.technique`),
+/// one-line summary (T::summary), options table and light-pass GLSL file,
+/// and a factory for T; the optional fields keep their defaults.
+template <class T>
+TechniqueEntry entryOf(std::string name, const OptionTable* options, std::string shaderFile) {
+    return {std::move(name), T::summary, options, std::move(shaderFile), [] { return std::make_unique<T>(); }};
+}
+
 } // namespace shadowlab

@@ -18,6 +18,7 @@
 #include "techniques/Volume.h"
 
 #include "techniques/Stencil.h"
+#include "techniques/TechniqueBlock.h"
 
 #include "core/Adjacency.h"
 #include "core/LightCamera.h"
@@ -52,14 +53,12 @@ namespace {
 
 class ShadowVolume final : public Technique {
 public:
+    static constexpr const char* summary = "stencil shadow volumes: silhouettes extruded to infinity and capped, counted depth-fail (or depth-pass)";
+
     bool sharesBasePass(const Light&) const override { return false; }  // the light goes after the stencil
     bool needsInfiniteFar(const Light&) const override { return true; }
 
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
-        if (!ubo_) {
-            ubo_ = gl::Buffer();
-            glNamedBufferStorage(ubo_.id(), sizeof(shared::VolumeUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
-        }
         // Open or non-manifold edges per mesh, found once per mesh contents.
         open_.resize(frame.scene.meshes.size(), Known{});
         for (std::size_t m = 0; m < frame.scene.meshes.size(); ++m) {
@@ -102,8 +101,7 @@ public:
         const bool depthFail = o.method != VolumeMethod::DepthPass;
         const bool book = o.method == VolumeMethod::Book;
         const shared::VolumeUniforms u = volumeUniforms(frame, view.light);
-        glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
-        glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
+        block_.write(u);
         const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_volume.vert"},
                                                     {GL_GEOMETRY_SHADER, "shadow_volume.geom"},
                                                     {GL_FRAGMENT_SHADER, "shadow_volume.frag"}},
@@ -329,14 +327,11 @@ private:
     };
     std::vector<Known> open_;
     std::map<int, std::vector<std::uint8_t>> casts_;
-    gl::Buffer ubo_{gl::NoCreate};
+    TechniqueBlock<shared::VolumeUniforms> block_;
 };
 
 } // namespace
 
-TechniqueEntry volumeTechnique() {
-    return {"volume", "stencil shadow volumes: silhouettes extruded to infinity and capped, counted depth-fail (or depth-pass)", &volumeOptionTable(),
-            "shadow_volume.glsl", [] { return std::make_unique<ShadowVolume>(); }};
-}
+TechniqueEntry volumeTechnique() { return entryOf<ShadowVolume>("volume", &volumeOptionTable(), "shadow_volume.glsl"); }
 
 } // namespace shadowlab

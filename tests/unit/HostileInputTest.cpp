@@ -2,7 +2,7 @@
 // error naming the file and the JSON path or line, or is accepted within a
 // stated limit; nothing crashes, reads out of bounds or recurses per level.
 // The inputs are the fuzz seeds, fed the way the fuzz targets feed them.
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 #include "scene/MeshFile.h"
 
 #include <shadowlab/Error.h>

@@ -31,10 +31,11 @@ using namespace shadowlab::map;
 
 class ShadowMap final : public Technique {
 public:
+    static constexpr const char* summary = "a shadow map per light: orthographic for directional, perspective for spot lights";
+
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         res_.software = gl::isSoftwareRasterizer(host.glInfo().renderer);
         res_.samplers.create();
-        res_.block.create();
         // Lights with the same format and size share one texture array.
         std::map<ArrayKey, int> layersWanted;
         for (int index : lights) {
@@ -140,8 +141,11 @@ ShadowBaseline plainestMap(const Light& light) {
 } // namespace
 
 TechniqueEntry mapTechnique() {
-    return {"map", "a shadow map per light: orthographic for directional, perspective for spot lights", &mapOptionTable(),
-            "shadow_map.glsl", [] { return std::make_unique<ShadowMap>(); }, &map::unsupported, "shadow_map_vertex.glsl", &plainestMap};
+    TechniqueEntry entry = entryOf<ShadowMap>("map", &mapOptionTable(), "shadow_map.glsl");
+    entry.unsupported = &map::unsupported;
+    entry.vertexShaderFile = "shadow_map_vertex.glsl";
+    entry.baseline = &plainestMap;
+    return entry;
 }
 
 } // namespace shadowlab

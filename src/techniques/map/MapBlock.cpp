@@ -55,12 +55,6 @@ void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
 
 } // namespace
 
-void MapBlock::create() {
-    if (ubo_) return;
-    ubo_ = gl::Buffer();
-    glNamedBufferStorage(ubo_.id(), sizeof(shared::MapUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
-}
-
 void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, bool translucent) {
     shared::MapUniforms u{};
     u.lightClipFromWorld = p.camera.clipFromWorld();
@@ -102,25 +96,24 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.bleedReduction = p.options.bleedReduction;
     u.transmittance = translucent ? 1.0f : 0.0f;
     uniforms_ = u;
-    glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
-    glBindBufferBase(GL_UNIFORM_BUFFER, SL_BINDING_TECHNIQUE, ubo_.id());
+    block_.write(u);
 }
 
 void MapBlock::setLightClip(const glm::mat4& lightClipFromWorld) {
-    glNamedBufferSubData(ubo_.id(), 0, sizeof lightClipFromWorld, &lightClipFromWorld);
+    block_.writePart(0, sizeof lightClipFromWorld, &lightClipFromWorld);
 }
 
 void MapBlock::setBlur(float radius, float axis, float layer) {
     const float blur[3] = {radius, axis, layer};  // blurRadius, blurAxis, blurLayer: adjacent
-    glNamedBufferSubData(ubo_.id(), offsetof(shared::MapUniforms, blurRadius), sizeof blur, blur);
+    block_.writePart(offsetof(shared::MapUniforms, blurRadius), sizeof blur, blur);
 }
 
 void MapBlock::writeWithLightClip(const glm::mat4& lightClipFromWorld) {
     shared::MapUniforms u = uniforms_;
     u.lightClipFromWorld = lightClipFromWorld;
-    glNamedBufferSubData(ubo_.id(), 0, sizeof u, &u);
+    block_.writePart(0, sizeof u, &u);
 }
 
-void MapBlock::restore() { glNamedBufferSubData(ubo_.id(), 0, sizeof uniforms_, &uniforms_); }
+void MapBlock::restore() { block_.writePart(0, sizeof uniforms_, &uniforms_); }
 
 } // namespace shadowlab::map

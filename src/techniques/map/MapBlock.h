@@ -1,7 +1,7 @@
 #pragma once
 // Technique "map": its uniform block (shaders/shadow_map_shared.h,
 // shared::MapUniforms at SL_BINDING_TECHNIQUE), filled per light.
-#include "gl/Object.h"
+#include "techniques/TechniqueBlock.h"
 #include "techniques/map/MapArrays.h"
 #include "techniques/map/MapLight.h"
 
@@ -13,8 +13,6 @@ namespace shadowlab::map {
 
 class MapBlock {
 public:
-    /// Creates the buffer (once; a no-op after).
-    void create();
     /// The block for light `p` (in array `g`), written and bound.
     void upload(const MapLight& p, const MapArray& g, const Light& light, bool translucent);
     /// Only the shadow pass's camera (the block's first member).
@@ -27,7 +25,7 @@ public:
     void restore();
 
 private:
-    gl::Buffer ubo_{gl::NoCreate};
+    TechniqueBlock<shared::MapUniforms> block_;
     shared::MapUniforms uniforms_{};  ///< what upload() last wrote
 };
 

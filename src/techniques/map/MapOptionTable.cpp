@@ -4,7 +4,7 @@
 
 #include "techniques/map/MapFilters.h"
 
-#include "core/Text.h"
+#include <shadowlab/Text.h>
 
 namespace shadowlab {
 

@@ -1,7 +1,9 @@
 #pragma once
-// Checks and escaping for text that comes from users and files: every quoted
-// user string goes through escapeControl() so an error stays one line, and
-// JSON is depth-checked before it reaches a recursive parser.
+/// @file Text.h
+/// Checks and escaping for text that comes from users and files: every quoted
+/// user string goes through escapeControl() so an error stays one line, and
+/// JSON is depth-checked before it reaches a recursive parser.
+#include <shadowlab/Export.h>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -18,18 +20,18 @@ constexpr std::size_t kMaxJsonDepth = 200;
 /// `s` with control characters (bytes < 0x20 and 0x7f) written as \n, \r,
 /// \t, \v, \f or \xNN, and bytes that are not valid UTF-8 as \xNN. Other
 /// text, backslashes included, is unchanged, so escaping twice changes nothing.
-std::string escapeControl(std::string_view s);
+SHADOWLAB_API std::string escapeControl(std::string_view s);
 
 /// Byte offset of the first byte that is not part of valid UTF-8 (overlong
 /// forms, surrogates and code points past U+10FFFF are invalid), or npos.
-std::size_t invalidUtf8At(std::string_view s);
+SHADOWLAB_API std::size_t invalidUtf8At(std::string_view s);
 
 /// The comma-separated names in `list`, each without surrounding blanks;
 /// empty entries dropped (an option's list of node names).
-std::vector<std::string> splitNames(const std::string& list);
+SHADOWLAB_API std::vector<std::string> splitNames(const std::string& list);
 
 /// Deepest nesting of [ and { in JSON text, outside strings. Stops counting
 /// at `limit` + 1, so a hostile file is scanned once and never more.
-std::size_t jsonDepth(std::string_view json, std::size_t limit = kMaxJsonDepth);
+SHADOWLAB_API std::size_t jsonDepth(std::string_view json, std::size_t limit = kMaxJsonDepth);
 
 } // namespace shadowlab::text
