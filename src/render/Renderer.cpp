@@ -284,6 +284,10 @@ struct Renderer::Impl final : TechniqueHost {
     }
 
     FrameStats frame(const Scene& scene, const RenderOptions& options, const std::vector<std::vector<float>>* screenVisibility);
+    /// The base pass: depth, clears, ambient and light `baseLight` (-1: none).
+    void basePass(const Scene& s, const RenderOptions& options, int baseLight, const std::vector<std::vector<float>>* screenVisibility);
+    /// Each light but `baseLight`, its pass added on the base pass's depth.
+    void otherLights(const Scene& s, int baseLight, const std::vector<std::vector<float>>* screenVisibility);
 };
 
 Renderer::Renderer(Context& context) : impl_(std::make_unique<Impl>(context)) {}
@@ -320,6 +324,63 @@ void uploadVisibility(const FrameTargets& t, const std::vector<float>& values) {
     glBindTextureUnit(SL_UNIT_SCREEN_VISIBILITY, t.visibilityIn.id());
 }
 } // namespace
+
+void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int baseLight,
+                              const std::vector<std::vector<float>>* screenVisibility) {
+    const glm::ivec2 size = targets->size;
+    currentPass = "base";
+    resetTechniqueSamplers();
+    const gl::ScopedPass scope(*clock, currentPass);
+    ShaderVariant variant;
+    variant.writeSurfaces = options.surfaces;
+    if (baseLight >= 0) {
+        setLight(static_cast<std::size_t>(baseLight));
+        variant.light = true;
+        variant.lightType = currentLight->type;
+        variant.projector = hasProjector(*currentLight);
+        if (screenVisibility) {
+            variant.screenVisibility = true;
+            uploadVisibility(*targets, (*screenVisibility)[static_cast<std::size_t>(baseLight)]);
+        } else {
+            setTechnique(variant, *currentLight);
+            technique(currentLight->shadow.technique).bindLightPass(*this, *info, view(static_cast<std::size_t>(baseLight)));
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, targets->frame.id());
+    targets->drawBuffers(options.surfaces);
+    glViewport(0, 0, size.x, size.y);
+    gl::RenderState state;
+    state.framebufferSrgb = true;  // linear radiance in, sRGB bytes stored
+    gl::apply(state);              // all writes on: the clears below obey the masks
+    const glm::vec4 background(s.background, 1.0f), zero(0.0f);
+    glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, 0, &background.x);
+    if (options.surfaces) {
+        glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_POSITION, &zero.x);
+        glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_NORMAL, &zero.x);
+    }
+    glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    drawShaded(variant);
+    targets->drawBuffers(false);
+}
+
+void Renderer::Impl::otherLights(const Scene& s, int baseLight, const std::vector<std::vector<float>>* screenVisibility) {
+    for (std::size_t i = 0; i < s.lights.size(); ++i) {
+        if (static_cast<int>(i) == baseLight) continue;
+        setLight(i);
+        currentPass = "light[" + std::to_string(i) + "]";
+        const gl::ScopedPass scope(*clock, currentPass);
+        resetTechniqueSamplers();
+        bindFrameTarget();
+        if (screenVisibility) {
+            litMode = LitMode::ScreenVisibility;
+            uploadVisibility(*targets, (*screenVisibility)[i]);
+            drawLit(litState());
+            litMode = LitMode::Shade;
+        } else {
+            technique(s.lights[i].shadow.technique).renderLightPass(*this, *info, view(i));
+        }
+    }
+}
 
 FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
                                  const std::vector<std::vector<float>>* screenVisibility) {
@@ -359,59 +420,10 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     int baseLight = -1;
     for (std::size_t i = 0; i < s.lights.size() && baseLight < 0; ++i)
         if (screenVisibility || technique(s.lights[i].shadow.technique).sharesBasePass(s.lights[i])) baseLight = static_cast<int>(i);
-    {
-        currentPass = "base";
-        resetTechniqueSamplers();
-        const gl::ScopedPass scope(*clock, currentPass);
-        ShaderVariant variant;
-        variant.writeSurfaces = options.surfaces;
-        if (baseLight >= 0) {
-            setLight(static_cast<std::size_t>(baseLight));
-            variant.light = true;
-            variant.lightType = currentLight->type;
-            variant.projector = hasProjector(*currentLight);
-            if (screenVisibility) {
-                variant.screenVisibility = true;
-                uploadVisibility(*targets, (*screenVisibility)[static_cast<std::size_t>(baseLight)]);
-            } else {
-                setTechnique(variant, *currentLight);
-                technique(currentLight->shadow.technique).bindLightPass(*this, *info, view(static_cast<std::size_t>(baseLight)));
-            }
-        }
-        glBindFramebuffer(GL_FRAMEBUFFER, targets->frame.id());
-        targets->drawBuffers(options.surfaces);
-        glViewport(0, 0, size.x, size.y);
-        gl::RenderState state;
-        state.framebufferSrgb = true;  // linear radiance in, sRGB bytes stored
-        gl::apply(state);              // all writes on: the clears below obey the masks
-        const glm::vec4 background(s.background, 1.0f), zero(0.0f);
-        glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, 0, &background.x);
-        if (options.surfaces) {
-            glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_POSITION, &zero.x);
-            glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_NORMAL, &zero.x);
-        }
-        glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-        drawShaded(variant);
-        targets->drawBuffers(false);
-    }
+    basePass(s, options, baseLight, screenVisibility);
 
     // 3. Every other light: its technique's pass on the base pass's depth.
-    for (std::size_t i = 0; i < s.lights.size(); ++i) {
-        if (static_cast<int>(i) == baseLight) continue;
-        setLight(i);
-        currentPass = "light[" + std::to_string(i) + "]";
-        const gl::ScopedPass scope(*clock, currentPass);
-        resetTechniqueSamplers();
-        bindFrameTarget();
-        if (screenVisibility) {
-            litMode = LitMode::ScreenVisibility;
-            uploadVisibility(*targets, (*screenVisibility)[i]);
-            drawLit(litState());
-            litMode = LitMode::Shade;
-        } else {
-            technique(s.lights[i].shadow.technique).renderLightPass(*this, *info, view(i));
-        }
-    }
+    otherLights(s, baseLight, screenVisibility);
     gl::apply(gl::RenderState{});
     resetTechniqueSamplers();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
