@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # A bounded libFuzzer run of one target, for ctest (preset `fuzz`).
-# Usage: run-fuzzer.sh FUZZER SEED_DIR SECONDS ARTIFACT_DIR
+# Usage: run-fuzzer.sh FUZZER SEED_DIR SECONDS ARTIFACT_DIR [RUNS SEED]
+# RUNS > 0: exactly RUNS inputs from libFuzzer seed SEED, one process, no
+# time limit (repeatable: what CI runs); otherwise SECONDS of fuzzing from a
+# random seed.
 # New inputs go to a temporary corpus (the seeds in the repository stay as
 # they are); a crash, leak, timeout or out-of-memory input is kept in
 # ARTIFACT_DIR and fails the run.
 set -u
-fuzzer=$1 seeds=$2 seconds=$3 artifacts=$4
+fuzzer=$1 seeds=$2 seconds=$3 artifacts=$4 runs=${5:-0} seed=${6:-1}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$artifacts"
@@ -13,7 +16,14 @@ mkdir -p "$artifacts"
 # the replay tests run them whole. -timeout: one input may take 10 s
 # (a hang is a finding). -rss_limit_mb: the loaders' stated limits keep
 # any input far below 2 GB.
-"$fuzzer" -max_total_time="$seconds" -max_len=16384 -timeout=10 -rss_limit_mb=2048 \
+if [[ $runs -gt 0 ]]; then
+  bound=(-runs="$runs" -seed="$seed")
+  what="$runs inputs from seed $seed"
+else
+  bound=(-max_total_time="$seconds")
+  what="$seconds s"
+fi
+"$fuzzer" "${bound[@]}" -max_len=16384 -timeout=10 -rss_limit_mb=2048 \
   -artifact_prefix="$artifacts/" -print_final_stats=1 "$work" "$seeds" 2>"$work/log"
 code=$?
 tail -n 20 "$work/log"
@@ -22,4 +32,4 @@ if [[ $code -ne 0 ]]; then
   ls -la "$artifacts"
   exit 1
 fi
-echo "ok: $(basename "$fuzzer") ran $seconds s without a finding"
+echo "ok: $(basename "$fuzzer") ran $what without a finding"

@@ -1,8 +1,11 @@
 // Technique "map", shadow pass. Variants: MAP_RGBA8 (pack depth into an
-// RGBA8 colour, lecture 002 §8.3.1), MAP_SPOT (discard outside the cone:
-// the cone is the circle inscribed in the square map, 002 §8.2.1.3),
-// MAP_MOMENTS (write the moments of depth, SL_MAP_MOMENTS_*).
-in vec2 vLightNdc;
+// RGBA8 colour, lecture 002 §8.3.1), MAP_MOMENTS (write the moments of
+// depth, SL_MAP_MOMENTS_*; MAP_SPOT: of a spot's depth linearised).
+// A spot's map is drawn whole, not only the cone inscribed in it (002
+// §8.2.1.3 discards outside the cone): a caster outside the cone shadows
+// nothing inside it, and the texels just outside the rim keep the depth
+// that filters and bilinear compares at the rim read (a discard there left
+// them empty, so receivers at the rim came out lit).
 in vec2 vUv;
 #include "shadow_map_shared.h"
 #include "alpha_test.h"
@@ -14,9 +17,6 @@ layout(location = 0) out vec4 outMoments;
 
 void main() {
     if (alphaCutOut(vUv) || translucentSurface()) discard;  // holes; translucent casters go to the transmittance map
-#if MAP_SPOT
-    if (dot(vLightNdc, vLightNdc) > 1.0) discard;
-#endif
 #if MAP_RGBA8
     outPacked = packDepth(gl_FragCoord.z);
 #elif MAP_MOMENTS > 0

@@ -3,11 +3,9 @@
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
-out vec2 vLightNdc;
 out vec2 vUv;
 
 void main() {
     vUv = inUv;
     gl_Position = map.lightClipFromWorld * draw.worldFromObject * vec4(inPosition, 1.0);
-    vLightNdc = gl_Position.xy / gl_Position.w;
 }

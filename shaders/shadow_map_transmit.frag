@@ -2,7 +2,6 @@
 // depth: each one's transmittance, multiplied into colour 0 by the blend
 // (dst x src), and its depth, the nearest kept in colour 1 (blend MIN),
 // where no opaque caster is nearer the light (the depth test, no writes).
-in vec2 vLightNdc;
 in vec2 vUv;
 #include "shadow_map_shared.h"
 #include "alpha_test.h"
@@ -10,9 +9,6 @@ layout(location = 0) out vec4 outTransmit;
 layout(location = 1) out vec4 outDepth;
 
 void main() {
-#if MAP_SPOT
-    if (dot(vLightNdc, vLightNdc) > 1.0) discard;
-#endif
     outTransmit = vec4(surfaceTransmittance(vUv), 1.0);
     outDepth = vec4(gl_FragCoord.z);
 }

@@ -30,11 +30,13 @@ void clearLayer(TechniqueHost& host, const MapArray& g, const gl::Framebuffer& f
 }
 
 // The casters' draw state: depth (and the colour the map is, if any), the
-// light's polygon offset and culling.
+// light's polygon offset and culling. Back faces (cullFront) are drawn where
+// they are: they lie behind the lit surfaces already, and an offset pushes
+// them past the receivers at a caster's foot (light leaks there).
 gl::RenderState casterState(const MapArray& g, const MapOptions& o, const LightCamera& camera) {
     gl::RenderState state;
     if (!isPacked(g.format()) && !g.hasMoments()) state.noColor();
-    state.polygonOffset = o.slopeBias != 0.0f || o.offsetUnits != 0.0f;
+    state.polygonOffset = !o.cullFront && (o.slopeBias != 0.0f || o.offsetUnits != 0.0f);
     state.offsetFactor = o.slopeBias;
     state.offsetUnits = o.offsetUnits;
     state.cull = o.cullFront ? gl::Cull::Front : gl::Cull::None;
@@ -73,7 +75,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
         drawn += drawnHere;
         if (g.hasMoments() && p.options.blur > 0) blurLayer(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, fbo);
-        if (res.translucent) drawTranslucent(host, res.block, frame, g, p, camera, p.layer + static_cast<int>(c));
+        if (res.translucent) drawTranslucent(host, res.block, frame, g, camera, p.layer + static_cast<int>(c));
     }
     host.count("triangles", static_cast<double>(drawn));
     // The memory of this light's layers (the map the light pass reads and what its pass needs beside it).

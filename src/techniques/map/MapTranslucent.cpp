@@ -50,13 +50,13 @@ bool hasTranslucentCasters(const FrameInfo& frame) {
     return translucent;
 }
 
-void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p, const LightCamera& camera,
+void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const LightCamera& camera,
                      int layer) {
     const auto scope = host.timeScope("translucent");
     const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, sharedDepthBuffer(g.key) ? 0 : layer, !camera.perspective);
     block.setLightClip(camera.clipFromWorld());
     const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_transmit.frag"}},
-                                               TranslucentVariant{p.spot}.defines()});
+                                               TranslucentVariant{}.defines()});
     host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && castsInto(camera, frame, i, true); });
 }
 

@@ -16,7 +16,7 @@ bool translucentCaster(const FrameInfo& frame, std::size_t i);
 /// Whether any caster of the frame is translucent.
 bool hasTranslucentCasters(const FrameInfo& frame);
 /// The translucent casters into layer `layer`'s transmittance, seen from `camera`.
-void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p, const LightCamera& camera,
+void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const LightCamera& camera,
                      int layer);
 /// A point light's translucent casters into its cube's transmittance
 /// layers, face by face, after the opaque depth.

@@ -89,14 +89,15 @@ std::string LightPassVariant::kernelFile() const {
 }
 
 std::string DepthPassVariant::defines() const {
-    return Defines().packing(format).set("MAP_SPOT", spot).set("MAP_MOMENTS", static_cast<int>(representation)).moments(momentFormat).str();
+    // MAP_SPOT only changes moments; a depth map's spot and directional programs are one.
+    return Defines().packing(format).set("MAP_SPOT", spot && representation != MapRepresentation::Depth).set("MAP_MOMENTS", static_cast<int>(representation)).moments(momentFormat).str();
 }
 
 std::string CubePassVariant::defines() const {
     return Defines().packing(format).set("MAP_CUBE_ONE_PASS", onePass).set("MAP_CUBE_CULL", faceCulling).str();
 }
 
-std::string TranslucentVariant::defines() const { return Defines().set("MAP_SPOT", spot).str(); }
+std::string TranslucentVariant::defines() const { return Defines().str(); }
 
 std::string FrameViewVariant::defines() const { return Defines().set("MAP_CASCADES", cascades).str(); }
 

@@ -32,7 +32,7 @@ struct LightPassVariant {
 /// The 2D shadow pass: shadow_map_depth.vert/.frag (the floors' bare draw: the defaults).
 struct DepthPassVariant {
     MapFormat format = MapFormat::Depth32F;
-    bool spot = false;              ///< discard outside the cone
+    bool spot = false;              ///< a spot: moments of its depth linearised (depth maps: no difference)
     MapRepresentation representation = MapRepresentation::Depth;
     MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;
     std::string defines() const;
@@ -47,9 +47,9 @@ struct CubePassVariant {
 };
 
 /// The translucent casters' pass: shadow_map_transmit.frag (2D; a cube's
-/// faces take CubePassVariant{.onePass = false}'s vertex stage).
+/// faces take CubePassVariant{.onePass = false}'s vertex stage). It has no
+/// choices: a spot's map is drawn whole, like a directional light's.
 struct TranslucentVariant {
-    bool spot = false;
     std::string defines() const;
 };
 
