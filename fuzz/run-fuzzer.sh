@@ -16,14 +16,20 @@ mkdir -p "$artifacts"
 # the replay tests run them whole. -timeout: one input may take 10 s
 # (a hang is a finding). -rss_limit_mb: the loaders' stated limits keep
 # any input far below 2 GB.
+# A run-bounded run is repeatable: a fixed seed, no reloading of the corpus
+# directory (libFuzzer does that on a clock), and no address randomisation
+# (setarch -R), since heap addresses reach the comparisons libFuzzer mines
+# for its dictionary and the order of pointer-keyed containers.
+launch=()
 if [[ $runs -gt 0 ]]; then
-  bound=(-runs="$runs" -seed="$seed")
+  bound=(-runs="$runs" -seed="$seed" -reload=0)
   what="$runs inputs from seed $seed"
+  if setarch "$(uname -m)" -R true 2>/dev/null; then launch=(setarch "$(uname -m)" -R); fi
 else
   bound=(-max_total_time="$seconds")
   what="$seconds s"
 fi
-"$fuzzer" "${bound[@]}" -max_len=16384 -timeout=10 -rss_limit_mb=2048 \
+"${launch[@]}" "$fuzzer" "${bound[@]}" -max_len=16384 -timeout=10 -rss_limit_mb=2048 \
   -artifact_prefix="$artifacts/" -print_final_stats=1 "$work" "$seeds" 2>"$work/log"
 code=$?
 tail -n 20 "$work/log"
