@@ -1,14 +1,20 @@
 // Technique "volume": one triangle with its edge neighbours
 // (GL_TRIANGLES_ADJACENCY: 0, 2, 4 the triangle; 1, 3, 5 the vertices
 // across edges 0-2, 2-4, 4-0) becomes its part of the shadow volume:
-// - closed meshes (`perTriangle` 0): a light-facing triangle emits a side
-//   quad for each silhouette edge (the neighbour faces away from the light,
-//   or there is none: an open edge, whose "neighbour" is the triangle's own
-//   opposite vertex, core/Adjacency.h), extruded to infinity (w = 0) along
-//   the light's rays, and (CAPS) itself as the front cap and its copy at
-//   infinity, reversed, as the back cap;
-// - `perTriangle` 1: every triangle is its own closed volume (its three
-//   edges, both caps), wound so that its faces point out of it.
+// - `mode` 0 (open meshes, "facing") and 2 (closed meshes): a
+//   light-facing triangle emits a side quad for each silhouette edge (the
+//   neighbour faces away from the light, or there is none: an open edge,
+//   whose "neighbour" is the triangle's own opposite vertex,
+//   core/Adjacency.h), extruded to infinity (w = 0) along the light's rays;
+// - the caps (CAPS): a triangle wound towards the light as the front cap
+//   and its copy at infinity, reversed, as the back cap. Mode 0 caps with
+//   the light-facing triangles. Mode 2 caps with the triangles that face
+//   away: a ray from a point outside a closed mesh to the light crosses as
+//   many of either, but from a light inside the mesh (a lamp in a shade, a
+//   room built as a box) it crosses one more facing away, and none may
+//   face it at all;
+// - `mode` 1: every triangle is its own closed volume (its three edges,
+//   both caps), wound so that its faces point out of it.
 // The counts only need every volume's faces wound consistently: a point
 // inside k volumes gets a count of k (or -k), never 0.
 #include "shadow_volume_shared.h"
@@ -16,7 +22,7 @@
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 18) out;
 
-layout(location = 0) uniform int perTriangle;
+layout(location = 0) uniform int mode;  // 0 open (facing), 1 per triangle, 2 closed
 // The light in the item's object space: the facing test runs there, in
 // double precision, on the mesh's own coordinates, so that the CPU path
 // (Volume.cpp) takes the very same decisions for faces seen edge-on.
@@ -54,14 +60,14 @@ void main() {
     vec3 v[6];
     for (int i = 0; i < 6; ++i) v[i] = vVolumeWorld[i];
     bool lit = facesLight(0, 2, 4);
-    if (perTriangle == 0 && !lit) return;
-    // Wind the triangle towards the light (a back-facing one, perTriangle only, is turned).
+    if (mode == 0 && !lit) return;
+    // Wind the triangle towards the light (a back-facing one is turned).
     vec3 a = v[0], b = lit ? v[2] : v[4], c = lit ? v[4] : v[2];
-    if (perTriangle != 0) {
+    if (mode == 1) {
         sideQuad(a, b);
         sideQuad(b, c);
         sideQuad(c, a);
-    } else {
+    } else if (lit) {
         for (int e = 0; e < 3; ++e) {
             vec3 p = v[2 * e], q = v[(2 * e + 2) % 6];
             bool open = all(equal(vVolumeObject[2 * e + 1], vVolumeObject[(2 * e + 4) % 6]));
@@ -69,6 +75,7 @@ void main() {
         }
     }
 #if CAPS
+    if (mode == 2 && lit) return;
     gl_Position = here(a); EmitVertex();
     gl_Position = here(b); EmitVertex();
     gl_Position = here(c); EmitVertex();

@@ -131,7 +131,7 @@ public:
                 [&](std::size_t i) {
                     if (!casts_[view.index][i]) return false;
                     const auto mesh = static_cast<std::size_t>(frame.items[i].mesh);
-                    glProgramUniform1i(program.id(), 0, triangles && open_[mesh].edges > 0 ? 1 : 0);
+                    glProgramUniform1i(program.id(), 0, static_cast<int>(volumeMode(triangles, open_[mesh].edges > 0)));
                     const glm::dvec4 l = lightInObject(frame.items[i], view.light);
                     glProgramUniform4d(program.id(), 1, l.x, l.y, l.z, l.w);
                     drawn += frame.scene.meshes[mesh].triangleCount();
@@ -204,6 +204,15 @@ private:
         return s;
     }
 
+    // How a mesh's volume is built (shadow_volume.geom's `mode`): an open
+    // mesh from its light-facing triangles, or every triangle its own volume
+    // (openMeshes "triangles"); a closed one capped with the triangles that
+    // face away from the light, which is right with the light inside it too.
+    enum class Mode { Open = 0, PerTriangle = 1, Closed = 2 };
+    static Mode volumeMode(bool trianglesForOpen, bool open) {
+        return !open ? Mode::Closed : trianglesForOpen ? Mode::PerTriangle : Mode::Open;
+    }
+
     // The light (position with w = 1, or the direction towards it with w =
     // 0) in the item's object space.
     static glm::dvec4 lightInObject(const DrawItem& item, const Light& light) {
@@ -236,9 +245,8 @@ private:
             if (adj.positions != mesh.positions.data() || adj.indexCount != mesh.indices.size()) {
                 adj = {mesh.positions.data(), mesh.indices.size(), adjacencyIndices(mesh.positions, mesh.indices)};
             }
-            const bool perTriangle = perTriangleForOpen && open_[m].edges > 0;
             CpuRange range{i, cpuVertices_.size(), 0};
-            extrude(mesh, adj.indices, lightInObject(item, view.light), perTriangle, caps);
+            extrude(mesh, adj.indices, lightInObject(item, view.light), volumeMode(perTriangleForOpen, open_[m].edges > 0), caps);
             triangles += adj.indices.size() / 6;
             range.count = cpuVertices_.size() - range.first;
             if (range.count) cpuRanges_.push_back(range);
@@ -267,8 +275,8 @@ private:
 
     // One mesh's volume, appended to cpuVertices_: from its welded adjacency
     // x (six indices a triangle) and the light lo in its object space
-    // (lightInObject); every triangle its own volume when perTriangle.
-    void extrude(const Mesh& mesh, const std::vector<std::uint32_t>& x, const glm::dvec4& lo, bool perTriangle, bool caps) {
+    // (lightInObject), as shadow_volume.geom builds it in `mode`.
+    void extrude(const Mesh& mesh, const std::vector<std::uint32_t>& x, const glm::dvec4& lo, Mode mode, bool caps) {
         // The facing test in object space and double precision, as the geometry shader does it.
         auto before = [&](std::uint32_t p, std::uint32_t q) {
             const glm::vec3 &u = mesh.positions[p], &v = mesh.positions[q];
@@ -290,18 +298,18 @@ private:
         };
         for (std::size_t t = 0; t + 5 < x.size(); t += 6) {
             const bool lit = faces(x[t], x[t + 2], x[t + 4]);
-            if (!perTriangle && !lit) continue;
+            if (mode == Mode::Open && !lit) continue;
             const std::uint32_t a = x[t], b = lit ? x[t + 2] : x[t + 4], c = lit ? x[t + 4] : x[t + 2];
-            if (perTriangle) {
+            if (mode == Mode::PerTriangle) {
                 side(a, b), side(b, c), side(c, a);
-            } else {
+            } else if (lit) {
                 for (int e = 0; e < 3; ++e) {
                     const std::uint32_t p = x[t + 2 * e], q = x[t + (2 * e + 2) % 6], n = x[t + 2 * e + 1];
                     const bool open = mesh.positions[n] == mesh.positions[x[t + (2 * e + 4) % 6]];
                     if (open || !faces(p, n, q)) side(p, q);
                 }
             }
-            if (caps) {
+            if (caps && !(mode == Mode::Closed && lit)) {
                 put(a, 0.0f), put(b, 0.0f), put(c, 0.0f);
                 put(a, 1.0f), put(c, 1.0f), put(b, 1.0f);
             }
