@@ -381,7 +381,7 @@ CLI::App* addRender(CLI::App& app, RenderArgs& args) {
     render->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     render->add_option("--set", args.overrides, "Override a scene value by JSON path, e.g. lights[0].intensity=2")->take_all();
     render->add_option("--view-from-light", args.viewFromLight, "See the scene from light I's camera (spot: along its cone; directional: along its direction)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::Range(0, static_cast<int>(kMaxLights) - 1));
     render->add_option("--debug", args.debug,
                        "Also write debug images beside the output as <name>-<image>.png: shadow-maps (each light's map, "
                        "perspective depth linearised; a point light's cube as a cross), texel-density (map texels per pixel), cascades (the frame coloured by cascade), all")
@@ -455,6 +455,30 @@ CLI::App* addView(CLI::App& app, ViewArgs& args) {
 }
 #endif
 
+// Every option that takes a value refuses an empty one (`--time ''` was
+// read as 0, `--debug-images ''` wrote nothing and exited 0).
+void refuseEmptyValues(CLI::App& app) {
+    const CLI::Validator nonEmpty([](std::string& value) { return value.empty() ? std::string("expected a value, got an empty string") : std::string(); },
+                                  "", "non-empty");
+    for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+        for (CLI::Option* option : command->get_options())
+            // Positional scene paths and -o keep their own messages (requireNonEmpty, "empty path").
+            if (option->get_type_size() != 0 && !option->get_positional() && option->get_name() != "--help" && option->get_name() != "--output")
+                option->check(nonEmpty);
+}
+
+bool isCommand(CLI::App& app, const std::string& name) {
+    for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+        if (command->get_name() == name) return true;
+    return false;
+}
+
+std::string commandList(CLI::App& app) {
+    std::string list;
+    for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) list += " " + command->get_name();
+    return list;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -481,6 +505,11 @@ int main(int argc, char** argv) {
     CLI::App* view = addView(app, viewArgs);
 #endif
 
+    refuseEmptyValues(app);
+    if (argc > 1 && argv[1][0] != '-' && !isCommand(app, argv[1])) {
+        std::cerr << "shadowlab: error: " << text::escapeControl(argv[1]) << ": not a command (expected one of" << commandList(app) << ")\n";
+        return 1;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

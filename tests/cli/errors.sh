@@ -89,6 +89,13 @@ expect_error frames-two-fields "-o out%d%d.png: more than one frame number field
 expect_error time-nan "--time nan: expected a finite number of seconds" render -o out.png --time nan
 expect_error time-inf "--time inf: expected a finite number of seconds" render -o out.png --time inf
 expect_error time-text "--time" render -o out.png --time soon
+expect_error time-empty "--time: expected a value, got an empty string" render -o out.png --time ''
+expect_error fps-empty "--fps: expected a value, got an empty string" render -o out.png --fps ''
+expect_error debug-images-empty "--debug-images: expected a value, got an empty string" render -o out.png --debug-images ''
+expect_error set-empty "--set: expected a value, got an empty string" render -o out.png --set ''
+expect_error vary-empty "--vary: expected a value, got an empty string" bench -o out.png --vary ''
+expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
+expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
 expect_error fps-negative "--fps -30: expected a finite number of frames per second > 0" render -o out.png --fps -30
 expect_error frame-time-overflows "--time 1.7e+308 --fps 1e-308: frame 1's time is not a finite number of seconds" render -o 'out%d.png' --frames 2 --time 1.7e308 --fps 1e-308
