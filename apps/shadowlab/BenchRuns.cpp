@@ -64,7 +64,14 @@ std::size_t countRuns(std::size_t sceneCount, const std::vector<Variation>& vari
 
 std::vector<BenchRun> loadRuns(const BenchArgs& args) {
     std::vector<Variation> variations;
-    for (const std::string& v : args.vary) variations.push_back(parseVariation(v));
+    for (std::size_t i = 0; i < args.vary.size(); ++i) {
+        variations.push_back(parseVariation(args.vary[i]));
+        // Two --vary of one key would make every combination run at the last one's value.
+        for (std::size_t j = 0; j < i; ++j)
+            if (variations[j].key == variations[i].key)
+                throw Error("--vary " + args.vary[i] + ": " + variations[i].key + " is already varied by --vary " + args.vary[j] +
+                            " (give all its values in one --vary)");
+    }
     std::vector<std::string> scenes = args.scenes;
     if (scenes.empty()) scenes.push_back("");
     const std::size_t count = countRuns(scenes.size(), variations); // before building them: 10^7 would fill memory

@@ -94,6 +94,7 @@ expect_error fps-empty "--fps: expected a value, got an empty string" render -o 
 expect_error debug-images-empty "--debug-images: expected a value, got an empty string" render -o out.png --debug-images ''
 expect_error set-empty "--set: expected a value, got an empty string" render -o out.png --set ''
 expect_error vary-empty "--vary: expected a value, got an empty string" bench -o out.png --vary ''
+expect_error vary-same-key-twice "--vary lights[0].intensity=3: lights[0].intensity is already varied by --vary lights[0].intensity=1,2" bench -o out.png --vary lights[0].intensity=1,2 --vary lights[0].intensity=3
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
@@ -188,7 +189,7 @@ expect_no_leftovers() {
   fi
 }
 vary=()
-for k in 0 1 2 3 4 5 6; do vary+=(--vary "lights[0].intensity=1,2,3,4,5,6,7,8,9,10"); done
+for k in 0 1 2 3 4 5 6; do vary+=(--vary "lights[$k].intensity=1,2,3,4,5,6,7,8,9,10"); done
 expect_dir_error bench-too-many-runs "--vary: 1 scene x 10 x 10 x 10 x 10 x 10 x 10 x 10 values make more than 10000 runs" bench -o outdir "${vary[@]}"
 expect_no_leftovers bench-too-many-runs
 expect_dir_error bench-empty-scene "bench: empty scene path" bench "" -o outdir
