@@ -1,6 +1,8 @@
 // The viewer's --script files (ViewerScript.h): read and checked whole before
 // the window opens, then run one action a frame.
 #include "ViewerScript.h"
+
+#include "OutputFiles.h"
 #include "ViewerSession.h"
 
 #include <shadowlab/Error.h>
@@ -39,6 +41,8 @@ std::vector<Action> readScript(const std::string& path) {
             if (a.argument.empty() || *end != '\0' || n < 0 || n > 100000) throw Error(where + "wait: expected a number of frames 0..100000, got '" + a.argument + "'");
         } else if (a.verb == "screenshot" || a.verb == "save") {
             if (a.argument.empty()) throw Error(where + a.verb + ": expected a file name");
+            // A screenshot is a PNG, as render -o's: refused before the first frame.
+            if (a.verb == "screenshot") tool::checkOutput(a.argument, where + "screenshot");
         } else if (a.verb == "resize") {
             std::istringstream size(a.argument);
             int w = 0, h = 0;

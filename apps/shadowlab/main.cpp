@@ -533,6 +533,7 @@ int main(int argc, char** argv) {
 #if SHADOWLAB_VIEWER
         if (*view) {
             if (!viewArgs.screenshot.empty() && viewArgs.frames == 0) throw Error("--screenshot: needs --frames N (the frame to take)");
+            if (!viewArgs.screenshot.empty()) tool::checkOutput(viewArgs.screenshot, "--screenshot");
             return runView(viewArgs);
         }
 #endif

@@ -60,4 +60,10 @@ wait $viewer || { echo "the viewer died on a broken scene file: $(cat err.txt)";
 printf 'jump 3\n' > bad.txt
 if "$tool" view --script bad.txt 2>err.txt; then echo "bad script accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "bad.txt:1: unknown action 'jump'" err.txt || { echo "bad script: $(cat err.txt)"; exit 1; }
+# Screenshots are PNG files, as render -o's: another extension is refused up front, nothing written.
+printf 'wait 1\nscreenshot shot.jpg\nquit\n' > jpg.txt
+if "$tool" view --script jpg.txt 2>err.txt; then echo "screenshot .jpg accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 && ! -e shot.jpg ]] && grep -q "jpg.txt:2: screenshot shot.jpg: expected a .png file name" err.txt || { echo "screenshot .jpg: $(cat err.txt)"; exit 1; }
+if "$tool" view --frames 1 --screenshot shot.jpg 2>err.txt; then echo "--screenshot .jpg accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 && ! -e shot.jpg ]] && grep -q -- "--screenshot shot.jpg: expected a .png file name" err.txt || { echo "--screenshot .jpg: $(cat err.txt)"; exit 1; }
 echo ok
