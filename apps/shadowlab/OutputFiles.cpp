@@ -38,7 +38,9 @@ FramePattern parseFramePattern(const std::string& output) {
         while (i < output.size() && std::string_view("-+ 0#").find(output[i]) != std::string_view::npos) ++i;
         const std::size_t widthStart = i;
         while (i < output.size() && std::isdigit(static_cast<unsigned char>(output[i]))) ++i;
-        if (i - widthStart > 3) throw Error("-o " + output + ": the frame number's width is too large");
+        // At most 20 digits: any int fits, and the formatted number always fits its buffer (a width of 999 was cut silently).
+        if (i - widthStart > 2 || (i > widthStart && std::stoi(output.substr(widthStart, i - widthStart)) > 20))
+            throw Error("-o " + output + ": the frame number's width is " + output.substr(widthStart, i - widthStart) + " (at most 20)");
         if (i >= output.size() || (output[i] != 'd' && output[i] != 'i'))
             throw Error("-o " + output + ": '%' starts a frame number field such as %d or %03d (write %% for a percent sign)");
         if (p.hasField()) throw Error("-o " + output + ": more than one frame number field");

@@ -95,6 +95,9 @@ expect_error debug-images-empty "--debug-images: expected a value, got an empty 
 expect_error set-empty "--set: expected a value, got an empty string" render -o out.png --set ''
 expect_error vary-empty "--vary: expected a value, got an empty string" bench -o out.png --vary ''
 expect_error vary-same-key-twice "--vary lights[0].intensity=3: lights[0].intensity is already varied by --vary lights[0].intensity=1,2" bench -o out.png --vary lights[0].intensity=1,2 --vary lights[0].intensity=3
+expect_error frame-width-999 "-o f%999d.png: the frame number's width is 999 (at most 20)" render -o 'f%999d.png' --frames 2
+expect_error frame-width-left-999 "-o f%-999d.png: the frame number's width is 999 (at most 20)" render -o 'f%-999d.png' --frames 2
+if compgen -G "$work/f*.png" >/dev/null; then echo "FAIL frame-width: left $(cd "$work" && echo f*.png)"; failures=$((failures + 1)); fi
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
