@@ -50,6 +50,7 @@ printf '{"lights": [{"type":"directional","intensity":1e999}]}' > "$work/inf.jso
 printf '{"nodes": [{"shape": {"type":"box","size":[1,-1,1]}}]}' > "$work/negative.json"
 printf '{"lihgts": []}' > "$work/unknown-key.json"
 printf 'P3 not json' > "$work/notjson.json"
+printf '{"lights": [{"type":"directional","shadow":{"technique":"planar","planar":{"receivers":"nope"}}}], "nodes": [{"name":"ground","shape":{"type":"plane","size":[4,4]}}]}' > "$work/planar-nope.json"
 
 expect_error malformed-json "malformed.json: invalid JSON" render malformed.json -o out.png
 expect_error direction-count "direction.json: lights[1].direction: expected 3 numbers, got 2" render direction.json -o out.png
@@ -98,6 +99,10 @@ expect_error vary-same-key-twice "--vary lights[0].intensity=3: lights[0].intens
 expect_error frame-width-999 "-o f%999d.png: the frame number's width is 999 (at most 20)" render -o 'f%999d.png' --frames 2
 expect_error frame-width-left-999 "-o f%-999d.png: the frame number's width is 999 (at most 20)" render -o 'f%-999d.png' --frames 2
 if compgen -G "$work/f*.png" >/dev/null; then echo "FAIL frame-width: left $(cd "$work" && echo f*.png)"; failures=$((failures + 1)); fi
+# Render-time errors name where the value came from: the --set, else the scene file.
+expect_error budget-from-set "--set lights[0].shadow.map.size=16384: lights[0].shadow.map.size: the shadow maps of 1 light(s) need 8.00 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set lights[0].shadow.map.cascades=8
+expect_error planar-receivers-from-set "--set lights[0].shadow.planar.receivers=nope: lights[0].shadow.planar.receivers: no node named 'nope'" render -o out.png --set lights[0].shadow.technique=planar --set lights[0].shadow.planar.receivers=nope
+expect_error planar-receivers-from-file "planar-nope.json: lights[0].shadow.planar.receivers: no node named 'nope'" render planar-nope.json -o out.png
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
