@@ -57,7 +57,7 @@ class DiscShadow final : public Technique {
 public:
     static constexpr const char* summary = "exact shadows of flat discs in the light pass, no shadow pass or map (lecture 002 exercise 8.6.2-1)";
 
-    void prepare(TechniqueHost&, const FrameInfo& frame, std::span<const int> lights) override {
+    void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         Bounds scene;
         for (const Bounds& b : frame.itemBounds) scene.add(b);
         offset_ = scene.empty() ? 1e-5f : 1e-5f * std::max(glm::length(scene.size()), 1.0f);
@@ -80,6 +80,8 @@ public:
                 discOf(frame.items[i], radiusOf(i), d);
                 list.push_back(d);
             }
+            if (list.empty())
+                host.note("lights[" + std::to_string(index) + "].shadow.disc: no casting node is a disc shape, so this light casts no shadow");
             if (list.size() > SL_DISC_MAX)
                 throw Error(at + ": " + std::to_string(list.size()) + " discs, more than the " + std::to_string(SL_DISC_MAX) + " one light tests");
         }

@@ -66,7 +66,7 @@ public:
 
     bool sharesBasePass(const Light&) const override { return false; }  // the light goes after the stencil
 
-    void prepare(TechniqueHost&, const FrameInfo& frame, std::span<const int> lights) override {
+    void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         receivers_.clear();
         for (int index : lights) {
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
@@ -85,6 +85,9 @@ public:
                 if (side < 0.0f) n = -n;
                 list.push_back({i, n, planeProjection(n, L)});
             }
+            if (list.empty())
+                host.note("lights[" + std::to_string(index) + "].shadow.planar: no planar receiver facing the light" +
+                          (o.receivers.empty() ? " (no receiving node's mesh lies in one plane)" : "") + ", so this light casts no shadow");
         }
     }
 

@@ -234,3 +234,21 @@ TEST_F(PlanarGLTest, ReceiversMustBeNamedPlanarNodes) {
     }
     EXPECT_NO_THROW(renderScene(planarScene(light, box, R"("receivers": " floor ")")));
 }
+
+// A light whose technique finds nothing to work with says so in one note
+// instead of silently casting no shadow: planar without a planar receiver,
+// disc without a disc.
+TEST_F(PlanarGLTest, NothingToShadowIsNoted) {
+    for (const char* technique : {"planar", "disc"}) {
+        SCOPED_TRACE(technique);
+        const Scene scene = parseScene(std::string(R"({"lights": [{"type": "directional", "shadow": {"technique": ")") + technique + R"("}}],
+                                        "nodes": [{"shape": {"type": "sphere"}}]})",
+                                       "nothing.json", ".");
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        const FrameStats stats = renderer.render(scene, {64, 36});
+        ASSERT_EQ(stats.notes.size(), 1u);
+        EXPECT_NE(stats.notes[0].find(std::string("lights[0].shadow.") + technique + ":"), std::string::npos) << stats.notes[0];
+        EXPECT_NE(stats.notes[0].find("casts no shadow"), std::string::npos) << stats.notes[0];
+    }
+}
