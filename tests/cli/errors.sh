@@ -103,6 +103,8 @@ if compgen -G "$work/f*.png" >/dev/null; then echo "FAIL frame-width: left $(cd 
 expect_error budget-from-set "--set lights[0].shadow.map.size=16384: lights[0].shadow.map.size: the shadow maps of 1 light(s) need 8.00 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set lights[0].shadow.map.cascades=8
 expect_error planar-receivers-from-set "--set lights[0].shadow.planar.receivers=nope: lights[0].shadow.planar.receivers: no node named 'nope'" render -o out.png --set lights[0].shadow.technique=planar --set lights[0].shadow.planar.receivers=nope
 expect_error planar-receivers-from-file "planar-nope.json: lights[0].shadow.planar.receivers: no node named 'nope'" render planar-nope.json -o out.png
+expect_error splits-beyond-far "--set lights[0].shadow.map.cascadeSplits=\"500\": lights[0].shadow.map.cascadeSplits: \"500\": the last split must lie before the camera's far plane (camera.far 100)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="500"'
+expect_error splits-inside-near "the first split must lie beyond the camera's near plane (camera.near 0.1)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="0.01"'
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2

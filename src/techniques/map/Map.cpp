@@ -18,9 +18,11 @@
 #include "techniques/map/MapVariants.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/Text.h>
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 #include <string>
 
 namespace shadowlab {
@@ -28,6 +30,27 @@ namespace shadowlab {
 namespace {
 
 using namespace shadowlab::map;
+
+std::string numberText(float v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+// Given cascade splits lie between the camera's near and far planes (a
+// slice outside the view is a map spent on nothing). The scene file check
+// (map::unsupported) sees the light alone; this one needs the camera.
+void checkSplitsInView(const MapOptions& o, const Light& light, const Camera& camera, int index) {
+    if (cascadeCount(light, o) <= 1) return;
+    std::string problem;
+    const std::vector<float> splits = parseSplits(o, problem);
+    if (splits.empty()) return;
+    const std::string at = "lights[" + std::to_string(index) + "].shadow.map.cascadeSplits: \"" + text::escapeControl(o.cascadeSplits) + "\": ";
+    if (splits.front() <= camera.nearPlane)
+        throw Error(at + "the first split must lie beyond the camera's near plane (camera.near " + numberText(camera.nearPlane) + ")");
+    if (splits.back() >= camera.farPlane)
+        throw Error(at + "the last split must lie before the camera's far plane (camera.far " + numberText(camera.farPlane) + ")");
+}
 
 class ShadowMap final : public Technique {
 public:
@@ -67,6 +90,7 @@ public:
             if (p.options.filter == MapFilter::Pcss && !(light.size > 0.0f))
                 host.note("lights[" + std::to_string(index) + "].shadow.map.filter \"pcss\": the light's size is 0, so its shadows stay hard (set lights[" +
                           std::to_string(index) + "].size: a radius, or a directional light's angular diameter in degrees)");
+            checkSplitsInView(p.options, light, frame.scene.camera, index);
             fitCameras(p, light, frame);
             if (auto old = lights_.find(index); old != lights_.end()) p.keepTargetsOf(old->second);
             attachTargets(p, res_.arrays[p.array]);
