@@ -83,7 +83,7 @@ public:
     GltfImporter(std::string file, const tinygltf::Model& gltf) : file_(std::move(file)), gltf_(gltf) {}
 
     ImportedModel run() {
-        for (const tinygltf::Material& m : gltf_.materials) out_.materials.push_back(material(m));
+        for (std::size_t i = 0; i < gltf_.materials.size(); ++i) out_.materials.push_back(material(gltf_.materials[i], i));
 
         // Roots: the default scene, else scene 0, else every node no one references.
         std::vector<int> roots;
@@ -373,17 +373,28 @@ private:
         return indices;
     }
 
-    Material material(const tinygltf::Material& src) {
+    // A material as the glTF 2.0 spec allows it, no value clamped: the scene
+    // JSON refuses the same values (MaterialFile.cpp).
+    Material material(const tinygltf::Material& src, std::size_t index) {
         Material m;
         m.name = src.name;
+        const std::string at = "materials[" + std::to_string(index) + "]";
         const auto& pbr = src.pbrMetallicRoughness;
+        for (std::size_t c = 0; c < pbr.baseColorFactor.size(); ++c)
+            if (!(pbr.baseColorFactor[c] >= 0.0 && pbr.baseColorFactor[c] <= 1.0))
+                fail(at + ".pbrMetallicRoughness.baseColorFactor[" + std::to_string(c) + "]: expected a number in 0..1, got " +
+                     std::to_string(pbr.baseColorFactor[c]));
         if (pbr.baseColorFactor.size() >= 3)
             m.baseColor = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
                                     static_cast<float>(pbr.baseColorFactor[2]));
-        if (pbr.baseColorFactor.size() >= 4) m.alpha = std::clamp(static_cast<float>(pbr.baseColorFactor[3]), 0.0f, 1.0f);
-        // glTF's alphaMode (OPAQUE when absent or unknown) and alphaCutoff (0.5 by default).
+        if (pbr.baseColorFactor.size() >= 4) m.alpha = static_cast<float>(pbr.baseColorFactor[3]);
+        // glTF's alphaMode ("OPAQUE" when absent) and alphaCutoff (0.5 by default, >= 0).
+        if (src.alphaMode != "OPAQUE" && src.alphaMode != "MASK" && src.alphaMode != "BLEND" && !src.alphaMode.empty())
+            fail(at + ".alphaMode: expected \"OPAQUE\", \"MASK\" or \"BLEND\", got \"" + src.alphaMode + "\"");
         m.alphaMode = src.alphaMode == "MASK" ? AlphaMode::Mask : src.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
-        if (std::isfinite(src.alphaCutoff)) m.alphaCutoff = std::clamp(static_cast<float>(src.alphaCutoff), 0.0f, 1.0f);
+        if (!(src.alphaCutoff >= 0.0 && src.alphaCutoff <= 1.0))
+            fail(at + ".alphaCutoff: expected a number in 0..1, got " + std::to_string(src.alphaCutoff));
+        m.alphaCutoff = static_cast<float>(src.alphaCutoff);
         const int tex = pbr.baseColorTexture.index;
         if (tex >= 0 && tex < static_cast<int>(gltf_.textures.size())) {
             const int source = gltf_.textures[tex].source;

@@ -487,6 +487,37 @@ TEST_F(MeshFileTest, GltfHierarchyTranslationMaterialAndComputedNormals) {
     EXPECT_TRUE(model.textures.empty());
 }
 
+// Material values outside glTF's ranges are refused, naming the file and
+// the value's path, as the scene JSON refuses them (they were clamped, or
+// an unknown alphaMode made the material opaque).
+TEST_F(MeshFileTest, GltfMaterialValuesOutOfRangeAreRefused) {
+    const struct {
+        const char* material;
+        const char* expected;
+    } cases[] = {
+        {R"({"alphaMode": "CUTOUT"})", "materials[0].alphaMode: expected \"OPAQUE\", \"MASK\" or \"BLEND\", got \"CUTOUT\""},
+        {R"({"alphaMode": "MASK", "alphaCutoff": 1.5})", "materials[0].alphaCutoff: expected a number in 0..1, got 1.5"},
+        {R"({"alphaMode": "MASK", "alphaCutoff": -0.25})", "materials[0].alphaCutoff: expected a number in 0..1, got -0.25"},
+        {R"({"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 2.0]}})",
+         "materials[0].pbrMetallicRoughness.baseColorFactor[3]: expected a number in 0..1, got 2"},
+        {R"({"pbrMetallicRoughness": {"baseColorFactor": [-0.5, 0.5, 0.5, 1.0]}})",
+         "materials[0].pbrMetallicRoughness.baseColorFactor[0]: expected a number in 0..1, got -0.5"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.material);
+        const std::string nodes = std::string(R"("nodes": [{"mesh": 0}], "materials": [)") + c.material + "]";
+        const fs::path p = write("bad-material.gltf", triangleGltf(dataUri(triangleBuffer().data), nodes, R"(, "material": 0)"));
+        try {
+            shadowlab::loadMeshFile(p);
+            ADD_FAILURE() << "accepted";
+        } catch (const shadowlab::Error& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("bad-material.gltf: "), std::string::npos) << what;
+            EXPECT_NE(what.find(c.expected), std::string::npos) << what;
+        }
+    }
+}
+
 TEST_F(MeshFileTest, GltfMatrixNodeIsDecomposedAndNodesWithoutSceneAreRoots) {
     // No "scenes": every node that is nobody's child is a root. Node 1 has a
     // matrix: translation (4,5,6), uniform scale 2 (column-major).
