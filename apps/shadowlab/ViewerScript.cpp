@@ -11,15 +11,28 @@
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 namespace shadowlab::viewer {
 
+// A script is a small text file: at most this many bytes (100,000 frames of
+// actions at ~10 bytes a line). A FIFO would block the viewer and /dev/zero
+// would grow without end, so only regular files are read.
+constexpr std::uintmax_t kMaxScriptBytes = 1u << 20;
+
 std::vector<Action> readScript(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) throw Error("--script " + path + ": no such file");
+    if (!std::filesystem::is_regular_file(status)) throw Error("--script " + path + ": not a regular file (expected a script file)");
+    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+    if (ec || bytes > kMaxScriptBytes)
+        throw Error("--script " + path + ": " + (ec ? std::string("cannot read its size") : std::to_string(bytes) + " bytes, more than the limit of 1 MiB"));
     std::ifstream in(path);
-    if (!in) throw Error(path + ": cannot open the script");
+    if (!in) throw Error("--script " + path + ": cannot open the script");
     std::vector<Action> out;
     std::string text;
     for (int line = 1; std::getline(in, text); ++line) {

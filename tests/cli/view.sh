@@ -60,6 +60,15 @@ wait $viewer || { echo "the viewer died on a broken scene file: $(cat err.txt)";
 printf 'jump 3\n' > bad.txt
 if "$tool" view --script bad.txt 2>err.txt; then echo "bad script accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "bad.txt:1: unknown action 'jump'" err.txt || { echo "bad script: $(cat err.txt)"; exit 1; }
+# Scripts are regular files of at most 1 MiB: a FIFO blocked the viewer, /dev/zero grew without end.
+mkfifo script.fifo
+for bad in script.fifo /dev/zero .; do
+  if timeout 20 "$tool" view --script "$bad" 2>err.txt; then echo "script $bad accepted"; exit 1; fi
+  [[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--script $bad: not a regular file" err.txt || { echo "script $bad: $(cat err.txt)"; exit 1; }
+done
+head -c 2000000 /dev/zero | tr '\0' '#' > big.txt
+if "$tool" view --script big.txt 2>err.txt; then echo "2 MB script accepted"; exit 1; fi
+grep -q -- "--script big.txt: 2000000 bytes, more than the limit of 1 MiB" err.txt || { echo "big script: $(cat err.txt)"; exit 1; }
 # Screenshots are PNG files, as render -o's: another extension is refused up front, nothing written.
 printf 'wait 1\nscreenshot shot.jpg\nquit\n' > jpg.txt
 if "$tool" view --script jpg.txt 2>err.txt; then echo "screenshot .jpg accepted"; exit 1; fi
