@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cerrno>
+#include <csignal>
 #include <unistd.h>
 
 namespace shadowlab::tool {
@@ -17,7 +19,30 @@ namespace shadowlab::tool {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+namespace {
+
+// OUT.partial-PID directories left by benches that were killed (their
+// process is gone) are removed; those of a bench still running stay.
+void removeStaleStaging(const fs::path& target) {
+    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    const std::string prefix = target.filename().string() + ".partial-";
+    std::error_code ec;
+    for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.rfind(prefix, 0) != 0) continue;
+        const std::string digits = name.substr(prefix.size());
+        if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        const pid_t pid = static_cast<pid_t>(std::stol(digits));
+        if (pid == getpid() || kill(pid, 0) == 0 || errno != ESRCH) continue;
+        std::error_code removeError;
+        fs::remove_all(it->path(), removeError);
+    }
+}
+
+} // namespace
+
 StagingDirectory::StagingDirectory(fs::path target) : target_(std::move(target)) {
+    removeStaleStaging(target_);
     staging_ = target_;
     staging_ += ".partial-" + std::to_string(getpid());
     std::error_code ec;

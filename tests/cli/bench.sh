@@ -174,4 +174,14 @@ size=$(stat -c %s report.png)
 [[ $size -gt 50000 ]] || fail "screenshot is only $size bytes (a blank page is ~10 kB)"
 if [[ -n "${SHADOWLAB_KEEP_SCREENSHOT:-}" ]]; then cp report.png "$SHADOWLAB_KEEP_SCREENSHOT"; fi
 passed=$((passed + 1))
+# A killed bench's OUT.partial-PID/ is removed by the next bench to OUT;
+# one of a bench still running (here: this shell's PID) is left alone.
+sh -c 'exit 0' & dead=$!
+wait $dead
+mkdir -p "stale.partial-$dead" "stale.partial-$$"
+"$tool" bench "$src/scenes/torus-floating.json" --frames 1 --warmup 0 --width 64 --height 36 -o stale >/dev/null 2>&1 || fail "bench -o stale failed"
+[[ ! -e "stale.partial-$dead" ]] || fail "the dead bench's stale.partial-$dead was left"
+[[ -d "stale.partial-$$" ]] || fail "a running bench's stale.partial-$$ was removed"
+[[ -s stale/results.json ]] || fail "bench -o stale wrote no results.json"
+passed=$((passed + 1))
 echo "$passed passed, 0 failed"
