@@ -138,3 +138,26 @@ TEST_F(ExactCasesGLTest, ADiscSeenEdgeOnFromItsPlaneShadowsNothing) {
         EXPECT_EQ(awayFromEdges(c.lights[0]), 0.0);
     }
 }
+
+// Two stabilised cascades keep a thin caster's shadow under a low sun: a
+// 3 cm slab on a 200 m ground and a plate 15 cm up, the sun 10° high, the
+// camera's far plane at 300 m. At most 0.05 % misclassified outside the
+// band (the issue's bar; measured 0.028 %, one map and unstabilised
+// cascades 0). The slices ended at the far plane, 100 m past the scene, and
+// the first one's texels were so wide that the slab's 17 cm shadow strip
+// nearly vanished (0.086 %); they end where the scene does now.
+TEST_F(ExactCasesGLTest, StabilisedCascadesKeepAThinCastersShadow) {
+    const char* const thin = R"({
+      "camera": { "position": [0, 1.6, 6], "target": [0, 0, 0], "fovY": 50, "far": 300 },
+      "lights": [ { "type": "directional", "direction": [-0.3, -0.1763, -0.95],
+                    "shadow": { "technique": "map", "map": { "cascades": 2 } } } ],
+      "nodes": [
+        { "name": "ground", "shape": { "type": "plane", "size": [200, 200] } },
+        { "name": "slab", "shape": { "type": "box", "size": [2, 0.03, 1] }, "translation": [-1.2, 0.015, 0] },
+        { "name": "plate", "shape": { "type": "box", "size": [1.5, 0.02, 1] }, "translation": [1.2, 0.16, 0.5] }
+      ]
+    })";
+    const Comparison c = compareScene(sceneOf(thin));
+    ASSERT_GT(c.lights[0].referenceShadowedPixels, 800u) << "the slab's and the plate's shadows must be in view";
+    EXPECT_LE(awayFromEdges(c.lights[0]), 0.0005);
+}

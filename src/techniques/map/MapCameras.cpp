@@ -12,13 +12,32 @@ namespace {
 
 // A directional light's cascades: the view's depth split into slices
 // (core/LightCamera: cascadeSplits, fitCascade), one camera each.
+// Where stabilised slices end: the camera's far plane, or nearer where the
+// whole scene ends: the distance from the eye to the farthest corner of the
+// scene's box (the same whichever way the camera turns), rounded up to the
+// next power of 2^(1/4), so that the slices stay put while the camera
+// moves and change by whole steps, rarely. Ending at a far plane far past
+// the scene (300 m over a 200 m ground) spread the first slice's texels so
+// thin that a 3 cm slab's shadow nearly vanished.
+float stableReach(const Camera& camera, const FitInput& in) {
+    Bounds scene;
+    for (const Bounds& b : in.itemBounds) scene.add(b);
+    if (scene.empty()) return camera.farPlane;
+    const glm::vec3 farthest = glm::max(glm::abs(scene.lo - camera.position), glm::abs(scene.hi - camera.position));
+    const float reach = glm::length(farthest);
+    if (!(reach > camera.nearPlane)) return camera.farPlane;
+    const float stepped = std::exp2(std::ceil(4.0f * std::log2(reach)) / 4.0f);
+    return std::clamp(stepped, camera.nearPlane * 2.0f, camera.farPlane);
+}
+
 void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in) {
     const Camera& camera = frame.scene.camera;
     const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
-    // Stabilised slices must not move with the camera: they end at its far
-    // plane; tight ones at the farthest receiver it sees.
+    // Stabilised slices must not move with the camera: they end at a reach
+    // that changes by steps (stableReach); tight ones at the farthest
+    // receiver it sees.
     const float near = camera.nearPlane;
-    const float far = p.options.stabilize ? camera.farPlane : viewReach(camera, in);
+    const float far = p.options.stabilize ? stableReach(camera, in) : viewReach(camera, in);
     std::string problem;  // checked when the scene was read (the registry's unsupported())
     const std::vector<float> given = parseSplits(p.options, problem);
     p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
