@@ -105,6 +105,10 @@ expect_error planar-receivers-from-set "--set lights[0].shadow.planar.receivers=
 expect_error planar-receivers-from-file "planar-nope.json: lights[0].shadow.planar.receivers: no node named 'nope'" render planar-nope.json -o out.png
 expect_error splits-beyond-far "--set lights[0].shadow.map.cascadeSplits=\"500\": lights[0].shadow.map.cascadeSplits: \"500\": the last split must lie before the camera's far plane (camera.far 100)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="500"'
 expect_error splits-inside-near "the first split must lie beyond the camera's near plane (camera.near 0.1)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="0.01"'
+# The map budget counts translucent casters' transmittance and mip chains, and names the light that holds the memory.
+expect_error budget-translucent "lights[0].shadow.map.size: the shadow maps of 1 light(s) need 3.00 GiB" render "$src/scenes/glass-panel.json" -o out.png --set 'materials.glass.alphaMode="blend"' --set lights[0].shadow.map.size=16384
+expect_error budget-mipmaps "lights[0].shadow.map.size: the shadow maps of 1 light(s) need 2.58 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.representation=evsm4 --set lights[0].shadow.map.mipmaps=true --set lights[0].shadow.map.size=8192
+expect_error budget-names-the-light "lights[1].shadow.map.size: the shadow maps of 2 light(s) need 2.00 GiB" render -o out.png --set 'lights=[{"type":"directional","direction":[0,-1,0.3],"shadow":{"technique":"map","map":{"size":512}}},{"type":"directional","direction":[0,-1,0.2],"shadow":{"technique":"map","map":{"size":16384,"cascades":2}}}]'
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2

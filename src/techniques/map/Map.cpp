@@ -60,7 +60,7 @@ public:
         res_.software = gl::isSoftwareRasterizer(host.glInfo().renderer);
         res_.samplers.create();
         // Lights with the same format and size share one texture array.
-        std::map<ArrayKey, int> layersWanted;
+        std::map<ArrayKey, int> layersWanted, firstLightOf;
         for (int index : lights) {
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
             const MapOptions o = effectiveHere(host, frame, light);
@@ -69,12 +69,14 @@ public:
                 throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
                             " texels is past this GPU's limit of " + std::to_string(limit));
             const bool cube = isCube(light);
-            layersWanted[ArrayKey::of(o, cube)] += cube ? 1 : cascadeCount(light, o);
+            const ArrayKey key = ArrayKey::of(o, cube);
+            layersWanted[key] += cube ? 1 : cascadeCount(light, o);
+            firstLightOf.emplace(key, index);
         }
-        res_.arrays.allocate(layersWanted, host.glInfo(), lights[0], lights.size());
         // Translucent casters (alphaMode blend) colour the light: each
         // array gets its transmittance layers (made once, kept with the array).
         res_.translucent = hasTranslucentCasters(frame);
+        res_.arrays.allocate(layersWanted, firstLightOf, host.glInfo(), lights.size(), res_.translucent);
         if (res_.translucent) res_.arrays.addTransmittance();
         std::map<std::size_t, int> nextLayer;
         std::map<int, MapLight> perLight;

@@ -40,18 +40,45 @@ GLenum momentFormatOf(const ArrayKey& k) {
 
 namespace {
 
+// What one array of `layers` maps of `key` takes, every texture makeArray
+// and addTransmittance give it: depth, packed colour and moments (a mip
+// chain adds a third), the moment blur's scratch layer, and with
+// translucent casters the transmittance and its depth (8 bytes a texel).
+double arrayBytes(const ArrayKey& key, int layers, bool translucent) {
+    const double texels = static_cast<double>(key.size) * static_cast<double>(key.size);
+    const double maps = static_cast<double>(layers) * (key.cube ? 6.0 : 1.0);
+    const double mips = key.mipmaps ? 4.0 / 3.0 : 1.0;
+    const double colourBytes = key.format == MapFormat::Rgba8 ? 4.0 : key.format == MapFormat::R8 ? 1.0 : 0.0;
+    const double momentBytes = momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
+    const bool colour = colourBytes > 0.0 || momentBytes > 0.0;
+    const double depthBytes = key.format == MapFormat::Depth16 ? 2.0 : 4.0;  // depth24 is stored in 4 bytes
+    double bytes = sharedDepthBuffer(key) ? 4.0 * texels : depthBytes * texels * maps * (colour ? 1.0 : mips);
+    bytes += (colourBytes + momentBytes) * texels * maps * mips;
+    if (momentBytes > 0.0) bytes += momentBytes * texels;  // the blur's scratch
+    if (translucent) bytes += 8.0 * texels * maps;
+    return bytes;
+}
+
 // Stated limits, before anything is allocated: layers per array, and all
 // maps together within kMapBudgetBytes (a 16384^2 depth32f map is 1 GiB;
 // more than that is almost always a typo, and on llvmpipe it would take
-// system memory and seconds per frame).
-void checkLimits(const std::map<ArrayKey, int>& layersWanted, const GlInfo& info, int firstLight, std::size_t lightCount) {
+// system memory and seconds per frame). The light named is the first of
+// the array that takes the most.
+void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<ArrayKey, int>& firstLightOf, const GlInfo& info,
+                 std::size_t lightCount, bool translucent) {
     constexpr double kMapBudgetBytes = 1024.0 * 1024.0 * 1024.0;
-    double bytes = 0.0;
+    double bytes = 0.0, largest = -1.0;
+    int largestLight = 0;
     for (const auto& wanted : layersWanted) {
         const ArrayKey& key = wanted.first;
         const int perLight = key.cube ? 6 : 1;
-        bytes += texelBytes(key) * static_cast<double>(key.size) * static_cast<double>(key.size) * wanted.second * perLight +
-                 (sharedDepthBuffer(key) ? 4.0 * static_cast<double>(key.size) * static_cast<double>(key.size) : 0.0);
+        const int firstLight = firstLightOf.at(key);
+        const double these = arrayBytes(key, wanted.second, translucent);
+        bytes += these;
+        if (these > largest) {
+            largest = these;
+            largestLight = firstLight;
+        }
         if (wanted.second * perLight > info.maxArrayLayers)
             throw Error("lights[" + std::to_string(firstLight) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
                         " map layers in one array (" + (perLight == 6 ? std::to_string(wanted.second) + " point light(s), six each" : "lights and cascades") +
@@ -61,7 +88,7 @@ void checkLimits(const std::map<ArrayKey, int>& layersWanted, const GlInfo& info
         char text[256];
         std::snprintf(text, sizeof text, "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB (lower lights[i].shadow.map.size)",
                       lightCount, bytes / kMapBudgetBytes);
-        throw Error("lights[" + std::to_string(firstLight) + "].shadow.map.size: " + text);
+        throw Error("lights[" + std::to_string(largestLight) + "].shadow.map.size: " + text);
     }
 }
 
@@ -97,8 +124,9 @@ MapArray makeArray(const ArrayKey& key, int layers, std::uint64_t generation) {
 
 } // namespace
 
-void MapArrays::allocate(const std::map<ArrayKey, int>& layersWanted, const GlInfo& info, int firstLight, std::size_t lightCount) {
-    checkLimits(layersWanted, info, firstLight, lightCount);
+void MapArrays::allocate(const std::map<ArrayKey, int>& layersWanted, const std::map<ArrayKey, int>& firstLightOf, const GlInfo& info,
+                         std::size_t lightCount, bool translucent) {
+    checkLimits(layersWanted, firstLightOf, info, lightCount, translucent);
     std::vector<MapArray> arrays;
     for (const auto& wanted : layersWanted) {
         const ArrayKey& key = wanted.first;  // not a structured binding: clang 14 cannot capture one

@@ -75,7 +75,10 @@ public:
     /// Makes the arrays `layersWanted` asks for (layers per key), keeping
     /// those that already fit; throws Error naming lights[firstLight] when
     /// they exceed the GPU's layers or the 1 GiB budget.
-    void allocate(const std::map<ArrayKey, int>& layersWanted, const GlInfo& info, int firstLight, std::size_t lightCount);
+    /// `firstLightOf`: the first light of each array, named in errors;
+    /// `translucent`: the arrays will get transmittance layers (addTransmittance), counted in the budget.
+    void allocate(const std::map<ArrayKey, int>& layersWanted, const std::map<ArrayKey, int>& firstLightOf, const GlInfo& info,
+                  std::size_t lightCount, bool translucent);
     /// Gives every array its translucent casters' transmittance layers (made once, kept with the array).
     void addTransmittance();
     /// The array of `key` (allocate() made one).
