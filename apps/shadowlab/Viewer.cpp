@@ -223,7 +223,8 @@ void ViewerSession::endFrame(int width, int height, bool screenshotKey) {
         }
         quit = true;
     }
-    if (!args.script.empty() && nextAction >= script.size() && waitFrames == 0) quit = true;
+    // The script ends once what it started is done: a comparison it asked for is traced and written first.
+    if (!args.script.empty() && nextAction >= script.size() && waitFrames == 0 && !referenceAsked && !tracing) quit = true;
 }
 
 void ViewerSession::timeFrame() {

@@ -63,7 +63,9 @@ std::vector<Action> readScript(const std::string& path) {
             if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
         } else if (a.verb == "compare") {
-            // An optional directory for the error images.
+            // An optional directory for the error images: it must exist before anything is traced.
+            if (!a.argument.empty() && !std::filesystem::is_directory(a.argument))
+                throw Error(where + "compare " + a.argument + ": not a directory (the error images go there; create it first)");
         } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "show-light" &&
                    a.verb != "show-density") {
             throw Error(where + "unknown action '" + a.verb +

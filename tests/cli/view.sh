@@ -69,6 +69,15 @@ done
 head -c 2000000 /dev/zero | tr '\0' '#' > big.txt
 if "$tool" view --script big.txt 2>err.txt; then echo "2 MB script accepted"; exit 1; fi
 grep -q -- "--script big.txt: 2000000 bytes, more than the limit of 1 MiB" err.txt || { echo "big script: $(cat err.txt)"; exit 1; }
+# A script ending in "compare DIR" finishes the comparison it started (it quit
+# with nothing traced); DIR must exist before anything is traced.
+mkdir -p endcmp
+printf 'wait 1\ncompare endcmp\n' > endcompare.txt
+"$tool" view "$src/scenes/two-boxes-sun.json" --width 320 --height 180 --script endcompare.txt >out5.txt 2>err.txt || { echo "script ending in compare: $(cat err.txt)"; exit 1; }
+[[ -s endcmp/error-0.png ]] && grep -q "compare: light 0" out5.txt || { echo "script ending in compare traced nothing: $(cat out5.txt err.txt)"; exit 1; }
+printf 'compare nodir\n' > nodir.txt
+if "$tool" view --script nodir.txt 2>err.txt; then echo "compare into a missing directory accepted"; exit 1; fi
+grep -q "nodir.txt:1: compare nodir: not a directory" err.txt || { echo "compare nodir: $(cat err.txt)"; exit 1; }
 # Screenshots are PNG files, as render -o's: another extension is refused up front, nothing written.
 printf 'wait 1\nscreenshot shot.jpg\nquit\n' > jpg.txt
 if "$tool" view --script jpg.txt 2>err.txt; then echo "screenshot .jpg accepted"; exit 1; fi
