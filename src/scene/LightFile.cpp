@@ -79,7 +79,20 @@ void readShadow(const Reader& r, ShadowSettings& shadow, const Light& light) {
     // Whether the technique can shadow this light may depend on its options
     // (a preset), so this comes after the blocks.
     const std::string reason = unsupportedReason(shadow.technique, light);
-    if (!reason.empty()) (r.has("technique") ? r.child("technique") : r).fail(reason);
+    if (reason.empty()) return;
+    // The option the reason names ("map: cascadeSplits ...") is at fault
+    // when the scene sets it, not the technique's name.
+    const TechniqueInfo* info = findTechnique(shadow.technique);
+    const std::string prefix = shadow.technique + ": ";
+    if (info && info->options && reason.rfind(prefix, 0) == 0 && r.has(shadow.technique)) {
+        const Reader block = r.child(shadow.technique);
+        const std::string named = reason.substr(prefix.size());
+        for (const OptionField& f : info->options->fields) {
+            const bool names = named.rfind(f.key, 0) == 0 && (named.size() == f.key.size() || named[f.key.size()] == ' ' || named[f.key.size()] == ':');
+            if (names && block.has(f.key)) block.child(f.key).fail(reason);
+        }
+    }
+    (r.has("technique") ? r.child("technique") : r).fail(reason);
 }
 
 // `lights[i].path`: how a spot or point light moves (LightPath in Scene.h).

@@ -71,8 +71,8 @@ expect_error map-size-range "--set lights[0].shadow.map.size=16385: lights[0].sh
 # The names come from the filters' table (src/techniques/map/MapFilters.cpp): the list's start, and what was given.
 expect_error map-bad-filter "--set lights[0].shadow.map.filter=pcf: lights[0].shadow.map.filter: expected one of \"none\", \"hardware\", \"grid\"" render -o out.png --set lights[0].shadow.map.filter=pcf
 expect_error map-bad-filter-names-it "\", got \"pcf\"" render -o out.png --set lights[0].shadow.map.filter=pcf
-expect_error map-point-dither "lights[0].shadow.technique: map: filter \"dither4\" is for 2D maps" render "$src/scenes/room-point.json" -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.filter=dither4
-expect_error map-spot-pcf20 "lights[0].shadow.technique: map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps" render "$src/scenes/spot-objects.json" -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.filter=pcf20
+expect_error map-point-dither "--set lights[0].shadow.map.filter=dither4: lights[0].shadow.map.filter: map: filter \"dither4\" is for 2D maps" render "$src/scenes/room-point.json" -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.filter=dither4
+expect_error map-spot-pcf20 "--set lights[0].shadow.map.filter=pcf20: lights[0].shadow.map.filter: map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps" render "$src/scenes/spot-objects.json" -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.filter=pcf20
 expect_error planar-unknown-receiver "lights[0].shadow.planar.receivers: no node named 'nowhere'" render "$src/scenes/two-boxes-sun.json" -o out.png --set lights[0].shadow.technique=planar --set lights[0].shadow.planar.receivers=nowhere
 expect_error planar-receiver-type "--set lights[0].shadow.planar.receivers=5: lights[0].shadow.planar.receivers: expected a string" render "$src/scenes/two-boxes-sun.json" -o out.png --set lights[0].shadow.planar.receivers=5
 expect_error width-zero "--width" render -o out.png --width 0
@@ -109,6 +109,9 @@ expect_error splits-inside-near "the first split must lie beyond the camera's ne
 expect_error budget-translucent "lights[0].shadow.map.size: the shadow maps of 1 light(s) need 3.00 GiB" render "$src/scenes/glass-panel.json" -o out.png --set 'materials.glass.alphaMode="blend"' --set lights[0].shadow.map.size=16384
 expect_error budget-mipmaps "lights[0].shadow.map.size: the shadow maps of 1 light(s) need 2.58 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.representation=evsm4 --set lights[0].shadow.map.mipmaps=true --set lights[0].shadow.map.size=8192
 expect_error budget-names-the-light "lights[1].shadow.map.size: the shadow maps of 2 light(s) need 2.00 GiB" render -o out.png --set 'lights=[{"type":"directional","direction":[0,-1,0.3],"shadow":{"technique":"map","map":{"size":512}}},{"type":"directional","direction":[0,-1,0.2],"shadow":{"technique":"map","map":{"size":16384,"cascades":2}}}]'
+# A combination check names the option at fault and the --set that set it, not the technique.
+expect_error splits-order-blames-splits "--set lights[0].shadow.map.cascadeSplits=\"5 3\": lights[0].shadow.map.cascadeSplits: map: cascadeSplits \"5 3\": expected increasing distances > 0" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=3 --set 'lights[0].shadow.map.cascadeSplits="5 3"'
+expect_error moments-filter-blames-filter "--set lights[0].shadow.map.filter=pcss: lights[0].shadow.map.filter: map: filter \"pcss\": a moment map" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.representation=vsm --set lights[0].shadow.map.filter=pcss
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2

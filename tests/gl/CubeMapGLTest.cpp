@@ -237,7 +237,7 @@ TEST_F(CubeMapGLTest, FiltersForTheOtherKindOfMapAreNamedErrors) {
         load("point", R"("filter": "dither4")");
         FAIL() << "dither4 on a cube";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("lights[0].shadow.technique"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("lights[0].shadow.map.filter"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("dither4"), std::string::npos) << e.what();
     }
     EXPECT_THROW(load("point", R"("mipmaps": true)"), Error);

@@ -100,18 +100,21 @@ std::string unsupported(const Light& light) {
     if (!isCube(light) && !filter.for2D && o.preset == MapPreset::Default)
         return "map: filter \"" + std::string(filter.name) + "\" is for point lights' cube maps";
     if (o.representation != MapRepresentation::Depth) {
-        if (isPacked(o.format)) return std::string("map: moment maps have their own format (momentFormat); formats \"rgba8\" and \"r8\" pack depth only");
+        if (isPacked(o.format))
+            return std::string("map: format \"") + (o.format == MapFormat::Rgba8 ? "rgba8" : "r8") +
+                   "\": moment maps have their own format (momentFormat); formats \"rgba8\" and \"r8\" pack depth only";
         if (o.filter != MapFilter::Hardware)
-            return std::string("map: a moment map is filtered by its blur and bilinear lookups; filter must be \"hardware\" (the default)");
-        if (o.preset != MapPreset::Default) return std::string("map: moment maps do not combine with a preset; use preset \"default\"");
+            return "map: filter \"" + std::string(filter.name) +
+                   "\": a moment map is filtered by its blur and bilinear lookups; filter must be \"hardware\" (the default)";
+        if (o.preset != MapPreset::Default) return std::string("map: preset: moment maps do not combine with a preset; use preset \"default\"");
     }
     if (o.cascades > 1) {
         if (light.type != LightType::Directional)
             return std::string("map: cascades are for directional lights; a spot or point light takes one map (cascades 1)");
         if (o.preset != MapPreset::Default)
-            return std::string("map: cascades do not combine with a preset (each preset is one map); use preset \"default\"");
+            return std::string("map: preset: cascades do not combine with a preset (each preset is one map); use preset \"default\"");
         if (o.fit == MapFit::Scene)
-            return std::string("map: cascades fit each slice of the view; fit \"scene\" is one map around the whole scene");
+            return std::string("map: fit \"scene\": cascades fit each slice of the view; fit \"scene\" is one map around the whole scene");
         std::string problem;
         parseSplits(o, problem);
         if (!problem.empty()) return "map: cascadeSplits \"" + text::escapeControl(o.cascadeSplits) + "\": " + problem;
