@@ -513,7 +513,7 @@ std::string commandList(CLI::App& app) {
 int main(int argc, char** argv) {
     CLI::App app{"shadowlab: real-time shadows on OpenGL 4.5, measured against exact ray-traced shadows"};
     app.require_subcommand(1);
-    app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + text::escapeControl(e.what()) + "\n"; });
+    app.failure_message([](const CLI::App*, const CLI::Error& e) { return "shadowlab: error: " + text::escapeControl(text::clipMiddle(e.what())) + "\n"; });
 
     RenderArgs renderArgs;
     CLI::App* render = addRender(app, renderArgs);
@@ -572,7 +572,7 @@ int main(int argc, char** argv) {
         if (*render) message = withSource(message, renderArgs.scene, renderArgs.overrides);
         if (*compare) message = withSource(message, compareArgs.scene, compareArgs.overrides);
         // Escaped once more here: whatever a message quotes, it stays one line.
-        std::cerr << "shadowlab: error: " << text::escapeControl(message) << "\n";
+        std::cerr << "shadowlab: error: " << text::escapeControl(text::clipMiddle(message)) << "\n";
         return 1;
     }
     return 1;

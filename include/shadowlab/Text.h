@@ -22,6 +22,12 @@ constexpr std::size_t kMaxJsonDepth = 200;
 /// text, backslashes included, is unchanged, so escaping twice changes nothing.
 SHADOWLAB_API std::string escapeControl(std::string_view s);
 
+/// `s` when it is at most `limit` bytes; else its first and last parts
+/// around `... (N bytes cut) ...`, cut at UTF-8 character boundaries, so a
+/// message that quotes a huge value stays short and keeps its end (where
+/// the reason is).
+SHADOWLAB_API std::string clipMiddle(std::string_view s, std::size_t limit = 600);
+
 /// Byte offset of the first byte that is not part of valid UTF-8 (overlong
 /// forms, surrogates and code points past U+10FFFF are invalid), or npos.
 SHADOWLAB_API std::size_t invalidUtf8At(std::string_view s);

@@ -105,4 +105,13 @@ std::vector<std::string> splitNames(const std::string& list) {
     return out;
 }
 
+std::string clipMiddle(std::string_view s, std::size_t limit) {
+    if (s.size() <= limit) return std::string(s);
+    const auto continuation = [&](std::size_t i) { return i < s.size() && (static_cast<unsigned char>(s[i]) & 0xC0) == 0x80; };
+    std::size_t head = limit / 2, tail = s.size() - limit / 3;
+    while (head > 0 && continuation(head)) --head;
+    while (tail < s.size() && continuation(tail)) ++tail;
+    return std::string(s.substr(0, head)) + "... (" + std::to_string(tail - head) + " bytes cut) ..." + std::string(s.substr(tail));
+}
+
 } // namespace shadowlab::text

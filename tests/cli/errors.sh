@@ -112,6 +112,11 @@ expect_error budget-names-the-light "lights[1].shadow.map.size: the shadow maps 
 # A combination check names the option at fault and the --set that set it, not the technique.
 expect_error splits-order-blames-splits "--set lights[0].shadow.map.cascadeSplits=\"5 3\": lights[0].shadow.map.cascadeSplits: map: cascadeSplits \"5 3\": expected increasing distances > 0" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=3 --set 'lights[0].shadow.map.cascadeSplits="5 3"'
 expect_error moments-filter-blames-filter "--set lights[0].shadow.map.filter=pcss: lights[0].shadow.map.filter: map: filter \"pcss\": a moment map" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.representation=vsm --set lights[0].shadow.map.filter=pcss
+# A huge value is not echoed whole: the message is cut in the middle and keeps its reason.
+huge=$(head -c 110000 /dev/zero | tr '\0' 'x')
+expect_error huge-value-cut "bytes cut) ...xxxx" render -o out.png --set "lights[0].intensity=$huge"
+msg=$(cd "$work" && "$tool" render -o out.png --set "lights[0].intensity=$huge" 2>&1 >/dev/null)
+if [[ ${#msg} -gt 800 || "$msg" != *"lights[0].intensity: expected a number, got a string" ]]; then echo "FAIL huge-value-cut: ${#msg} bytes"; failures=$((failures + 1)); fi
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2

@@ -201,3 +201,19 @@ TEST(Text, JsonDepthIgnoresBracketsInStrings) {
 }
 
 } // namespace
+
+// A message quoting a huge value is cut in the middle: at most about
+// `limit` bytes, its start and its end (the reason) kept, never inside a
+// UTF-8 character. Short ones are unchanged.
+TEST(HostileInput, LongMessagesAreCutInTheMiddle) {
+    EXPECT_EQ(shadowlab::text::clipMiddle("short"), "short");
+    const std::string value(110000, 'x');
+    const std::string cut = shadowlab::text::clipMiddle("--set a=" + value + ": a: expected a number, got a string");
+    EXPECT_LT(cut.size(), 700u);
+    EXPECT_EQ(cut.rfind("--set a=xxx", 0), 0u);
+    EXPECT_NE(cut.find(" bytes cut) ..."), std::string::npos);
+    EXPECT_EQ(cut.substr(cut.size() - 36), ": a: expected a number, got a string");
+    std::string accents;
+    for (int i = 0; i < 1000; ++i) accents += "\xc3\xa9";  // é, two bytes each
+    EXPECT_EQ(shadowlab::text::invalidUtf8At(shadowlab::text::clipMiddle(accents, 101)), std::string::npos);
+}
