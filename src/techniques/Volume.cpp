@@ -80,13 +80,21 @@ public:
             const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
             std::vector<std::uint8_t>& casts = casts_[index] = castersThatMatter(towards, lightView, in);
             for (std::size_t i = 0; i < casts.size(); ++i) any[i] = any[i] | casts[i];
+            // Shadow volumes follow geometry: an alpha-tested caster's holes
+            // would be shadowed whole. Refused rather than silently wrong.
+            for (std::size_t i = 0; i < casts.size(); ++i) {
+                const DrawItem& item = frame.items[i];
+                if (!casts[i] || item.material < 0) continue;
+                const Material& material = frame.scene.materials[static_cast<std::size_t>(item.material)];
+                if (material.alphaTested())
+                    throw Error("lights[" + std::to_string(index) + "].shadow.technique: volume: material '" + material.name +
+                                "' is alpha-tested (alphaMode mask or blend) and casts into this light; shadow volumes follow geometry and would "
+                                "shadow its holes whole: use technique map for this light, or make the material opaque");
+            }
         }
         for (std::size_t i = 0; i < frame.items.size(); ++i) {
             const DrawItem& item = frame.items[i];
             if (!any[i]) continue;
-            if (item.material >= 0 && frame.scene.materials[static_cast<std::size_t>(item.material)].alphaTested())
-                host.note("volume: material '" + frame.scene.materials[static_cast<std::size_t>(item.material)].name +
-                          "' is alpha-tested; shadow volumes follow geometry, so its whole surface casts (its holes need technique map)");
             const std::size_t edges = open_[static_cast<std::size_t>(item.mesh)].edges;
             if (edges == 0) continue;
             const Mesh& mesh = frame.scene.meshes[static_cast<std::size_t>(item.mesh)];
