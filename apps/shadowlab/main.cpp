@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -99,20 +100,34 @@ constexpr double kBytesPerPixelEstimate = 64.0;
 // Share of physical memory a frame may take.
 constexpr double kMemoryBudgetShare = 0.5;
 
-// Refuses a frame whose estimated memory exceeds the budget, before any GL
-// object is created (a 16384x16384 frame otherwise runs out of memory inside
-// the driver after a minute). Physical memory from sysconf.
+// Refuses a frame (or the viewer's window) whose estimated memory exceeds
+// the budget, before any GL object is created (a 16384x16384 frame otherwise
+// runs out of memory inside the driver after a minute). Physical memory
+// from sysconf; SHADOWLAB_MEMORY_LIMIT_BYTES, when set, is the budget
+// instead (the tests check this path with a small one).
 void checkMemory(int width, int height) {
-    const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES)), pageSize = static_cast<double>(sysconf(_SC_PAGE_SIZE));
-    if (pages <= 0 || pageSize <= 0) return; // unknown: the GPU limit check still applies
-    const double budget = kMemoryBudgetShare * pages * pageSize;
+    double budget = 0.0;
+    std::string what = "half of this machine's memory";
+    if (const char* limit = std::getenv("SHADOWLAB_MEMORY_LIMIT_BYTES"); limit && *limit) {
+        char* end = nullptr;
+        budget = std::strtod(limit, &end);
+        if (*end != '\0' || !(budget > 0.0)) throw Error(std::string("SHADOWLAB_MEMORY_LIMIT_BYTES=") + limit + ": expected a number of bytes > 0");
+        what = "SHADOWLAB_MEMORY_LIMIT_BYTES";
+    } else {
+        const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES)), pageSize = static_cast<double>(sysconf(_SC_PAGE_SIZE));
+        if (pages <= 0 || pageSize <= 0) return; // unknown: the GPU limit check still applies
+        budget = kMemoryBudgetShare * pages * pageSize;
+    }
     const double needed = kBytesPerPixelEstimate * static_cast<double>(width) * static_cast<double>(height);
     if (needed <= budget) return;
+    // In GiB, or MiB under one.
+    const bool gib = budget >= 1073741824.0;
+    const double unit = gib ? 1073741824.0 : 1048576.0;
     char text[256];
     std::snprintf(text, sizeof text,
-                  "--width %d --height %d: the frame needs about %.1f GiB (estimated %.0f bytes per pixel), more than the budget of "
-                  "%.1f GiB (half of this machine's memory)",
-                  width, height, needed / 1073741824.0, kBytesPerPixelEstimate, budget / 1073741824.0);
+                  "--width %d --height %d: the frame needs about %.1f %s (estimated %.0f bytes per pixel), more than the budget of "
+                  "%.1f %s (%s)",
+                  width, height, needed / unit, gib ? "GiB" : "MiB", kBytesPerPixelEstimate, budget / unit, gib ? "GiB" : "MiB", what.c_str());
     throw Error(text);
 }
 
@@ -563,6 +578,7 @@ int main(int argc, char** argv) {
         if (*view) {
             if (!viewArgs.screenshot.empty() && viewArgs.frames == 0) throw Error("--screenshot: needs --frames N (the frame to take)");
             if (!viewArgs.screenshot.empty()) tool::checkOutput(viewArgs.screenshot, "--screenshot");
+            checkMemory(viewArgs.width, viewArgs.height);  // the window's targets, as render's
             return runView(viewArgs);
         }
 #endif

@@ -117,6 +117,12 @@ huge=$(head -c 110000 /dev/zero | tr '\0' 'x')
 expect_error huge-value-cut "bytes cut) ...xxxx" render -o out.png --set "lights[0].intensity=$huge"
 msg=$(cd "$work" && "$tool" render -o out.png --set "lights[0].intensity=$huge" 2>&1 >/dev/null)
 if [[ ${#msg} -gt 800 || "$msg" != *"lights[0].intensity: expected a number, got a string" ]]; then echo "FAIL huge-value-cut: ${#msg} bytes"; failures=$((failures + 1)); fi
+# The frame-memory guard with a small injected budget (no multi-GB allocation): render, and the viewer's window before it opens.
+TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=1000000 expect_error memory-injected-render "--width 640 --height 360: the frame needs about 14.1 MiB (estimated 64 bytes per pixel), more than the budget of 1.0 MiB (SHADOWLAB_MEMORY_LIMIT_BYTES)" render -o out.png --width 640 --height 360
+if "$tool" view --help >/dev/null 2>&1; then  # built with the viewer
+  TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=1000000 expect_error memory-injected-view "--width 1024 --height 768: the frame needs about 48.0 MiB" view --width 1024 --height 768
+fi
+TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=lots expect_error memory-limit-bad "SHADOWLAB_MEMORY_LIMIT_BYTES=lots: expected a number of bytes > 0" render -o out.png
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
