@@ -168,6 +168,12 @@ int runRender(const RenderArgs& args) {
     // Every name is checked before anything is rendered.
     std::vector<fs::path> outputs;
     for (int k = 0; k < args.frames; ++k) outputs.push_back(tool::checkOutput(pattern.name(k), "-o"));
+    // --debug-images DIR: a directory, or a name free for one, checked before anything is rendered.
+    if (!args.debugImages.empty()) {
+        std::error_code ec;
+        if (fs::exists(args.debugImages, ec) && !fs::is_directory(args.debugImages, ec))
+            throw Error("--debug-images " + args.debugImages + ": exists and is not a directory");
+    }
     // Frame k at --time + k / --fps: the times are checked before the first frame too.
     std::vector<double> times;
     for (int k = 0; k < args.frames; ++k) {
@@ -211,7 +217,9 @@ int runRender(const RenderArgs& args) {
         // --debug-images DIR: <image>.png, or <frame stem>-<image>.png for a sequence.
         if (!args.debugImages.empty()) {
             const fs::path dir(args.debugImages);
-            fs::create_directories(dir);
+            std::error_code ec;
+            fs::create_directories(dir, ec);
+            if (ec) throw Error("--debug-images " + args.debugImages + ": cannot create the directory (" + ec.message() + ")");
             for (const DebugImage& d : debug)
                 pending.write(dir / ((args.frames > 1 ? output.stem().string() + "-" : std::string()) + d.name + ".png"), d.image);
         }

@@ -123,6 +123,10 @@ if "$tool" view --help >/dev/null 2>&1; then  # built with the viewer
   TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=1000000 expect_error memory-injected-view "--width 1024 --height 768: the frame needs about 48.0 MiB" view --width 1024 --height 768
 fi
 TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=lots expect_error memory-limit-bad "SHADOWLAB_MEMORY_LIMIT_BYTES=lots: expected a number of bytes > 0" render -o out.png
+# --debug-images names itself when its directory cannot be (was a raw "filesystem error"), and nothing is written.
+touch "$work/plainfile"
+expect_error debug-images-is-a-file "--debug-images plainfile: exists and is not a directory" render -o out.png --debug-images plainfile
+expect_error debug-images-under-a-file "--debug-images plainfile/sub: cannot create the directory (Not a directory)" render -o out.png --debug-images plainfile/sub
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
