@@ -127,6 +127,7 @@ TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=lots expect_error memory-limit-bad "SHADOW
 touch "$work/plainfile"
 expect_error debug-images-is-a-file "--debug-images plainfile: exists and is not a directory" render -o out.png --debug-images plainfile
 expect_error debug-images-under-a-file "--debug-images plainfile/sub: cannot create the directory (Not a directory)" render -o out.png --debug-images plainfile/sub
+expect_error number-past-float "--set lights[0].intensity=1e300: lights[0].intensity: expected a finite number of magnitude at most 3e38 (a float's range), got 1e+300" render -o out.png --set 'lights[0].intensity=1e300'
 expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
