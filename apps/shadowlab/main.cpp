@@ -35,7 +35,6 @@
 #include <iostream>
 #include <map>
 #include <set>
-#include <sstream>
 
 namespace fs = std::filesystem;
 using namespace shadowlab;
@@ -65,11 +64,7 @@ struct RenderArgs {
 };
 
 // --time and --fps: finite (CLI11 reads "nan" and "inf" as numbers).
-std::string numberText(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
+using text::numberText;
 void checkTime(double seconds, const std::string& flag) {
     if (!std::isfinite(seconds)) throw Error(flag + " " + numberText(seconds) + ": expected a finite number of seconds");
 }

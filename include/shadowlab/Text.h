@@ -22,6 +22,10 @@ constexpr std::size_t kMaxJsonDepth = 200;
 /// text, backslashes included, is unchanged, so escaping twice changes nothing.
 SHADOWLAB_API std::string escapeControl(std::string_view s);
 
+/// `v` as messages and docs write it: the shortest of six significant
+/// digits (`2048`, `0.5`, `1e+300`), as std::ostream prints it.
+SHADOWLAB_API std::string numberText(double v);
+
 /// `s` when it is at most `limit` bytes; else its first and last parts
 /// around `... (N bytes cut) ...`, cut at UTF-8 character boundaries, so a
 /// message that quotes a huge value stays short and keeps its end (where

@@ -1,16 +1,11 @@
 #include <shadowlab/Options.h>
+#include <shadowlab/Text.h>
 
 #include <cmath>
-#include <sstream>
 
 namespace shadowlab {
 
 namespace {
-std::string number(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
 const char* kindName(OptionKind kind) {
     switch (kind) {
     case OptionKind::Number: return "number";
@@ -46,7 +41,7 @@ std::string OptionTable::valueText(const OptionField& field, const std::any& opt
         return i < field.choices.size() ? "\"" + field.choices[i] + "\"" : "?";
     }
     case OptionKind::Integer: return std::to_string(static_cast<long long>(std::llround(v)));
-    case OptionKind::Number: return number(v);
+    case OptionKind::Number: return text::numberText(v);
     case OptionKind::Text: break;
     }
     return "?";
@@ -61,7 +56,7 @@ std::string OptionTable::rangeText(const OptionField& field) {
         return out;
     }
     case OptionKind::Integer:
-    case OptionKind::Number: return number(field.minimum) + ".." + number(field.maximum);
+    case OptionKind::Number: return text::numberText(field.minimum) + ".." + text::numberText(field.maximum);
     case OptionKind::Text: return field.choices.empty() ? std::string("text") : field.choices[0];
     }
     return "?";

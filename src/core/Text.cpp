@@ -114,4 +114,10 @@ std::string clipMiddle(std::string_view s, std::size_t limit) {
     return std::string(s.substr(0, head)) + "... (" + std::to_string(tail - head) + " bytes cut) ..." + std::string(s.substr(tail));
 }
 
+std::string numberText(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
 } // namespace shadowlab::text

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 namespace shadowlab::scenefile {
@@ -51,12 +50,8 @@ void Reader::checkKeys(const std::vector<const char*>& known) const {
 double Reader::real() const {
     if (!value_.is_number()) fail(std::string("expected a number, got ") + typeName(value_));
     const double d = value_.get<double>();
-    if (!std::isfinite(d) || std::fabs(d) > 3.0e38) {
-        char got[32];
-        std::snprintf(got, sizeof got, "%g", d);
-        // The limit is a float's range, where every scene value ends up.
-        fail(std::string("expected a finite number of magnitude at most 3e38 (a float's range), got ") + got);
-    }
+    // The limit is a float's range, where every scene value ends up.
+    if (!std::isfinite(d) || std::fabs(d) > 3.0e38) fail("expected a finite number of magnitude at most 3e38 (a float's range), got " + text::numberText(d));
     return d;
 }
 

@@ -22,7 +22,6 @@
 
 #include <algorithm>
 #include <map>
-#include <sstream>
 #include <string>
 
 namespace shadowlab {
@@ -30,12 +29,6 @@ namespace shadowlab {
 namespace {
 
 using namespace shadowlab::map;
-
-std::string numberText(float v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
 
 // Given cascade splits lie between the camera's near and far planes (a
 // slice outside the view is a map spent on nothing). The scene file check
@@ -47,9 +40,9 @@ void checkSplitsInView(const MapOptions& o, const Light& light, const Camera& ca
     if (splits.empty()) return;
     const std::string at = "lights[" + std::to_string(index) + "].shadow.map.cascadeSplits: \"" + text::escapeControl(o.cascadeSplits) + "\": ";
     if (splits.front() <= camera.nearPlane)
-        throw Error(at + "the first split must lie beyond the camera's near plane (camera.near " + numberText(camera.nearPlane) + ")");
+        throw Error(at + "the first split must lie beyond the camera's near plane (camera.near " + text::numberText(camera.nearPlane) + ")");
     if (splits.back() >= camera.farPlane)
-        throw Error(at + "the last split must lie before the camera's far plane (camera.far " + numberText(camera.farPlane) + ")");
+        throw Error(at + "the last split must lie before the camera's far plane (camera.far " + text::numberText(camera.farPlane) + ")");
 }
 
 class ShadowMap final : public Technique {
