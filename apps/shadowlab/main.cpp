@@ -474,34 +474,6 @@ CLI::App* addView(CLI::App& app, ViewArgs& args) {
 }
 #endif
 
-// A render-time error that starts with a scene JSON path (a map's memory
-// budget, planar receivers that are not planar, ...) gets where that value
-// came from in front: the --set that set it (or the deepest one that set a
-// part of it or a block around it), else the scene file.
-std::string withSource(const std::string& message, const std::string& scene, const std::vector<std::string>& overrides) {
-    const std::size_t colon = message.find(": ");
-    if (colon == std::string::npos) return message;
-    const std::string path = message.substr(0, colon);
-    static const char* const roots[] = {"lights[", "nodes[", "camera", "materials", "ambient", "background"};
-    if (std::none_of(std::begin(roots), std::end(roots), [&](const char* r) { return path.rfind(r, 0) == 0; }) ||
-        path.find(' ') != std::string::npos)
-        return message;
-    auto within = [](const std::string& inner, const std::string& outer) {
-        return inner == outer || (inner.rfind(outer, 0) == 0 && (inner[outer.size()] == '.' || inner[outer.size()] == '['));
-    };
-    const std::string* best = nullptr;
-    std::size_t bestLength = 0;
-    for (const std::string& o : overrides) {
-        const std::string key = o.substr(0, o.find('='));
-        if ((within(path, key) || within(key, path)) && key.size() >= bestLength) {
-            best = &o;
-            bestLength = key.size();
-        }
-    }
-    if (best) return "--set " + *best + ": " + message;
-    return (scene.empty() ? std::string("the default scene") : scene) + ": " + message;
-}
-
 // Every option that takes a value refuses an empty one (`--time ''` was
 // read as 0, `--debug-images ''` wrote nothing and exited 0).
 void refuseEmptyValues(CLI::App& app) {
@@ -588,8 +560,8 @@ int main(int argc, char** argv) {
         if (*techniquesCommand) return runTechniques(techniquesMarkdown);
     } catch (const std::exception& e) {
         std::string message = e.what();
-        if (*render) message = withSource(message, renderArgs.scene, renderArgs.overrides);
-        if (*compare) message = withSource(message, compareArgs.scene, compareArgs.overrides);
+        if (*render) message = withValueSource(message, renderArgs.scene.empty() ? "the default scene" : renderArgs.scene, renderArgs.overrides);
+        if (*compare) message = withValueSource(message, compareArgs.scene.empty() ? "the default scene" : compareArgs.scene, compareArgs.overrides);
         // Escaped once more here: whatever a message quotes, it stays one line.
         std::cerr << "shadowlab: error: " << text::escapeControl(text::clipMiddle(message)) << "\n";
         return 1;

@@ -34,6 +34,14 @@ SHADOWLAB_API Scene defaultScene(const std::vector<std::string>& overrides = {})
 /// The default scene's JSON text.
 SHADOWLAB_API const std::string& defaultSceneJson();
 
+/// `message` with where its value came from in front, for an error raised
+/// after the scene was read (a map's memory budget, planar receivers that
+/// are not planar): when it starts with a scene JSON path
+/// (`lights[0].shadow.map.size: ...`), the `--set` of `overrides` that set
+/// that value, a part of it or a block around it (as parse errors name it),
+/// else `sourceName` (the scene file). Other messages come back unchanged.
+SHADOWLAB_API std::string withValueSource(const std::string& message, const std::string& sourceName, const std::vector<std::string>& overrides);
+
 /// Scene JSON text with `overrides` written into it (the `--set` lines, or
 /// the viewer's settings), pretty-printed: it loads again as the scene those
 /// overrides give. Throws shadowlab::Error as parseScene does.

@@ -115,4 +115,27 @@ std::vector<Override> applyOverrides(json& doc, const std::vector<std::string>& 
     return applied;
 }
 
+std::vector<Override> describeOverrides(const std::vector<std::string>& overrides) {
+    std::vector<Override> described;
+    for (const std::string& text : overrides) {
+        const auto eq = text.find('=');
+        if (eq == std::string::npos) continue;
+        try {
+            described.push_back({"--set " + text, formatPath(parsePath(text.substr(0, eq), "--set " + text))});
+        } catch (const Error&) {
+        }
+    }
+    return described;
+}
+
+const Override* overrideAt(const std::vector<Override>& applied, const std::string& path) {
+    auto within = [](const std::string& inner, const std::string& outer) {
+        return inner == outer ||
+               (inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 && (inner[outer.size()] == '.' || inner[outer.size()] == '['));
+    };
+    for (auto it = applied.rbegin(); it != applied.rend(); ++it)
+        if (within(path, it->path) || within(it->path, path)) return &*it;
+    return nullptr;
+}
+
 } // namespace shadowlab::overrides

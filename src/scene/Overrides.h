@@ -21,4 +21,14 @@ struct Override {
 /// attribution. Throws shadowlab::Error naming the flag.
 std::vector<Override> applyOverrides(nlohmann::json& doc, const std::vector<std::string>& overrides);
 
+/// The overrides as applyOverrides returns them, without a document to
+/// apply them to: each `key=value`'s flag and canonical path (entries with
+/// no valid key are left out: parsing the scene refuses them).
+std::vector<Override> describeOverrides(const std::vector<std::string>& overrides);
+
+/// The override a value at `path` came from: the last one that set it, a
+/// part of it, or a block around it (setting camera.fovY.x turned fovY into
+/// an object); nullptr when none did.
+const Override* overrideAt(const std::vector<Override>& applied, const std::string& path);
+
 } // namespace shadowlab::overrides

@@ -120,6 +120,20 @@ Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overri
     return parseScene(text.str(), name, path.parent_path(), overrides);
 }
 
+std::string withValueSource(const std::string& message, const std::string& sourceName, const std::vector<std::string>& overrides) {
+    const std::size_t colon = message.find(": ");
+    if (colon == std::string::npos) return message;
+    const std::string path = message.substr(0, colon);
+    static const char* const roots[] = {"lights[", "nodes[", "camera", "materials", "ambient", "background"};
+    const bool scenePath = path.find(' ') == std::string::npos;
+    bool rooted = false;
+    for (const char* r : roots) rooted = rooted || path.rfind(r, 0) == 0;
+    if (!scenePath || !rooted) return message;
+    const std::vector<overrides::Override> described = overrides::describeOverrides(overrides);
+    if (const overrides::Override* o = overrides::overrideAt(described, path)) return o->flag + ": " + message;
+    return sourceName + ": " + message;
+}
+
 std::string sceneJsonWithOverrides(const std::string& jsonText, const std::string& sourceName, const std::vector<std::string>& overrides) {
     // Checked the way a load checks it first (and the result loads again).
     parseScene(jsonText, sourceName, fs::current_path(), overrides);

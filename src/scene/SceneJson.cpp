@@ -18,17 +18,8 @@ using overrides::typeName;
 
 void ParseContext::fail(const std::string& path, const std::string& message) const {
     // An error inside an overridden value is the flag's fault: name the flag.
-    for (auto it = overrides.rbegin(); it != overrides.rend(); ++it) {
-        // The flag is at fault when the bad value lies inside what it set,
-        // or contains it (setting camera.fovY.x turned fovY into an object).
-        auto within = [](const std::string& inner, const std::string& outer) {
-            return inner == outer ||
-                   (inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 &&
-                    (inner[outer.size()] == '.' || inner[outer.size()] == '['));
-        };
-        if (within(path, it->path) || within(it->path, path))
-            throw Error(text::escapeControl(it->flag + ": " + path + ": " + message));
-    }
+    if (const overrides::Override* o = overrides::overrideAt(overrides, path))
+        throw Error(text::escapeControl(o->flag + ": " + path + ": " + message));
     // Keys, values and file names are quoted as written: escape them so
     // the message stays on one line.
     throw Error(text::escapeControl(source + ": " + (path.empty() ? "" : path + ": ") + message));
