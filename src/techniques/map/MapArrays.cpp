@@ -27,10 +27,19 @@ int momentCount(MapRepresentation r) { return r == MapRepresentation::Depth ? 0 
 
 bool sharedDepthBuffer(const ArrayKey& key) { return key.format == MapFormat::R8 && !key.cube; }
 
+namespace {
+
+// Bytes a texel of each texture of an array takes.
+double depthTexelBytes(const ArrayKey& key) { return key.format == MapFormat::Depth16 ? 2.0 : 4.0; }  // depth24 is stored in 4 bytes
+double colourTexelBytes(const ArrayKey& key) { return key.format == MapFormat::Rgba8 ? 4.0 : key.format == MapFormat::R8 ? 1.0 : 0.0; }
+double momentTexelBytes(const ArrayKey& key) {
+    return momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
+}
+
+} // namespace
+
 double texelBytes(const ArrayKey& key) {
-    const double depth = sharedDepthBuffer(key) ? 0.0 : key.format == MapFormat::Depth16 ? 2.0 : 4.0;  // depth24 is stored in 4 bytes
-    const double colour = key.format == MapFormat::Rgba8 ? 4.0 : key.format == MapFormat::R8 ? 1.0 : 0.0;
-    return depth + colour + momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
+    return (sharedDepthBuffer(key) ? 0.0 : depthTexelBytes(key)) + colourTexelBytes(key) + momentTexelBytes(key);
 }
 
 GLenum momentFormatOf(const ArrayKey& k) {
@@ -48,11 +57,9 @@ double arrayBytes(const ArrayKey& key, int layers, bool translucent) {
     const double texels = static_cast<double>(key.size) * static_cast<double>(key.size);
     const double maps = static_cast<double>(layers) * (key.cube ? 6.0 : 1.0);
     const double mips = key.mipmaps ? 4.0 / 3.0 : 1.0;
-    const double colourBytes = key.format == MapFormat::Rgba8 ? 4.0 : key.format == MapFormat::R8 ? 1.0 : 0.0;
-    const double momentBytes = momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
-    const bool colour = colourBytes > 0.0 || momentBytes > 0.0;
-    const double depthBytes = key.format == MapFormat::Depth16 ? 2.0 : 4.0;  // depth24 is stored in 4 bytes
-    double bytes = sharedDepthBuffer(key) ? 4.0 * texels : depthBytes * texels * maps * (colour ? 1.0 : mips);
+    const double colourBytes = colourTexelBytes(key), momentBytes = momentTexelBytes(key);
+    const bool colour = colourBytes > 0.0 || momentBytes > 0.0;  // then the depth array has one level (makeArray)
+    double bytes = sharedDepthBuffer(key) ? 4.0 * texels : depthTexelBytes(key) * texels * maps * (colour ? 1.0 : mips);
     bytes += (colourBytes + momentBytes) * texels * maps * mips;
     if (momentBytes > 0.0) bytes += momentBytes * texels;  // the blur's scratch
     if (translucent) bytes += 8.0 * texels * maps;
