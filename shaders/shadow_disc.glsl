@@ -17,9 +17,6 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
         vec3 normal = cross(a, b);
         float facing = dot(normal, toLight);
         if (abs(facing) < 1e-12) continue;  // the ray runs in the disc's plane
-        // A point light in the disc's plane (within the receivers' offset of
-        // it) sees the disc edge-on: a disc of no thickness shadows nothing.
-        if (disc.light.w > 0.5 && abs(dot(normal, disc.light.xyz - c)) <= disc.params.y * length(normal)) continue;
         float t = dot(normal, c - p) / facing;
         if (t <= 0.0 || t >= reach) continue;
         vec3 q = p + t * toLight - c;

@@ -13,6 +13,7 @@
 #include "shadow_disc_shared.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace shadowlab {
@@ -90,13 +91,20 @@ public:
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
         const std::vector<Disc>& list = discs_[view.index];
         shared::DiscUniforms u{};
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            u.centre[k] = glm::vec4(list[k].centre, 1.0f);
-            u.axisA[k] = glm::vec4(list[k].a, 0.0f);
-            u.axisB[k] = glm::vec4(list[k].b, 0.0f);
+        std::size_t count = 0;
+        for (const Disc& d : list) {
+            // A point light in the disc's plane (within the receivers' offset
+            // of it) sees the disc edge-on: a disc of no thickness shadows nothing.
+            const glm::vec3 normal = glm::cross(d.a, d.b);
+            if (view.light.type != LightType::Directional && std::abs(glm::dot(normal, view.light.position - d.centre)) <= offset_ * glm::length(normal))
+                continue;
+            u.centre[count] = glm::vec4(d.centre, 1.0f);
+            u.axisA[count] = glm::vec4(d.a, 0.0f);
+            u.axisB[count] = glm::vec4(d.b, 0.0f);
+            ++count;
         }
         u.light = view.light.type == LightType::Directional ? glm::vec4(-glm::normalize(view.light.direction), 0.0f) : glm::vec4(view.light.position, 1.0f);
-        u.params = glm::vec4(static_cast<float>(list.size()), offset_, 0.0f, 0.0f);
+        u.params = glm::vec4(static_cast<float>(count), offset_, 0.0f, 0.0f);
         block_.write(u);
     }
 
