@@ -1,0 +1,166 @@
+// The services the renderer gives techniques (TechniqueHost) and the
+// frame's shared steps: lights, technique variants, shaded draws.
+#include "render/RendererImpl.h"
+
+#include "core/Plane.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+shared::LightUniforms lightUniforms(const Light& light) {
+    shared::LightUniforms u{};
+    u.radiance = glm::vec4(light.color * light.intensity, 0.0f);
+    u.position = glm::vec4(light.position, 1.0f);
+    u.direction = glm::vec4(glm::normalize(light.direction), 0.0f);
+    const int type = light.type == LightType::Directional ? SL_LIGHT_DIRECTIONAL
+                     : light.type == LightType::Spot      ? SL_LIGHT_SPOT
+                                                          : SL_LIGHT_POINT;
+    u.params = glm::vec4(light.range, std::cos(glm::radians(light.innerConeDeg)),
+                         std::cos(glm::radians(light.outerConeDeg)), static_cast<float>(type));
+    if (light.type == LightType::Spot && light.projectorTexture >= 0) {
+        // The spot's camera: along its axis, the image filling the square around the outer cone.
+        const glm::vec3 axis = glm::normalize(light.direction);
+        u.projectorFromWorld = glm::perspective(2.0f * glm::radians(light.outerConeDeg), 1.0f, 0.01f, 100.0f) *
+                               glm::lookAt(light.position, light.position + axis, lightCameraUp(axis));
+    }
+    return u;
+}
+
+} // namespace
+
+void Renderer::Impl::drawItems(ItemFilter filter, const gl::Program& prog, const std::function<bool(std::size_t)>& perItem,
+                               Topology topology) {
+    bindOwnBlocks();
+    prog.use();
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const DrawItem& item = items[i];
+        if ((filter == ItemFilter::Casters && !item.castsShadows) || (filter == ItemFilter::Receivers && !item.receivesShadows))
+            continue;
+        if (perItem && !perItem(i)) continue;
+        drawList.bind(i);
+        // An alpha-tested caster's holes come from its texture (alpha_test.h).
+        if (item.material >= 0) {
+            const Material& m = scene->materials[static_cast<std::size_t>(item.material)];
+            if (m.alphaTested() && m.baseColorTexture >= 0) glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
+        }
+        if (topology == Topology::TrianglesAdjacency)
+            gpu->drawAdjacency(item.mesh, scene->meshes[static_cast<std::size_t>(item.mesh)]);
+        else
+            gpu->draw(item.mesh);
+    }
+}
+
+gl::RenderState Renderer::Impl::litState() const {
+    gl::RenderState s;
+    s.depthFunc = GL_EQUAL;  // the base pass's visible surfaces, bit for bit (scene.vert: invariant)
+    s.depthWrite = false;
+    if (litMode == LitMode::OutputVisibility) return s;  // overwrite: one light's term per pixel
+    s.blend = true;
+    s.blendSrc = s.blendDst = GL_ONE;
+    s.framebufferSrgb = true;
+    return s;
+}
+
+void Renderer::Impl::drawLit(const gl::RenderState& state) {
+    const Light& light = *currentLight;
+    ShaderVariant variant;
+    variant.ambient = false;
+    variant.light = true;
+    variant.lightType = light.type;
+    variant.outputVisibility = litMode == LitMode::OutputVisibility;
+    variant.screenVisibility = litMode == LitMode::ScreenVisibility;
+    variant.projector = hasProjector(light);
+    setTechnique(variant, light);
+    gl::apply(state);
+    drawShaded(variant);
+}
+
+void Renderer::Impl::setTechnique(ShaderVariant& variant, const Light& light) {
+    const TechniqueEntry* entry = findTechniqueEntry(light.shadow.technique);
+    variant.techniqueFile = entry->shaderFile;
+    variant.techniqueVertexFile = entry->vertexShaderFile;
+    variant.techniqueDefines = technique(light.shadow.technique).lightPassDefines(light);
+    variant.techniqueIncludes = technique(light.shadow.technique).lightPassIncludes(light);
+}
+
+void Renderer::Impl::setLight(std::size_t i) {
+    currentLight = &scene->lights[i];
+    const shared::LightUniforms u = lightUniforms(*currentLight);
+    glNamedBufferSubData(lightUbo.id(), 0, sizeof u, &u);
+    if (hasProjector(*currentLight)) glBindTextureUnit(SL_UNIT_PROJECTOR, gpu->texture(currentLight->projectorTexture).id());
+}
+
+void Renderer::Impl::drawShaded(ShaderVariant variant) {
+    bindOwnBlocks();
+    variant.baseColorTexture = false;
+    const gl::Program& plain = programs.get(variant.program());
+    const gl::Program* textured = nullptr;
+    const gl::Program* current = nullptr;
+    static const Material fallback;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const DrawItem& item = items[i];
+        const Material& m = item.material >= 0 ? scene->materials[static_cast<std::size_t>(item.material)] : fallback;
+        const gl::Program* wanted = &plain;
+        if (m.baseColorTexture >= 0) {
+            if (!textured) {
+                variant.baseColorTexture = true;
+                textured = &programs.get(variant.program());
+            }
+            wanted = textured;
+            glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
+        }
+        if (wanted != current) {
+            wanted->use();
+            current = wanted;
+        }
+        drawList.bind(i);
+        gpu->draw(item.mesh);
+    }
+}
+
+void Renderer::Impl::beginFrame(const Scene& s, glm::ivec2 size, double timeSeconds) {
+    bool infiniteFar = false;
+    for (const Light& light : s.lights) infiniteFar = infiniteFar || technique(light.shadow.technique).needsInfiniteFar(light);
+    scene = &s;
+    items = s.drawItems();
+    itemBounds.clear();
+    itemPlanes.clear();
+    itemConvex.clear();
+    for (const DrawItem& item : items) {
+        std::vector<glm::vec4>& convex = itemConvex.emplace_back();
+        for (const glm::vec4& plane : gpu->convex(item.mesh)) convex.push_back(transformPlane(plane, item.worldFromObject));
+        itemBounds.push_back(gpu->bounds(item.mesh).transformed(item.worldFromObject));
+        const std::optional<glm::vec4>& plane = gpu->plane(item.mesh);
+        itemPlanes.push_back(plane ? std::optional<glm::vec4>(transformPlane(*plane, item.worldFromObject)) : std::nullopt);
+    }
+    const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    info.emplace(FrameInfo{s, items, itemBounds, itemPlanes, itemConvex, size});
+    info->viewFromWorld = s.camera.viewFromWorld();
+    info->clipFromView = infiniteFar ? s.camera.clipFromViewInfiniteFar(aspect) : s.camera.clipFromView(aspect);
+    info->clipFromWorld = info->clipFromView * info->viewFromWorld;
+    info->timeSeconds = timeSeconds;
+    info->frameIndex = frames;
+    shared::FrameUniforms u{};
+    u.clipFromWorld = info->clipFromWorld;
+    u.cameraPosition = glm::vec4(s.camera.position, 1.0f);
+    u.ambient = glm::vec4(s.ambient, 0.0f);
+    glNamedBufferSubData(frameUbo.id(), 0, sizeof u, &u);
+    drawList.upload(s, items);
+}
+
+void Renderer::Impl::checkScene(const Scene& s) const {
+    if (!gpu) throw Error("Renderer: no scene uploaded (call upload first)");
+    if (s.meshes.size() != uploadedMeshes || s.textures.size() != uploadedTextures)
+        throw Error("Renderer: the scene differs from the uploaded one (call upload again)");
+    for (std::size_t i = 0; i < s.lights.size(); ++i) {
+        const std::string reason = unsupportedReason(s.lights[i].shadow.technique, s.lights[i]);
+        if (!reason.empty()) throw Error("Renderer: light " + std::to_string(i) + " ('" + s.lights[i].name + "'): " + reason);
+    }
+}
+
+} // namespace shadowlab
