@@ -8,7 +8,8 @@
 // WRITE_SURFACES (world position and geometric normal for the reference),
 // SCREEN_VISIBILITY (visibility from a per-pixel texture: the ray-traced
 // reference), OUTPUT_VISIBILITY (write the visibility term itself, for
-// compare). The technique's GLSL fills the "@shadow" slot with
+// compare), BLENDED (write the material's alpha: translucent surfaces, drawn
+// last over the frame). The technique's GLSL fills the "@shadow" slot with
 // vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal).
 #include "shadowlab_shared.h"
 #include "light_reach.h"
@@ -94,8 +95,11 @@ void main() {
 #endif
 
     vec3 base = draw.baseColor.rgb;
+    float alpha = draw.alpha.x;
 #if HAS_BASE_COLOR_TEXTURE
-    base *= texture(baseColorTexture, vUv).rgb;
+    vec4 texel = texture(baseColorTexture, vUv);
+    base *= texel.rgb;
+    alpha *= texel.a;
 #endif
     vec3 color = vec3(0.0);
 #if AMBIENT
@@ -110,7 +114,9 @@ void main() {
 #endif
     if (reached) color += lightVisibility(vWorldPosition, N) * term;
 #endif
-    outColor = vec4(color, 1.0);
+    // A translucent surface's alpha weighs it over what is behind (BLENDED);
+    // opaque passes store 1.
+    outColor = vec4(color, BLENDED != 0 ? alpha : 1.0);
 
 #if WRITE_SURFACES
     // Geometric (flat) normal from screen-space derivatives of the position,

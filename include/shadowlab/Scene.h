@@ -39,7 +39,7 @@ struct Mesh {
 enum class AlphaMode {
     Opaque, ///< "opaque": alpha ignored (default)
     Mask,   ///< "mask": the surface is absent where alpha < alphaCutoff, for the camera, every shadow technique's map and the reference
-    Blend,  ///< "blend": glTF's translucent surfaces: drawn opaque by the camera for now; as casters they let light through coloured, mix(white, base colour, alpha) (technique map and the reference)
+    Blend,  ///< "blend": glTF's translucent surfaces: the camera draws them last, farthest first, blended by alpha over what is behind; as casters they let light through coloured, mix(white, base colour, alpha) (technique map and the reference)
 };
 
 /// Blinn-Phong material as in the lecture material (ambient, diffuse,

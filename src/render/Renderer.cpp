@@ -158,6 +158,9 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
 
     // 3. Every other light: its technique's pass on the base pass's depth.
     otherLights(s, baseLight, screenVisibility);
+
+    // 4. Translucent surfaces, blended over the rest, back to front.
+    blendedPass(s, screenVisibility != nullptr);
     gl::apply(gl::RenderState{});
     resetTechniqueSamplers();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

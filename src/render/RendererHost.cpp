@@ -39,7 +39,8 @@ void Renderer::Impl::drawItems(ItemFilter filter, const gl::Program& prog, const
     prog.use();
     for (std::size_t i = 0; i < items.size(); ++i) {
         const DrawItem& item = items[i];
-        if ((filter == ItemFilter::Casters && !item.castsShadows) || (filter == ItemFilter::Receivers && !item.receivesShadows))
+        if ((filter == ItemFilter::Casters && !item.castsShadows) || (filter == ItemFilter::Receivers && !item.receivesShadows) ||
+            (filter == ItemFilter::Opaque && translucent(i)))
             continue;
         if (perItem && !perItem(i)) continue;
         drawList.bind(i);
@@ -95,14 +96,17 @@ void Renderer::Impl::setLight(std::size_t i) {
     if (hasProjector(*currentLight)) glBindTextureUnit(SL_UNIT_PROJECTOR, gpu->texture(currentLight->projectorTexture).id());
 }
 
-void Renderer::Impl::drawShaded(ShaderVariant variant) {
+void Renderer::Impl::drawShaded(ShaderVariant variant, const std::vector<std::size_t>* only) {
     bindOwnBlocks();
     variant.baseColorTexture = false;
     const gl::Program& plain = programs.get(variant.program());
     const gl::Program* textured = nullptr;
     const gl::Program* current = nullptr;
     static const Material fallback;
-    for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::size_t count = only ? only->size() : items.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::size_t i = only ? (*only)[k] : k;
+        if (!only && translucent(i)) continue;  // drawn last, blended (blendedPass)
         const DrawItem& item = items[i];
         const Material& m = item.material >= 0 ? scene->materials[static_cast<std::size_t>(item.material)] : fallback;
         const gl::Program* wanted = &plain;

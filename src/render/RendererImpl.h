@@ -129,9 +129,15 @@ struct Renderer::Impl final : TechniqueHost {
 
     LightView view(std::size_t i) const { return {scene->lights[i], static_cast<int>(i)}; }
 
-    // Draws every item with the renderer's shading program for `variant`
-    // (textured or untextured per material).
-    void drawShaded(ShaderVariant variant);
+    // Draws with the renderer's shading program for `variant` (textured or
+    // untextured per material) the items in `only`, or every opaque one.
+    void drawShaded(ShaderVariant variant, const std::vector<std::size_t>* only = nullptr);
+
+    /// Whether item i is a translucent (AlphaMode::Blend) surface.
+    bool translucent(std::size_t i) const {
+        const int m = items[i].material;
+        return m >= 0 && scene->materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend;
+    }
 
     void beginFrame(const Scene& s, glm::ivec2 size, double timeSeconds);
 
@@ -142,6 +148,8 @@ struct Renderer::Impl final : TechniqueHost {
     void basePass(const Scene& s, const RenderOptions& options, int baseLight, const std::vector<std::vector<float>>* screenVisibility);
     /// Each light but `baseLight`, its pass added on the base pass's depth.
     void otherLights(const Scene& s, int baseLight, const std::vector<std::vector<float>>* screenVisibility);
+    /// Translucent surfaces over the lit frame, back to front (BlendedPass.cpp).
+    void blendedPass(const Scene& s, bool screenVisibility);
 };
 
 } // namespace shadowlab

@@ -25,6 +25,7 @@ std::string ShaderVariant::preamble() const {
     out += flag("WRITE_SURFACES", writeSurfaces);
     out += flag("SCREEN_VISIBILITY", light && screenVisibility);
     out += flag("OUTPUT_VISIBILITY", light && outputVisibility);
+    out += flag("BLENDED", blended);
     if (light && !screenVisibility) out += techniqueDefines;
     return out;
 }
@@ -41,7 +42,7 @@ gl::ProgramKey ShaderVariant::program() const {
 
 std::vector<ShaderVariant> ShaderVariant::all() {
     std::vector<ShaderVariant> out;
-    for (int bits = 0; bits < 64; ++bits)
+    for (int bits = 0; bits < 128; ++bits)
         for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point}) {
             ShaderVariant v;
             v.ambient = bits & 1;
@@ -50,6 +51,7 @@ std::vector<ShaderVariant> ShaderVariant::all() {
             v.writeSurfaces = bits & 8;
             v.screenVisibility = bits & 16;
             v.outputVisibility = bits & 32;
+            v.blended = bits & 64;
             v.projector = light == LightType::Spot && (bits & 1) && (bits & 2);  // one projector variant per ambient/light pair
             v.lightType = light;
             out.push_back(v);

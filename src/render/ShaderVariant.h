@@ -23,6 +23,7 @@ struct ShaderVariant {
     bool writeSurfaces = false;     ///< world position and geometric normal (compare)
     bool screenVisibility = false;  ///< with `light`: visibility from a per-pixel texture (the reference)
     bool outputVisibility = false;  ///< with `light`: write the visibility term instead of light
+    bool blended = false;           ///< write the surface's alpha (a translucent surface blended over the frame)
 
     /// `#define` lines; every define the sources test is always defined, and
     /// fields that do not apply (light type without a light) are left out so

@@ -139,7 +139,7 @@ public:
             s.noColor();
             s.stencil({GL_ALWAYS, 1, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_REPLACE});
             host.apply(s);
-            host.drawItems(ItemFilter::All, mark, [&](std::size_t i) { return i == receivers[r].item; });
+            host.drawItems(ItemFilter::Opaque, mark, [&](std::size_t i) { return i == receivers[r].item; });
             // 1 -> 2 under the flattened casters: each pixel once, on the receiver only.
             gl::RenderState p;
             p.depthTest = false;
@@ -152,7 +152,7 @@ public:
             // The receiver's unshadowed pixels back to 0, so the next plane's casters cannot mark them.
             s.stencil({GL_EQUAL, 1, 0xFF, 0xFF, GL_KEEP, GL_KEEP, GL_ZERO});
             host.apply(s);
-            host.drawItems(ItemFilter::All, mark, [&](std::size_t i) { return i == receivers[r].item; });
+            host.drawItems(ItemFilter::Opaque, mark, [&](std::size_t i) { return i == receivers[r].item; });
         }
         gl::RenderState lit = host.litState();
         lit.stencil({GL_NOTEQUAL, 2, 0xFF, 0x00});

@@ -54,7 +54,7 @@ struct LightView {
 
 /// Which items a draw covers.
 enum class ItemFilter {
-    All,
+    Opaque,    ///< every item but translucent (AlphaMode::Blend) surfaces: what the camera's depth holds (the renderer draws those last, blended)
     Casters,   ///< DrawItem::castsShadows
     Receivers, ///< DrawItem::receivesShadows
 };

@@ -8,6 +8,7 @@
 
 #include <shadowlab/SceneFile.h>
 
+#include <cmath>
 #include <filesystem>
 
 using namespace shadowlab;
@@ -92,4 +93,92 @@ TEST_F(AlphaGLTest, RedGlassThrowsRedLightUnderEveryKindOfLight) {
         // Classified by the mean of the channels, as compare does: within the bar.
         EXPECT_LE(awayFromEdges(l), 0.0005);
     }
+}
+
+namespace {
+
+// A grey wall, and two translucent squares in front of it (red 1 m from
+// it, blue 2 m), seen head-on under a sun from behind the camera; no
+// shadows (technique none), no specular, so each pixel is one diffuse term
+// plus ambient. `blueFirst` lists the blue square first in the nodes.
+Scene twoGlasses(bool blueFirst, const std::vector<std::string>& overrides = {}) {
+    const std::string red = R"({ "name": "red", "shape": { "type": "plane", "size": [1, 1] }, "material": "red",
+                                 "translation": [0, 0, -1], "rotation": [90, 0, 0] })";
+    const std::string blue = R"({ "name": "blue", "shape": { "type": "plane", "size": [1, 1] }, "material": "blue",
+                                  "translation": [0, 0, 0], "rotation": [90, 0, 0] })";
+    const std::string json = R"({
+        "camera": { "position": [0, 0, 5], "target": [0, 0, 0], "fovY": 30 },
+        "ambient": [0.1, 0.1, 0.1],
+        "materials": {
+            "wall": { "baseColor": [0.6, 0.6, 0.6], "specular": [0, 0, 0] },
+            "red": { "baseColor": [0.9, 0.1, 0.1], "specular": [0, 0, 0], "alpha": 0.5, "alphaMode": "blend" },
+            "blue": { "baseColor": [0.1, 0.2, 0.9], "specular": [0, 0, 0], "alpha": 0.5, "alphaMode": "blend" }
+        },
+        "lights": [ { "type": "directional", "direction": [0, 0, -1], "intensity": 0.8 } ],
+        "nodes": [
+            { "name": "wall", "shape": { "type": "plane", "size": [8, 8] }, "material": "wall",
+              "translation": [0, 0, -2], "rotation": [90, 0, 0] },
+            )" + (blueFirst ? blue + ", " + red : red + ", " + blue) + R"(
+        ]
+    })";
+    return parseScene(json, "two-glasses", SHADOWLAB_SOURCE_DIR, overrides);
+}
+
+// The centre pixel of a 64x64 render, in linear light.
+glm::vec3 centreLinear(const Scene& scene) {
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options;
+    options.width = options.height = 64;
+    renderer.render(scene, options);
+    const ImageRGBA8 image = renderer.readColor();
+    const std::size_t at = (32u * 64u + 32u) * 4u;
+    glm::vec3 out;
+    for (int c = 0; c < 3; ++c) {
+        const float s = image.pixels[at + static_cast<std::size_t>(c)] / 255.0f;
+        out[c] = s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
+    }
+    return out;
+}
+
+} // namespace
+
+// The camera draws translucent (blend) surfaces over what is behind them,
+// farthest first, whatever the nodes' order: where both squares cover the
+// wall, the pixel is alpha*blue + (1-alpha)*(alpha*red + (1-alpha)*wall),
+// each term measured alone (the squares opaque, or at alpha 0). Tolerance
+// 0.01 in linear light per channel: each of the four 8-bit sRGB pixels is
+// off by at most half a step (under 0.003 here). Drawn opaque (as before),
+// the pixel would be the blue square's own (0.2 off in red); in the nodes'
+// order, the red over the blue (0.2 off in blue).
+TEST_F(AlphaGLTest, TranslucentSurfacesBlendOverWhatIsBehindThemFarthestFirst) {
+    const glm::vec3 wall = centreLinear(twoGlasses(false, {"materials.red.alpha=0", "materials.blue.alpha=0"}));
+    const glm::vec3 red = centreLinear(twoGlasses(false, {"materials.red.alphaMode=\"opaque\"", "materials.blue.alpha=0"}));
+    const glm::vec3 blue = centreLinear(twoGlasses(false, {"materials.blue.alphaMode=\"opaque\""}));
+    const glm::vec3 expected = 0.5f * blue + 0.5f * (0.5f * red + 0.5f * wall);
+    ASSERT_GT(red.r - blue.r, 0.3f) << "the two glasses must differ for the order to show";
+    for (bool blueFirst : {false, true}) {
+        SCOPED_TRACE(blueFirst ? "blue listed first" : "red listed first");
+        const glm::vec3 both = centreLinear(twoGlasses(blueFirst));
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(both[c], expected[c], 0.01f) << "channel " << c;
+    }
+}
+
+// compare judges the shadows on what the camera sees through the glass:
+// the visibility read behind the two squares is the wall's, lit through
+// both of them (their transmittances mix(1, colour, alpha) multiplied), not
+// the front square's own (1: nothing between it and the sun). Tolerance
+// 0.01: the map's transmittance is stored in 8 bits per channel.
+TEST_F(AlphaGLTest, VisibilityBehindTranslucentSurfacesIsTheWallBehindThem) {
+    Scene scene = twoGlasses(false, {"lights[0].shadow.technique=map"});
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options;
+    options.width = options.height = 64;
+    renderer.render(scene, options);
+    const std::vector<glm::vec3> v = renderer.readVisibilityRgb(scene, 0);
+    const glm::vec3 centre = v[32u * 64u + 32u];
+    const glm::vec3 through = glm::mix(glm::vec3(1.0f), glm::vec3(0.9f, 0.1f, 0.1f), 0.5f) *
+                              glm::mix(glm::vec3(1.0f), glm::vec3(0.1f, 0.2f, 0.9f), 0.5f);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], through[c], 0.01f) << "channel " << c;
 }

@@ -22,7 +22,7 @@ TEST(ShaderVariant, DistinctVariantsHaveDistinctPrograms) {
             v.screenVisibility = v.outputVisibility = false;
         }
         return std::make_tuple(v.ambient, v.light, static_cast<int>(v.lightType), v.baseColorTexture, v.writeSurfaces,
-                               v.screenVisibility, v.outputVisibility);
+                               v.screenVisibility, v.outputVisibility, v.blended);
     };
     std::map<std::string, std::set<decltype(canonical(ShaderVariant{}))>> byProgram;
     for (const ShaderVariant& v : ShaderVariant::all()) byProgram[v.program().id()].insert(canonical(v));
@@ -53,7 +53,8 @@ TEST(ShaderVariant, PreambleDefinesEverySwitchTheSourcesTest) {
     const std::string p = v.preamble();
     for (const char* define : {"#define AMBIENT 1\n", "#define LIGHT 1\n", "#define LIGHT_TYPE SL_LIGHT_SPOT\n",
                                "#define HAS_BASE_COLOR_TEXTURE 1\n", "#define WRITE_SURFACES 0\n",
-                               "#define SCREEN_VISIBILITY 0\n", "#define OUTPUT_VISIBILITY 0\n"})
+                               "#define SCREEN_VISIBILITY 0\n", "#define OUTPUT_VISIBILITY 0\n",
+                               "#define BLENDED 0\n"})
         EXPECT_NE(p.find(define), std::string::npos) << define << " in " << p;
     const gl::ProgramKey key = v.program();
     ASSERT_EQ(key.aliases.size(), 1u);

@@ -95,7 +95,7 @@ ImageRGBA8 frameView(TechniqueHost& host, const FrameInfo& frame, const LightVie
     glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
     res.block.upload(p, res.arrays[p.array], view.light, res.translucent);
     const int cascades = static_cast<int>(p.cameras().size());
-    host.drawItems(ItemFilter::All, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, fragmentFile}},
+    host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, fragmentFile}},
                                                   FrameViewVariant{cascades}.defines()}));
     ImageRGBA8 image{size.x, size.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size.x) * size.y * 4)};
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
