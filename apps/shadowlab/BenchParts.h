@@ -58,24 +58,31 @@ struct TimedFrames {
 TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args);
 
 /// Temporal stability (--flips), per light over consecutive frames: the share
-/// of receiver pixels (receivers in both frames) whose technique class (lit:
-/// visibility >= the threshold) changes while the reference's class there does
-/// not, away from the edges: in both frames every receiver among the pixel's
-/// 8 neighbours has its technique class and its reference class. A shadow
-/// edge that slides by less than a pixel as the view moves is motion, not
-/// flicker; one that jumps by more (a texel grid sliding under the world)
-/// flips whole blocks of pixels. Where the truth changes (a light that moved,
-/// an edge that crossed the pixel) the change is right and is counted apart,
-/// as a reference change.
+/// of receiver pixels whose shadow changed although the truth there did not.
+/// For a light that stayed put between the two frames (docs/metrics.md),
+/// the shadow is compared at the same world points: the second frame's view
+/// lit once through the first frame's maps and once through its own, so a
+/// shadow edge that crawls because the maps' texel grid slid under the world
+/// counts every pixel it crosses, edges included, while a grid that stays
+/// put (stabilised cascades) counts nothing, however the view moves. For a
+/// light that moved, whose shadow truly moves, the frames are compared pixel
+/// by pixel away from the edges: a change counts where the reference's class
+/// did not change and every receiver among the pixel's 8 neighbours has its
+/// classes in both frames. Reference changes (the reference's class changed
+/// at the pixel: true motion, on screen) are counted apart.
 class FlipCounter {
 public:
     explicit FlipCounter(float litThreshold) : threshold_(litThreshold) {}
 
     /// One frame: its comparison and each light's technique visibility, read
-    /// back with the comparison's technique frame.
-    void add(const Comparison& c, const std::vector<std::vector<float>>& techniqueVisibility);
+    /// back with the comparison's technique frame; from the second frame on,
+    /// `throughPreviousMaps`: the same view lit through the previous frame's
+    /// maps (read before this frame's were drawn), and `lightStayed`: per
+    /// light, whether it is where it was in the previous frame.
+    void add(const Comparison& c, const std::vector<std::vector<float>>& techniqueVisibility,
+             const std::vector<std::vector<float>>& throughPreviousMaps = {}, const std::vector<bool>& lightStayed = {});
 
-    /// Light l's `flips` and `referenceChanges`: median, maximum and every
+    /// Light l's `flips` and `referenceChanges`: median, mean, maximum and every
     /// pair's share, in frame order.
     void addTo(nlohmann::json& record, std::size_t l) const;
 

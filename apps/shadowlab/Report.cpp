@@ -183,9 +183,9 @@ figcaption { font-size: 12px; color: #555; }
          "(see docs/metrics.md).";
     const bool flips = results.value("flips", false);
     if (flips)
-        h << " Flips: each timed frame compared with the reference; the share of receiver pixels whose shadow flips between "
-             "consecutive frames while the reference's does not, median and maximum over the pairs of frames, beside the share "
-             "whose reference changed (true motion, left out of the flips).";
+        h << " Flips: each timed frame compared with the reference; the share of receiver pixels whose shadow changes between "
+             "consecutive frames at the same world point while the truth there does not (docs/metrics.md), median and maximum "
+             "over the pairs of frames, beside the share whose reference changed on screen (true motion).";
     h << "</p>\n";
 }
 

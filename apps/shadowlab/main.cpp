@@ -443,7 +443,7 @@ CLI::App* addBench(CLI::App& app, tool::BenchArgs& args, std::string& output) {
     bench->add_option("--fps", args.fps, "Frames per second of the timed sequence")->capture_default_str();
     bench->add_flag("--flips", args.flips,
                     "Temporal stability: compare every timed frame with the reference and report per light the share of receiver "
-                    "pixels whose shadow flips between consecutive frames while the reference's does not (needs --frames >= 2)");
+                    "pixels whose shadow changes between consecutive frames at the same world point while the truth there does not (needs --frames >= 2)");
     bench->add_option("--warmup", args.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
     bench->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     bench->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();

@@ -46,6 +46,12 @@ struct RenderOptions {
     /// depth-only draw of the same casters into a target of the same size),
     /// as nested "floor" scopes: what a pass cannot beat. Default off (bench turns it on).
     bool measureFloors = false;
+    /// Draw this frame through the previous frame's shadow maps: no shadow
+    /// pass runs and each map keeps its light camera (its fit to the earlier
+    /// view), so the same world points can be read through two frames' maps
+    /// (bench --flips). Throws shadowlab::Error when a light's technique has
+    /// no such map from the previous frame. Default off.
+    bool reuseShadowMaps = false;
 };
 
 struct PassTiming {

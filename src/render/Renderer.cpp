@@ -129,6 +129,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     if (!targets || targets->size != size || (options.surfaces && !targets->surfaces)) targets.emplace(size, options.surfaces);
     beginFrame(s, size, options.timeSeconds);
     info->measureFloors = options.measureFloors;
+    info->reuseShadowMaps = options.reuseShadowMaps;
     clock.emplace(clockKind(options.clock, gl));
     litMode = LitMode::Shade;
     counters.clear();
@@ -139,8 +140,9 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     for (std::size_t i = 0; i < s.lights.size(); ++i) lightsOf[s.lights[i].shadow.technique].push_back(static_cast<int>(i));
     for (const auto& [name, lights] : lightsOf) technique(name).prepare(*this, *info, lights);
 
-    // 1. Shadow passes (the reference brings its own visibility: none).
-    for (std::size_t i = 0; i < s.lights.size() && !screenVisibility; ++i) {
+    // 1. Shadow passes (the reference brings its own visibility, and a
+    // frame through the previous frame's maps keeps them: none).
+    for (std::size_t i = 0; i < s.lights.size() && !screenVisibility && !options.reuseShadowMaps; ++i) {
         Technique& t = technique(s.lights[i].shadow.technique);
         if (!t.hasShadowPass(s.lights[i])) continue;
         setLight(i);

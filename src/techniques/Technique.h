@@ -44,6 +44,7 @@ struct FrameInfo {
     double timeSeconds = 0.0;                ///< RenderOptions::timeSeconds (animated lights)
     std::uint64_t frameIndex = 0;            ///< frames this Renderer has drawn before this one
     bool measureFloors = false;              ///< RenderOptions::measureFloors: time a bare "floor" draw beside each pass
+    bool reuseShadowMaps = false;            ///< RenderOptions::reuseShadowMaps: no shadow pass; keep the maps and their light cameras
 };
 
 /// One light of the frame.

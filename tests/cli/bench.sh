@@ -113,20 +113,9 @@ printf '%s' '{"camera": {"position": [0, 9, 9], "target": [0, 0, 0]},
             {"shape": {"type": "box", "size": [1.5, 2, 1.5]}, "translation": [0, 1, 0]}]}' > swing.json
 "$tool" bench swing.json --flips --frames 3 --fps 1 --warmup 0 --width 320 --height 180 -o swing >/dev/null 2>&1 \
   || fail "bench --flips with a moving light failed"
-# A narrow camera drifting over a coarse map (two-boxes-sun, filter none,
-# fovY 20, so the tight fit is bounded by the view and follows it): the
-# texel grid slides through the world and whole stair steps jump by more
-# than a pixel, the coarser the map the more (measured: median 0.0045 % with
-# 32^2 texels, 0 with 128^2, whose steps move by under a pixel).
-drift='camera.path={"type": "keyframes", "times": [0, 3], "positions": [[6, 5, 8], [5.4, 5, 8.6]], "targets": [[0, 0.8, 0], [-0.6, 0.8, 0.6]]}'
-for size in 32 128; do
-  "$tool" bench "$src/scenes/two-boxes-sun.json" --set 'lights[0].shadow.technique=map' --set "lights[0].shadow.map.size=$size" --set camera.fovY=20 \
-    --set 'lights[0].shadow.map.filter="none"' --set "$drift" --flips --frames 4 --fps 1 --warmup 0 --width 320 --height 180 \
-    -o "drift$size" >/dev/null 2>&1 || fail "bench --flips with a drifting camera failed"
-done
-python3 - still/results.json swing/results.json drift32/results.json drift128/results.json <<'PY' || fail "bench --flips: results.json"
+python3 - still/results.json swing/results.json <<'PY' || fail "bench --flips: results.json"
 import json, sys
-still, swing, coarse, fine = (json.load(open(p)) for p in sys.argv[1:])
+still, swing = (json.load(open(p)) for p in sys.argv[1:])
 assert still["flips"] is True and swing["flips"] is True
 light = lambda r: r["results"][0]["lights"][0]
 s = light(still)
@@ -135,21 +124,9 @@ assert s["flips"]["max"] == 0 and s["referenceChanges"]["max"] == 0, (s["flips"]
 w = light(swing)
 assert min(w["referenceChanges"]["perPair"]) > 0.02, w["referenceChanges"]
 assert w["flips"]["max"] <= 0.01 * min(w["referenceChanges"]["perPair"]), (w["flips"], w["referenceChanges"])
-c, f = light(coarse)["flips"], light(fine)["flips"]
-assert len(c["perPair"]) == 3 and c["median"] <= c["max"], c
-assert c["median"] > 0 and f["median"] < 0.5 * c["median"], (c, f)
+assert s["flips"]["mean"] == 0 and w["flips"]["mean"] <= w["flips"]["max"], (s["flips"], w["flips"])
 PY
 grep -q 'flips % (median)' swing/report.html || fail "report.html has no flips column"
-# Stabilised cascades (issue 17): 4 cascades of 2048^2 over cascades-field's
-# walk (about 2 mm a frame): no flips in any pair of frames.
-"$tool" bench "$src/scenes/cascades-field.json" --set lights[0].shadow.map.cascades=4 --set 'lights[0].shadow.map.filter="none"' \
-  --flips --frames 4 --warmup 0 --width 480 --height 270 -o field >/dev/null 2>&1 || fail "bench --flips on cascades-field failed"
-python3 - field/results.json <<'PY' || fail "stabilised cascades flipped"
-import json, sys
-l = json.load(open(sys.argv[1]))["results"][0]["lights"][0]
-assert len(l["flips"]["perPair"]) == 3 and l["flips"]["max"] == 0, l["flips"]
-assert l["shadowCounters"].get("cascade3.triangles", 0) > 0, l["shadowCounters"]
-PY
 # --flips needs two frames to compare: one line, and nothing written.
 if "$tool" bench "$src/scenes/torus-floating.json" --flips --frames 1 -o oneframe >out.txt 2>err.txt; then fail "bench --flips --frames 1 succeeded"; fi
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--flips: needs at least 2 timed frames to compare (got --frames 1)" err.txt || fail "--flips --frames 1: $(cat err.txt)"

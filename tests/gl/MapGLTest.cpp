@@ -11,6 +11,7 @@
 #include <shadowlab/MapOptions.h>
 #include <shadowlab/SceneFile.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <set>
 
@@ -465,4 +466,50 @@ TEST_F(MapGLTest, TheCascadeViewColoursEachSlice) {
             if (p[0] + p[1] + p[2] > 30) seen.insert(hue(x, y));
         }
     EXPECT_EQ(seen, (std::set<char>{'r', 'g', 'b', 'y'}));
+}
+
+// RenderOptions::reuseShadowMaps (bench --flips reads one view through two
+// frames' maps): with it, no shadow pass runs and each map keeps the light
+// camera it was drawn with, so after the sun turns the shadow stays where
+// the old map put it, pixel for pixel; without it the shadow follows the
+// sun. A renderer that has drawn no map says so in one line.
+TEST_F(MapGLTest, ReusedShadowMapsKeepThePreviousFramesShadow) {
+    Scene scene = defaultScene({"lights[0].shadow.technique=map"});
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options;
+    options.width = 160;
+    options.height = 90;
+    options.reuseShadowMaps = true;
+    try {
+        renderer.render(scene, options);
+        ADD_FAILURE() << "reuseShadowMaps with no earlier frame succeeded";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("reuseShadowMaps: light 0 has no shadow map from the previous frame"), std::string::npos) << e.what();
+    }
+    options.reuseShadowMaps = false;
+    options.surfaces = true;
+    renderer.render(scene, options);
+    const std::vector<float> before = renderer.readVisibility(scene, 0);
+    // Counted on the ground alone: the torus's own terminator moves with the
+    // sun whatever map is read (the visibility term is 0 facing away).
+    const SurfaceBuffer surfaces = renderer.readSurfaces();
+    scene.lights[0].direction = glm::normalize(scene.lights[0].direction + glm::vec3(0.6f, 0.0f, 0.0f));
+    options.reuseShadowMaps = true;
+    renderer.render(scene, options);
+    const auto changedFromBefore = [&](const std::vector<float>& v) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const glm::vec4& p = surfaces.position[i];
+            if (p.w > 0.5f && std::abs(p.y) < 1e-3f) n += (v[i] >= 0.5f) != (before[i] >= 0.5f);
+        }
+        return n;
+    };
+    const std::size_t kept = changedFromBefore(renderer.readVisibility(scene, 0));
+    options.reuseShadowMaps = false;
+    renderer.render(scene, options);
+    const std::size_t turned = changedFromBefore(renderer.readVisibility(scene, 0));
+    std::printf("pixels whose class changed: %zu through the kept map, %zu through a new one\n", kept, turned);
+    EXPECT_GT(turned, 100u) << "the turned sun must move the shadow for the check to mean anything";
+    EXPECT_EQ(kept, 0u);
 }

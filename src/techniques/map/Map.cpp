@@ -50,6 +50,12 @@ public:
     static constexpr const char* summary = "a shadow map per light: orthographic for directional, perspective for spot lights";
 
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
+        if (frame.reuseShadowMaps) {
+            for (int index : lights)
+                if (!lights_.contains(index))
+                    throw Error("RenderOptions::reuseShadowMaps: light " + std::to_string(index) + " has no shadow map from the previous frame");
+            return;  // the maps and their cameras as the previous frame left them
+        }
         res_.software = gl::isSoftwareRasterizer(host.glInfo().renderer);
         res_.samplers.create();
         // Lights with the same format and size share one texture array.
