@@ -69,25 +69,90 @@ fs::path checkOutputDirectory(const std::string& output) {
     return dir;
 }
 
-PendingImages::~PendingImages() {
+namespace {
+
+// `message` with every mention of `temporary` replaced by `target`.
+std::string naming(std::string message, const std::string& temporary, const std::string& target) {
+    for (std::size_t at = message.find(temporary); at != std::string::npos; at = message.find(temporary, at + target.size()))
+        message.replace(at, temporary.size(), target);
+    return message;
+}
+
+fs::path besideTarget(const fs::path& target, const char* what) {
+    fs::path p = target;
+    p += std::string(".") + what + "-" + std::to_string(getpid());
+    return p;
+}
+
+} // namespace
+
+PendingFiles::~PendingFiles() {
     std::error_code ec;
     for (const auto& [temporary, target] : files_) fs::remove(temporary, ec);
 }
 
-void PendingImages::write(const fs::path& target, const ImageRGBA8& image) {
-    fs::path temporary = target;
-    temporary += ".pending-" + std::to_string(getpid());
-    files_.emplace_back(temporary, target);  // first: removed even if writePng fails half way
-    writePng(temporary, image);
+void PendingFiles::write(const fs::path& target, const std::function<void(const fs::path&)>& writeTo) {
+    const fs::path temporary = besideTarget(target, "pending");
+    files_.emplace_back(temporary, target);  // first: removed even if the write fails half way
+    try {
+        writeTo(temporary);
+    } catch (const Error& e) {
+        throw Error(naming(e.what(), temporary.string(), target.string()));
+    }
 }
 
-std::vector<fs::path> PendingImages::commit() {
-    std::vector<fs::path> written;
+void PendingFiles::write(const fs::path& target, const ImageRGBA8& image) {
+    write(target, [&](const fs::path& p) { writePng(p, image); });
+}
+void PendingFiles::write(const fs::path& target, const ImageGray8& image) {
+    write(target, [&](const fs::path& p) { writePng(p, image); });
+}
+void PendingFiles::write(const fs::path& target, const ImageGray16& image) {
+    write(target, [&](const fs::path& p) { writePng16(p, image); });
+}
+
+std::vector<fs::path> PendingFiles::commit() {
+    // Every target replaceable first: a directory of that name is not.
+    for (const auto& [temporary, target] : files_)
+        if (fs::is_directory(target)) throw Error(target.string() + ": cannot write (a directory of that name is in the way)");
+    // Then renamed one by one, each earlier file of the name kept aside
+    // until all are in place, and put back if one fails.
+    struct Done {
+        fs::path target, previous;  ///< previous: the earlier file, moved aside ("" if none)
+    };
+    std::vector<Done> done;
+    std::string failure;
     for (const auto& [temporary, target] : files_) {
         std::error_code ec;
+        Done d{target, {}};
+        if (fs::exists(fs::symlink_status(target, ec))) {
+            d.previous = besideTarget(target, "previous");
+            fs::rename(target, d.previous, ec);
+            if (ec) {
+                failure = target.string() + ": cannot write (" + ec.message() + ")";
+                break;
+            }
+        }
         fs::rename(temporary, target, ec);
-        if (ec) throw Error(target.string() + ": cannot write (" + ec.message() + ")");
-        written.push_back(target);
+        if (ec) {
+            failure = target.string() + ": cannot write (" + ec.message() + ")";
+            if (!d.previous.empty()) fs::rename(d.previous, target, ec);
+            break;
+        }
+        done.push_back(d);
+    }
+    std::error_code ignored;
+    if (!failure.empty()) {
+        for (auto it = done.rbegin(); it != done.rend(); ++it) {
+            fs::remove(it->target, ignored);
+            if (!it->previous.empty()) fs::rename(it->previous, it->target, ignored);
+        }
+        throw Error(failure);  // the destructor removes the temporaries
+    }
+    std::vector<fs::path> written;
+    for (const Done& d : done) {
+        if (!d.previous.empty()) fs::remove(d.previous, ignored);
+        written.push_back(d.target);
     }
     files_.clear();
     return written;

@@ -5,6 +5,7 @@
 #include <shadowlab/Image.h>
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,17 +32,25 @@ std::filesystem::path checkOutput(const std::string& output, const std::string& 
 /// Checks an output directory (-o): not an existing file, its parent there.
 std::filesystem::path checkOutputDirectory(const std::string& output);
 
-/// Images written under temporary names beside their targets and renamed
-/// into place together by commit(): a failure at frame 7 of 10 leaves no
-/// frame behind. Destroyed without commit(), the temporaries are removed.
-class PendingImages {
+/// Files written under temporary names beside their targets and renamed
+/// into place together by commit(): a failure at frame 7 of 10, or a target
+/// that cannot be replaced (a directory of that name), leaves no file of the
+/// set behind and every earlier file of those names as it was. Destroyed
+/// without commit(), the temporaries are removed. Errors name the target,
+/// never the temporary.
+class PendingFiles {
 public:
-    PendingImages() = default;
-    PendingImages(const PendingImages&) = delete;
-    PendingImages& operator=(const PendingImages&) = delete;
-    ~PendingImages();
+    PendingFiles() = default;
+    PendingFiles(const PendingFiles&) = delete;
+    PendingFiles& operator=(const PendingFiles&) = delete;
+    ~PendingFiles();
+    /// Writes `target`'s content with `writeTo(temporary)`.
+    void write(const std::filesystem::path& target, const std::function<void(const std::filesystem::path&)>& writeTo);
     void write(const std::filesystem::path& target, const ImageRGBA8& image);
-    /// Renames every image into place, in the order written; returns their names.
+    void write(const std::filesystem::path& target, const ImageGray8& image);
+    void write(const std::filesystem::path& target, const ImageGray16& image);
+    /// Renames every file into place, in the order written, all or none;
+    /// returns their names.
     std::vector<std::filesystem::path> commit();
 
 private:

@@ -104,12 +104,23 @@ void ViewerSession::save(const fs::path& path) {
         text = defaultSceneJson();
     }
     const std::string saved = sceneJsonWithOverrides(text, fromFile ? args.scene : std::string("<default scene>"), overrides.all());
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw Error(path.string() + ": cannot save the scene (a directory of that name is in the way)");
     const fs::path partial = path.string() + ".partial";
     {
         std::ofstream out(partial, std::ios::binary);
-        if (!(out << saved)) throw Error(path.string() + ": cannot write");
+        if (!(out << saved)) {
+            out.close();
+            fs::remove(partial, ec);
+            throw Error(path.string() + ": cannot save the scene (cannot write there)");
+        }
     }
-    fs::rename(partial, path);
+    fs::rename(partial, path, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(partial, ignored);
+        throw Error(path.string() + ": cannot save the scene (" + ec.message() + ")");
+    }
 }
 
 void ViewerSession::apply(const std::string& key, const std::string& value) {

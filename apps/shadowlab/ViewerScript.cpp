@@ -56,6 +56,13 @@ std::vector<Action> readScript(const std::string& path) {
             if (a.argument.empty()) throw Error(where + a.verb + ": expected a file name");
             // A screenshot is a PNG, as render -o's: refused before the first frame.
             if (a.verb == "screenshot") tool::checkOutput(a.argument, where + "screenshot");
+            // The scene JSON's name: not a directory, in one that exists.
+            if (a.verb == "save") {
+                const std::filesystem::path file(a.argument), dir = file.parent_path();
+                if (std::filesystem::is_directory(file)) throw Error(where + "save " + a.argument + ": is a directory (expected a file name for the scene JSON)");
+                if (!dir.empty() && !std::filesystem::is_directory(dir))
+                    throw Error(where + "save " + a.argument + ": directory " + dir.string() + " does not exist");
+            }
         } else if (a.verb == "resize") {
             std::istringstream size(a.argument);
             int w = 0, h = 0;

@@ -186,7 +186,7 @@ int runRender(const RenderArgs& args) {
     checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(loaded);
-    tool::PendingImages pending;
+    tool::PendingFiles pending;
     Scene scene = loaded;
     for (int k = 0; k < args.frames; ++k) {
         const fs::path& output = outputs[static_cast<std::size_t>(k)];
@@ -258,10 +258,13 @@ int runCompare(const CompareArgs& args) {
     printNotes(c.techniqueFrame.notes);
     requireNoGlErrors(context);
 
-    fs::create_directories(dir);
-    std::vector<fs::path> written{dir / "technique.png", dir / "reference.png"};
-    writePng(written[0], c.technique);
-    writePng(written[1], c.reference);
+    // Every file staged, then all renamed into place or none (OutputFiles.h).
+    std::error_code ec;
+    const bool madeDirectory = fs::create_directories(dir, ec);
+    if (ec) throw Error("-o " + args.output + ": cannot create the directory (" + ec.message() + ")");
+    tool::PendingFiles pending;
+    pending.write(dir / "technique.png", c.technique);
+    pending.write(dir / "reference.png", c.reference);
     nlohmann::json lights = nlohmann::json::array();
     std::cout << "scene " << scene.name << ", " << args.width << "x" << args.height << ", reference traced in "
               << static_cast<long>(c.referenceMs) << " ms\n";
@@ -283,30 +286,33 @@ int runCompare(const CompareArgs& args) {
             std::cout << "  penumbra:                          " << l.techniquePenumbraPixels << " pixels against " << l.referencePenumbraPixels
                       << " in truth (ratio " << l.penumbraRatio() << ")\n";
         const std::string index = std::to_string(i);
-        written.push_back(dir / ("error-" + index + ".png"));
-        writePng(written.back(), l.errorImage);
-        written.push_back(dir / ("visibility-" + index + ".png"));
-        writePng16(written.back(), l.referenceVisibility);
-        written.push_back(dir / ("technique-visibility-" + index + ".png"));
-        writePng16(written.back(), l.techniqueVisibility);
-        written.push_back(dir / ("reach-" + index + ".png"));
-        writePng(written.back(), l.reach);
+        pending.write(dir / ("error-" + index + ".png"), l.errorImage);
+        pending.write(dir / ("visibility-" + index + ".png"), l.referenceVisibility);
+        pending.write(dir / ("technique-visibility-" + index + ".png"), l.techniqueVisibility);
+        pending.write(dir / ("reach-" + index + ".png"), l.reach);
         lights.push_back(tool::lightRecord(light, l, {{"errorImage", "error-" + index + ".png"},
                                                       {"visibilityImage", "visibility-" + index + ".png"},
                                                       {"techniqueVisibilityImage", "technique-visibility-" + index + ".png"},
                                                       {"reachImage", "reach-" + index + ".png"}}));
     }
-    written.push_back(dir / "metrics.json");
-    tool::writeJsonAtomically(written.back(), {{"scene", scene.name},
-                                               {"sceneFile", args.scene.empty() ? "<default>" : args.scene},
-                                               {"width", args.width},
-                                               {"height", args.height},
-                                               {"softSamples", args.softSamples},
-                                               {"time", args.timeSeconds},
-                                               {"referenceMs", c.referenceMs},
-                                               {"techniqueImage", "technique.png"},
-                                               {"referenceImage", "reference.png"},
-                                               {"lights", lights}});
+    const nlohmann::json metrics{{"scene", scene.name},
+                                 {"sceneFile", args.scene.empty() ? "<default>" : args.scene},
+                                 {"width", args.width},
+                                 {"height", args.height},
+                                 {"softSamples", args.softSamples},
+                                 {"time", args.timeSeconds},
+                                 {"referenceMs", c.referenceMs},
+                                 {"techniqueImage", "technique.png"},
+                                 {"referenceImage", "reference.png"},
+                                 {"lights", lights}};
+    pending.write(dir / "metrics.json", [&](const fs::path& p) { tool::writeJsonAtomically(p, metrics); });
+    std::vector<fs::path> written;
+    try {
+        written = pending.commit();
+    } catch (const Error&) {
+        if (madeDirectory) fs::remove(dir, ec);  // empty again: nothing of this run is left
+        throw;
+    }
     std::cout << "wrote";
     for (const fs::path& p : written) std::cout << " " << p.string();
     std::cout << "\n";

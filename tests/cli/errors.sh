@@ -253,5 +253,34 @@ else
   echo "FAIL bench-300-character-name"; failures=$((failures + 1))
 fi
 
+# Outputs renamed into place all or none (OutputFiles.h): a directory in the
+# way of one of them fails the command in one line naming that file, and
+# leaves none of the others, no temporary, and earlier files as they were.
+# expect_all_or_nothing NAME EXPECTED DIR BLOCKING_DIRECTORY EXISTING_FILE ARGS...
+expect_all_or_nothing() {
+  local name=$1 expected=$2 dir=$3 blocker=$4 existing=$5
+  shift 5
+  local stderr code
+  stderr=$(cd "$work" && "$tool" "$@" 2>&1 >/dev/null)
+  code=$?
+  local left
+  left=$(cd "$work/$dir" && ls -A | grep -v -x -e "$blocker" -e "$existing")
+  if [[ $code -ne 0 && $code -lt 128 && $(printf '%s' "$stderr" | grep -c '') -eq 1 && "$stderr" == *"$expected"* && -z "$left" &&
+        "$(cat "$work/$dir/$existing")" == "earlier" ]]; then
+    echo "ok   $name: $stderr"; passed=$((passed + 1))
+  else
+    echo "FAIL $name (exit $code): $stderr; left: $left; $existing: $(cat "$work/$dir/$existing" 2>&1)"; failures=$((failures + 1))
+  fi
+}
+mkdir -p "$work/cmpblocked/technique.png" && echo earlier > "$work/cmpblocked/reference.png"
+expect_all_or_nothing compare-output-blocked-by-directory "cmpblocked/technique.png: cannot write (a directory of that name is in the way)" \
+  cmpblocked technique.png reference.png compare -o cmpblocked --width 32 --height 18 --samples 1
+mkdir -p "$work/seq" "$work/seq/shot-0002.png" && echo earlier > "$work/seq/shot-0000.png"
+expect_all_or_nothing render-sequence-blocked-by-directory "-o seq/shot-0002.png: is a directory (expected a .png file name)" \
+  seq shot-0002.png shot-0000.png render -o seq/shot-%04d.png --frames 3 --width 32 --height 18
+mkdir -p "$work/dbg" "$work/dbg/blocker-light0-map.png" && echo earlier > "$work/dbg/blocker.png"
+expect_all_or_nothing render-debug-image-blocked-by-directory "dbg/blocker-light0-map.png: cannot write (a directory of that name is in the way)" \
+  dbg blocker-light0-map.png blocker.png render --set lights[0].shadow.technique=map -o dbg/blocker.png --debug shadow-maps --width 32 --height 18
+
 echo "$passed passed, $failures failed"
 [[ $failures -eq 0 ]]

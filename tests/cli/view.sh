@@ -84,4 +84,12 @@ if "$tool" view --script jpg.txt 2>err.txt; then echo "screenshot .jpg accepted"
 [[ $(wc -l <err.txt) -eq 1 && ! -e shot.jpg ]] && grep -q "jpg.txt:2: screenshot shot.jpg: expected a .png file name" err.txt || { echo "screenshot .jpg: $(cat err.txt)"; exit 1; }
 if "$tool" view --frames 1 --screenshot shot.jpg 2>err.txt; then echo "--screenshot .jpg accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 && ! -e shot.jpg ]] && grep -q -- "--screenshot shot.jpg: expected a .png file name" err.txt || { echo "--screenshot .jpg: $(cat err.txt)"; exit 1; }
+# "save" into a directory's name, or into a directory that is not there:
+# refused before the first frame, in one line, nothing written.
+for target in . nowhere/x.json; do
+  printf 'wait 1\nsave %s\nquit\n' "$target" > save.txt
+  if "$tool" view --script save.txt 2>err.txt; then echo "save $target accepted"; exit 1; fi
+  [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "save.txt:2: save $target: " err.txt || { echo "save $target: $(cat err.txt)"; exit 1; }
+done
+[[ -z $(ls -A | grep partial) ]] || { echo "save left $(ls -A | grep partial)"; exit 1; }
 echo ok
