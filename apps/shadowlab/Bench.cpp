@@ -59,11 +59,11 @@ StagingDirectory::~StagingDirectory() {
 
 void StagingDirectory::commit() {
     std::error_code ec;
-    if (!fs::exists(target_)) {
+    if (!fs::exists(target_, ec)) {
         fs::rename(staging_, target_, ec);
         if (ec) throw Error(target_.string() + ": cannot move the results into place (" + ec.message() + ")");
     } else {
-        for (const fs::directory_entry& entry : fs::directory_iterator(staging_)) {
+        for (const fs::directory_entry& entry : fs::directory_iterator(staging_, ec)) {
             const fs::path destination = target_ / entry.path().filename();
             fs::remove_all(destination, ec);
             fs::rename(entry.path(), destination, ec);
@@ -113,7 +113,8 @@ json runBench(Context& context, const BenchArgs& args) {
     checkArgs(args);
     std::vector<BenchRun> runs = loadRuns(args);  // every scene and combination checked before the long run starts
     std::fprintf(stderr, "bench: %zu run%s\n", runs.size(), runs.size() == 1 ? "" : "s");
-    fs::create_directories(args.output / "images");
+    if (std::error_code ec; !fs::create_directories(args.output / "images", ec) && ec)
+        throw Error((args.output / "images").string() + ": cannot create directory (" + ec.message() + ")");
     Progress progress(runs.size());
     json records = json::array();
     for (BenchRun& run : runs) {
@@ -122,11 +123,19 @@ json runBench(Context& context, const BenchArgs& args) {
         std::string label = scene.name;
         for (const std::string& c : run.combo) label += " " + c;
         progress.step(records.size(), label);
-        Renderer renderer(context);
-        renderer.upload(scene);
-        const TimedFrames timed = timeFrames(renderer, scene, run.loaded, args);
-        const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args);
-        records.push_back(runRecord(run, scene, timed, accuracy, records.size(), label, args));
+        try {
+            Renderer renderer(context);
+            renderer.upload(scene);
+            const TimedFrames timed = timeFrames(renderer, scene, run.loaded, args);
+            const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args);
+            records.push_back(runRecord(run, scene, timed, accuracy, records.size(), label, args));
+        } catch (const Error& e) {
+            // Name the run that failed: its scene and the combination of --vary values.
+            std::string where = run.file.empty() ? std::string("the default scene") : run.file;
+            for (const std::string& c : run.combo) where += ", --vary " + c;
+            throw Error("bench run " + std::to_string(records.size() + 1) + "/" + std::to_string(runs.size()) + " (" + where +
+                        "): " + e.what());
+        }
         progress.step(records.size(), label);
         run.loaded = Scene{};  // its meshes and textures are not needed again
     }

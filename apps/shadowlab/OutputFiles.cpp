@@ -50,22 +50,32 @@ FramePattern parseFramePattern(const std::string& output) {
     return p;
 }
 
+fs::file_status pathStatus(const fs::path& path, const std::string& label) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    // A missing name is a status (not_found); a name too long or a loop of links is not.
+    if (status.type() == fs::file_type::none) throw Error(label + ": " + ec.message());
+    return status;
+}
+
 fs::path checkOutput(const std::string& output, const std::string& flag) {
     const fs::path path(output);
-    if (fs::is_directory(path)) throw Error(flag + " " + output + ": is a directory (expected a .png file name)");
-    if (path.extension() != ".png" && path.extension() != ".PNG")
-        throw Error(flag + " " + output + ": expected a .png file name");
+    const std::string label = flag + " " + output;
+    if (fs::is_directory(pathStatus(path, label))) throw Error(label + ": is a directory (expected a .png file name)");
+    if (path.extension() != ".png" && path.extension() != ".PNG") throw Error(label + ": expected a .png file name");
     const fs::path dir = path.parent_path();
-    if (!dir.empty() && !fs::is_directory(dir))
-        throw Error(flag + " " + output + ": directory " + dir.string() + " does not exist");
+    if (!dir.empty() && !fs::is_directory(pathStatus(dir, label)))
+        throw Error(label + ": directory " + dir.string() + " does not exist");
     return path;
 }
 
 fs::path checkOutputDirectory(const std::string& output) {
     const fs::path dir(output);
-    if (fs::exists(dir) && !fs::is_directory(dir)) throw Error("-o " + output + ": exists and is not a directory");
-    if (!dir.parent_path().empty() && !fs::is_directory(dir.parent_path()))
-        throw Error("-o " + output + ": directory " + dir.parent_path().string() + " does not exist");
+    const std::string label = "-o " + output;
+    const fs::file_status status = pathStatus(dir, label);
+    if (fs::exists(status) && !fs::is_directory(status)) throw Error(label + ": exists and is not a directory");
+    if (!dir.parent_path().empty() && !fs::is_directory(pathStatus(dir.parent_path(), label)))
+        throw Error(label + ": directory " + dir.parent_path().string() + " does not exist");
     return dir;
 }
 
@@ -114,7 +124,7 @@ void PendingFiles::write(const fs::path& target, const ImageGray16& image) {
 std::vector<fs::path> PendingFiles::commit() {
     // Every target replaceable first: a directory of that name is not.
     for (const auto& [temporary, target] : files_)
-        if (fs::is_directory(target)) throw Error(target.string() + ": cannot write (a directory of that name is in the way)");
+        if (std::error_code ec; fs::is_directory(target, ec)) throw Error(target.string() + ": cannot write (a directory of that name is in the way)");
     // Then renamed one by one, each earlier file of the name kept aside
     // until all are in place, and put back if one fails.
     struct Done {

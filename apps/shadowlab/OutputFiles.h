@@ -25,6 +25,11 @@ struct FramePattern {
 /// for a field other than one integer conversion.
 FramePattern parseFramePattern(const std::string& output);
 
+/// The status of `path`; throws Error "LABEL: REASON" when it cannot be
+/// known (a name too long, a loop of links). A missing name is not an error
+/// (file_type::not_found).
+std::filesystem::file_status pathStatus(const std::filesystem::path& path, const std::string& label);
+
 /// Checks an output PNG path (given by `flag`) before any work is done, so
 /// bad paths fail fast: a .png name in an existing directory.
 std::filesystem::path checkOutput(const std::string& output, const std::string& flag);

@@ -306,7 +306,12 @@ window.addEventListener('load', () => {
         out << h.str();
         if (!out) throw Error(path.string() + ": cannot write");
     }
-    fs::rename(tmp, path);
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        throw Error(path.string() + ": cannot write (" + ec.message() + ")");
+    }
 }
 
 } // namespace shadowlab::tool

@@ -26,7 +26,8 @@ constexpr std::uintmax_t kMaxScriptBytes = 1u << 20;
 std::vector<Action> readScript(const std::string& path) {
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(status)) throw Error("--script " + path + ": no such file");
+    if (status.type() == std::filesystem::file_type::none) throw Error("--script " + path + ": " + ec.message());
+    if (!std::filesystem::exists(status)) throw Error("--script " + path + ": no such file");
     if (!std::filesystem::is_regular_file(status)) throw Error("--script " + path + ": not a regular file (expected a script file)");
     const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
     if (ec || bytes > kMaxScriptBytes)

@@ -11,6 +11,7 @@
 #include "Viewer.h"
 #endif
 #include "Metrics.h"
+#include "Limits.h"
 #include "OutputFiles.h"
 
 #include <shadowlab/Compare.h>
@@ -25,7 +26,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -88,50 +88,6 @@ Scene loadScene(const std::string& path, const std::vector<std::string>& overrid
     return path.empty() ? defaultScene(overrides) : loadSceneFile(path, overrides);
 }
 
-// Bytes per output pixel, estimated: the colour, depth and G-buffer targets
-// on the GPU (llvmpipe keeps them in system memory), their read-backs and
-// CPU images, the reference's per-pixel buffers and the PNG encoder's copy.
-constexpr double kBytesPerPixelEstimate = 64.0;
-// Share of physical memory a frame may take.
-constexpr double kMemoryBudgetShare = 0.5;
-
-// Refuses a frame (or the viewer's window) whose estimated memory exceeds
-// the budget, before any GL object is created (a 16384x16384 frame otherwise
-// runs out of memory inside the driver after a minute). Physical memory
-// from sysconf; SHADOWLAB_MEMORY_LIMIT_BYTES, when set, is the budget
-// instead (the tests check this path with a small one).
-void checkMemory(int width, int height) {
-    double budget = 0.0;
-    std::string what = "half of this machine's memory";
-    if (const char* limit = std::getenv("SHADOWLAB_MEMORY_LIMIT_BYTES"); limit && *limit) {
-        char* end = nullptr;
-        budget = std::strtod(limit, &end);
-        if (*end != '\0' || !(budget > 0.0)) throw Error(std::string("SHADOWLAB_MEMORY_LIMIT_BYTES=") + limit + ": expected a number of bytes > 0");
-        what = "SHADOWLAB_MEMORY_LIMIT_BYTES";
-    } else {
-        const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES)), pageSize = static_cast<double>(sysconf(_SC_PAGE_SIZE));
-        if (pages <= 0 || pageSize <= 0) return; // unknown: the GPU limit check still applies
-        budget = kMemoryBudgetShare * pages * pageSize;
-    }
-    const double needed = kBytesPerPixelEstimate * static_cast<double>(width) * static_cast<double>(height);
-    if (needed <= budget) return;
-    // In GiB, or MiB under one.
-    const bool gib = budget >= 1073741824.0;
-    const double unit = gib ? 1073741824.0 : 1048576.0;
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "--width %d --height %d: the frame needs about %.1f %s (estimated %.0f bytes per pixel), more than the budget of "
-                  "%.1f %s (%s)",
-                  width, height, needed / unit, gib ? "GiB" : "MiB", kBytesPerPixelEstimate, budget / unit, gib ? "GiB" : "MiB", what.c_str());
-    throw Error(text);
-}
-
-void checkSize(int width, int height, const GlInfo& info) {
-    const int limit = std::min({info.maxTextureSize, info.maxViewportWidth, info.maxViewportHeight});
-    if (width > limit) throw Error("--width " + std::to_string(width) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
-    if (height > limit) throw Error("--height " + std::to_string(height) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
-}
-
 void requireNoGlErrors(const Context& context) {
     if (context.debugErrorCount() > 0)
         throw Error("OpenGL reported " + std::to_string(context.debugErrorCount()) + " error(s); last: " + context.lastDebugError());
@@ -181,9 +137,9 @@ int runRender(const RenderArgs& args) {
         Scene first = sceneAtTime(loaded, times[0]);
         applyViewFromLight(first, args.viewFromLight);
     }
-    checkMemory(args.width, args.height);
+    tool::checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
-    checkSize(args.width, args.height, context.info());
+    tool::checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(loaded);
     tool::PendingFiles pending;
@@ -244,9 +200,9 @@ int runCompare(const CompareArgs& args) {
     // Both sides, technique and reference, see the lights and the camera at --time.
     const Scene scene = sceneAtTime(loadScene(args.scene, args.overrides), args.timeSeconds);
     const fs::path dir = tool::checkOutputDirectory(args.output);
-    checkMemory(args.width, args.height);
+    tool::checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
-    checkSize(args.width, args.height, context.info());
+    tool::checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(scene);
     CompareOptions options;
@@ -326,13 +282,14 @@ int runBenchCommand(const tool::BenchArgs& args) {
             throw Error(text::escapeControl(file) + ": file name is not valid UTF-8 (results.json is UTF-8)");
         std::error_code ec;
         const auto status = fs::status(file, ec);
+        if (status.type() == fs::file_type::none) throw Error(file + ": " + ec.message());
         if (!fs::exists(status)) throw Error(file + ": file not found");
         if (!fs::is_regular_file(status)) throw Error(file + ": not a regular file (expected a scene file)");
     }
     tool::checkOutputDirectory(args.output.string());
-    checkMemory(args.width, args.height);
+    tool::checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
-    checkSize(args.width, args.height, context.info());
+    tool::checkSize(args.width, args.height, context.info());
     // Everything is written into a staging directory beside the output and
     // moved into place only when the whole run succeeded: a failure half way
     // (a texture past the GPU limit in the third scene) leaves nothing behind.
@@ -387,6 +344,10 @@ int runInfo() {
               << "max cube map size:  " << i.maxCubeMapSize << "\n"
               << "max array layers:   " << i.maxArrayLayers << "\n"
               << "max viewport:       " << i.maxViewportWidth << "x" << i.maxViewportHeight << "\n"
+              << "device memory free: "
+              << (i.deviceMemoryBytes > 0 ? std::to_string(i.deviceMemoryBytes / 1048576) + " MiB (" + i.deviceMemorySource + ")"
+                                          : std::string("not reported by the driver"))
+              << "\n"
               << "build: viewer " << (SHADOWLAB_VIEWER ? "on" : "off")
 #ifdef SHADOWLAB_WITH_EMBREE
               << ", embree reference on"
@@ -559,13 +520,16 @@ int main(int argc, char** argv) {
         if (*view) {
             if (!viewArgs.screenshot.empty() && viewArgs.frames == 0) throw Error("--screenshot: needs --frames N (the frame to take)");
             if (!viewArgs.screenshot.empty()) tool::checkOutput(viewArgs.screenshot, "--screenshot");
-            checkMemory(viewArgs.width, viewArgs.height);  // the window's targets, as render's
+            tool::checkMemory(viewArgs.width, viewArgs.height);  // the window's targets, as render's
             return runView(viewArgs);
         }
 #endif
         if (*techniquesCommand) return runTechniques(techniquesMarkdown);
     } catch (const std::exception& e) {
         std::string message = e.what();
+        // A file-system call that still throws: its path and reason, without the library's "filesystem error:" text.
+        if (const auto* f = dynamic_cast<const fs::filesystem_error*>(&e))
+            message = (f->path1().empty() ? std::string("a file") : f->path1().string()) + ": " + f->code().message();
         if (*render) message = withValueSource(message, renderArgs.scene.empty() ? "the default scene" : renderArgs.scene, renderArgs.overrides);
         if (*compare) message = withValueSource(message, compareArgs.scene.empty() ? "the default scene" : compareArgs.scene, compareArgs.overrides);
         // Escaped once more here: whatever a message quotes, it stays one line.

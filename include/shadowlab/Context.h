@@ -28,6 +28,12 @@ struct GlInfo {
     int maxArrayLayers = 0;     ///< GL_MAX_ARRAY_TEXTURE_LAYERS
     int maxRenderbufferSize = 0;///< GL_MAX_RENDERBUFFER_SIZE
     int maxViewportWidth = 0, maxViewportHeight = 0;
+    /// Device memory free when the context was made, bytes, as the driver
+    /// reports it (GL_NVX_gpu_memory_info's current available video memory,
+    /// else GL_ATI_meminfo's free texture memory); 0 when it reports none
+    /// (llvmpipe, which uses host memory).
+    long long deviceMemoryBytes = 0;
+    std::string deviceMemorySource; ///< the extension deviceMemoryBytes came from, or ""
 };
 
 /// A headless context: EGL on Mesa's surfaceless platform (llvmpipe where

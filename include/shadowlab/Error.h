@@ -14,7 +14,15 @@ namespace shadowlab {
 
 class SHADOWLAB_API Error : public std::runtime_error {
 public:
-    explicit Error(const std::string& message) : std::runtime_error(message) {}
+    /// A NUL byte in `message` (quoted from a user's file) is kept as the
+    /// text `\x00`, so that what(), a C string, is not cut there.
+    explicit Error(const std::string& message) : std::runtime_error(visibleNul(message)) {}
+
+private:
+    static std::string visibleNul(std::string s) {
+        for (std::size_t at = s.find('\0'); at != std::string::npos; at = s.find('\0', at + 4)) s.replace(at, 1, "\\x00");
+        return s;
+    }
 };
 
 } // namespace shadowlab

@@ -34,8 +34,9 @@ void commit(const fs::path& tmp, const fs::path& path) {
 
 void requireDirectory(const fs::path& path) {
     const fs::path dir = path.parent_path();
-    if (!dir.empty() && !fs::is_directory(dir))
-        throw Error(path.string() + ": cannot write (directory " + dir.string() + " does not exist)");
+    std::error_code ec;
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+        throw Error(path.string() + ": cannot write (directory " + dir.string() + (ec ? ": " + ec.message() : " does not exist") + ")");
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include <shadowlab/Context.h>
 
 #include <atomic>
+#include <functional>
 #include <mutex>
 #include <string>
 
@@ -38,6 +39,22 @@ namespace shadowlab::gl {
 
 /// Installs the debug callback on the current context (synchronous output).
 void installDebugOutput(DebugState& state);
+/// Free device memory as the driver reports it: GL_NVX_gpu_memory_info's
+/// current available video memory, else GL_ATI_meminfo's free texture
+/// memory (both in KiB); {0, ""} when neither extension is there. The
+/// queries are parameters so that tests can feed a driver that has them.
+struct DeviceMemory {
+    long long bytes = 0;
+    std::string source;
+};
+DeviceMemory queryDeviceMemory(const std::function<bool(const char*)>& hasExtension,
+                               const std::function<void(unsigned pname, int* values)>& getIntegerv);
+
+/// Throws shadowlab::Error naming `where` if GL recorded GL_OUT_OF_MEMORY
+/// since the last call (other errors are left to the debug output); clears
+/// GL's error flags.
+void throwIfOutOfMemory(const char* where);
+
 /// Fills GlInfo from the current context (platform left to the caller).
 GlInfo queryGlInfo();
 /// Throws shadowlab::Error unless the current context is 4.5 core or newer.

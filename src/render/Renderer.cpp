@@ -2,6 +2,8 @@
 // renderer's state and its services to techniques: RendererImpl.h.
 #include "render/RendererImpl.h"
 
+#include "gl/Debug.h"
+
 #include <shadowlab/Techniques.h>
 
 #include <chrono>
@@ -31,6 +33,7 @@ void Renderer::upload(const Scene& scene) {
     impl_->gpu.emplace(scene);
     impl_->uploadedMeshes = scene.meshes.size();
     impl_->uploadedTextures = scene.textures.size();
+    gl::throwIfOutOfMemory("while uploading the scene's meshes and textures");
 }
 
 FrameStats Renderer::render(const Scene& scene, const RenderOptions& options) { return impl_->frame(scene, options, nullptr); }
@@ -174,6 +177,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     stats.clock = gl::toString(clock->kind());
     stats.baseLight = baseLight;
     glFinish();
+    gl::throwIfOutOfMemory("while drawing the frame");
     stats.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
     ++frames;
     lastFrameHadSurfaces = options.surfaces;

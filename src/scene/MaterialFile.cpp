@@ -20,6 +20,7 @@ ImageRGBA8 loadTexture(const Reader& r, const fs::path& file) {
     const std::string name = file.string();
     std::error_code ec;
     const auto status = fs::status(file, ec);
+    if (status.type() == fs::file_type::none) r.fail("texture " + name + ": " + ec.message());
     if (!fs::exists(status)) r.fail("texture file not found: " + name);
     if (!fs::is_regular_file(status)) r.fail("texture " + name + " is not a regular file");
     int w = 0, h = 0, channels = 0;

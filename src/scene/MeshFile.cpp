@@ -40,6 +40,7 @@ std::string displayName(const fs::path& path) { return path.string(); }
 void requireRegularFile(const fs::path& path) {
     std::error_code ec;
     const auto status = fs::status(path, ec);
+    if (status.type() == fs::file_type::none) throw Error(displayName(path) + ": " + ec.message());
     if (!fs::exists(status)) throw Error(displayName(path) + ": file not found");
     if (!fs::is_regular_file(status)) throw Error(displayName(path) + ": not a regular file");
 }

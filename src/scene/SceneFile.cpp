@@ -111,8 +111,11 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
 
 Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overrides) {
     const std::string name = path.string();
-    if (!fs::exists(path)) throw Error(name + ": file not found");
-    if (!fs::is_regular_file(path)) throw Error(name + ": not a regular file");
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (status.type() == fs::file_type::none) throw Error(name + ": " + ec.message());  // a name too long, a loop of links
+    if (!fs::exists(status)) throw Error(name + ": file not found");
+    if (!fs::is_regular_file(status)) throw Error(name + ": not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(name + ": cannot open for reading");
     std::stringstream text;

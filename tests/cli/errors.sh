@@ -122,6 +122,25 @@ TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=1000000 expect_error memory-injected-rende
 if "$tool" view --help >/dev/null 2>&1; then  # built with the viewer
   TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=1000000 expect_error memory-injected-view "--width 1024 --height 768: the frame needs about 48.0 MiB" view --width 1024 --height 768
 fi
+# Names the system refuses (too long, a loop of links): the flag or file and the reason, never raw "filesystem error:" text.
+long=$(printf 'x%.0s' $(seq 300))
+ln -s loop-b "$work/loop-a"; ln -s loop-a "$work/loop-b"
+expect_error output-name-too-long "-o $long.png: File name too long" render -o "$long.png"
+expect_error output-in-link-loop "-o loop-a/x.png: Too many levels of symbolic links" render -o loop-a/x.png
+expect_error compare-output-in-link-loop "-o loop-a/d: Too many levels of symbolic links" compare -o loop-a/d
+expect_error bench-output-name-too-long "-o $long: File name too long" bench -o "$long"
+expect_error scene-name-too-long "$long.json: File name too long" render "$long.json" -o out.png
+expect_error scene-in-link-loop "loop-a/s.json: Too many levels of symbolic links" render loop-a/s.json -o out.png
+expect_error bench-scene-in-link-loop "loop-a/s.json: Too many levels of symbolic links" bench loop-a/s.json -o outdir
+if "$tool" view --help >/dev/null 2>&1; then
+  # A NUL byte in a script line is shown, not where the message stops.
+  printf 'bogus\0tail\n' > "$work/nul.txt"
+  expect_error script-nul-byte "nul.txt:1: unknown action 'bogus\\x00tail' (expected" view --script nul.txt
+  expect_error script-in-link-loop "--script loop-a/s.txt: Too many levels of symbolic links" view --script loop-a/s.txt
+fi
+# The device-memory guard, with a driver that reports 1 MiB free (injected: llvmpipe reports none).
+TOOL_ENV=SHADOWLAB_DEVICE_MEMORY_KIB=1024 expect_error memory-device "--width 640 --height 360: the frame needs about 14.1 MiB (estimated 64 bytes per pixel), more than the budget of 1.0 MiB (the device memory GL_NVX_gpu_memory_info reports free)" render -o out.png --width 640 --height 360
+if ! env SHADOWLAB_DEVICE_MEMORY_KIB=1024 "$tool" info | grep -q '^device memory free: 1 MiB (GL_NVX_gpu_memory_info)$'; then echo "FAIL info-device-memory"; failures=$((failures + 1)); fi
 TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=lots expect_error memory-limit-bad "SHADOWLAB_MEMORY_LIMIT_BYTES=lots: expected a number of bytes > 0" render -o out.png
 # --debug-images names itself when its directory cannot be (was a raw "filesystem error"), and nothing is written.
 touch "$work/plainfile"
@@ -158,6 +177,9 @@ expect_dir_error compare-samples-zero "--samples" compare -o outdir --samples 0
 expect_dir_error compare-output-is-file "-o malformed.json: exists and is not a directory" compare -o malformed.json
 expect_dir_error bench-missing-scene "nope.json: file not found" bench nope.json -o outdir
 expect_dir_error bench-bad-vary "--vary lights[0].intensity: expected key=value1,value2" bench -o outdir --vary 'lights[0].intensity'
+# A run that fails mid-bench names its scene and combination (its maps pass the load, not the memory budget).
+PROGRESS_OK=1 expect_dir_error bench-run-names-combination "bench run 2/2 ($src/scenes/two-boxes-sun.json, --vary lights[0].shadow.map.size=16384): lights[0].shadow.map.size: the shadow maps of 1 light(s) need" \
+  bench "$src/scenes/two-boxes-sun.json" -o outdir --frames 1 --warmup 0 --width 32 --height 32 --set lights[0].shadow.technique=map --set 'lights[0].shadow.map.format="rgba8"' --vary lights[0].shadow.map.size=64,16384
 expect_dir_error bench-vary-bad-value "--vary lights[0].intensity=abc: lights[0].intensity: expected a number" bench -o outdir --vary 'lights[0].intensity=1,abc'
 expect_dir_error bench-vary-empty-value "--vary lights[0].intensity=1,,2: empty value" bench -o outdir --vary 'lights[0].intensity=1,,2'
 expect_dir_error bench-frames-zero "--frames" bench -o outdir --frames 0

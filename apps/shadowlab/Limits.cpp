@@ -1,0 +1,70 @@
+// The frame-size limits (Limits.h).
+#include "Limits.h"
+
+#include <shadowlab/Error.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace shadowlab::tool {
+
+namespace {
+
+// Bytes per output pixel, estimated: the colour, depth and G-buffer targets
+// on the GPU (llvmpipe keeps them in system memory), their read-backs and
+// CPU images, the reference's per-pixel buffers and the PNG encoder's copy.
+constexpr double kBytesPerPixelEstimate = 64.0;
+// Share of physical memory a frame may take.
+constexpr double kMemoryBudgetShare = 0.5;
+
+// "--width W --height H: the frame needs about N GiB (...), more than the
+// budget of B GiB (what)", in GiB or in MiB under one.
+[[noreturn]] void refuse(int width, int height, double needed, double budget, const std::string& what) {
+    const bool gib = budget >= 1073741824.0;
+    const double unit = gib ? 1073741824.0 : 1048576.0;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "--width %d --height %d: the frame needs about %.1f %s (estimated %.0f bytes per pixel), more than the budget of "
+                  "%.1f %s (%s)",
+                  width, height, needed / unit, gib ? "GiB" : "MiB", kBytesPerPixelEstimate, budget / unit, gib ? "GiB" : "MiB", what.c_str());
+    throw Error(text);
+}
+
+double frameBytes(int width, int height) { return kBytesPerPixelEstimate * static_cast<double>(width) * static_cast<double>(height); }
+
+} // namespace
+
+// A 16384x16384 frame otherwise runs out of memory inside the driver after a minute.
+void checkMemory(int width, int height) {
+    double budget = 0.0;
+    std::string what = "half of this machine's memory";
+    if (const char* limit = std::getenv("SHADOWLAB_MEMORY_LIMIT_BYTES"); limit && *limit) {
+        char* end = nullptr;
+        budget = std::strtod(limit, &end);
+        if (*end != '\0' || !(budget > 0.0)) throw Error(std::string("SHADOWLAB_MEMORY_LIMIT_BYTES=") + limit + ": expected a number of bytes > 0");
+        what = "SHADOWLAB_MEMORY_LIMIT_BYTES";
+    } else {
+        const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES)), pageSize = static_cast<double>(sysconf(_SC_PAGE_SIZE));
+        if (pages <= 0 || pageSize <= 0) return; // unknown: the GPU limit check still applies
+        budget = kMemoryBudgetShare * pages * pageSize;
+    }
+    const double needed = frameBytes(width, height);
+    if (needed > budget) refuse(width, height, needed, budget, what);
+}
+
+void checkSize(int width, int height, const GlInfo& info) {
+    const int limit = std::min({info.maxTextureSize, info.maxViewportWidth, info.maxViewportHeight});
+    if (width > limit) throw Error("--width " + std::to_string(width) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
+    if (height > limit) throw Error("--height " + std::to_string(height) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");
+    // The device's own memory, where the driver reports it (a GPU with less
+    // memory than half of the host's would otherwise fail inside the driver).
+    const double device = static_cast<double>(info.deviceMemoryBytes);
+    if (device > 0.0 && frameBytes(width, height) > device)
+        refuse(width, height, frameBytes(width, height), device, "the device memory " + info.deviceMemorySource + " reports free");
+}
+
+} // namespace shadowlab::tool
