@@ -4,7 +4,8 @@
 //   colour = globalAmbient*ambient*base
 //          + visibility * light * (diffuse*base*max(N.L,0) + specular*max(N.H,0)^shininess)
 // Variants (ShaderVariant): AMBIENT, LIGHT (0/1: the ambient term, one
-// light's term), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE,
+// light's term), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE, ALPHA_TEST
+// (alphaMode mask: discard under the cutoff),
 // WRITE_SURFACES (world position and geometric normal for the reference),
 // SCREEN_VISIBILITY (visibility from a per-pixel texture: the ray-traced
 // reference), OUTPUT_VISIBILITY (write the visibility term itself, for
@@ -84,7 +85,9 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 #endif
 
 void main() {
+#if ALPHA_TEST
     if (alphaCutOut(vUv)) discard;  // a hole in an alpha-tested surface: nothing drawn, no surface for the reference
+#endif
     vec3 N = normalize(vWorldNormal);
     // Two-sided lighting: a back face seen by the camera is lit as its front.
     if (!gl_FrontFacing) N = -N;

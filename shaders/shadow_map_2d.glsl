@@ -62,9 +62,12 @@ float mapDistance(float depth, vec2 planes) {
 layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform sampler2DArray mapTransmitColour;
 layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform sampler2DArray mapTransmitDepth;
 vec3 transmittanceAt(float layer, vec2 uv, float ref) {
-    if (map.transmittance < 0.5) return vec3(1.0);
+#if MAP_TRANSMIT
     float nearest = texture(mapTransmitDepth, vec3(uv, layer)).r;
     return ref > nearest ? texture(mapTransmitColour, vec3(uv, layer)).rgb : vec3(1.0);
+#else
+    return vec3(1.0);  // no translucent casters this frame (LightPassVariant::transmittance)
+#endif
 }
 
 // The filtered test at map point `uv` for reference depth `ref` (the filter's kernel file).

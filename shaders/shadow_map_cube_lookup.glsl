@@ -28,9 +28,12 @@ float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, m
 layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform samplerCubeArray mapCubeTransmitColour;
 layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform samplerCubeArray mapCubeTransmitDepth;
 vec3 cubeTransmittanceAt(vec3 direction, float ref) {
-    if (map.transmittance < 0.5) return vec3(1.0);
+#if MAP_TRANSMIT
     float nearest = texture(mapCubeTransmitDepth, vec4(direction, map.layer)).r;
     return ref > nearest ? texture(mapCubeTransmitColour, vec4(direction, map.layer)).rgb : vec3(1.0);
+#else
+    return vec3(1.0);  // no translucent casters this frame (LightPassVariant::transmittance)
+#endif
 }
 
 // The filter's kernel (shadow_map_filter_*.glsl): its reach from the

@@ -70,7 +70,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float blurAxis;         // moment blur pass: 0 across, 1 down
     float blurLayer;        // moment blur pass: the layer blurred
     float bleedReduction;   // moment maps: light-bleeding reduction (share of the bound)
-    float transmittance;    // 1 when the transmittance layers hold translucent casters
+    float transmittance;    // 1 when the transmittance layers hold translucent casters (the shaders test MAP_TRANSMIT)
     float padding0, padding1; // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus
 };

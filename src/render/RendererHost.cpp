@@ -98,9 +98,8 @@ void Renderer::Impl::setLight(std::size_t i) {
 
 void Renderer::Impl::drawShaded(ShaderVariant variant, const std::vector<std::size_t>* only) {
     bindOwnBlocks();
-    variant.baseColorTexture = false;
-    const gl::Program& plain = programs.get(variant.program());
-    const gl::Program* textured = nullptr;
+    // The programs this draw list needs, by (base colour texture, alpha test).
+    const gl::Program* byKind[4] = {nullptr, nullptr, nullptr, nullptr};
     const gl::Program* current = nullptr;
     static const Material fallback;
     const std::size_t count = only ? only->size() : items.size();
@@ -109,15 +108,14 @@ void Renderer::Impl::drawShaded(ShaderVariant variant, const std::vector<std::si
         if (!only && translucent(i)) continue;  // drawn last, blended (blendedPass)
         const DrawItem& item = items[i];
         const Material& m = item.material >= 0 ? scene->materials[static_cast<std::size_t>(item.material)] : fallback;
-        const gl::Program* wanted = &plain;
-        if (m.baseColorTexture >= 0) {
-            if (!textured) {
-                variant.baseColorTexture = true;
-                textured = &programs.get(variant.program());
-            }
-            wanted = textured;
-            glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
+        const bool textured = m.baseColorTexture >= 0, masked = m.alphaMode == AlphaMode::Mask;
+        const gl::Program*& wanted = byKind[(textured ? 1 : 0) | (masked ? 2 : 0)];
+        if (!wanted) {
+            variant.baseColorTexture = textured;
+            variant.alphaTest = masked;
+            wanted = &programs.get(variant.program());
         }
+        if (textured) glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
         if (wanted != current) {
             wanted->use();
             current = wanted;

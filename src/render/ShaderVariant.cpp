@@ -21,6 +21,7 @@ std::string ShaderVariant::preamble() const {
     out += flag("LIGHT", light);
     out += std::string("#define LIGHT_TYPE ") + (light ? lightDefine(lightType) : "SL_LIGHT_DIRECTIONAL") + "\n";
     out += flag("HAS_BASE_COLOR_TEXTURE", baseColorTexture);
+    out += flag("ALPHA_TEST", alphaTest);
     out += flag("HAS_PROJECTOR", light && projector && lightType == LightType::Spot);
     out += flag("WRITE_SURFACES", writeSurfaces);
     out += flag("SCREEN_VISIBILITY", light && screenVisibility);
@@ -42,7 +43,7 @@ gl::ProgramKey ShaderVariant::program() const {
 
 std::vector<ShaderVariant> ShaderVariant::all() {
     std::vector<ShaderVariant> out;
-    for (int bits = 0; bits < 128; ++bits)
+    for (int bits = 0; bits < 256; ++bits)
         for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point}) {
             ShaderVariant v;
             v.ambient = bits & 1;
@@ -52,6 +53,8 @@ std::vector<ShaderVariant> ShaderVariant::all() {
             v.screenVisibility = bits & 16;
             v.outputVisibility = bits & 32;
             v.blended = bits & 64;
+            v.alphaTest = bits & 128;
+            if (v.alphaTest && v.blended) continue;  // a blended surface is not alpha-tested
             v.projector = light == LightType::Spot && (bits & 1) && (bits & 2);  // one projector variant per ambient/light pair
             v.lightType = light;
             out.push_back(v);

@@ -108,7 +108,7 @@ TEST_F(MapVariantGLTest, EveryVariantOneOptionFromTheDefaultsCompilesAndDraws) {
                 }
                 ++drawn;
                 const Light& l = scene.lights[0];
-                lightPasses.insert(map::LightPassVariant::of(l, software).defines());
+                lightPasses.insert(map::LightPassVariant::of(l, software, false).defines());
                 const MapOptions o = map::effective(l);
                 if (map::isCube(l))
                     shadowPasses.insert(map::CubePassVariant{o.format, o.cubePasses == MapCubePasses::One, o.faceCulling}.defines());

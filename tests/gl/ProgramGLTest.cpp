@@ -32,8 +32,8 @@ TEST_F(ProgramGLTest, EveryVariantCompilesAndLinks) {
     // Without a light: ambient x texture x surfaces = 8 programs (light type
     // and the visibility modes do not apply); with one: the same 8 x 3 light
     // types x 4 combinations of the two visibility switches = 96; each
-    // opaque or blended.
-    EXPECT_EQ(built.size(), 2u * (8u + 96u));
+    // opaque, alpha-tested (alphaMode mask) or blended.
+    EXPECT_EQ(built.size(), 3u * (8u + 96u));
 }
 
 TEST_F(ProgramGLTest, TheContextCacheCompilesEachProgramOnce) {

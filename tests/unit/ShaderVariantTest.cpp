@@ -22,7 +22,7 @@ TEST(ShaderVariant, DistinctVariantsHaveDistinctPrograms) {
             v.screenVisibility = v.outputVisibility = false;
         }
         return std::make_tuple(v.ambient, v.light, static_cast<int>(v.lightType), v.baseColorTexture, v.writeSurfaces,
-                               v.screenVisibility, v.outputVisibility, v.blended);
+                               v.screenVisibility, v.outputVisibility, v.blended, v.alphaTest);
     };
     std::map<std::string, std::set<decltype(canonical(ShaderVariant{}))>> byProgram;
     for (const ShaderVariant& v : ShaderVariant::all()) byProgram[v.program().id()].insert(canonical(v));

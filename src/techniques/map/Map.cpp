@@ -111,11 +111,11 @@ public:
     }
 
     std::string lightPassDefines(const Light& light) const override {
-        return LightPassVariant::of(light, res_.software).defines();
+        return LightPassVariant::of(light, res_.software, res_.translucent).defines();
     }
 
     gl::IncludeAliases lightPassIncludes(const Light& light) const override {
-        return {{"@map_filter", LightPassVariant::of(light, res_.software).kernelFile()}};
+        return {{"@map_filter", LightPassVariant::of(light, res_.software, res_.translucent).kernelFile()}};
     }
 
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {

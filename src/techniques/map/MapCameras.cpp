@@ -83,6 +83,11 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame) {
         fitCascades(p, light, frame, in);
     else
         p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in);
+    // The presets' fixed cameras skip what shadows nothing too (a ground
+    // plane under everything): their maps stay the peers', drawn with less.
+    if (!p.cube && p.camera.casts.empty()) {
+        p.camera.casts = castersThatMatter(towardsLight(light), p.camera.viewFromWorld, in);
+    }
 }
 
 bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i, bool moments) {

@@ -57,7 +57,7 @@ private:
 
 } // namespace
 
-LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterizer) {
+LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterizer, bool translucentCasters) {
     const MapOptions o = effective(light);
     LightPassVariant v;
     v.filter = o.filter;
@@ -68,6 +68,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.cascades = cascadeCount(light, o);
     v.representation = v.cube ? MapRepresentation::Depth : o.representation;
     v.momentFormat = o.momentFormat;
+    v.transmittance = translucentCasters;
     return v;
 }
 
@@ -81,6 +82,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_CASCADES", cascades)
         .set("MAP_MOMENTS", static_cast<int>(representation))
         .moments(momentFormat)
+        .set("MAP_TRANSMIT", transmittance)
         .str();
 }
 

@@ -22,8 +22,13 @@ struct LightPassVariant {
     int cascades = 1;               ///< directional lights: cascaded maps, 1..SL_MAP_MAX_CASCADES
     MapRepresentation representation = MapRepresentation::Depth;  ///< Depth for cubes
     MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;
-    /// The variant of `light` (its effective options); `softwareRasterizer` picks the grid's taps.
-    static LightPassVariant of(const Light& light, bool softwareRasterizer);
+    /// The frame has translucent casters: the test reads the transmittance
+    /// layers too. Only then: a software rasteriser runs both sides of a
+    /// branch, so an unused lookup still costs (llvmpipe: 0.9 ms at 800x600).
+    bool transmittance = false;
+    /// The variant of `light` (its effective options); `softwareRasterizer`
+    /// picks the grid's taps; `translucentCasters`, whether the frame has any.
+    static LightPassVariant of(const Light& light, bool softwareRasterizer, bool translucentCasters);
     std::string defines() const;
     /// shadow_map.glsl's "@map_filter" slot: the filter's kernel file, or the moments'.
     std::string kernelFile() const;
