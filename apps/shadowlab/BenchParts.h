@@ -40,6 +40,10 @@ void moveToTime(Scene& scene, const Scene& loaded, double seconds);
 /// What a run's timed frames measured, per timed frame.
 struct TimedFrames {
     std::map<std::string, std::vector<double>> passTimes, counters; ///< by pass (counter) name, from the clocked frames
+    /// The unshadowed scene's passes, clocked the same way: a light pass's
+    /// lookup cost is its time less the same pass here.
+    std::map<std::string, std::vector<double>> unshadowedPassTimes;
+    int unshadowedBaseLight = -1;
     std::vector<double> frameTimes;      ///< the plain frames' wall times, ms
     std::vector<double> unshadowedTimes; ///< the same scene with every technique "none"
     /// The same scene with every light at its technique's baseline

@@ -57,6 +57,13 @@ void addPassNumbers(json& record, const TimedFrames& timed, std::size_t l) {
         }
     }
     if (counters.count(pass + ".triangles")) record["shadowTriangles"] = median(counters.at(pass + ".triangles"));
+    // The lookup cost: the pass that lights with this light (the base pass
+    // or its own) less the same pass of the unshadowed frame, where the
+    // light is in the same pass there.
+    const std::string lit = static_cast<int>(l) == timed.baseLight ? std::string("base") : "light[" + std::to_string(l) + "]";
+    const bool samePass = (lit == "base") == (static_cast<int>(l) == timed.unshadowedBaseLight);
+    if (samePass && passTimes.count(lit) && timed.unshadowedPassTimes.count(lit))
+        record["lookupMs"] = median(passTimes.at(lit)) - median(timed.unshadowedPassTimes.at(lit));
     auto reportedUnder = [&](const std::string& prefix, const std::string& skip) {
         json out = json::object();
         for (const auto& [name, values] : counters)

@@ -74,6 +74,9 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
             timed.baselineTimes.push_back(renderer.render(baseline, plain).cpuMs);
         }
         addClocked(timed, renderer.render(scene, clocked));
+        const FrameStats plainClocked = renderer.render(unshadowed, clocked);
+        for (const PassTiming& p : plainClocked.passes) timed.unshadowedPassTimes[p.name].push_back(p.ms);
+        timed.unshadowedBaseLight = plainClocked.baseLight;
     }
     return timed;
 }

@@ -217,7 +217,11 @@ void lightRow(std::ostream& h, const json& records, int index, const json& l, do
       << fixed(g["median"], 1) << " (" << fixed(g["min"], 1) << "&ndash;" << fixed(g["max"], 1) << ")</td><td>"
       << (fastest > 0.0 ? fixed(g["median"].get<double>() / fastest, 2) : std::string("&ndash;")) << "</td><td>"
       << (r.contains("frameOverUnshadowed") ? fixed(r["frameOverUnshadowed"], 2) : std::string("&ndash;")) << "</td><td>"
-      << fixed(shadowMs, 1) << "</td><td>" << (l.contains("shadowFloorMs") ? fixed(l["shadowFloorMs"], 1) : std::string("&ndash;")) << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
+      << fixed(shadowMs, 1) << "</td><td>" << (l.contains("shadowFloorMs") ? fixed(l["shadowFloorMs"], 1) : std::string("&ndash;")) << "</td><td>"
+      << (l.contains("lookupMs") ? fixed(l["lookupMs"], 1) : std::string("&ndash;")) << "</td><td>"
+      << (l.contains("shadowCounters") && l["shadowCounters"].contains("mapBytes") ? fixed(l["shadowCounters"]["mapBytes"].get<double>() / 1048576.0, 1)
+                                                                                   : std::string("&ndash;"))
+      << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
       << escape(r["clock"].get<std::string>())
       << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
       << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
@@ -243,7 +247,7 @@ void resultsTable(std::ostream& h, const json& records, bool flips) {
         if (m > 0.0 && (fastest == 0.0 || m < fastest)) fastest = m;
     }
     h << "<h2>Time and error</h2>\n<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
-         "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
+         "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>lookup ms</th><th>map MiB</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
          "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
          "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>penumbra &times; truth</th><th>&times; hard map</th><th>front</th>"
       << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";

@@ -70,7 +70,7 @@ enum class MapCubePasses {
 
 struct MapOptions {
     static constexpr const char* kTechnique = "map";
-    int size = 2048;                     ///< texels per side of the map, 16..16384; default 2048
+    int size = 1024;                     ///< texels per side of the map (a cube: of each face), 16..16384; default 1024
     MapFormat format = MapFormat::Depth32F;
     MapFit fit = MapFit::Tight;
     MapFilter filter = MapFilter::Hardware;

@@ -78,6 +78,6 @@ TEST_F(DiscGLTest, AnEightBitMapSufficesForCastersNearerTheLight) {
             if (name == "shadow[0].mapBytes") bytes[k] = value;
         ++k;
     }
-    EXPECT_EQ(bytes[0], 4.0 * 2048 * 2048);
-    EXPECT_EQ(bytes[1], 1.0 * 2048 * 2048);
+    EXPECT_EQ(bytes[0], 4.0 * 1024 * 1024);  // the default size
+    EXPECT_EQ(bytes[1], 1.0 * 1024 * 1024);
 }

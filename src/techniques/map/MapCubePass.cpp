@@ -117,6 +117,7 @@ void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView
     drawCasters(host, g, p, use);
     static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
     host.count("triangles", static_cast<double>(use.drawn));
+    host.count("mapBytes", 6.0 * texelBytes(g.key) * static_cast<double>(g.size()) * static_cast<double>(g.size()));
     for (std::size_t f = 0; f < 6; ++f) host.count(std::string("faceTriangles.") + faceNames[f], use.triangles[f]);
     if (res.translucent) drawCubeTranslucent(host, frame, g, p);
     if (frame.measureFloors) res.floors.drawCube(host, res.block, g, p, use.used);
