@@ -20,6 +20,11 @@ layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
 float mapTap(float layer, vec2 uv, float ref) {
     return ref <= unpackDepth(texture(mapPacked, vec3(uv, layer))) ? 1.0 : 0.0;
 }
+#elif MAP_PLAIN_FETCH
+// A software rasteriser: the nearest depth at level 0, compared here
+// (LightPassVariant::plainFetch; the comparison sampler's LEQUAL, its border).
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapDepthPlain;
+float mapTap(float layer, vec2 uv, float ref) { return ref <= textureLod(mapDepthPlain, vec3(uv, layer), 0.0).r ? 1.0 : 0.0; }
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
 float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec4(uv, layer, ref)); }

@@ -14,8 +14,15 @@ float cubeTap(vec3 direction, float ref) {
 float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, vec4(direction, map.layer))); }
 #endif
 #else
+#if MAP_PLAIN_FETCH
+// A software rasteriser: the nearest depth at level 0, compared here
+// (LightPassVariant::plainFetch; the comparison sampler's LEQUAL).
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePlain;
+float cubeTap(vec3 direction, float ref) { return ref <= textureLod(mapCubePlain, vec4(direction, map.layer), 0.0).r ? 1.0 : 0.0; }
+#else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
 float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.layer), ref); }
+#endif
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
 // The stored depths for PCSS's blocker search: a sampler without comparison.
 layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;

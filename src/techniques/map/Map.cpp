@@ -122,7 +122,8 @@ public:
         const MapLight& p = lights_.at(view.index);
         const MapArray& g = res_.arrays[p.array];
         res_.block.upload(p, g, view.light, res_.translucent);
-        map::bindLightPass(p, g, res_.samplers, res_.translucent, bilinearGrid(p.options, res_.software));
+        map::bindLightPass(p, g, res_.samplers, res_.translucent, bilinearGrid(p.options, res_.software),
+                           plainFetch(p.options, p.cube, res_.software));
     }
 
     void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, std::vector<DebugImage>& out) override {

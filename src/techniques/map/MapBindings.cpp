@@ -44,11 +44,11 @@ void bindRawDepth(const MapLight& p, const MapArray& g, const MapSamplers& sampl
 }
 
 // Filters read across face edges (RenderState::seamlessCubeMaps; the test with a plane over the seams).
-void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent) {
+void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool plain) {
     const bool packed = isPacked(g.format());
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
     const bool linear = filterInfo(p.options.filter).linearCube;
-    glBindSampler(SL_UNIT_SHADOW_FIRST, packed ? samplers.plainNearest.id() : linear ? samplers.compareLinear.id() : samplers.compareNearest.id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST, packed || plain ? samplers.plainNearest.id() : linear ? samplers.compareLinear.id() : samplers.compareNearest.id());
     bindRawDepth(p, g, samplers);
     bindTransmittance(g, samplers, translucent);
 }
@@ -72,9 +72,9 @@ void MapSamplers::create() {
     }
 }
 
-void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool bilinearGrid) {
+void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool bilinearGrid, bool plain) {
     if (p.cube) {
-        bindCube(p, g, samplers, translucent);
+        bindCube(p, g, samplers, translucent, plain);
         return;
     }
     if (g.hasMoments()) {
@@ -87,8 +87,9 @@ void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samp
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
         // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
         const bool linear = filterInfo(p.options.filter).linear2D(bilinearGrid);
-        glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? (linear ? samplers.compareLinearMip.id() : samplers.compareNearestMip.id())
-                                                      : (linear ? samplers.compareLinear.id() : samplers.compareNearest.id()));
+        glBindSampler(SL_UNIT_SHADOW_FIRST, plain        ? samplers.plainNearest.id()
+                                            : g.mipmaps() ? (linear ? samplers.compareLinearMip.id() : samplers.compareNearestMip.id())
+                                                          : (linear ? samplers.compareLinear.id() : samplers.compareNearest.id()));
         bindRawDepth(p, g, samplers);
     }
     bindTransmittance(g, samplers, translucent);

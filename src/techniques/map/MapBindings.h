@@ -20,6 +20,7 @@ struct MapSamplers {
 /// Binds light `p`'s map (in array `g`) for the light pass. `translucent`:
 /// the frame's arrays hold transmittance layers; `bilinearGrid`: the grid
 /// filter takes bilinear compares (MapSettings: bilinearGrid).
-void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool bilinearGrid);
+/// `plain`: the depths through a sampler without comparison (MapSettings: plainFetch).
+void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool bilinearGrid, bool plain);
 
 } // namespace shadowlab::map

@@ -35,6 +35,13 @@ bool bilinearGrid(const MapOptions& o, bool softwareRasterizer) {
     return !isPacked(o.format) && (o.gridTaps == MapGridTaps::Bilinear || (o.gridTaps == MapGridTaps::Auto && !softwareRasterizer));
 }
 
+bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer) {
+    if (!softwareRasterizer || o.format != MapFormat::Depth32F || o.mipmaps) return false;
+    if (!cube && o.representation != MapRepresentation::Depth) return false;
+    const FilterInfo& f = filterInfo(o.filter);
+    return cube ? !f.linearCube : !f.linear2D(bilinearGrid(o, softwareRasterizer));
+}
+
 // Texels around the fitted region that the filter may read.
 float footprint(const MapOptions& o) {
     if (o.representation != MapRepresentation::Depth) return static_cast<float>(o.blur) + 2.0f;  // the blur, then a bilinear lookup

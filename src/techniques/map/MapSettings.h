@@ -36,6 +36,15 @@ bool isPacked(MapFormat f);
 /// texels for a bilinear fetch, so that the nearest fetches are faster).
 bool bilinearGrid(const MapOptions& o, bool softwareRasterizer);
 
+/// Whether the light pass fetches the nearest stored depth with an
+/// explicit level and compares it in the shader, instead of through a
+/// comparison sampler: on a software rasteriser, for a depth32f map without
+/// mipmaps whose filter takes nearest taps (llvmpipe's comparison sampler
+/// costs more than the fetch and the compare; a GPU keeps the hardware
+/// compare). Gives the same result: a 32-bit float compared the same way,
+/// the same border.
+bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer);
+
 /// Why "map" cannot shadow this light with its options, or "" (the registry's unsupported()).
 std::string unsupported(const Light& light);
 

@@ -69,6 +69,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.representation = v.cube ? MapRepresentation::Depth : o.representation;
     v.momentFormat = o.momentFormat;
     v.transmittance = translucentCasters;
+    v.plainFetch = map::plainFetch(o, v.cube, softwareRasterizer);
     return v;
 }
 
@@ -83,6 +84,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_MOMENTS", static_cast<int>(representation))
         .moments(momentFormat)
         .set("MAP_TRANSMIT", transmittance)
+        .set("MAP_PLAIN_FETCH", plainFetch)
         .str();
 }
 

@@ -26,6 +26,7 @@ struct LightPassVariant {
     /// layers too. Only then: a software rasteriser runs both sides of a
     /// branch, so an unused lookup still costs (llvmpipe: 0.9 ms at 800x600).
     bool transmittance = false;
+    bool plainFetch = false;        ///< nearest depths fetched and compared in the shader (MapSettings: plainFetch)
     /// The variant of `light` (its effective options); `softwareRasterizer`
     /// picks the grid's taps; `translucentCasters`, whether the frame has any.
     static LightPassVariant of(const Light& light, bool softwareRasterizer, bool translucentCasters);
