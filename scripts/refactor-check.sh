@@ -147,7 +147,7 @@ for method in depth-fail depth-pass book; do
   case_ "volume-$method-point" render "$point" --set "$T=volume" "lights[0].shadow.volume.method=$method"
 done
 case_ "volume-cpu" render "$spot" --set "$T=volume" "lights[0].shadow.volume.extrusion=cpu"
-case_ "volume-open-triangles" render "$glass" --set "$T=volume" "lights[0].shadow.volume.openMeshes=triangles"
+case_ "volume-open-triangles" render "$glass" --set "$T=volume" "lights[0].shadow.volume.openMeshes=triangles" 'materials.glass.alphaMode="opaque"'  # volumes refuse alpha-tested casters
 case_ "disc-spot" render "$S/discs.json" --set 'lights[0]={"type":"spot","position":[0.5,4,0.5],"direction":[0,-1,0],"outerCone":50,"shadow":{"technique":"disc"}}'
 case_ "disc-point" render "$S/discs.json" --set 'lights[0]={"type":"point","position":[0.5,4,0.5],"shadow":{"technique":"disc"}}'
 
