@@ -46,6 +46,9 @@ struct TimedFrames {
     int unshadowedBaseLight = -1;
     std::vector<double> frameTimes;      ///< the plain frames' wall times, ms
     std::vector<double> unshadowedTimes; ///< the same scene with every technique "none"
+    /// The frame again right after a plain one, RenderOptions::cacheShadowMaps
+    /// on: the maps whose inputs did not change are kept, not drawn.
+    std::vector<double> cachedTimes;
     /// The same scene with every light at its technique's baseline
     /// (shadowBaseline); timed only where some light differs from it.
     std::vector<double> baselineTimes;

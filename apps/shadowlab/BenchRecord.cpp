@@ -121,6 +121,7 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
             {"passTotalMs", stats(timed.passTotal)},
             {"frameMs", stats(timed.frameTimes)},
             {"unshadowedFrameMs", stats(timed.unshadowedTimes)},
+            {"cachedFrameMs", stats(timed.cachedTimes)},
             {"frameOverUnshadowed", frame / std::max(median(timed.unshadowedTimes), 1e-9)},
             {"frameOverHardMap", timed.timedBaseline ? frame / std::max(median(timed.baselineTimes), 1e-9) : 1.0},
             {"referenceMs", accuracy.comparison.referenceMs},

@@ -68,6 +68,9 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
         moveToTime(unshadowed, loaded, t);
         plain.timeSeconds = clocked.timeSeconds = t;
         timed.frameTimes.push_back(renderer.render(scene, plain).cpuMs);
+        RenderOptions cached = plain;
+        cached.cacheShadowMaps = true;
+        timed.cachedTimes.push_back(renderer.render(scene, cached).cpuMs);
         timed.unshadowedTimes.push_back(renderer.render(unshadowed, plain).cpuMs);
         if (timed.timedBaseline) {
             moveToTime(baseline, loaded, t);

@@ -203,6 +203,7 @@ void ViewerSession::renderFrame(int width, int height) {
         }
     }
     RenderOptions options;
+    options.cacheShadowMaps = true;  // a still view over a still scene keeps its maps
     options.width = width;
     options.height = height;
     options.timeSeconds = seconds;

@@ -52,6 +52,14 @@ struct RenderOptions {
     /// (bench --flips). Throws shadowlab::Error when a light's technique has
     /// no such map from the previous frame. Default off.
     bool reuseShadowMaps = false;
+    /// Keep a light's shadow map from the previous frame when nothing it is
+    /// drawn from changed: the light, its map options, the casters and
+    /// receivers (meshes, transforms, shadow flags, alpha materials), the
+    /// camera and the frame's size (the fits follow the view), the upload.
+    /// Technique "map"; a kept map's pass is not drawn (FrameStats counts
+    /// "shadow[i].cached"). Default off: bench's frameMs redraws every map
+    /// and reports the cached frame beside it; the viewer turns it on.
+    bool cacheShadowMaps = false;
 };
 
 struct PassTiming {

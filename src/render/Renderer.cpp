@@ -32,6 +32,7 @@ Renderer::~Renderer() = default;
 void Renderer::upload(const Scene& scene) {
     impl_->gpu.emplace(scene);
     impl_->uploadedMeshes = scene.meshes.size();
+    ++impl_->uploads;
     impl_->uploadedTextures = scene.textures.size();
     gl::throwIfOutOfMemory("while uploading the scene's meshes and textures");
 }
@@ -133,6 +134,8 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     beginFrame(s, size, options.timeSeconds);
     info->measureFloors = options.measureFloors;
     info->reuseShadowMaps = options.reuseShadowMaps;
+    info->cacheShadowMaps = options.cacheShadowMaps;
+    info->sceneUpload = uploads;
     clock.emplace(clockKind(options.clock, gl));
     litMode = LitMode::Shade;
     counters.clear();

@@ -32,6 +32,7 @@ struct Renderer::Impl final : TechniqueHost {
     gl::ProgramCache& programs;
     std::optional<GpuScene> gpu;
     std::size_t uploadedMeshes = 0, uploadedTextures = 0;
+    std::uint64_t uploads = 0;  ///< Renderer::upload calls (FrameInfo::sceneUpload)
     std::optional<FrameTargets> targets;
     std::map<std::string, std::unique_ptr<Technique>, std::less<>> instances;
     DrawList drawList;

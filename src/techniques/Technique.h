@@ -45,6 +45,8 @@ struct FrameInfo {
     std::uint64_t frameIndex = 0;            ///< frames this Renderer has drawn before this one
     bool measureFloors = false;              ///< RenderOptions::measureFloors: time a bare "floor" draw beside each pass
     bool reuseShadowMaps = false;            ///< RenderOptions::reuseShadowMaps: no shadow pass; keep the maps and their light cameras
+    bool cacheShadowMaps = false;            ///< RenderOptions::cacheShadowMaps: keep the maps when their inputs did not change
+    std::uint64_t sceneUpload = 0;           ///< how many times Renderer::upload ran: a new upload is new geometry
 };
 
 /// One light of the frame.

@@ -13,6 +13,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <set>
 
 using namespace shadowlab;
@@ -516,4 +517,45 @@ TEST_F(MapGLTest, ReusedShadowMapsKeepThePreviousFramesShadow) {
     std::printf("pixels whose class changed: %zu through the kept map, %zu through a new one\n", kept, turned);
     EXPECT_GT(turned, 100u) << "the turned sun must move the shadow for the check to mean anything";
     EXPECT_EQ(kept, 0u);
+}
+
+// RenderOptions::cacheShadowMaps: a frame whose map inputs did not change
+// keeps the previous frame's maps (its pass says "cached" and draws
+// nothing) and looks the same; a moved caster, a turned light or a moved
+// camera redraws them, and the frame is then the one a fresh renderer gives.
+TEST_F(MapGLTest, CachedMapsAreKeptOnlyWhileTheirInputsStay) {
+    const fs::path file = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "two-boxes-sun.json";
+    RenderOptions options{160, 90};
+    options.cacheShadowMaps = true;
+    auto cachedCount = [](const FrameStats& stats) {
+        for (const auto& [name, value] : stats.counters)
+            if (name == "shadow[0].cached") return value;
+        return 0.0;
+    };
+    auto fresh = [&](const Scene& s) {
+        Renderer other(test::glContext());
+        other.upload(s);
+        other.render(s, RenderOptions{160, 90});
+        return other.readColor().pixels;
+    };
+    Scene scene = loadSceneFile(file, {"lights[0].shadow.technique=map"});
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    EXPECT_EQ(cachedCount(renderer.render(scene, options)), 0.0);
+    const std::vector<std::uint8_t> first = renderer.readColor().pixels;
+    EXPECT_EQ(cachedCount(renderer.render(scene, options)), 1.0);
+    EXPECT_EQ(renderer.readColor().pixels, first);
+    const std::vector<std::pair<const char*, std::function<void(Scene&)>>> changes = {
+        {"a caster moved", [](Scene& s) { s.nodes.back().translation.x += 0.5f; }},
+        {"the light turned", [](Scene& s) { s.lights[0].direction = glm::normalize(s.lights[0].direction + glm::vec3(0.2f, 0.0f, 0.0f)); }},
+        {"the camera moved", [](Scene& s) { s.camera.position.x += 0.5f; }},
+    };
+    for (const auto& [what, change] : changes) {
+        SCOPED_TRACE(what);
+        change(scene);
+        EXPECT_EQ(cachedCount(renderer.render(scene, options)), 0.0);
+        const std::vector<std::uint8_t> redrawn = renderer.readColor().pixels;
+        EXPECT_NE(redrawn, first);
+        EXPECT_EQ(redrawn, fresh(scene));
+    }
 }

@@ -10,6 +10,7 @@
 // This file is the Technique; map/Map.h lists the module's other files.
 #include "techniques/map/Map.h"
 
+#include "techniques/map/MapCache.h"
 #include "techniques/map/MapCameras.h"
 #include "techniques/map/MapDebugImages.h"
 #include "techniques/map/MapResources.h"
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace shadowlab {
@@ -56,6 +58,12 @@ public:
                     throw Error("RenderOptions::reuseShadowMaps: light " + std::to_string(index) + " has no shadow map from the previous frame");
             return;  // the maps and their cameras as the previous frame left them
         }
+        // The same inputs as the maps were drawn from: keep them (cacheShadowMaps).
+        const std::uint64_t inputs = mapInputs(frame, lights);
+        cached_ = frame.cacheShadowMaps && drawnFrom_ && *drawnFrom_ == inputs && lights_.size() == lights.size();
+        noteHardPcss(host, frame, lights);
+        if (cached_) return;
+        drawnFrom_ = inputs;
         res_.software = gl::isSoftwareRasterizer(host.glInfo().renderer);
         res_.samplers.create();
         // Lights with the same format and size share one texture array.
@@ -88,9 +96,6 @@ public:
             p.layer = nextLayer[p.array];
             nextLayer[p.array] += p.cube ? 1 : cascadeCount(light, p.options);
             p.spot = light.type == LightType::Spot;
-            if (p.options.filter == MapFilter::Pcss && !(light.size > 0.0f))
-                host.note("lights[" + std::to_string(index) + "].shadow.map.filter \"pcss\": the light's size is 0, so its shadows stay hard (set lights[" +
-                          std::to_string(index) + "].size: a radius, or a directional light's angular diameter in degrees)");
             checkSplitsInView(p.options, light, frame.scene.camera, index);
             fitCameras(p, light, frame);
             if (auto old = lights_.find(index); old != lights_.end()) p.keepTargetsOf(old->second);
@@ -103,6 +108,10 @@ public:
     bool hasShadowPass(const Light&) const override { return true; }
 
     void renderShadowPass(TechniqueHost& host, const FrameInfo& frame, const LightView& view) override {
+        if (cached_) {
+            host.count("cached", 1.0);  // the previous frame's map, its inputs unchanged
+            return;
+        }
         MapLight& p = lights_.at(view.index);
         if (p.cube)
             renderCubePass(host, frame, view, res_, p);
@@ -142,6 +151,16 @@ public:
 
 private:
     // The light's options with its preset, and lecture 000's map of the window's size.
+    // PCSS on a light of size 0 stays hard: said every frame, kept maps or not.
+    static void noteHardPcss(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) {
+        for (int index : lights) {
+            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+            if (effective(light).filter == MapFilter::Pcss && !(light.size > 0.0f))
+                host.note("lights[" + std::to_string(index) + "].shadow.map.filter \"pcss\": the light's size is 0, so its shadows stay hard (set lights[" +
+                          std::to_string(index) + "].size: a radius, or a directional light's angular diameter in degrees)");
+        }
+    }
+
     static MapOptions effectiveHere(TechniqueHost& host, const FrameInfo& frame, const Light& light) {
         MapOptions o = effective(light);
         if (isLecture2D(o, light)) o.size = std::clamp(std::max(frame.viewport.x, frame.viewport.y), 16, host.glInfo().maxTextureSize);
@@ -150,6 +169,8 @@ private:
 
     MapResources res_;
     std::map<int, MapLight> lights_;
+    std::optional<std::uint64_t> drawnFrom_;  ///< mapInputs of the frame the maps were drawn in
+    bool cached_ = false;                     ///< this frame keeps them
 };
 
 // The registry's baseline: the plainest map of the same size (one 2D map,
