@@ -550,6 +550,13 @@ TEST_F(MapGLTest, CachedMapsAreKeptOnlyWhileTheirInputsStay) {
         {"the light turned", [](Scene& s) { s.lights[0].direction = glm::normalize(s.lights[0].direction + glm::vec3(0.2f, 0.0f, 0.0f)); }},
         {"the camera moved", [](Scene& s) { s.camera.position.x += 0.5f; }},
     };
+    // A frame lit by given visibility (the reference's) refits the maps but
+    // draws none: the next cached frame must not take them as drawn.
+    scene.lights[0].direction = glm::normalize(scene.lights[0].direction + glm::vec3(0.0f, 0.0f, 0.2f));
+    const std::size_t pixels = 160u * 90u;
+    renderer.renderWithVisibility(scene, RenderOptions{160, 90}, {std::vector<float>(pixels, 1.0f)});
+    EXPECT_EQ(cachedCount(renderer.render(scene, options)), 0.0);
+    EXPECT_EQ(renderer.readColor().pixels, fresh(scene));
     for (const auto& [what, change] : changes) {
         SCOPED_TRACE(what);
         change(scene);

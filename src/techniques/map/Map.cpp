@@ -63,7 +63,10 @@ public:
         cached_ = frame.cacheShadowMaps && drawnFrom_ && *drawnFrom_ == inputs && lights_.size() == lights.size();
         noteHardPcss(host, frame, lights);
         if (cached_) return;
-        drawnFrom_ = inputs;
+        // The maps are refitted now and hold these inputs once a shadow pass
+        // draws them (a frame lit by the reference's visibility draws none).
+        drawnFrom_.reset();
+        preparedFor_ = inputs;
         res_.software = gl::isSoftwareRasterizer(host.glInfo().renderer);
         res_.samplers.create();
         // Lights with the same format and size share one texture array.
@@ -117,6 +120,7 @@ public:
             renderCubePass(host, frame, view, res_, p);
         else
             renderMapPass(host, frame, view, res_, p);
+        drawnFrom_ = preparedFor_;
     }
 
     std::string lightPassDefines(const Light& light) const override {
@@ -170,6 +174,7 @@ private:
     MapResources res_;
     std::map<int, MapLight> lights_;
     std::optional<std::uint64_t> drawnFrom_;  ///< mapInputs of the frame the maps were drawn in
+    std::uint64_t preparedFor_ = 0;           ///< mapInputs of this frame's fit
     bool cached_ = false;                     ///< this frame keeps them
 };
 
