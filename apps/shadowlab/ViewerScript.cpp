@@ -24,11 +24,10 @@ namespace shadowlab::viewer {
 constexpr std::uintmax_t kMaxScriptBytes = 1u << 20;
 
 std::vector<Action> readScript(const std::string& path) {
-    std::error_code ec;
-    const std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (status.type() == std::filesystem::file_type::none) throw Error("--script " + path + ": " + ec.message());
+    const std::filesystem::file_status status = tool::pathStatus(path, "--script " + path);
     if (!std::filesystem::exists(status)) throw Error("--script " + path + ": no such file");
     if (!std::filesystem::is_regular_file(status)) throw Error("--script " + path + ": not a regular file (expected a script file)");
+    std::error_code ec;
     const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
     if (ec || bytes > kMaxScriptBytes)
         throw Error("--script " + path + ": " + (ec ? std::string("cannot read its size") : std::to_string(bytes) + " bytes, more than the limit of 1 MiB"));

@@ -280,9 +280,7 @@ int runBenchCommand(const tool::BenchArgs& args) {
         if (file.empty()) throw Error("bench: empty scene path");
         if (text::invalidUtf8At(file) != std::string::npos)
             throw Error(text::escapeControl(file) + ": file name is not valid UTF-8 (results.json is UTF-8)");
-        std::error_code ec;
-        const auto status = fs::status(file, ec);
-        if (status.type() == fs::file_type::none) throw Error(file + ": " + ec.message());
+        const fs::file_status status = tool::pathStatus(file, file);
         if (!fs::exists(status)) throw Error(file + ": file not found");
         if (!fs::is_regular_file(status)) throw Error(file + ": not a regular file (expected a scene file)");
     }

@@ -7,7 +7,6 @@
 #include <shadowlab/Options.h>
 
 #include <any>
-#include <cstring>
 #include <string>
 
 namespace shadowlab::map {
