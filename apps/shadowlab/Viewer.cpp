@@ -2,7 +2,9 @@
 // techniques' options tables. Every change the panel (or a script) makes is
 // an override line, "key=value", the very path `--set` takes: the scene is
 // read again from its file with all of them, so a setting has one name
-// everywhere and a new option appears here without viewer code.
+// everywhere and a new option appears here without viewer code. A setting
+// of a light (a technique's option, a position) reads the lights alone and
+// keeps the meshes and textures on the GPU: it shows on the next frame.
 // Here: the window and the loop that draws it, one step of ViewerSession
 // (ViewerSession.h) after another, and the scene read again or saved with
 // the settings made.
@@ -73,6 +75,7 @@ ViewerSession::ViewerSession(const ViewArgs& viewArgs)
       window(context.window()),
       renderer(context) {
     renderer.upload(scene);
+    ++uploads;
     orbit.from(scene.camera);
     fileTime = fromFile ? fs::last_write_time(args.scene) : fs::file_time_type{};
 }
@@ -85,6 +88,7 @@ void ViewerSession::reload() {
     try {
         Scene next = load();
         renderer.upload(next);
+        ++uploads;
         scene = std::move(next);
         if (!cameraMoved) orbit.from(scene.camera);
         error.clear();
@@ -125,8 +129,43 @@ void ViewerSession::save(const fs::path& path) {
     }
 }
 
+// A setting inside one light (`lights[N].<key>`, not its projector's
+// image): the lights read again from the scene's text with every override,
+// the meshes and textures kept. False when the scene must be read whole:
+// another key, a projector, a light added or taken away, or the file
+// changed on disk since it was read (then its nodes may have changed too).
+bool ViewerSession::applyToLights(const std::string& key) {
+    const std::size_t close = key.find("].");
+    if (key.rfind("lights[", 0) != 0 || close == std::string::npos || key.compare(close + 2, 9, "projector") == 0) return false;
+    std::string text = defaultSceneJson();
+    if (fromFile) {
+        std::error_code ec;
+        if (fs::last_write_time(args.scene, ec) != fileTime || ec) return false;
+        std::ifstream in(args.scene, std::ios::binary);
+        std::stringstream s;
+        if (!(s << in.rdbuf())) return false;
+        text = s.str();
+    }
+    const fs::path base = fromFile ? fs::path(args.scene).parent_path() : fs::current_path();
+    std::vector<Light> lights = parseSceneLights(text, fromFile ? args.scene : std::string("<default scene>"), base, overrides.all());
+    if (lights.size() != scene.lights.size()) return false;
+    for (std::size_t i = 0; i < lights.size(); ++i) lights[i].projectorTexture = scene.lights[i].projectorTexture;
+    scene.lights = std::move(lights);
+    return true;
+}
+
 void ViewerSession::apply(const std::string& key, const std::string& value) {
     overrides.set(key, value);
+    try {
+        if (applyToLights(key)) {
+            tracing.reset();  // a comparison in flight would describe a frame no longer shown
+            error.clear();
+            return;
+        }
+    } catch (const Error& e) {
+        error = e.what();  // as a failed reload: the last good scene stays
+        return;
+    }
     reload();
 }
 

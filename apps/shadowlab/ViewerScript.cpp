@@ -74,9 +74,9 @@ std::vector<Action> readScript(const std::string& path) {
             if (!a.argument.empty() && !std::filesystem::is_directory(a.argument))
                 throw Error(where + "compare " + a.argument + ": not a directory (the error images go there; create it first)");
         } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "show-light" &&
-                   a.verb != "show-density") {
+                   a.verb != "show-density" && a.verb != "uploads") {
             throw Error(where + "unknown action '" + a.verb +
-                        "' (expected set, wait, screenshot, save, show-maps, show-light, show-density, compare, resize, minimize, restore or quit)");
+                        "' (expected set, wait, screenshot, save, show-maps, show-light, show-density, compare, uploads, resize, minimize, restore or quit)");
         } else if (!a.argument.empty()) {
             throw Error(where + a.verb + ": expected nothing after it, got '" + a.argument + "'");
         }
@@ -107,6 +107,8 @@ void ViewerSession::runScript() {
             int w = 0, h = 0;
             size >> w >> h;
             glfwSetWindowSize(window, w, h);
+        } else if (a.verb == "uploads") {
+            std::cout << "uploads: " << uploads << "\n";  // how often the scene was read whole and uploaded
         } else if (a.verb == "show-maps") {
             showDebug = true;
         } else if (a.verb == "show-light") {

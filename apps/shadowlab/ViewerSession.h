@@ -110,6 +110,7 @@ private:
     void reload();
     void save(const std::filesystem::path& path);
     void apply(const std::string& key, const std::string& value);
+    bool applyToLights(const std::string& key);
     void reloadIfChanged();
     void renderFrame(int width, int height);
     void endFrame(int width, int height, bool screenshotKey);
@@ -147,6 +148,7 @@ private:
     Orbit orbit;
     bool cameraMoved = false;
     std::string error;  // the last failed reload or setting, shown in the panel
+    int uploads = 0;    // scene reads uploaded to the renderer (the script's "uploads" prints it)
     std::filesystem::file_time_type fileTime;
     std::deque<float> frameTimes;
     FrameStats stats;

@@ -28,6 +28,15 @@ SHADOWLAB_API Scene loadSceneFile(const std::filesystem::path& path, const std::
 SHADOWLAB_API Scene parseScene(const std::string& jsonText, const std::string& sourceName,
                                const std::filesystem::path& baseDir, const std::vector<std::string>& overrides = {});
 
+/// The lights of scene JSON text with `overrides`, read and checked exactly
+/// as parseScene reads them, without the camera, materials, nodes, meshes or
+/// textures: for a tool that changes a light's settings (a technique's
+/// option, a position) without reading and uploading the scene again. A
+/// projector's image is not loaded (projectorTexture is -1: keep the one of
+/// the scene parsed whole). Throws shadowlab::Error as parseScene does.
+SHADOWLAB_API std::vector<Light> parseSceneLights(const std::string& jsonText, const std::string& sourceName,
+                                                  const std::filesystem::path& baseDir, const std::vector<std::string>& overrides = {});
+
 /// The built-in default scene (a torus floating over a ground plane, one
 /// directional light): what `shadowlab render` draws without a scene file.
 SHADOWLAB_API Scene defaultScene(const std::vector<std::string>& overrides = {});

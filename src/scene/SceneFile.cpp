@@ -49,11 +49,10 @@ void checkUtf8(const ParseContext& ctx, const json& doc) {
     }
 }
 
-} // namespace
-
-Scene parseScene(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir,
-                 const std::vector<std::string>& overrides) {
-    ParseContext ctx{sourceName, baseDir, {}};
+// The document of `jsonText` with `overrides` written into it, checked:
+// depth, JSON syntax, a top-level object, the overrides' paths, UTF-8.
+json parseDocument(ParseContext& ctx, const std::string& jsonText, const std::string& sourceName,
+                   const std::vector<std::string>& overrides) {
     // nlohmann::json copies and destroys recursively: refuse deep nesting first.
     if (text::jsonDepth(jsonText) > text::kMaxJsonDepth)
         throw Error(text::escapeControl(sourceName + ": JSON nested deeper than " + std::to_string(text::kMaxJsonDepth) + " levels"));
@@ -76,9 +75,41 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
         throw Error(text::escapeControl(e.what())); // the flag quotes the user's text
     }
     checkUtf8(ctx, doc);
+    return doc;
+}
 
+const std::vector<const char*> kTopLevelKeys{"name", "camera", "ambient", "background", "materials", "lights", "nodes"};
+
+// The `lights` array into scene.lights; with `projectors`, each projector's
+// image is loaded into scene.textures (else projectorTexture stays -1).
+void readLights(const Reader& root, Scene& scene, const ParseContext& ctx, bool projectors) {
+    if (!root.has("lights")) return;
+    const Reader lights = root.child("lights");
+    lights.requireArray();
+    if (lights.value().size() > kMaxLights)
+        lights.fail("expected at most " + std::to_string(kMaxLights) + " lights, got " + std::to_string(lights.value().size()) +
+                    " (render time grows with every light)");
+    for (std::size_t i = 0; i < lights.value().size(); ++i) {
+        const Reader l = lights.element(i);
+        l.requireObject();
+        scene.lights.push_back(readLight(l));
+        if (projectors && l.has("projector")) {  // the slide: an image file, relative to the scene
+            const Reader t = l.child("projector");
+            scene.textures.push_back(loadTexture(t, ctx.baseDir / t.string()));
+            scene.textureSources.push_back(ctx.source + ": " + t.path() + " (" + (ctx.baseDir / t.string()).string() + ")");
+            scene.lights.back().projectorTexture = static_cast<int>(scene.textures.size()) - 1;
+        }
+    }
+}
+
+} // namespace
+
+Scene parseScene(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir,
+                 const std::vector<std::string>& overrides) {
+    ParseContext ctx{sourceName, baseDir, {}};
+    const json doc = parseDocument(ctx, jsonText, sourceName, overrides);
     const Reader root(ctx, doc, "");
-    root.checkKeys({"name", "camera", "ambient", "background", "materials", "lights", "nodes"});
+    root.checkKeys(kTopLevelKeys);
     Scene scene;
     scene.name = root.string("name", fs::path(sourceName).stem().string());
     if (root.has("camera")) readCamera(root.child("camera"), scene.camera);
@@ -86,27 +117,21 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
     scene.background = root.color("background", scene.background);
     SceneBuilder builder(scene, ctx);
     if (root.has("materials")) builder.readMaterials(root.child("materials"));
-    if (root.has("lights")) {
-        const Reader lights = root.child("lights");
-        lights.requireArray();
-        if (lights.value().size() > kMaxLights)
-            lights.fail("expected at most " + std::to_string(kMaxLights) + " lights, got " + std::to_string(lights.value().size()) +
-                        " (render time grows with every light)");
-        for (std::size_t i = 0; i < lights.value().size(); ++i) {
-            const Reader l = lights.element(i);
-            l.requireObject();
-            scene.lights.push_back(readLight(l));
-            if (l.has("projector")) {  // the slide: an image file, relative to the scene
-                const Reader t = l.child("projector");
-                scene.textures.push_back(loadTexture(t, baseDir / t.string()));
-                scene.textureSources.push_back(ctx.source + ": " + t.path() + " (" + (baseDir / t.string()).string() + ")");
-                scene.lights.back().projectorTexture = static_cast<int>(scene.textures.size()) - 1;
-            }
-        }
-    }
+    readLights(root, scene, ctx, true);
     if (root.has("nodes")) builder.readNodes(root.child("nodes"), -1);
     builder.checkFinite();
     return scene;
+}
+
+std::vector<Light> parseSceneLights(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir,
+                                    const std::vector<std::string>& overrides) {
+    ParseContext ctx{sourceName, baseDir, {}};
+    const json doc = parseDocument(ctx, jsonText, sourceName, overrides);
+    const Reader root(ctx, doc, "");
+    root.checkKeys(kTopLevelKeys);
+    Scene scene;
+    readLights(root, scene, ctx, false);
+    return std::move(scene.lights);
 }
 
 Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overrides) {

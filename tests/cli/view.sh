@@ -18,6 +18,9 @@ set lights[0].shadow.map.constantBias=0.1
 wait 2
 screenshot b.png
 save saved.json
+uploads
+set camera.fovY=50
+uploads
 quit
 SCRIPT
 "$tool" view "$src/scenes/two-boxes-sun.json" --width 960 --height 540 --script steps.txt >out.txt 2>err.txt || { echo "view failed: $(cat err.txt)"; exit 1; }
@@ -26,6 +29,9 @@ SCRIPT
 "$tool" render "$src/scenes/two-boxes-sun.json" --width 960 --height 540 --set 'lights[0].shadow.technique="map"' --set lights[0].shadow.map.constantBias=0.1 -o rb.png >/dev/null || exit 1
 [[ $("$diff" a.png ra.png --from-x $panel) == 0 ]] || { echo "view and render differ right of the panel: $("$diff" a.png ra.png --from-x $panel) pixels"; exit 1; }
 [[ $("$diff" b.png rb.png --from-x $panel) == 0 ]] || { echo "view and render differ with the bias: $("$diff" b.png rb.png --from-x $panel) pixels"; exit 1; }
+# The two light settings were applied to the lights alone: the scene was read
+# whole and uploaded once, at the start; a camera setting reads it again.
+[[ "$(grep '^uploads:' out.txt | tr '\n' ' ')" == "uploads: 1 uploads: 2 " ]] || { echo "scene uploads: $(cat out.txt)"; exit 1; }
 changed=$("$diff" a.png b.png --from-x $panel)
 (( changed > 100 )) || { echo "a constant bias of 0.1 moved only $changed pixels"; exit 1; }
 # "save" wrote the scene with both settings in it: it renders as render with the two --set lines.
