@@ -69,7 +69,7 @@ struct Material {
 /// `bench --vary lights[0].shadow.technique=a,b`) keeps each one's settings.
 /// The registered techniques and their options: Techniques.h.
 struct ShadowSettings {
-    std::string technique = "none"; ///< a registered technique's name; default "none" (no shadows)
+    std::string technique = "map"; ///< a registered technique's name; default "map" (a shadow map with its defaults; "none": no shadows)
     /// Options blocks by technique name, each holding that technique's
     /// options struct (a technique with no block here uses its defaults).
     std::map<std::string, std::any> options;

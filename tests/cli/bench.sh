@@ -13,7 +13,10 @@ fail() { echo "FAIL: $*"; exit 1; }
 passed=0
 
 # compare: numbers per light and the files it names.
-out=$("$tool" compare "$src/scenes/torus-floating.json" -o cmp --width 160 --height 90)
+# The scene sets no technique: its light gets a shadow map (the default).
+out=$("$tool" compare "$src/scenes/torus-floating.json" -o default-cmp --width 160 --height 90)
+grep -q "light 0 'sun' (directional, hard, technique map)" <<<"$out" || fail "compare output of the default: $out"
+out=$("$tool" compare "$src/scenes/torus-floating.json" -o cmp --width 160 --height 90 --set lights[0].shadow.technique=none)
 grep -q "light 0 'sun' (directional, hard, technique none)" <<<"$out" || fail "compare output: $out"
 grep -q "false shadow 0.000%, false lit [1-9]" <<<"$out" || fail "unshadowed should be false lit only: $out"
 for f in technique.png reference.png error-0.png visibility-0.png technique-visibility-0.png; do [[ -s cmp/$f ]] || fail "compare did not write $f"; done
@@ -49,7 +52,7 @@ for rec in r["results"]:
     assert rec["clock"] in ("cpu-finish", "gpu-timestamp"), rec["clock"]
     assert "base" in rec["passMs"], rec["passMs"].keys()
     assert rec["frameMs"]["median"] > 0 and rec["passTotalMs"]["median"] > 0
-    assert rec["baseLight"] == 0  # "none" shares the base pass
+    assert rec["baseLight"] == 0  # the first light (a shadow map, the default) shares the base pass
 PY
 passed=$((passed + 1))
 

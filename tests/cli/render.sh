@@ -19,11 +19,15 @@ out=$("$tool" render "$src/scenes/torus-resting.json" -o t.png --width 64 --heig
 # The registered techniques and their generated option tables.
 "$tool" techniques | grep -q "^none: " || { echo "techniques does not list none"; exit 1; }
 "$tool" techniques --markdown | grep -q '^#### `lights\[i\].shadow.none`' || { echo "techniques --markdown"; exit 1; }
-# --debug-images: "none" has no images, so the directory stays empty; the
-# render itself is unchanged.
+# --debug-images: the scene sets no technique, so its light gets a shadow
+# map (the default) and the directory holds the map and its texel density;
+# the render itself is unchanged. "none" has no images: the directory stays empty.
 out=$("$tool" render "$src/scenes/torus-resting.json" -o d.png --width 64 --height 48 --set lights[0].intensity=0.5 --debug-images dbg)
-[[ "$out" == "d.png" && -d dbg && -z "$(ls dbg)" ]] || { echo "debug images: '$out'"; exit 1; }
+[[ "$out" == $'d.png\ndbg/light0-map.png\ndbg/light0-texel-density.png' ]] || { echo "debug images: '$out'"; exit 1; }
 cmp -s d.png t.png || { echo "--debug-images changed the image"; exit 1; }
+out=$("$tool" render "$src/scenes/torus-resting.json" -o n.png --width 64 --height 48 --set lights[0].shadow.technique=none --debug-images none-dbg)
+[[ "$out" == "n.png" && -d none-dbg && -z "$(ls none-dbg)" ]] || { echo "debug images of none: '$out'"; exit 1; }
+cmp -s n.png d.png && { echo "the default technique drew no shadow"; exit 1; }
 # --view-from-light: the light's own view; a point light or a missing light is a one-line error.
 out=$("$tool" render "$src/scenes/spot-objects.json" -o v.png --width 64 --height 48 --view-from-light 0)
 [[ "$out" == "v.png" && -s v.png ]] || { echo "view from light wrote '$out'"; exit 1; }

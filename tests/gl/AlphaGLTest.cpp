@@ -114,7 +114,7 @@ Scene twoGlasses(bool blueFirst, const std::vector<std::string>& overrides = {})
             "red": { "baseColor": [0.9, 0.1, 0.1], "specular": [0, 0, 0], "alpha": 0.5, "alphaMode": "blend" },
             "blue": { "baseColor": [0.1, 0.2, 0.9], "specular": [0, 0, 0], "alpha": 0.5, "alphaMode": "blend" }
         },
-        "lights": [ { "type": "directional", "direction": [0, 0, -1], "intensity": 0.8 } ],
+        "lights": [ { "type": "directional", "direction": [0, 0, -1], "intensity": 0.8, "shadow": { "technique": "none" } } ],
         "nodes": [
             { "name": "wall", "shape": { "type": "plane", "size": [8, 8] }, "material": "wall",
               "translation": [0, 0, -2], "rotation": [90, 0, 0] },

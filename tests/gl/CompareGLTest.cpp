@@ -28,7 +28,7 @@ const glm::vec3 kSun = glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f));
 Scene sphereOverPlane(const std::string& extraNodes = "") {
     return parseScene(R"({
       "camera": {"position": [3, 7, 6], "target": [0.6, 0, 0.4], "fovY": 45},
-      "lights": [{"name": "sun", "type": "directional", "direction": [0.4, -1.0, 0.3]}],
+      "lights": [{"name": "sun", "type": "directional", "direction": [0.4, -1.0, 0.3], "shadow": {"technique": "none"}}],
       "nodes": [
         {"name": "ground", "shape": {"type": "plane", "size": [40, 40]}},
         {"name": "ball", "shape": {"type": "sphere", "radius": 1, "segments": 128, "rings": 64}, "translation": [0, 2, 0],

@@ -161,7 +161,7 @@ TEST_F(RenderGLTest, SizeBeyondTheGpuLimitIsAnError) {
 TEST_F(RenderGLTest, TimingsNameEveryPassOfTheFrame) {
     // Two lights with "none": the first is shaded inside the base pass, the
     // second gets a pass of its own.
-    Scene scene = defaultScene();
+    Scene scene = defaultScene({"lights[0].shadow.technique=none"});
     scene.lights.push_back(scene.lights[0]);
     Renderer renderer(test::glContext());
     renderer.upload(scene);

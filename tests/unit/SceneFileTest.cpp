@@ -63,7 +63,7 @@ TEST(SceneFile, ReadsValuesAndDefaults) {
     ASSERT_EQ(s.lights.size(), 2u);
     EXPECT_EQ(s.lights[0].type, LightType::Directional);
     EXPECT_NEAR(glm::length(s.lights[0].direction), 1.0f, 1e-6f);  // normalised
-    EXPECT_EQ(s.lights[0].shadow.technique, "none");  // documented default
+    EXPECT_EQ(s.lights[0].shadow.technique, "map");  // documented default: shadows on
     EXPECT_EQ(s.lights[1].type, LightType::Point);
     EXPECT_FLOAT_EQ(s.lights[1].range, 10.0f);
     ASSERT_EQ(s.materials.size(), 1u);

@@ -93,7 +93,7 @@ void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<Arr
     }
     if (bytes > kMapBudgetBytes) {
         char text[256];
-        std::snprintf(text, sizeof text, "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB (lower lights[i].shadow.map.size)",
+        std::snprintf(text, sizeof text, "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB (lower lights[i].shadow.map.size, or set technique \"none\" on lights that need no shadow)",
                       lightCount, bytes / kMapBudgetBytes);
         throw Error("lights[" + std::to_string(largestLight) + "].shadow.map.size: " + text);
     }
