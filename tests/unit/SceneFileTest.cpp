@@ -1,6 +1,7 @@
 // Scene files: values, defaults, hierarchy, --set overrides and every error
 // path. Errors must be one line naming the file (or flag) and the JSON path.
 #include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
 #include <shadowlab/SceneFile.h>
 
 #include <gtest/gtest.h>
@@ -264,4 +265,34 @@ TEST(SceneFile, EveryBundledSceneParses) {
         ++count;
     }
     EXPECT_GE(count, 8);  // the eight lecture scenes of the foundation issue
+}
+
+// The viewer's light-only path: parseSceneLights reads the lights exactly as
+// parseScene does, overrides and errors included, and reads nothing else
+// (a node that would fail is not looked at).
+TEST(SceneFile, LightsAloneReadAsTheWholeScene) {
+    const std::vector<std::string> overrides{"lights[1].position=[4,5,6]", "lights[0].shadow.map.size=512"};
+    const Scene whole = parseScene(kMinimal, "scene.json", ".", overrides);
+    const std::vector<Light> lights = parseSceneLights(kMinimal, "scene.json", ".", overrides);
+    ASSERT_EQ(lights.size(), whole.lights.size());
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        EXPECT_EQ(lights[i].type, whole.lights[i].type);
+        EXPECT_EQ(lights[i].position, whole.lights[i].position);
+        EXPECT_EQ(lights[i].direction, whole.lights[i].direction);
+        EXPECT_EQ(lights[i].shadow.technique, whole.lights[i].shadow.technique);
+        EXPECT_EQ(lights[i].shadow.get<MapOptions>().size, whole.lights[i].shadow.get<MapOptions>().size);
+    }
+    EXPECT_EQ(lights[1].position, glm::vec3(4, 5, 6));
+    EXPECT_EQ(lights[0].shadow.get<MapOptions>().size, 512);
+    // A mesh file that does not exist: parseScene fails on it, the lights alone do not.
+    const std::vector<std::string> missingMesh{"nodes[0].mesh=\"no-such-file.obj\""};
+    EXPECT_THROW(parseScene(kMinimal, "scene.json", ".", missingMesh), Error);
+    EXPECT_EQ(parseSceneLights(kMinimal, "scene.json", ".", missingMesh).size(), 2u);
+    // A bad light value is the same one-line error either way.
+    const std::vector<std::string> bad{"lights[0].shadow.map.size=3"};
+    std::string a, b;
+    try { parseScene(kMinimal, "scene.json", ".", bad); } catch (const Error& e) { a = e.what(); }
+    try { parseSceneLights(kMinimal, "scene.json", ".", bad); } catch (const Error& e) { b = e.what(); }
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, b);
 }
