@@ -27,8 +27,9 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     // least a quarter of the way from the light).
     int blockerTaps = int(map.blockerTaps);
     float blockers = 0.0, blockerSum = 0.0;
-    for (int k = 0; k < blockerTaps; ++k) {
-        vec3 w = v + vogelOffset3D(k, blockerTaps, 3.0 * size, rotation, t, b);
+    vec2 d = vogelFirst(rotation);
+    for (int k = 0; k < blockerTaps; ++k, d = vogelTurn(d)) {
+        vec3 w = v + vogelOffset3D(k, blockerTaps, 3.0 * size, d, t, b);
         float d = cubeDepthAt(w);
         if (d < cubePlaneRef(w, n, nv, ref)) {
             blockers += 1.0;
@@ -42,8 +43,9 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     // 3. Percentage-closer filtering over it.
     int taps = int(map.filterTaps);
     float sum = 0.0;
-    for (int k = 0; k < taps; ++k) {
-        vec3 w = v + vogelOffset3D(k, taps, penumbra, rotation, t, b);
+    d = vogelFirst(rotation);
+    for (int k = 0; k < taps; ++k, d = vogelTurn(d)) {
+        vec3 w = v + vogelOffset3D(k, taps, penumbra, d, t, b);
         sum += cubeTap(w, cubePlaneRef(w, n, nv, ref));
     }
     return sum / float(taps);
@@ -74,8 +76,9 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     float search = clamp((perspective ? 3.0 * size : (dr - m.planes.x) * size) / texel, 1.0, limit);
     int blockerTaps = int(map.blockerTaps);
     float blockers = 0.0, blockerSum = 0.0;
-    for (int k = 0; k < blockerTaps; ++k) {
-        vec2 o = vogelOffset2D(k, blockerTaps, search, rotation, du);
+    vec2 d = vogelFirst(rotation);
+    for (int k = 0; k < blockerTaps; ++k, d = vogelTurn(d)) {
+        vec2 o = vogelOffset2D(k, blockerTaps, search, d, du);
         float d = mapDepthAt(m.layer, uv + o);
         if (d < ref + dot(dzduv, o)) {
             blockers += 1.0;
@@ -89,8 +92,9 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     // 3. Percentage-closer filtering over it.
     int taps = int(map.filterTaps);
     float sum = 0.0;
-    for (int k = 0; k < taps; ++k) {
-        vec2 o = vogelOffset2D(k, taps, radius, rotation, du);
+    d = vogelFirst(rotation);
+    for (int k = 0; k < taps; ++k, d = vogelTurn(d)) {
+        vec2 o = vogelOffset2D(k, taps, radius, d, du);
         sum += mapTap(m.layer, uv + o, ref + dot(dzduv, o));
     }
     return sum / float(taps);

@@ -10,17 +10,17 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     vec3 t = normalize(abs(axis.y) < 0.99 ? cross(axis, vec3(0.0, 1.0, 0.0)) : cross(axis, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(axis, t);
     int taps = int(map.filterTaps);
-    float rotation = mapRotation();
+    vec2 d = vogelFirst(mapRotation());
     float sum = 0.0;
-    for (int k = 0; k < taps; ++k) sum += cubeTap(v + vogelOffset3D(k, taps, radius, rotation, t, b), ref);
+    for (int k = 0; k < taps; ++k, d = vogelTurn(d)) sum += cubeTap(v + vogelOffset3D(k, taps, radius, d, t, b), ref);
     return sum / float(taps);
 }
 #else
 float mapFilter(MapLookup m, vec2 uv, float ref) {
     int taps = int(map.filterTaps);
-    float rotation = mapRotation();
+    vec2 d = vogelFirst(mapRotation());
     float sum = 0.0;
-    for (int k = 0; k < taps; ++k) sum += mapTap(m.layer, uv + vogelOffset2D(k, taps, map.poissonRadius, rotation, map.texelUv), ref);
+    for (int k = 0; k < taps; ++k, d = vogelTurn(d)) sum += mapTap(m.layer, uv + vogelOffset2D(k, taps, map.poissonRadius, d, map.texelUv), ref);
     return sum / float(taps);
 }
 #endif

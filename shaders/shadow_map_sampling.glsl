@@ -8,20 +8,20 @@ float mapNoise(vec2 pixel) { return fract(52.9829189 * fract(dot(pixel, vec2(0.0
 float mapRotation() { return 6.2831853 * mapNoise(gl_FragCoord.xy); }
 
 // A Vogel disk (the golden-angle spiral, uniform by area): tap k of n at
-// radius vogelRadius(k, n) (of a unit disk) and angle vogelAngle(k, rotation).
+// radius vogelRadius(k, n) (of a unit disk) and angle k x the golden angle
+// + the pixel's rotation. The angle's direction is walked, not evaluated:
+// vogelFirst(rotation) is tap 0's, vogelTurn the next tap's from the one
+// before (a turn by the golden angle: a cosine and a sine per pixel, not
+// per tap; on llvmpipe they were a fifth of PCSS's lookup).
 float vogelRadius(int k, int n) { return sqrt((float(k) + 0.5) / float(n)); }
-float vogelAngle(int k, float rotation) { return float(k) * 2.3999632 + rotation; }
-// Tap k of n on a disk of `radius` texels, in uv (`du`: one texel).
-vec2 vogelOffset2D(int k, int n, float radius, float rotation, float du) {
-    float r = vogelRadius(k, n) * radius;
-    float a = vogelAngle(k, rotation);
-    return du * r * vec2(cos(a), sin(a));
+vec2 vogelFirst(float rotation) { return vec2(cos(rotation), sin(rotation)); }
+vec2 vogelTurn(vec2 d) {
+    const vec2 g = vec2(cos(2.3999632), sin(2.3999632));
+    return vec2(d.x * g.x - d.y * g.y, d.x * g.y + d.y * g.x);
 }
-// Tap k of n on a disk of `radius` across a ray, spanned by unit vectors t and b.
-vec3 vogelOffset3D(int k, int n, float radius, float rotation, vec3 t, vec3 b) {
-    float r = vogelRadius(k, n) * radius;
-    float a = vogelAngle(k, rotation);
-    return r * (cos(a) * t + sin(a) * b);
-}
+// Tap k of n, in direction `d`, on a disk of `radius` texels, in uv (`du`: one texel).
+vec2 vogelOffset2D(int k, int n, float radius, vec2 d, float du) { return du * vogelRadius(k, n) * radius * d; }
+// Tap k of n, in direction `d`, on a disk of `radius` across a ray, spanned by unit vectors t and b.
+vec3 vogelOffset3D(int k, int n, float radius, vec2 d, vec3 t, vec3 b) { return vogelRadius(k, n) * radius * (d.x * t + d.y * b); }
 
 #endif
