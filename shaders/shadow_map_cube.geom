@@ -32,6 +32,9 @@ void main() {
         for (int k = 0; k < 3; ++k) {
             gl_Layer = first + f;
             gl_Position = c[k];
+#if MAP_CUBE_WINDOW
+            gl_Position.z = cubeWindowClipZ(c[k].w);
+#endif
             gCubeWorld = vCubeWorld[k];
             gCubeUv = vCubeUv[k];
             EmitVertex();

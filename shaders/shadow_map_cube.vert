@@ -27,5 +27,8 @@ void main() {
 #else
     gCubeWorld = world.xyz;
     gl_Position = map.faceClipFromWorld[face] * world;
+#if MAP_CUBE_WINDOW
+    gl_Position.z = cubeWindowClipZ(gl_Position.w);
+#endif
 #endif
 }

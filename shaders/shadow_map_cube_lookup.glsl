@@ -14,19 +14,65 @@ float cubeTap(vec3 direction, float ref) {
 float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, vec4(direction, map.layer))); }
 #endif
 #else
+#if MAP_CUBE_WINDOW
+// The stored depth is the face's window depth, reversed (MapSettings:
+// cubeWindowDepth): with n, f the cube's near and far planes and z the
+// point's distance along the face's axis (the direction's largest
+// component), n (f - z) / ((f - n) z). The kernels keep working in
+// distance / far: a reference turns into that depth for its direction, a
+// stored depth back. Lit where the receiver's window depth is the greater.
+// The shadow pass's constant offset (map.cubeOffset) is taken off here.
+float cubeStored(vec3 direction, float ref) {
+    vec3 a = abs(direction);
+    float axis = (ref - map.cubeOffset) * map.cubeFar * max(a.x, max(a.y, a.z)) / length(direction);
+    float n = map.nearPlane, f = map.farPlane;
+    return n * (f - axis) / ((f - n) * axis);
+}
+float cubeDistance(vec3 direction, float stored) {
+    if (stored <= 0.0) return 1.0;  // cleared: no caster
+    vec3 a = abs(direction);
+    float n = map.nearPlane, f = map.farPlane;
+    float axis = n * f / (stored * (f - n) + n);
+    return axis * length(direction) / max(a.x, max(a.y, a.z)) / map.cubeFar;
+}
+#define SL_CUBE_REF(direction, ref) cubeStored(direction, ref)
+#define SL_CUBE_LIT(ref, stored) ((ref) >= (stored))
+#else
+#define SL_CUBE_REF(direction, ref) (ref)
+#define SL_CUBE_LIT(ref, stored) ((ref) <= (stored))
+#endif
 #if MAP_PLAIN_FETCH
 // A software rasteriser: the nearest depth at level 0, compared here
-// (LightPassVariant::plainFetch; the comparison sampler's LEQUAL).
+// (LightPassVariant::plainFetch; the comparison sampler's function).
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePlain;
+#if MAP_CUBE_WINDOW
+// cubeStored(direction, ref) >= stored without its root and division, per
+// tap: with k = n f / ((f - n) (ref - offset) far) (the same for a
+// kernel's taps of one reference) and m the direction's largest
+// component, k |direction| / m - n / (f - n) >= stored, squared.
+float cubeTap(vec3 direction, float ref) {
+    float stored = textureLod(mapCubePlain, vec4(direction, map.layer), 0.0).r;
+    float n = map.nearPlane, f = map.farPlane;
+    float k = n * f / ((f - n) * (ref - map.cubeOffset) * map.cubeFar);
+    vec3 a = abs(direction);
+    float rhs = (stored + n / (f - n)) * max(a.x, max(a.y, a.z));
+    return k <= 0.0 || k * k * dot(direction, direction) >= rhs * rhs ? 1.0 : 0.0;
+}
+#else
 float cubeTap(vec3 direction, float ref) { return ref <= textureLod(mapCubePlain, vec4(direction, map.layer), 0.0).r ? 1.0 : 0.0; }
+#endif
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
-float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.layer), ref); }
+float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.layer), SL_CUBE_REF(direction, ref)); }
 #endif
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
-// The stored depths for PCSS's blocker search: a sampler without comparison.
+// The stored depths for PCSS's blocker search (distance / far): a sampler without comparison.
 layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
+#if MAP_CUBE_WINDOW
+float cubeDepthAt(vec3 direction) { return cubeDistance(direction, texture(mapCubeRaw, vec4(direction, map.layer)).r); }
+#else
 float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.layer)).r; }
+#endif
 #endif
 #endif
 

@@ -83,6 +83,17 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
 #undef SL_MAP_MAT4
 
 #ifndef __cplusplus
+#if MAP_CUBE_WINDOW
+// A cube face's reversed window depth in clip space (MapSettings:
+// cubeWindowDepth; 0..w with glClipControl 0..1): n (f - w) / (f - n) for
+// w the distance along the face's axis, near 1 and far 0 once divided by
+// w. From w itself: the standard matrix's (w - z) / 2 would subtract two
+// nearly equal numbers and keep a thousandth of the depth's precision.
+float cubeWindowClipZ(float w) { return map.nearPlane * (map.farPlane - w) / (map.farPlane - map.nearPlane); }
+#endif
+#endif
+
+#ifndef __cplusplus
 // d in [0, 1) as four base-255 digits (lecture 002 §8.3.1, Listing 8.2).
 // The lecture uses base 256, but an 8-bit UNORM channel stores x as
 // round(255 x) / 255, so a digit k / 256 comes back as about k / 255: up to

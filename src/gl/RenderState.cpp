@@ -35,6 +35,7 @@ void apply(const RenderState& s) {
     enable(GL_POLYGON_OFFSET_FILL, s.polygonOffset);
     glPolygonOffset(s.offsetFactor, s.offsetUnits);
     enable(GL_DEPTH_CLAMP, s.depthClamp);
+    glClipControl(GL_LOWER_LEFT, s.zeroToOneDepth ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
     enable(GL_FRAMEBUFFER_SRGB, s.framebufferSrgb);
     for (int i = 0; i < kClipDistances; ++i) enable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i), i < s.clipDistances);
     enable(GL_TEXTURE_CUBE_MAP_SEAMLESS, s.seamlessCubeMaps);

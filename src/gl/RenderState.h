@@ -35,8 +35,8 @@ constexpr int kBlendTargets = 4;
 constexpr int kClipDistances = 8;
 
 /// Defaults: depth test LESS with writes, no stencil, no culling, all colour
-/// channels written, no blending, no polygon offset, no depth clamp, no clip
-/// distances, seamless cube-map filtering.
+/// channels written, no blending, no polygon offset, no depth clamp, GL's
+/// -1..1 depth, no clip distances, seamless cube-map filtering.
 struct RenderState {
     bool depthTest = true;
     GLenum depthFunc = GL_LESS;
@@ -58,6 +58,10 @@ struct RenderState {
     float offsetFactor = 0.0f;   ///< glPolygonOffset factor (slope), units of max depth slope
     float offsetUnits = 0.0f;    ///< glPolygonOffset units (constant), units of minimum resolvable depth
     bool depthClamp = false;
+    /// Clip-space depth 0..w straight to window depth 0..1 (glClipControl
+    /// GL_ZERO_TO_ONE; false: GL's -w..w halved and shifted). A reversed
+    /// depth (near 1, far 0) keeps a float's relative precision only so.
+    bool zeroToOneDepth = false;
     bool framebufferSrgb = false; ///< linear-to-sRGB conversion on writes to sRGB targets
     int clipDistances = 0;        ///< GL_CLIP_DISTANCE0 .. this - 1 on (the vertex stage writes gl_ClipDistance), 0..kClipDistances
     bool seamlessCubeMaps = true; ///< cube-map filters read across face edges (a context-wide switch in GL)

@@ -323,3 +323,45 @@ TEST_F(CubeMapGLTest, AMovingLightLeavesNoStaleDepths) {
     for (std::size_t i = 0; i < last.size(); ++i) different += last[i] != expected[i];
     EXPECT_EQ(different, 0u);
 }
+
+// A cube stores the reversed window depth with the one-tap filters and
+// distance / far written as the fragment's depth with the others
+// (MapSettings: cubeWindowDepth): the two clear to different values, so a
+// light switching between them on one renderer must clear its faces whole.
+// Every frame's image equals a fresh renderer's, byte for byte; and the two
+// measures shadow the same receivers (filter none against pcf20 with no
+// radius: the same single tap), all but 0.05 % of the pixels.
+TEST_F(CubeMapGLTest, SwitchingTheCubesMeasureLeavesNoStaleDepths) {
+    const fs::path file = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "room-point.json";
+    const std::vector<std::string> filters = {"\"hardware\"", "\"pcf20\"", "\"none\"", "\"poisson\"", "\"hardware\""};
+    RenderOptions options;
+    options.width = 320;
+    options.height = 180;
+    Renderer carried(test::glContext());
+    for (std::size_t k = 0; k < filters.size(); ++k) {
+        SCOPED_TRACE(filters[k]);
+        const Scene scene = loadSceneFile(file, {"lights[0].shadow.map.size=256", "lights[0].shadow.map.filter=" + filters[k]});
+        if (k == 0) carried.upload(scene);
+        carried.render(scene, options);
+        Renderer fresh(test::glContext());
+        fresh.upload(scene);
+        fresh.render(scene, options);
+        EXPECT_TRUE(carried.readColor().pixels == fresh.readColor().pixels);
+    }
+    auto visibility = [&](const std::string& filter) {
+        const Scene scene = loadSceneFile(file, {"lights[0].shadow.map.filter=" + filter, "lights[0].shadow.map.diskRadius=0", "lights[0].shadow.map.diskGrowth=0"});
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        renderer.render(scene, options);
+        return renderer.readVisibilityRgb(scene, 0);
+    };
+    const std::vector<glm::vec3> window = visibility("\"none\""), written = visibility("\"pcf20\"");
+    ASSERT_EQ(window.size(), written.size());
+    std::size_t differ = 0, shadowed = 0;
+    for (std::size_t i = 0; i < window.size(); ++i) {
+        differ += (window[i].x >= 0.5f) != (written[i].x >= 0.5f);
+        shadowed += window[i].x < 0.5f;
+    }
+    EXPECT_GT(shadowed, 1000u) << "the room's shadows must be in view";
+    EXPECT_LE(static_cast<double>(differ), 0.0005 * static_cast<double>(window.size()));
+}

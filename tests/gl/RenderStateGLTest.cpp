@@ -48,6 +48,7 @@ const std::vector<Dirt>& dirt() {
         {"stencil", [] { glEnable(GL_STENCIL_TEST); glStencilFunc(GL_NEVER, 0, 0xFF); glStencilMask(0x00); }},
         {"polygon offset", [] { glEnable(GL_POLYGON_OFFSET_FILL); glPolygonOffset(0.0f, -1.0e6f); }},
         {"depth clamp", [] { glEnable(GL_DEPTH_CLAMP); }},
+        {"0..1 clip depth", [] { glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE); }},
         {"sRGB writes", [] { glEnable(GL_FRAMEBUFFER_SRGB); }},
         {"clip distance", [] { glEnable(GL_CLIP_DISTANCE0); }},
         {"seamless cube maps off", [] { glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS); }},
@@ -183,8 +184,9 @@ TEST_F(RenderStateGLTest, EveryPieceOfDirtChangesADrawWhileInEffect) {
         // a triangle writing -1 is never drawn), so only a GPU shows this
         // piece in effect.
         if (std::string(d.name) == "clip distance" && gl::isSoftwareRasterizer(test::glContext().info().renderer)) continue;
-        // Depth clamp shows on a triangle before the near plane; the rest on one inside.
-        const float z = std::string(d.name) == "depth clamp" ? -1.5f : 0.25f;
+        // Depth clamp shows on a triangle before the near plane, 0..1 clip
+        // depth on one in GL's near half (clipped then); the rest on one inside.
+        const float z = std::string(d.name) == "depth clamp" ? -1.5f : std::string(d.name) == "0..1 clip depth" ? -0.5f : 0.25f;
         const bool clip = std::string(d.name) == "clip distance";
         const std::vector<float> clean = drawOnce(nothing, z, clip);
         const std::vector<float> dirty = drawOnce(d.leave, z, clip);

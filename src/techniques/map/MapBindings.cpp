@@ -10,7 +10,7 @@ namespace shadowlab::map {
 
 namespace {
 
-gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
+gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare, GLenum compareFunc = GL_LEQUAL) {
     gl::Sampler s;
     glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, minFilter);
     glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, magFilter);
@@ -21,7 +21,7 @@ gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare) {
     glSamplerParameterfv(s.id(), GL_TEXTURE_BORDER_COLOR, one);
     if (compare) {
         glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, compareFunc);
     }
     return s;
 }
@@ -48,7 +48,11 @@ void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers,
     const bool packed = isPacked(g.format());
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
     const bool linear = filterInfo(p.options.filter).linearCube;
-    glBindSampler(SL_UNIT_SHADOW_FIRST, packed || plain ? samplers.plainNearest.id() : linear ? samplers.compareLinear.id() : samplers.compareNearest.id());
+    // A reversed window depth (cubeWindowDepth): lit where the receiver's is the greater.
+    const bool reversed = cubeWindowDepth(p.options);
+    const gl::Sampler& compare = linear ? (reversed ? samplers.compareLinearGreater : samplers.compareLinear)
+                                        : (reversed ? samplers.compareNearestGreater : samplers.compareNearest);
+    glBindSampler(SL_UNIT_SHADOW_FIRST, packed || plain ? samplers.plainNearest.id() : compare.id());
     bindRawDepth(p, g, samplers);
     bindTransmittance(g, samplers, translucent);
 }
@@ -59,6 +63,8 @@ void MapSamplers::create() {
     if (compareNearest) return;
     compareNearest = makeSampler(GL_NEAREST, GL_NEAREST, true);
     compareLinear = makeSampler(GL_LINEAR, GL_LINEAR, true);
+    compareNearestGreater = makeSampler(GL_NEAREST, GL_NEAREST, true, GL_GEQUAL);
+    compareLinearGreater = makeSampler(GL_LINEAR, GL_LINEAR, true, GL_GEQUAL);
     plainNearest = makeSampler(GL_NEAREST, GL_NEAREST, false);
     compareNearestMip = makeSampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, true);
     compareLinearMip = makeSampler(GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, true);

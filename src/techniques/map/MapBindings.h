@@ -13,6 +13,8 @@ struct MapSamplers {
     gl::Sampler compareNearest{gl::NoCreate}, compareLinear{gl::NoCreate}, plainNearest{gl::NoCreate};
     gl::Sampler compareNearestMip{gl::NoCreate}, compareLinearMip{gl::NoCreate}, plainNearestMip{gl::NoCreate};
     gl::Sampler momentLinear{gl::NoCreate}, momentLinearMip{gl::NoCreate};
+    /// For cube maps of reversed window depth (MapSettings: cubeWindowDepth).
+    gl::Sampler compareNearestGreater{gl::NoCreate}, compareLinearGreater{gl::NoCreate};
     /// Makes them (once; a no-op after).
     void create();
 };

@@ -90,8 +90,8 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     // PCSS: the light's size as the similar triangles take it.
     const float size = light.type == LightType::Directional ? std::tan(glm::radians(0.5f * light.size)) : light.size;
     u.lightSize = size;
-    u.nearPlane = p.camera.nearPlane;
-    u.farPlane = p.camera.farPlane;
+    u.nearPlane = p.cube ? p.cubeCamera.nearPlane : p.camera.nearPlane;  // a cube's reversed window depth needs both (cubeWindowDepth)
+    u.farPlane = p.cube ? p.cubeCamera.farPlane : p.camera.farPlane;
     u.blockerTaps = static_cast<float>(p.options.blockerSamples);
     u.bleedReduction = p.options.bleedReduction;
     u.transmittance = translucent ? 1.0f : 0.0f;

@@ -63,21 +63,39 @@ FaceUse faceUse(const FrameInfo& frame, const MapLight& p, int size) {
 void clearFaces(TechniqueHost& host, const MapArray& g, MapLight& p, const FaceUse& use) {
     const auto scope = host.timeScope("clear");
     const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    const float far = cubeWindowDepth(p.options) ? 0.0f : 1.0f;  // the reversed window depth's far plane is 0
     for (int f = 0; f < 6; ++f) {
         const auto face = static_cast<std::size_t>(f);
         const TexelRect r = p.faceDirty[face].clamped(g.size()).united(use.covered[face]);
         p.faceDirty[face] = use.covered[face];
         if (r.empty()) continue;
-        glClearTexSubImage(g.depth.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, one);
+        glClearTexSubImage(g.depth.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
         if (isPacked(g.format()))
             glClearTexSubImage(g.packed.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_RGBA, GL_FLOAT, one);
     }
 }
 
+// A cube of reversed window depth (MapSettings: cubeWindowDepth): 0..1
+// clip depth, nearer is greater, and the slope bias as a polygon offset
+// pushing depths towards the far plane, 0 (the written depth's measure:
+// the largest change to a neighbouring texel times slopeBias), with
+// cullFront too, as the written depth had it. The constant offset
+// (offsetUnits of the format's step in distance / far) is the lookup's
+// (cubeStored): a polygon offset's units would be steps of the window
+// depth, which near the far plane are a large share of it.
+gl::RenderState windowDepthState(gl::RenderState state, const MapOptions& o) {
+    state.zeroToOneDepth = true;
+    state.depthFunc = GL_GREATER;
+    state.polygonOffset = o.slopeBias != 0.0f;
+    state.offsetFactor = -o.slopeBias;
+    state.offsetUnits = 0.0f;
+    return state;
+}
+
 // The casters into the cube: once through the geometry shader, or once per face they touch.
 void drawCasters(TechniqueHost& host, const MapArray& g, const MapLight& p, const FaceUse& use) {
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
-    const std::string defines = CubePassVariant{g.format(), onePass, p.options.faceCulling}.defines();
+    const std::string defines = CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options)}.defines();
     glViewport(0, 0, g.size(), g.size());
     if (onePass) {
         const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"},
@@ -113,6 +131,7 @@ void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView
     clearFaces(host, g, p, use);
     if (!isPacked(g.format())) state.noColor();
     state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
+    if (cubeWindowDepth(p.options)) state = windowDepthState(state, p.options);
     host.apply(state);
     drawCasters(host, g, p, use);
     static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};

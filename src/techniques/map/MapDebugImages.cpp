@@ -1,9 +1,11 @@
 // Technique "map": its debug images (MapDebugImages.h).
 #include "techniques/map/MapDebugImages.h"
 
+#include "techniques/map/MapSettings.h"
 #include "techniques/map/MapVariants.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -34,11 +36,31 @@ std::vector<float> readLayer(const MapArray& g, int layer) {
     return depth;
 }
 
+// A cube face of reversed window depth (cubeWindowDepth) as distance /
+// far, texel by texel (a texel's distance is its depth along the face's
+// axis times sqrt(1 + s^2 + t^2), s and t its place on the face, -1..1);
+// cleared texels (0) are 1, as in a written cube.
+void windowToDistance(std::vector<float>& depth, int size, const CubeCamera& c) {
+    const float n = c.nearPlane, f = c.farPlane;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            float& d = depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(size) + static_cast<std::size_t>(x)];
+            if (d <= 0.0f) {
+                d = 1.0f;
+                continue;
+            }
+            const float s = 2.0f * (static_cast<float>(x) + 0.5f) / static_cast<float>(size) - 1.0f;
+            const float t = 2.0f * (static_cast<float>(y) + 0.5f) / static_cast<float>(size) - 1.0f;
+            const float axis = n * f / (d * (f - n) + n);
+            d = std::min(axis * std::sqrt(1.0f + s * s + t * t) / f, 1.0f);
+        }
+}
+
 // A point light's six faces as a horizontal cross (+Y above; -X, +Z, +X,
 // -Z across; -Y below: neighbouring edges touch), each face's rows as GL
 // stores them (t down), tiles of at most 512 texels. Stored depth is
-// distance / far, already linear: stretched over its range for
-// contrast; white where no caster was drawn.
+// distance / far (a window-depth cube's turned into it), linear:
+// stretched over its range for contrast; white where no caster was drawn.
 ImageRGBA8 cubeCross(const MapArray& g, const MapLight& p, std::vector<float>& values) {
     const int tile = std::min(g.size(), 512);
     std::array<std::vector<float>, 6> faces;
@@ -46,6 +68,7 @@ ImageRGBA8 cubeCross(const MapArray& g, const MapLight& p, std::vector<float>& v
     for (int f = 0; f < 6; ++f) {
         std::vector<float>& depth = faces[static_cast<std::size_t>(f)];
         depth = readLayer(g, 6 * p.layer + f);
+        if (cubeWindowDepth(p.options)) windowToDistance(depth, g.size(), p.cubeCamera);
         for (float d : depth)
             if (d < 1.0f) {
                 lo = std::min(lo, d);

@@ -31,6 +31,10 @@ void presetBase(MapOptions& o) {
 // base-255 digits, or r8's one), compared in the shader.
 bool isPacked(MapFormat f) { return f == MapFormat::Rgba8 || f == MapFormat::R8; }
 
+bool cubeWindowDepth(MapFormat f, MapFilter filter) {
+    return f == MapFormat::Depth32F && (filter == MapFilter::None || filter == MapFilter::Hardware);
+}
+
 bool bilinearGrid(const MapOptions& o, bool softwareRasterizer) {
     return !isPacked(o.format) && (o.gridTaps == MapGridTaps::Bilinear || (o.gridTaps == MapGridTaps::Auto && !softwareRasterizer));
 }

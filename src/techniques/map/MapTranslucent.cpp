@@ -2,6 +2,7 @@
 #include "techniques/map/MapTranslucent.h"
 
 #include "techniques/map/MapCameras.h"
+#include "techniques/map/MapSettings.h"
 #include "techniques/map/MapVariants.h"
 
 #include <string>
@@ -14,7 +15,7 @@ namespace {
 // cube face's): its transmittance and nearest-depth layers as colours,
 // cleared to white, over the opaque depth of `depthLayer`, tested, not
 // written; transmittances multiply (dst x src), depths keep the least.
-gl::Framebuffer bindTranslucentTarget(TechniqueHost& host, const MapArray& g, int layer, int depthLayer, bool depthClamp) {
+gl::Framebuffer bindTranslucentTarget(TechniqueHost& host, const MapArray& g, int layer, int depthLayer, bool depthClamp, bool reversedDepth) {
     gl::Framebuffer fbo;
     glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
     glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
@@ -31,6 +32,10 @@ gl::Framebuffer bindTranslucentTarget(TechniqueHost& host, const MapArray& g, in
     glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
     state.depthWrite = false;
     state.depthClamp = depthClamp;
+    if (reversedDepth) {  // a cube of window depth (cubeWindowDepth): nearer is greater
+        state.zeroToOneDepth = true;
+        state.depthFunc = GL_GREATER;
+    }
     state.targetBlend[0] = gl::TargetBlend{GL_ZERO, GL_SRC_COLOR, GL_FUNC_ADD};
     state.targetBlend[1] = gl::TargetBlend{GL_ONE, GL_ONE, GL_MIN};
     host.apply(state);
@@ -53,7 +58,7 @@ bool hasTranslucentCasters(const FrameInfo& frame) {
 void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const LightCamera& camera,
                      int layer) {
     const auto scope = host.timeScope("translucent");
-    const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, sharedDepthBuffer(g.key) ? 0 : layer, !camera.perspective);
+    const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, sharedDepthBuffer(g.key) ? 0 : layer, !camera.perspective, false);
     block.setLightClip(camera.clipFromWorld());
     const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_transmit.frag"}},
                                                TranslucentVariant{}.defines()});
@@ -63,10 +68,10 @@ void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
 void drawCubeTranslucent(TechniqueHost& host, const FrameInfo& frame, const MapArray& g, const MapLight& p) {
     const auto scope = host.timeScope("translucent");
     const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube_transmit.frag"}},
-                                               CubePassVariant{.onePass = false}.defines()});
+                                               CubePassVariant{.format = g.format(), .onePass = false, .windowDepth = cubeWindowDepth(p.options)}.defines()});
     for (int f = 0; f < 6; ++f) {
         const int layer = 6 * p.layer + f;
-        const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, layer, false);
+        const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, layer, false, cubeWindowDepth(p.options));
         glProgramUniform1i(program.id(), 1, f);
         host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && (p.faceMask(i) & (1u << f)) != 0; });
     }

@@ -85,6 +85,7 @@ std::string LightPassVariant::defines() const {
         .moments(momentFormat)
         .set("MAP_TRANSMIT", transmittance)
         .set("MAP_PLAIN_FETCH", plainFetch)
+        .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))
         .str();
 }
 
@@ -98,7 +99,12 @@ std::string DepthPassVariant::defines() const {
 }
 
 std::string CubePassVariant::defines() const {
-    return Defines().packing(format).set("MAP_CUBE_ONE_PASS", onePass).set("MAP_CUBE_CULL", faceCulling).str();
+    return Defines()
+        .packing(format)
+        .set("MAP_CUBE_ONE_PASS", onePass)
+        .set("MAP_CUBE_CULL", faceCulling)
+        .set("MAP_CUBE_WINDOW", windowDepth)
+        .str();
 }
 
 std::string TranslucentVariant::defines() const { return Defines().str(); }

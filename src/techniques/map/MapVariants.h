@@ -49,6 +49,7 @@ struct CubePassVariant {
     MapFormat format = MapFormat::Depth32F;
     bool onePass = true;            ///< the geometry shader picks the faces (else one draw per face)
     bool faceCulling = true;        ///< one pass: each triangle only to the faces it touches
+    bool windowDepth = false;       ///< the reversed window depth, not gl_FragDepth (MapSettings: cubeWindowDepth)
     std::string defines() const;
 };
 
