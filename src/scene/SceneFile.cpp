@@ -80,6 +80,21 @@ json parseDocument(ParseContext& ctx, const std::string& jsonText, const std::st
 
 const std::vector<const char*> kTopLevelKeys{"name", "camera", "ambient", "background", "materials", "lights", "nodes"};
 
+// A scene's text parsed and overridden, and its top level checked.
+struct Document {
+    ParseContext ctx;
+    json doc;
+    Document(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir, const std::vector<std::string>& overrides)
+        : ctx{sourceName, baseDir, {}}, doc(parseDocument(ctx, jsonText, sourceName, overrides)) {}
+    Document(const Document&) = delete;
+    Document& operator=(const Document&) = delete;
+    Reader root() const {
+        const Reader r(ctx, doc, "");
+        r.checkKeys(kTopLevelKeys);
+        return r;
+    }
+};
+
 // The `lights` array into scene.lights; with `projectors`, each projector's
 // image is loaded into scene.textures (else projectorTexture stays -1).
 void readLights(const Reader& root, Scene& scene, const ParseContext& ctx, bool projectors) {
@@ -106,10 +121,9 @@ void readLights(const Reader& root, Scene& scene, const ParseContext& ctx, bool 
 
 Scene parseScene(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir,
                  const std::vector<std::string>& overrides) {
-    ParseContext ctx{sourceName, baseDir, {}};
-    const json doc = parseDocument(ctx, jsonText, sourceName, overrides);
-    const Reader root(ctx, doc, "");
-    root.checkKeys(kTopLevelKeys);
+    const Document d(jsonText, sourceName, baseDir, overrides);
+    const ParseContext& ctx = d.ctx;
+    const Reader root = d.root();
     Scene scene;
     scene.name = root.string("name", fs::path(sourceName).stem().string());
     if (root.has("camera")) readCamera(root.child("camera"), scene.camera);
@@ -125,12 +139,9 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
 
 std::vector<Light> parseSceneLights(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir,
                                     const std::vector<std::string>& overrides) {
-    ParseContext ctx{sourceName, baseDir, {}};
-    const json doc = parseDocument(ctx, jsonText, sourceName, overrides);
-    const Reader root(ctx, doc, "");
-    root.checkKeys(kTopLevelKeys);
+    const Document d(jsonText, sourceName, baseDir, overrides);
     Scene scene;
-    readLights(root, scene, ctx, false);
+    readLights(d.root(), scene, d.ctx, false);
     return std::move(scene.lights);
 }
 

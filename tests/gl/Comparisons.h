@@ -6,6 +6,10 @@
 
 #include <shadowlab/Compare.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <vector>
+
 namespace shadowlab::test {
 
 inline Comparison compareScene(const Scene& scene, int width = 960, int height = 540, int softSamples = 256) {
@@ -16,6 +20,15 @@ inline Comparison compareScene(const Scene& scene, int width = 960, int height =
     options.height = height;
     options.softSamples = softSamples;
     return compareWithReference(renderer, scene, options);
+}
+
+// The scene files in scenes/, sorted.
+inline std::vector<std::filesystem::path> bundledScenes() {
+    std::vector<std::filesystem::path> out;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes"))
+        if (entry.path().extension() == ".json") out.push_back(entry.path());
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 inline double awayFromEdges(const LightComparison& l) { return l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges; }

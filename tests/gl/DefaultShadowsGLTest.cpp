@@ -5,7 +5,6 @@
 
 #include <shadowlab/SceneFile.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,19 +14,9 @@ using shadowlab::test::awayFromEdges;
 using shadowlab::test::compareScene;
 using shadowlab::test::GLTest;
 
+using shadowlab::test::bundledScenes;
+
 namespace fs = std::filesystem;
-
-namespace {
-
-std::vector<fs::path> bundledScenes() {
-    std::vector<fs::path> out;
-    for (const auto& entry : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes"))
-        if (entry.path().extension() == ".json") out.push_back(entry.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-} // namespace
 
 class DefaultShadowsGLTest : public GLTest {};
 

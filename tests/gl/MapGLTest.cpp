@@ -17,6 +17,7 @@
 #include <set>
 
 using namespace shadowlab;
+using shadowlab::test::bundledScenes;
 using shadowlab::test::awayFromEdges;
 using shadowlab::test::compareScene;
 using shadowlab::test::GLTest;
@@ -34,14 +35,6 @@ std::vector<std::string> mapOverrides(const Scene& scene, const std::vector<std:
         out.push_back(at + "technique=map");
         for (const std::string& e : extra) out.push_back(at + "map." + e);
     }
-    return out;
-}
-
-std::vector<fs::path> bundledScenes() {
-    std::vector<fs::path> out;
-    for (const auto& entry : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes"))
-        if (entry.path().extension() == ".json") out.push_back(entry.path());
-    std::sort(out.begin(), out.end());
     return out;
 }
 
