@@ -205,7 +205,37 @@ float viewReach(const Camera& camera, const FitInput& in) {
     return std::clamp(reach, camera.nearPlane * 1.001f, camera.farPlane);
 }
 
-LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in) {
+namespace {
+
+// A stabilised cascade's casters (its box holds the slice's whole sphere
+// and the scene's depth, so the box's sides alone keep most of the scene):
+// those whose box, in light view, overlaps across the light the box of the
+// receivers seen in `reads` (the depth range whose lookups read this
+// cascade), widened by `pad` (the filter's footprint), and is not wholly
+// beyond it from the light (unless in.planeReachesBeyond). A caster
+// outside cannot write a texel a lookup there reads, or only farther from
+// the light than the receiver looking it up, where a comparison comes out
+// the same with it or without it.
+std::vector<std::uint8_t> castersOverSlice(const LightCamera& cam, const FitInput& reads, float pad) {
+    std::vector<std::uint8_t> out(reads.items.size(), 0);  // cam.casts (castersThatMatter) and over the slice
+    Bounds region = visibleReceivers(reads, cam.viewFromWorld);
+    if (region.empty()) return out;
+    const Bounds frustum = frustumBounds(reads.cameraClipFromWorld, cam.viewFromWorld);
+    region.lo = glm::max(region.lo, frustum.lo) - glm::vec3(pad, pad, 0.0f);
+    region.hi = glm::min(region.hi, frustum.hi) + glm::vec3(pad, pad, 0.0f);
+    for (std::size_t i = 0; i < reads.items.size(); ++i) {
+        if (!reads.items[i].castsShadows || (!cam.casts.empty() && !cam.casts[i])) continue;
+        const Bounds b = reads.itemBounds[i].transformed(cam.viewFromWorld);
+        out[i] = b.hi.x >= region.lo.x && b.lo.x <= region.hi.x && b.hi.y >= region.lo.y && b.lo.y <= region.hi.y &&
+                 (reads.planeReachesBeyond || b.hi.z >= region.lo.z);
+    }
+    return out;
+}
+
+} // namespace
+
+LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in,
+                       float readFrom) {
     const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
     FitInput slice = in;
     slice.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, near, far) * camera.viewFromWorld();
@@ -238,6 +268,10 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     cam.clipFromView = glm::ortho(snapped.x - half, snapped.x + half, snapped.y - half, snapped.y + half, cam.nearPlane, cam.farPlane);
     cam.texelSize = texel;
     cam.perspective = false;
+    FitInput reads = in;
+    const float from = readFrom > 0.0f ? std::min(readFrom, near) : near;
+    reads.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, from, far) * camera.viewFromWorld();
+    cam.casts = castersOverSlice(cam, reads, (in.paddingTexels + 2.0f) * texel);
     return cam;
 }
 

@@ -44,6 +44,10 @@ struct FitInput {
     glm::mat4 cameraClipFromWorld{1.0f};
     int size = 2048;           ///< map texels per side
     float paddingTexels = 1.0f;///< extra texels around the fitted region (filter footprint)
+    /// The filter compares taps against the receiver's plane extended over
+    /// a wide region (PCSS's blocker search): a caster farther from the
+    /// light than every receiver may still count, so culling keeps it.
+    bool planeReachesBeyond = false;
 };
 
 /// False when the box lies entirely outside the clip volume of
@@ -116,7 +120,12 @@ float viewReach(const Camera& camera, const FitInput& in);
 /// orientation and origin, the box's centre snapped to whole texels and its
 /// depth over the whole scene, so the map's texel grid stays put in the world
 /// while the camera moves (no shimmer).
-LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in);
+/// `readFrom` (stabilised): the nearest depth along the view whose lookups
+/// read this cascade (the previous slice's blend zone; at most `near`, 0:
+/// `near`): only casters that can shadow a receiver seen between it and
+/// `far` are kept in `casts` (castersOverSlice).
+LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in,
+                       float readFrom = 0.0f);
 
 /// Spot light: perspective along its axis, field of view just containing
 /// the outer cone (plus the padding), far at the farthest projection of the

@@ -175,3 +175,34 @@ TEST(CascadeTest, AStabilisedCascadeKeepsItsTexelGridWhileTheCameraMovesAndTurns
     }
     EXPECT_GT(shifted, 0) << "the path must move the box at least once for the test to mean something";
 }
+
+// A stabilised cascade keeps only the casters whose shadow can reach what
+// its lookups read (LightCamera.cpp: castersOverSlice): the boxes along the
+// view axis, the first slice (0.1 to 10 m) keeps those near it and drops
+// the ones 100 m and more down the row; the last slice (to 200 m) keeps
+// them; a box 50 m behind the camera, whose shadow falls away from the
+// view, is dropped by both; the ground, a plane with nothing below it,
+// stays out as castersThatMatter says.
+TEST(Cascade, AStabilisedCascadeKeepsOnlyTheCastersOverItsSlice) {
+    Field field;
+    Bounds behind;  // the sun shines towards +z: its shadow runs away from the view (-z)
+    behind.add(glm::vec3(-1.0f, 0.0f, 49.0f));
+    behind.add(glm::vec3(1.0f, 2.0f, 51.0f));
+    field.bounds.push_back(behind);
+    field.planes.emplace_back(std::nullopt);
+    field.convex.emplace_back();
+    field.items.emplace_back();
+    field.items.back().mesh = static_cast<int>(field.items.size()) - 1;
+    const Camera camera = walker(glm::vec3(0.0f, 1.8f, 0.0f), 0.0f);
+    const FitInput in = field.input(camera, kAspect);
+    const LightCamera first = fitCascade(kSun, camera, kAspect, 0.1f, 10.0f, true, in);
+    const LightCamera last = fitCascade(kSun, camera, kAspect, 10.0f, 200.0f, true, in, 0.1f);
+    ASSERT_EQ(first.casts.size(), field.items.size());
+    ASSERT_EQ(last.casts.size(), field.items.size());
+    EXPECT_EQ(first.casts[0], 0) << "the ground";
+    EXPECT_EQ(first.casts[1], 1) << "the box 2 m ahead";
+    EXPECT_EQ(first.casts[30], 0) << "the box 137 m ahead";
+    EXPECT_EQ(last.casts[30], 1) << "the box 137 m ahead, in the last slice";
+    EXPECT_EQ(first.casts.back(), 0) << "the box behind the camera";
+    EXPECT_EQ(last.casts.back(), 0) << "the box behind the camera";
+}

@@ -1,6 +1,7 @@
 // Technique "map": the lights' cameras and their casters (MapCameras.h).
 #include "techniques/map/MapCameras.h"
 
+#include "techniques/map/MapFilters.h"
 #include "techniques/map/MapSettings.h"
 
 #include <algorithm>
@@ -42,9 +43,11 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
     const std::vector<float> given = parseSplits(p.options, problem);
     p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
     p.cascades.clear();
+    // A slice's lookups reach into the next cascade over its far blend
+    // share: cascade c is read from slice c - 1's near end on (conservative).
     for (std::size_t c = 0; c < p.cascadeFar.size(); ++c)
         p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, c == 0 ? near : p.cascadeFar[c - 1], p.cascadeFar[c],
-                                        p.options.stabilize, in));
+                                        p.options.stabilize, in, c < 2 ? near : p.cascadeFar[c - 2]));
     p.camera = p.cascades.front();
     const glm::mat4& v = frame.viewFromWorld;
     p.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
@@ -66,7 +69,9 @@ bool mayIntersectSides(const glm::mat4& clipFromWorld, const Bounds& box) {
 } // namespace
 
 void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame) {
-    const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld, p.options.size, footprint(p.options)};
+    const FitInput in{frame.itemBounds, frame.items,          frame.itemPlanes,
+                      frame.itemConvex, frame.clipFromWorld, p.options.size,
+                      footprint(p.options), filterInfo(p.options.filter).rawDepth};
     if (p.cube) {
         const auto [nearPlane, farPlane] = cubeNearFar(p.options);
         p.cubeCamera = fitCube(light, lightFit(p.options.fit), in, nearPlane, farPlane);
