@@ -168,6 +168,8 @@ th { background: #f0f0f0; } td.l { text-align: left; }
 figure { display: inline-block; margin: 4px; } figure img { width: 320px; display: block; }
 figcaption { font-size: 12px; color: #555; }
 .legend span { display: inline-block; padding: 0 6px; margin-right: 6px; color: #fff; }
+.cost { display: flex; height: 12px; width: 160px; background: #f4f4f4; } .cost span { display: block; height: 12px; }
+.c-floor { background: #4c72b0; } .c-pass { background: #9ab3dd; } .c-lookup { background: #dd8452; } .c-rest { background: #bbb; }
 </style></head><body>
 <h1>shadowlab bench</h1>
 )";
@@ -205,8 +207,27 @@ PassSums passSums(const json& r) {
     return sums;
 }
 
+// Where light `l`'s share of row `r`'s frame goes, as a bar `scale` px per
+// ms: the shadow pass's floor (a bare depth draw of the same casters), the
+// pass above it, the lookups (its pass minus the same pass unshadowed), and
+// the rest of the frame. The passes are clocked apart from the frame
+// (cpu-finish adds a glFinish around each), so the parts may not add up
+// to it: the rest is what is left, at least 0.
+std::string costBar(const json& r, const json& l, double scale) {
+    const double frame = r["frameMs"]["median"].get<double>();
+    const double pass = l.value("shadowPassMs", 0.0), floor = std::min(l.value("shadowFloorMs", 0.0), pass);
+    const double lookup = std::max(l.value("lookupMs", 0.0), 0.0), rest = std::max(frame - pass - lookup, 0.0);
+    std::ostringstream s;
+    s << "<div class=\"cost\" title=\"shadow pass floor " << fixed(floor, 1) << " ms, pass above its floor " << fixed(pass - floor, 1)
+      << " ms, lookups " << fixed(lookup, 1) << " ms, rest of the frame " << fixed(rest, 1) << " ms\">";
+    const std::pair<const char*, double> parts[] = {{"c-floor", floor}, {"c-pass", pass - floor}, {"c-lookup", lookup}, {"c-rest", rest}};
+    for (const auto& [cls, ms] : parts) s << "<span class=\"" << cls << "\" style=\"width:" << fixed(ms * scale, 1) << "px\"></span>";
+    s << "</div>";
+    return s.str();
+}
+
 // Row `index`'s line for its light `l` in the table.
-void lightRow(std::ostream& h, const json& records, int index, const json& l, double fastest, bool flips) {
+void lightRow(std::ostream& h, const json& records, int index, const json& l, double fastest, double scale, bool flips) {
     const json& r = records[static_cast<std::size_t>(index)];
     const auto [shadowMs, baseMs, lightMs] = passSums(r);
     const json& g = r["frameMs"];
@@ -221,7 +242,7 @@ void lightRow(std::ostream& h, const json& records, int index, const json& l, do
       << (l.contains("lookupMs") ? fixed(l["lookupMs"], 1) : std::string("&ndash;")) << "</td><td>"
       << (l.contains("shadowCounters") && l["shadowCounters"].contains("mapBytes") ? fixed(l["shadowCounters"]["mapBytes"].get<double>() / 1048576.0, 1)
                                                                                    : std::string("&ndash;"))
-      << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
+      << "</td><td>" << costBar(r, l, scale) << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
       << escape(r["clock"].get<std::string>())
       << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
       << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
@@ -241,19 +262,24 @@ void lightRow(std::ostream& h, const json& records, int index, const json& l, do
 
 // The table: one line per row and light.
 void resultsTable(std::ostream& h, const json& records, bool flips) {
-    double fastest = 0.0;
+    double fastest = 0.0, slowest = 0.0;
     for (const json& r : records) {
         const double m = r["frameMs"]["median"].get<double>();
         if (m > 0.0 && (fastest == 0.0 || m < fastest)) fastest = m;
+        slowest = std::max(slowest, m);
     }
-    h << "<h2>Time and error</h2>\n<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
-         "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>lookup ms</th><th>map MiB</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
+    const double scale = slowest > 0.0 ? 160.0 / slowest : 0.0;  // the slowest frame fills the bar
+    h << "<h2>Time and error</h2>\n<p class=\"legend\">Where the time goes (bar: the slowest frame is 160 px): "
+         "<span class=\"c-floor\">shadow pass floor</span><span class=\"c-pass\">pass above its floor</span>"
+         "<span class=\"c-lookup\">lookups</span><span class=\"c-rest\">rest of the frame</span></p>\n"
+         "<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
+         "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>lookup ms</th><th>map MiB</th><th>where the time goes</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
          "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
          "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>penumbra &times; truth</th><th>&times; hard map</th><th>front</th>"
       << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";
     int index = 0;
     for (const json& r : records) {
-        for (const json& l : r["lights"]) lightRow(h, records, index, l, fastest, flips);
+        for (const json& l : r["lights"]) lightRow(h, records, index, l, fastest, scale, flips);
         ++index;
     }
     h << "</table></div>\n";

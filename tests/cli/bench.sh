@@ -146,6 +146,20 @@ rows=$(grep -o '<tr>' dom.html | wc -l)
 grep -q '<svg id="scatter"' dom.html || fail "no scatter plot"
 points=$(grep -o '<circle' dom.html | wc -l)
 [[ $points -eq 4 ]] || fail "scatter plot has $points points, expected 4"
+# Each row's stacked bar of where its time goes: the pass's floor, the pass
+# above it, the lookups, the rest; the slowest frame's bar is the fullest.
+bars=$(grep -o '<div class="cost"' dom.html | wc -l)
+[[ $bars -eq 4 ]] || fail "report has $bars cost bars, expected 4"
+python3 - dom.html <<'PY' || fail "cost bars"
+import re, sys
+html = open(sys.argv[1]).read()
+widths = []
+for bar in re.findall(r'<div class="cost"[^>]*>(.*?)</div>', html):
+    parts = re.findall(r'class="c-(floor|pass|lookup|rest)" style="width:([0-9.]+)px"', bar)
+    assert [p[0] for p in parts] == ["floor", "pass", "lookup", "rest"], parts
+    widths.append(sum(float(p[1]) for p in parts))
+assert max(widths) >= 159.0 and all(0.0 < w <= 160.5 + 160.0 for w in widths), widths  # the slowest frame fills it at least
+PY
 # 4 records x (technique, reference, one error image) = 12 images, all decoded.
 grep -q 'data-images-loaded="12/12"' dom.html || fail "images did not all load: $(grep -o 'data-images-loaded="[^"]*"' dom.html || echo none)"
 timeout 120 chromium "${flags[@]}" --window-size=1200,1600 --screenshot="$work/report.png" "file://$work/bench/report.html" >/dev/null 2>&1 \
