@@ -2,7 +2,9 @@
 // 2005) for a light of size map.lightSize: a blocker search of map.blockerTaps
 // taps, the penumbra's width by similar triangles, then map.filterTaps taps
 // of percentage-closer filtering over it, each tap compared against the
-// receiver's plane at its own place, not the centre's depth.
+// receiver's plane at its own place, not the centre's depth. The taps are
+// bilinear compares, or with MAP_PCSS_NEAREST (a software rasteriser:
+// LightPassVariant::pcssNearest) nearest depths compared here.
 #if MAP_CUBE
 float cubeReach(float texel, float radius) { return 0.0; }  // each tap compares against the receiver's plane itself
 
@@ -46,7 +48,11 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     d = vogelFirst(rotation);
     for (int k = 0; k < taps; ++k, d = vogelTurn(d)) {
         vec3 w = v + vogelOffset3D(k, taps, penumbra, d, t, b);
+#if MAP_PCSS_NEAREST
+        sum += cubePlaneRef(w, n, nv, ref) <= cubeDepthAt(w) ? 1.0 : 0.0;
+#else
         sum += cubeTap(w, cubePlaneRef(w, n, nv, ref));
+#endif
     }
     return sum / float(taps);
 }
@@ -95,7 +101,11 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     d = vogelFirst(rotation);
     for (int k = 0; k < taps; ++k, d = vogelTurn(d)) {
         vec2 o = vogelOffset2D(k, taps, radius, d, du);
+#if MAP_PCSS_NEAREST
+        sum += ref + dot(dzduv, o) <= mapDepthAt(m.layer, uv + o) ? 1.0 : 0.0;
+#else
         sum += mapTap(m.layer, uv + o, ref + dot(dzduv, o));
+#endif
     }
     return sum / float(taps);
 }

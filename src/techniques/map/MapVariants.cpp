@@ -70,6 +70,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.momentFormat = o.momentFormat;
     v.transmittance = translucentCasters;
     v.plainFetch = map::plainFetch(o, v.cube, softwareRasterizer);
+    v.pcssNearest = softwareRasterizer && o.filter == MapFilter::Pcss;
     return v;
 }
 
@@ -85,6 +86,7 @@ std::string LightPassVariant::defines() const {
         .moments(momentFormat)
         .set("MAP_TRANSMIT", transmittance)
         .set("MAP_PLAIN_FETCH", plainFetch)
+        .set("MAP_PCSS_NEAREST", pcssNearest)
         .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))
         .str();
 }
