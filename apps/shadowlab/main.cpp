@@ -316,7 +316,8 @@ int runTechniques(bool markdown) {
         return 0;
     }
     for (const TechniqueInfo& t : techniques()) {
-        std::cout << t.name << ": " << t.summary << "\n";
+        // A light whose scene names no technique gets the default one.
+        std::cout << t.name << (t.name == ShadowSettings{}.technique ? " (the default)" : "") << ": " << t.summary << "\n";
         for (const OptionField& f : t.options->fields)
             std::cout << "  lights[i].shadow." << t.name << "." << f.key << " = " << t.options->defaultText(f) << "  ("
                       << OptionTable::rangeText(f) << (f.unit.empty() ? "" : " " + f.unit) << ") " << f.doc << "\n";

@@ -18,6 +18,7 @@ out=$("$tool" render "$src/scenes/torus-resting.json" -o t.png --width 64 --heig
 "$tool" info | grep -q "GL version: *4\.[5-9]" || { echo "info does not report GL 4.5+"; "$tool" info; exit 1; }
 # The registered techniques and their generated option tables.
 "$tool" techniques | grep -q "^none: " || { echo "techniques does not list none"; exit 1; }
+"$tool" techniques | grep -q "^map (the default): " || { echo "techniques does not name map the default"; exit 1; }
 "$tool" techniques --markdown | grep -q '^#### `lights\[i\].shadow.none`' || { echo "techniques --markdown"; exit 1; }
 # --debug-images: the scene sets no technique, so its light gets a shadow
 # map (the default) and the directory holds the map and its texel density;

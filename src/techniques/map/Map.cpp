@@ -49,7 +49,7 @@ void checkSplitsInView(const MapOptions& o, const Light& light, const Camera& ca
 
 class ShadowMap final : public Technique {
 public:
-    static constexpr const char* summary = "a shadow map per light: orthographic for directional, perspective for spot lights";
+    static constexpr const char* summary = "a shadow map per light: orthographic for directional, perspective for spot, a cube for point lights";
 
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         if (frame.reuseShadowMaps) {
