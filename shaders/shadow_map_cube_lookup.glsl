@@ -19,31 +19,27 @@ float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, ve
 // cubeWindowDepth): with n, f the cube's near and far planes and z the
 // point's distance along the face's axis (the direction's largest
 // component), n (f - z) / ((f - n) z). The kernels keep working in
-// distance / far: a reference turns into that depth for its direction, a
-// stored depth back. Lit where the receiver's window depth is the greater.
-// The shadow pass's constant offset (map.cubeOffset) is taken off here.
+// distance / far: a reference turns into that depth for its direction.
+// Lit where the receiver's window depth is the greater. The shadow pass's
+// constant offset (map.cubeOffset) is taken off here. Only the one-tap
+// filters take this measure; PCSS's blocker search reads distance / far.
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+#error MAP_CUBE_WINDOW is for the one-tap filters (MapSettings: cubeWindowDepth)
+#endif
 float cubeStored(vec3 direction, float ref) {
     vec3 a = abs(direction);
     float axis = (ref - map.cubeOffset) * map.cubeFar * max(a.x, max(a.y, a.z)) / length(direction);
     float n = map.nearPlane, f = map.farPlane;
     return n * (f - axis) / ((f - n) * axis);
 }
-float cubeDistance(vec3 direction, float stored) {
-    if (stored <= 0.0) return 1.0;  // cleared: no caster
-    vec3 a = abs(direction);
-    float n = map.nearPlane, f = map.farPlane;
-    float axis = n * f / (stored * (f - n) + n);
-    return axis * length(direction) / max(a.x, max(a.y, a.z)) / map.cubeFar;
-}
 #define SL_CUBE_REF(direction, ref) cubeStored(direction, ref)
-#define SL_CUBE_LIT(ref, stored) ((ref) >= (stored))
 #else
 #define SL_CUBE_REF(direction, ref) (ref)
-#define SL_CUBE_LIT(ref, stored) ((ref) <= (stored))
 #endif
 #if MAP_PLAIN_FETCH
 // A software rasteriser: the nearest depth at level 0, compared here
-// (LightPassVariant::plainFetch; the comparison sampler's function).
+// (LightPassVariant::plainFetch; the comparison sampler's LEQUAL, or
+// GEQUAL for a reversed window depth).
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePlain;
 #if MAP_CUBE_WINDOW
 // cubeStored(direction, ref) >= stored without its root and division, per
@@ -68,11 +64,7 @@ float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(directio
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
 // The stored depths for PCSS's blocker search (distance / far): a sampler without comparison.
 layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
-#if MAP_CUBE_WINDOW
-float cubeDepthAt(vec3 direction) { return cubeDistance(direction, texture(mapCubeRaw, vec4(direction, map.layer)).r); }
-#else
 float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.layer)).r; }
-#endif
 #endif
 #endif
 

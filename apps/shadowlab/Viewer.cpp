@@ -100,15 +100,7 @@ void ViewerSession::reload() {
 // The scene with every setting made, as JSON that loads again (written
 // whole to a temporary file, then renamed: never half a file).
 void ViewerSession::save(const fs::path& path) {
-    std::string text;
-    if (fromFile) {
-        std::ifstream in(args.scene, std::ios::binary);
-        std::stringstream s;
-        s << in.rdbuf();
-        text = s.str();
-    } else {
-        text = defaultSceneJson();
-    }
+    const std::string text = sceneText();
     const std::string saved = sceneJsonWithOverrides(text, fromFile ? args.scene : std::string("<default scene>"), overrides.all());
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw Error(path.string() + ": cannot save the scene (a directory of that name is in the way)");
@@ -129,6 +121,15 @@ void ViewerSession::save(const fs::path& path) {
     }
 }
 
+// The scene's JSON text as read now: the file's, or the default scene's.
+std::string ViewerSession::sceneText() const {
+    if (!fromFile) return defaultSceneJson();
+    std::ifstream in(args.scene, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
 // A setting inside one light (`lights[N].<key>`, not its projector's
 // image): the lights read again from the scene's text with every override,
 // the meshes and textures kept. False when the scene must be read whole:
@@ -137,15 +138,11 @@ void ViewerSession::save(const fs::path& path) {
 bool ViewerSession::applyToLights(const std::string& key) {
     const std::size_t close = key.find("].");
     if (key.rfind("lights[", 0) != 0 || close == std::string::npos || key.compare(close + 2, 9, "projector") == 0) return false;
-    std::string text = defaultSceneJson();
     if (fromFile) {
         std::error_code ec;
         if (fs::last_write_time(args.scene, ec) != fileTime || ec) return false;
-        std::ifstream in(args.scene, std::ios::binary);
-        std::stringstream s;
-        if (!(s << in.rdbuf())) return false;
-        text = s.str();
     }
+    const std::string text = sceneText();
     const fs::path base = fromFile ? fs::path(args.scene).parent_path() : fs::current_path();
     std::vector<Light> lights = parseSceneLights(text, fromFile ? args.scene : std::string("<default scene>"), base, overrides.all());
     if (lights.size() != scene.lights.size()) return false;

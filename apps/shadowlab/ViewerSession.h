@@ -111,6 +111,7 @@ private:
     void save(const std::filesystem::path& path);
     void apply(const std::string& key, const std::string& value);
     bool applyToLights(const std::string& key);
+    std::string sceneText() const;
     void reloadIfChanged();
     void renderFrame(int width, int height);
     void endFrame(int width, int height, bool screenshotKey);

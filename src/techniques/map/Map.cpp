@@ -101,11 +101,8 @@ public:
             p.spot = light.type == LightType::Spot;
             checkSplitsInView(p.options, light, frame.scene.camera, index);
             fitCameras(p, light, frame);
-            if (auto old = lights_.find(index); old != lights_.end()) {
-                p.keepTargetsOf(old->second);
-                // A cube whose faces change measure (cubeWindowDepth) clears them whole: their clear values differ.
-                if (p.cube && cubeWindowDepth(p.options) != cubeWindowDepth(old->second.options)) p.faceDirty.fill(TexelRect::whole());
-            }
+            if (auto old = lights_.find(index); old != lights_.end())
+                p.keepTargetsOf(old->second, !p.cube || cubeWindowDepth(p.options) == cubeWindowDepth(old->second.options));
             attachTargets(p, res_.arrays[p.array]);
             perLight.emplace(index, std::move(p));
         }

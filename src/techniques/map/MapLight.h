@@ -66,14 +66,17 @@ struct MapLight {
         return options.faceCulling || !mask ? mask : std::uint8_t{0x3F};
     }
     /// Takes what survives from last frame's state of the same light: its
-    /// framebuffers and which layer they hold, the cube faces' dirty texels.
-    void keepTargetsOf(MapLight& old) {
+    /// framebuffers and which layer they hold, the cube faces' dirty texels
+    /// (whole faces when the cube changes measure, `sameMeasure` false:
+    /// MapSettings cubeWindowDepth; the two clear to different values).
+    void keepTargetsOf(MapLight& old, bool sameMeasure) {
         fbo = std::move(old.fbo);
         attachedGeneration = old.attachedGeneration;
         attachedLayer = old.attachedLayer;
         faceFbos = std::move(old.faceFbos);
         cascadeFbos = std::move(old.cascadeFbos);
         faceDirty = old.faceDirty;
+        if (!sameMeasure) faceDirty.fill(TexelRect::whole());
     }
 };
 
