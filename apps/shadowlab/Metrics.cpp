@@ -29,6 +29,11 @@ nlohmann::json lightRecord(const Light& light, const LightComparison& c,
                           {"penumbraRatio", c.penumbraRatio()},
                           {"coloured", c.coloured},
                           {"rmseRgb", {c.rmseRgb[0], c.rmseRgb[1], c.rmseRgb[2]}}};
+    if (c.texelFootprintP50 >= 0.0) {
+        record["texelFootprintP50"] = c.texelFootprintP50;
+        record["texelFootprintP95"] = c.texelFootprintP95;
+        record["texelFootprintMax"] = c.texelFootprintMax;
+    }
     for (const auto& [key, path] : images) record[key] = path;
     return record;
 }

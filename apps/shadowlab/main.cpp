@@ -238,6 +238,9 @@ int runCompare(const CompareArgs& args) {
         if (l.coloured)
             std::cout << "  coloured light, RMSE per channel:  red " << l.rmseRgb[0] << ", green " << l.rmseRgb[1] << ", blue " << l.rmseRgb[2] << "\n";
         if (l.umbraPixels > 0) std::cout << "  light leaked into the umbra:       " << pct(l.leakedInUmbra) << " of the light (" << l.umbraPixels << " umbra pixels)\n";
+        if (l.texelFootprintP50 >= 0.0)
+            std::cout << "  texel footprint (pixels a texel):  median " << l.texelFootprintP50 << ", p95 " << l.texelFootprintP95 << ", max "
+                      << l.texelFootprintMax << "\n";
         if (l.soft)
             std::cout << "  penumbra:                          " << l.techniquePenumbraPixels << " pixels against " << l.referencePenumbraPixels
                       << " in truth (ratio " << l.penumbraRatio() << ")\n";
@@ -369,7 +372,7 @@ CLI::App* addRender(CLI::App& app, RenderArgs& args) {
         ->check(CLI::Range(0, static_cast<int>(kMaxLights) - 1));
     render->add_option("--debug", args.debug,
                        "Also write debug images beside the output as <name>-<image>.png: shadow-maps (each light's map, "
-                       "perspective depth linearised; a point light's cube as a cross), texel-density (map texels per pixel), cascades (the frame coloured by cascade), all")
+                       "perspective depth linearised; a point light's cube as a cross), texel-density (the texel footprint: screen pixels a map texel covers), cascades (the frame coloured by cascade), all")
         ->check(CLI::IsMember({"shadow-maps", "texel-density", "cascades", "all"}))
         ->delimiter(',');
     render->add_option("--debug-images", args.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");

@@ -58,6 +58,13 @@ struct LightComparison {
         return referencePenumbraPixels ? static_cast<double>(techniquePenumbraPixels) / static_cast<double>(referencePenumbraPixels) : 0.0;
     }
     double rmse = 0.0;            ///< root mean square of the same
+    /// The texel footprint (docs/metrics.md): how many screen pixels one
+    /// shadow-map texel covers at a receiver pixel, the longer of a texel's
+    /// two axes on screen (Lloyd's aliasing measure: about 1 is none, above
+    /// 10 heavy; a cube map: the face the pixel samples). Median, 95th
+    /// percentile and largest over the receivers the light's map covers;
+    /// -1 when the technique has no map (nothing measured).
+    double texelFootprintP50 = -1.0, texelFootprintP95 = -1.0, texelFootprintMax = -1.0;
     /// The same per channel (red, green, blue): light through translucent
     /// casters arrives coloured (both sides' RGB transmittance; equal to
     /// rmse in every channel without them).

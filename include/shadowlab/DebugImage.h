@@ -15,7 +15,7 @@ enum class DebugImageKind {
     Other,        ///< anything else (the default)
     ShadowMap,    ///< a 2D shadow map's stored depth (one per cascade)
     CubeCross,    ///< a cube map's six faces as a cross (a point light's map)
-    TexelDensity, ///< the frame coloured by shadow-map texels per screen pixel
+    TexelDensity, ///< the frame coloured by the texel footprint (screen pixels a shadow-map texel covers); values: the footprint per pixel, rows as GL stores them, -1 where not measured
     Cascades,     ///< the frame coloured by the cascade each point falls in
 };
 

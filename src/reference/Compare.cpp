@@ -212,6 +212,23 @@ void summarise(LightComparison& c, const Tally& tally) {
     for (int ch = 0; ch < 3; ++ch) c.rmseRgb[ch] = std::sqrt(tally.sqSumRgb[ch] / receivers);
     c.leakedInUmbra = c.umbraPixels ? tally.leakSum / static_cast<double>(c.umbraPixels) : 0.0;
 }
+
+// The texel footprint's median, 95th percentile and largest value over
+// the receivers (`reach`) where the technique measured one (`footprint`,
+// from its texel-density debug image: >= 0 where the map covers the
+// point); left at -1 when there is none.
+void footprintPercentiles(LightComparison& c, const std::vector<float>& footprint) {
+    std::vector<float> v;
+    for (std::size_t i = 0; i < footprint.size() && i < c.reach.pixels.size(); ++i)
+        if (c.reach.pixels[i] && footprint[i] >= 0.0f) v.push_back(footprint[i]);
+    if (v.empty()) return;
+    std::sort(v.begin(), v.end());
+    // Nearest rank: the smallest value with at least q of the values at or below it.
+    const auto rank = [&](double q) { return static_cast<double>(v[static_cast<std::size_t>(std::ceil(q * static_cast<double>(v.size()))) - 1]); };
+    c.texelFootprintP50 = rank(0.5);
+    c.texelFootprintP95 = rank(0.95);
+    c.texelFootprintMax = v.back();
+}
 #endif
 
 } // namespace
@@ -228,6 +245,7 @@ struct ComparisonJob::Impl {
     std::vector<std::vector<glm::vec3>> techniqueRgb;     ///< ...its channels
     std::vector<std::vector<float>> truth, extensionTruth;
     std::vector<std::vector<glm::vec3>> truthRgb;
+    std::vector<std::vector<float>> footprints;  ///< per light: the texel footprint per pixel, or empty (footprintPercentiles)
     std::atomic<std::size_t> samplesDone{0};
     std::atomic<bool> cancelled{false};
     bool traced = false;
@@ -277,6 +295,11 @@ ComparisonJob::ComparisonJob(Renderer& renderer, const Scene& scene, const Compa
         for (std::size_t i = 0; i < mean.size(); ++i) mean[i] = (d.techniqueRgb.back()[i].r + d.techniqueRgb.back()[i].g + d.techniqueRgb.back()[i].b) / 3.0f;
         d.techniqueVisibility.push_back(std::move(mean));
     }
+    // Each light's texel footprint, from the debug image that shows it.
+    d.footprints.assign(scene.lights.size(), {});
+    for (DebugImage& image : renderer.debugImages(scene))
+        if (image.kind == DebugImageKind::TexelDensity && image.light >= 0 && static_cast<std::size_t>(image.light) < scene.lights.size())
+            d.footprints[static_cast<std::size_t>(image.light)] = std::move(image.values);
     const SurfaceBuffer& surfaces = out.surfaces;
     const std::size_t n = static_cast<std::size_t>(surfaces.width) * surfaces.height;
 
@@ -353,6 +376,7 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
         PixelClasses classes = classify(light, d.samples, surfaces, vis.exact, options.litThreshold, c.reach);
         markEdgeBand(classes, d.extensions, vis.extensionExact, options.litThreshold);
         summarise(c, measure(c, classes, vis, out.reference, options.litThreshold));
+        footprintPercentiles(c, d.footprints[l]);
         out.lights.push_back(std::move(c));
     }
     return std::move(out);

@@ -98,31 +98,41 @@ ImageRGBA8 cubeCross(const MapArray& g, const MapLight& p, std::vector<float>& v
 }
 
 // The frame from the camera, each visible point coloured by
-// `fragmentFile` with the light's map block: shadow-map texels per
-// screen pixel (shadow_map_density.frag), the cascade
-// (shadow_map_cascades.frag).
-ImageRGBA8 frameView(TechniqueHost& host, const FrameInfo& frame, const LightView& view, MapResources& res, const MapLight& p, const char* fragmentFile) {
+// `fragmentFile` with the light's map block: the texel footprint
+// (shadow_map_density.frag, whose float output goes to `values` when
+// given, rows as GL stores them), the cascade (shadow_map_cascades.frag).
+ImageRGBA8 frameView(TechniqueHost& host, const FrameInfo& frame, const LightView& view, MapResources& res, const MapLight& p,
+                     const char* fragmentFile, std::vector<float>* values = nullptr) {
     const glm::ivec2 size = frame.viewport;
-    gl::Texture colour(GL_TEXTURE_2D), depth(GL_TEXTURE_2D);
+    gl::Texture colour(GL_TEXTURE_2D), depth(GL_TEXTURE_2D), measure(GL_TEXTURE_2D);
     glTextureStorage2D(colour.id(), 1, GL_RGBA8, size.x, size.y);
     glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT24, size.x, size.y);
+    glTextureStorage2D(measure.id(), 1, GL_R32F, size.x, size.y);
     gl::Framebuffer fbo;
     glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT1, measure.id(), 0);
     glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
-    gl::checkFramebuffer(fbo, "texel-density framebuffer");
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(fbo.id(), values ? 2 : 1, buffers);
+    gl::checkFramebuffer(fbo, "frame view framebuffer");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
     glViewport(0, 0, size.x, size.y);
     host.apply(gl::RenderState{});
-    const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f}, one = 1.0f;
+    const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f}, none[4] = {-1.0f, -1.0f, -1.0f, -1.0f}, one = 1.0f;
     glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, background);
+    if (values) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, none);
     glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
     res.block.upload(p, res.arrays[p.array], view.light, res.translucent);
     const int cascades = static_cast<int>(p.cameras().size());
     host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, fragmentFile}},
-                                                  FrameViewVariant{cascades}.defines()}));
+                                                  FrameViewVariant{p.cube ? 1 : cascades, p.cube}.defines()}));
     ImageRGBA8 image{size.x, size.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size.x) * size.y * 4)};
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(colour.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());
+    if (values) {
+        values->assign(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y), -1.0f);
+        glGetTextureImage(measure.id(), 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(values->size() * sizeof(float)), values->data());
+    }
     // GL's rows go bottom to top; images top to bottom.
     const std::size_t row = static_cast<std::size_t>(size.x) * 4;
     for (int y = 0; y < size.y / 2; ++y)
@@ -164,12 +174,17 @@ void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& v
         std::vector<float> values;
         ImageRGBA8 cross = cubeCross(g, p, values);
         out.push_back({"cube", std::move(cross), std::move(values), DebugImageKind::CubeCross});
+        std::vector<float> footprint;
+        ImageRGBA8 density = frameView(host, frame, view, res, p, "shadow_map_density.frag", &footprint);
+        out.push_back({"texel-density", std::move(density), std::move(footprint), DebugImageKind::TexelDensity});
         return;
     }
     const std::span<const LightCamera> cameras = p.cameras();
     for (std::size_t c = 0; c < cameras.size(); ++c)
         out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), mapImage(g, p.layer + static_cast<int>(c), cameras[c]), {}, DebugImageKind::ShadowMap});
-    out.push_back({"texel-density", frameView(host, frame, view, res, p, "shadow_map_density.frag"), {}, DebugImageKind::TexelDensity});
+    std::vector<float> footprint;
+    ImageRGBA8 density = frameView(host, frame, view, res, p, "shadow_map_density.frag", &footprint);
+    out.push_back({"texel-density", std::move(density), std::move(footprint), DebugImageKind::TexelDensity});
     if (cameras.size() > 1) out.push_back({"cascades", frameView(host, frame, view, res, p, "shadow_map_cascades.frag"), {}, DebugImageKind::Cascades});
 }
 

@@ -111,7 +111,7 @@ std::string CubePassVariant::defines() const {
 
 std::string TranslucentVariant::defines() const { return Defines().str(); }
 
-std::string FrameViewVariant::defines() const { return Defines().set("MAP_CASCADES", cascades).str(); }
+std::string FrameViewVariant::defines() const { return Defines().set("MAP_CASCADES", cascades).set("MAP_CUBE", cube).str(); }
 
 std::string BlurVariant::defines() const { return Defines().set("BLUR_FROM_ARRAY", fromArray).str(); }
 

@@ -69,6 +69,7 @@ struct TranslucentVariant {
 /// The views of the frame coloured per light (shadow_map_density.frag, shadow_map_cascades.frag).
 struct FrameViewVariant {
     int cascades = 1;
+    bool cube = false;  ///< a point light's cube: the face a direction samples
     std::string defines() const;
 };
 
