@@ -252,6 +252,7 @@ void lightRow(std::ostream& h, const json& records, int index, const json& l, do
       << "</td><td>"
       << (l.contains("leakedInUmbra") ? percent(l["leakedInUmbra"]) : std::string("&ndash;")) << "</td><td>"
       << (l.value("soft", false) && l.contains("penumbraRatio") ? fixed(l["penumbraRatio"], 2) : std::string("&ndash;")) << "</td><td>"
+      << (l.contains("texelFootprintP95") ? fixed(l["texelFootprintP50"], 2) + " / " + fixed(l["texelFootprintP95"], 2) : std::string("&ndash;")) << "</td><td>"
       << (r.contains("frameOverHardMap") ? fixed(r["frameOverHardMap"], 2) : std::string("&ndash;")) << "</td><td>"
       << (onFront(records, static_cast<std::size_t>(index)) ? "&#9679;" : "") << "</td>";
     if (flips && l.contains("flips"))
@@ -275,7 +276,7 @@ void resultsTable(std::ostream& h, const json& records, bool flips) {
          "<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
          "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>lookup ms</th><th>map MiB</th><th>where the time goes</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
          "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
-         "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>penumbra &times; truth</th><th>&times; hard map</th><th>front</th>"
+         "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>penumbra &times; truth</th><th>texel footprint px (median / p95)</th><th>&times; hard map</th><th>front</th>"
       << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";
     int index = 0;
     for (const json& r : records) {

@@ -53,7 +53,11 @@ for rec in r["results"]:
     assert "base" in rec["passMs"], rec["passMs"].keys()
     assert rec["frameMs"]["median"] > 0 and rec["passTotalMs"]["median"] > 0
     assert rec["baseLight"] == 0  # the first light (a shadow map, the default) shares the base pass
+    # A map's texel footprint (docs/metrics.md): ordered percentiles of pixels a texel.
+    l = rec["lights"][0]
+    assert 0 < l["texelFootprintP50"] <= l["texelFootprintP95"] <= l["texelFootprintMax"], l
 PY
+grep -q 'texel footprint px (median / p95)' bench/report.html || fail "the report has no texel footprint column"
 passed=$((passed + 1))
 
 # --clock picks the per-pass clock; a bad one is a one-line error.
