@@ -57,11 +57,13 @@ class MapGLTest : public GLTest {};
 TEST_F(MapGLTest, EveryBundledSceneMatchesTheReferenceAwayFromEdges) {
     int lights = 0;
     for (const fs::path& file : bundledScenes()) {
-        // A 400 m field seen from eye height: one 2048^2 map misclassifies
-        // 0.21 % there away from edges (measured). The scene ships four
-        // cascades, tested on it separately (FourCascadesBeatOneMapOnTheField,
-        // DefaultShadowsGLTest).
-        if (file.filename() == "cascades-field.json") continue;
+        // A 400 m field and a 300 m street seen from eye height: one 2048^2
+        // map misclassifies 0.21 % and 1.6 % there away from edges
+        // (measured; docs/techniques.md, "Fits and the texel footprint").
+        // The scenes ship four cascades, tested on them separately
+        // (FourCascadesBeatOneMapOnTheField, DefaultShadowsGLTest), and
+        // fit "scene" is one map, not cascades.
+        if (file.filename() == "cascades-field.json" || file.filename() == "long-view.json") continue;
         const Scene plain = loadSceneFile(file);
         const auto overrides = mapOverrides(plain, {"filter=\"none\""});
         if (overrides.empty()) continue;
