@@ -24,6 +24,7 @@ enum class MapFormat {
 enum class MapFit {
     Tight, ///< "tight": the casters that can shadow what the camera sees (default)
     Scene, ///< "scene": the lecture's box around the whole scene (directional) / the whole cone (spot)
+    Sdsm,  ///< "sdsm": directional lights: the tight fit around the receiver points the camera sees, reduced on the GPU from a depth pre-pass of the same frame (Lauritzen's sample distribution shadow maps)
 };
 
 enum class MapFilter {

@@ -110,17 +110,26 @@ namespace {
 // from the scene's centre moved back by its diagonal (every depth negative
 // in view space; fixed while the scene is), with the casters that matter
 // for what `in`'s camera sees.
+float diagonalOf(const Bounds& scene) { return scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f); }
+
+glm::mat4 lightViewOf(const glm::vec3& direction, const Bounds& scene, float diagonal) {
+    const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
+    return glm::lookAt(centre - direction * diagonal, centre, lightCameraUp(direction));
+}
+
 LightCamera directionalView(const glm::vec3& direction, const FitInput& in, const Bounds& scene, float diagonal) {
     LightCamera cam;
-    const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
-    cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, lightCameraUp(direction));
+    cam.viewFromWorld = lightViewOf(direction, scene, diagonal);
     cam.casts = castersThatMatter(glm::vec4(-direction, 0.0f), cam.viewFromWorld, in);
     return cam;
 }
 
-float diagonalOf(const Bounds& scene) { return scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f); }
-
 } // namespace
+
+glm::mat4 directionalLightView(const glm::vec3& direction, const FitInput& in) {
+    const Bounds scene = all(in);
+    return lightViewOf(direction, scene, diagonalOf(scene));
+}
 
 LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitInput& in) {
     const Bounds scene = all(in);
@@ -133,12 +142,16 @@ LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitIn
         region.add(glm::vec3(-h, -h, -diagonal - h));
         region.add(glm::vec3(h, h, -diagonal + h));
     } else {
-        const Bounds receivers = visibleReceivers(in, cam.viewFromWorld);
-        const Bounds frustum = frustumBounds(in.cameraClipFromWorld, cam.viewFromWorld);
-        region = receivers;
-        if (!region.empty()) {
-            region.lo = glm::max(region.lo, frustum.lo);
-            region.hi = glm::min(region.hi, frustum.hi);
+        if (in.visibleSamples) {
+            region = *in.visibleSamples;  // the receiver points the camera sees, reduced from its depth (SDSM)
+        } else {
+            // The receivers the camera may see, clipped to its frustum.
+            const Bounds frustum = frustumBounds(in.cameraClipFromWorld, cam.viewFromWorld);
+            region = visibleReceivers(in, cam.viewFromWorld);
+            if (!region.empty()) {
+                region.lo = glm::max(region.lo, frustum.lo);
+                region.hi = glm::min(region.hi, frustum.hi);
+            }
         }
         if (region.empty()) {  // nothing visible receives: any small valid box
             region = Bounds{};

@@ -48,7 +48,17 @@ struct FitInput {
     /// a wide region (PCSS's blocker search): a caster farther from the
     /// light than every receiver may still count, so culling keeps it.
     bool planeReachesBeyond = false;
+    /// Depth-reduced fits (SDSM, map fit "sdsm"): the bounds of the receiver
+    /// points the camera really sees, reduced from the frame's depth, in the
+    /// space of directionalLightView(); they replace the visible receivers'
+    /// boxes (clipped to the frustum) of the tight fit. Null: not reduced.
+    const Bounds* visibleSamples = nullptr;
 };
+
+/// A directional light's view for the fits: looking along `direction` from
+/// the scene's centre moved back by its diagonal (fixed while the scene
+/// is). The space FitInput::visibleSamples are given in.
+glm::mat4 directionalLightView(const glm::vec3& direction, const FitInput& in);
 
 /// False when the box lies entirely outside the clip volume of
 /// `clipFromWorld` (all eight corners beyond one of its six planes): a

@@ -14,6 +14,7 @@
 #include "techniques/map/MapCameras.h"
 #include "techniques/map/MapDebugImages.h"
 #include "techniques/map/MapResources.h"
+#include "techniques/map/MapSdsm.h"
 #include "techniques/map/MapSettings.h"
 #include "techniques/map/MapTranslucent.h"
 #include "techniques/map/MapVariants.h"
@@ -117,6 +118,22 @@ public:
             return;
         }
         MapLight& p = lights_.at(view.index);
+        const Light& light = frame.scene.lights[static_cast<std::size_t>(view.index)];
+        if (usesSamples(p, light)) {
+            // Fit "sdsm": refitted to what the camera sees, reduced from
+            // this frame's depth pre-pass (MapSdsm), before its pass.
+            const auto scope = host.timeScope("sdsm");
+            {
+                const auto pre = host.timeScope("prepass");
+                samples_.prepass(host, frame, frame.frameIndex);
+            }
+            Bounds seen;
+            {
+                const auto reduction = host.timeScope("reduce");
+                seen = samples_.reduce(host, frame, sdsmLightView(light, frame));
+            }
+            fitCameras(p, light, frame, &seen);
+        }
         if (p.cube)
             renderCubePass(host, frame, view, res_, p);
         else
@@ -173,6 +190,7 @@ private:
     }
 
     MapResources res_;
+    SampleBounds samples_;  ///< fit "sdsm": the depth pre-pass and its reduction
     std::map<int, MapLight> lights_;
     std::optional<std::uint64_t> drawnFrom_;  ///< mapInputs of the frame the maps were drawn in
     std::uint64_t preparedFor_ = 0;           ///< mapInputs of this frame's fit

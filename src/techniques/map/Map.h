@@ -11,6 +11,7 @@
 //   MapArrays          the texture arrays lights share, and the memory budget
 //   MapLight.h         what is kept per light
 //   MapCameras         the lights' cameras and the casters each one draws
+//   MapSdsm            fit "sdsm": the view's depth pre-pass and its reduction
 //   MapTargets.cpp     the framebuffers on each light's layers
 //   MapPass2D.cpp      the shadow pass of a directional or spot light
 //   MapCubePass.cpp    the shadow pass of a point light's cube

@@ -68,10 +68,20 @@ bool mayIntersectSides(const glm::mat4& clipFromWorld, const Bounds& box) {
 
 } // namespace
 
-void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame) {
+bool usesSamples(const MapLight& p, const Light& light) {
+    return p.options.fit == MapFit::Sdsm && p.options.preset == MapPreset::Default && light.type == LightType::Directional &&
+           cascadeCount(light, p.options) <= 1;
+}
+
+glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
+    const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
+    return directionalLightView(glm::normalize(light.direction), in);
+}
+
+void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples) {
     const FitInput in{frame.itemBounds, frame.items,          frame.itemPlanes,
                       frame.itemConvex, frame.clipFromWorld, p.options.size,
-                      footprint(p.options), filterInfo(p.options.filter).rawDepth};
+                      footprint(p.options), filterInfo(p.options.filter).rawDepth, samples};
     if (p.cube) {
         const auto [nearPlane, farPlane] = cubeNearFar(p.options);
         p.cubeCamera = fitCube(light, lightFit(p.options.fit), in, nearPlane, farPlane);

@@ -9,7 +9,16 @@ namespace shadowlab::map {
 /// Fits `p`'s cameras for `light` (p.options and p.cube already set): a
 /// cube's six faces, a spot's frustum, a directional light's box or
 /// cascades, or a preset's fixed camera.
-void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame);
+/// `samples` (fit "sdsm"): the receiver points the camera sees, in
+/// sdsmLightView()'s space, for a directional light's one map.
+void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples = nullptr);
+
+/// Whether `p` takes fit "sdsm" (a directional light's one map, no preset).
+bool usesSamples(const MapLight& p, const Light& light);
+
+/// The light view a directional light's fit works in (core/LightCamera's
+/// directionalLightView for this frame's items): the reduction's space.
+glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame);
 
 /// Whether item i is drawn into `camera`'s map: it may cast there, and its
 /// bounds reach the frustum (an orthographic light's sides only: it clamps

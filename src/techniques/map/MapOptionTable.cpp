@@ -32,8 +32,8 @@ const OptionTable& mapOptionTable() {
             .integer(&MapOptions::size, "size", 16, 16384, "texels", "side of the square shadow map (a cube map: of each face); 1024 by default, which keeps every bundled scene but the 400 m field within 0.05 % misclassified at 800x600 (docs/techniques.md)")
             .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
-            .choice(&MapOptions::fit, "fit", {"tight", "scene"},
-                    "light camera: around what the viewer sees and the casters over it, or around the whole scene")
+            .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
+                    "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights, one map): around the receiver points the viewer does see, reduced from a depth pre-pass of the frame (docs/techniques.md)")
             .choice(&MapOptions::filter, "filter", map::filterNames(), map::filterDoc())
             .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
@@ -107,6 +107,12 @@ std::string unsupported(const Light& light) {
             return "map: filter \"" + std::string(filter.name) +
                    "\": a moment map is filtered by its blur and bilinear lookups; filter must be \"hardware\" (the default)";
         if (o.preset != MapPreset::Default) return std::string("map: preset: moment maps do not combine with a preset; use preset \"default\"");
+    }
+    if (o.fit == MapFit::Sdsm && o.preset == MapPreset::Default) {
+        if (light.type != LightType::Directional)
+            return std::string("map: fit \"sdsm\" is for directional lights (a spot or point light takes \"tight\" or \"scene\")");
+        if (o.cascades > 1)
+            return std::string("map: fit \"sdsm\" fits one map; cascades take fit \"tight\" (their depth-reduced splits are not built yet)");
     }
     if (o.cascades > 1) {
         if (light.type != LightType::Directional)

@@ -1,0 +1,104 @@
+// Technique "map": fit "sdsm", the depth pre-pass and its reduction (MapSdsm.h).
+#include "techniques/map/MapSdsm.h"
+
+#include "core/LightCamera.h"
+#include "shadowlab_shared.h"
+
+#include <vector>
+
+namespace shadowlab::map {
+
+namespace {
+
+
+} // namespace
+
+void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame, std::uint64_t frameNumber) {
+    if (drawnFor_ == frameNumber && drawnFrom_ == frame.clipFromWorld && size_ == frame.viewport) return;
+    if (!fbo_ || size_ != frame.viewport) {
+        size_ = frame.viewport;
+        depth_ = gl::Texture(GL_TEXTURE_2D);
+        glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size_.x, size_.y);
+        fbo_ = gl::Framebuffer();
+        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+        glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
+        gl::checkFramebuffer(fbo_, "sdsm pre-pass framebuffer");
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, size_.x, size_.y);
+    host.apply(gl::RenderState{});
+    const float far = 1.0f;
+    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
+    gl::RenderState depthOnly;
+    depthOnly.noColor();
+    host.apply(depthOnly);
+    // Alpha-tested surfaces through the fragment shader that cuts their
+    // holes; the rest depth only, with no fragment shader.
+    const auto masked = [&](std::size_t i) {
+        const int m = frame.items[i].material;
+        return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Mask;
+    };
+    // Only what may be in view.
+    const auto seen = [&](std::size_t i) { return mayIntersect(frame.clipFromWorld, frame.itemBounds[i]); };
+    host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}}, std::string()}),
+                   [&](std::size_t i) { return !masked(i) && seen(i); });
+    host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_sdsm.frag"}}, std::string()}),
+                   [&](std::size_t i) { return masked(i) && seen(i); });
+    drawnFor_ = frameNumber;
+    drawnFrom_ = frame.clipFromWorld;
+}
+
+Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld) {
+    const glm::ivec2 blocks = (size_ + (kBlock - 1)) / kBlock;
+    if (!reduceFbo_ || blocks_ != blocks) {
+        blocks_ = blocks;
+        lo_ = gl::Texture(GL_TEXTURE_2D);
+        hi_ = gl::Texture(GL_TEXTURE_2D);
+        glTextureStorage2D(lo_.id(), 1, GL_RGBA32F, blocks.x, blocks.y);
+        glTextureStorage2D(hi_.id(), 1, GL_RGBA32F, blocks.x, blocks.y);
+        reduceFbo_ = gl::Framebuffer();
+        glNamedFramebufferTexture(reduceFbo_.id(), GL_COLOR_ATTACHMENT0, lo_.id(), 0);
+        glNamedFramebufferTexture(reduceFbo_.id(), GL_COLOR_ATTACHMENT1, hi_.id(), 0);
+        const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(reduceFbo_.id(), 2, both);
+        gl::checkFramebuffer(reduceFbo_, "sdsm reduction framebuffer");
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, reduceFbo_.id());
+    glViewport(0, 0, blocks.x, blocks.y);
+    host.apply(gl::RenderState{});
+    const gl::Program& program =
+        host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_sdsm_reduce.frag"}}, std::string()});
+    program.use();
+    // Window (pixel x, y, depth 0..1) to clip: x 2 / width - 1, y 2 / height - 1, z 2 d - 1.
+    glm::mat4 clipFromWindow(1.0f);
+    clipFromWindow[0][0] = 2.0f / static_cast<float>(size_.x);
+    clipFromWindow[1][1] = 2.0f / static_cast<float>(size_.y);
+    clipFromWindow[2][2] = 2.0f;
+    clipFromWindow[3] = glm::vec4(-1.0f, -1.0f, -1.0f, 1.0f);
+    const glm::mat4 lightFromWindow = lightFromWorld * glm::inverse(frame.clipFromWorld) * clipFromWindow;
+    glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, &lightFromWindow[0][0]);
+    glProgramUniform2i(program.id(), 2, size_.x, size_.y);
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, depth_.id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
+    host.drawFullscreenTriangle();
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    // The blocks' corners, merged here (a few thousand).
+    const std::size_t n = static_cast<std::size_t>(blocks.x) * static_cast<std::size_t>(blocks.y);
+    std::vector<glm::vec4> lo(n), hi(n);
+    glGetTextureImage(lo_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), lo.data());
+    glGetTextureImage(hi_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), hi.data());
+    Bounds b;
+    for (std::size_t k = 0; k < n; ++k)
+        if (lo[k].w > 0.5f) {
+            b.add(glm::vec3(lo[k]));
+            b.add(glm::vec3(hi[k]));
+        }
+    if (b.empty()) return b;
+    // Reconstructed from depth where the light pass interpolates: a relative margin covers the rounding.
+    const glm::vec3 margin(1e-4f * glm::length(b.size()));
+    b.lo -= margin;
+    b.hi += margin;
+    return b;
+}
+
+} // namespace shadowlab::map

@@ -1,0 +1,40 @@
+#pragma once
+// Technique "map", fit "sdsm" (Lauritzen et al., "Sample Distribution Shadow
+// Maps", 2011): the receiver points the camera sees, from a depth pre-pass
+// of the frame (once a frame, shared by the lights that ask), bounded in a
+// directional light's view by a compute reduction (shaders/shadow_map_sdsm.*).
+// The tight fit then takes those bounds (FitInput::visibleSamples) instead of
+// the boxes of the receivers in view. The bounds come back to the CPU, which
+// fits the light camera: a read-back the frame waits for (on a GPU a
+// pipeline bubble; the camera fitted on the GPU is left for later).
+#include "core/Bounds.h"
+#include "techniques/Technique.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace shadowlab::map {
+
+class SampleBounds {
+public:
+    /// Draws the frame's depth pre-pass unless this frame (`frameNumber`)
+    /// already has it.
+    void prepass(TechniqueHost& host, const FrameInfo& frame, std::uint64_t frameNumber);
+    /// The pre-pass's receiver points in `lightFromWorld` space; empty when
+    /// the camera sees no receiver.
+    Bounds reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld);
+
+private:
+    gl::Texture depth_{gl::NoCreate};
+    gl::Framebuffer fbo_{gl::NoCreate};
+    static constexpr int kBlock = 4;  ///< pixels per side of a block (shadow_map_sdsm_reduce.frag)
+    gl::Texture lo_{gl::NoCreate}, hi_{gl::NoCreate};
+    gl::Framebuffer reduceFbo_{gl::NoCreate};
+    glm::ivec2 blocks_{0};
+    glm::ivec2 size_{0};
+    std::uint64_t drawnFor_ = ~std::uint64_t(0);
+    glm::mat4 drawnFrom_{0.0f};  ///< the camera of the pre-pass drawn
+};
+
+} // namespace shadowlab::map

@@ -1,0 +1,88 @@
+// Fit "sdsm" (sample distribution shadow maps, issue 26): the light camera
+// fitted to the receiver points the camera really sees, reduced from a
+// depth pre-pass of the same frame, against the tight fit (the receivers'
+// boxes in view), measured by the texel footprint and the reference.
+#include "Comparisons.h"
+#include "GLTestContext.h"
+
+#include <shadowlab/Error.h>
+#include <shadowlab/SceneFile.h>
+
+#include <string>
+#include <vector>
+
+using namespace shadowlab;
+using shadowlab::test::awayFromEdges;
+using shadowlab::test::compareScene;
+using shadowlab::test::GLTest;
+
+namespace {
+
+Scene sceneOf(const std::string& json, const std::vector<std::string>& overrides = {}) {
+    return parseScene(json, "sdsm.json", SHADOWLAB_SOURCE_DIR, overrides);
+}
+
+// A 200 m ground seen from eye height, hidden 9 m away by a wall 6 m high:
+// the tight fit takes the ground's box as far as the frustum reaches
+// (150 m), though the camera sees 9 m of it; two small boxes near the
+// camera cast the shadows in view (posts far behind the wall cast hidden ones).
+const char* const kWall = R"({
+  "camera": { "position": [0, 1.7, 0], "target": [0, 0.9, -10], "fovY": 60, "near": 0.1, "far": 150 },
+  "lights": [ { "type": "directional", "direction": [0.5, -0.6, -0.4], "shadow": { "technique": "map" } } ],
+  "nodes": [
+    { "name": "ground", "shape": { "type": "plane", "size": [200, 200] }, "translation": [0, 0, -90] },
+    { "name": "wall", "shape": { "type": "box", "size": [60, 6, 0.5] }, "translation": [0, 3, -9] },
+    { "name": "box 1", "shape": { "type": "box", "size": [0.4, 0.4, 0.4] }, "translation": [-1, 0.2, -4] },
+    { "name": "box 2", "shape": { "type": "box", "size": [0.3, 0.6, 0.3] }, "translation": [1.2, 0.3, -6] },
+    { "name": "post far", "shape": { "type": "box", "size": [0.5, 4, 0.5] }, "translation": [20, 2, -80] },
+    { "name": "post far 2", "shape": { "type": "box", "size": [0.5, 4, 0.5] }, "translation": [-30, 2, -120] }
+  ]
+})";
+
+class SdsmGLTest : public GLTest {};
+
+} // namespace
+
+// Measured (800x600, 1024^2): tight p95 19.8 pixels a texel and 0.044 %
+// misclassified away from the band; sdsm 2.9 and 0. The bars: sdsm's p95
+// at most a quarter of tight's, and within the 0.05 % bar and no worse.
+TEST_F(SdsmGLTest, AWallHidingTheFieldLeavesTheMapToWhatIsSeen) {
+    const Comparison tight = compareScene(sceneOf(kWall), 800, 600);
+    const Comparison sdsm = compareScene(sceneOf(kWall, {"lights[0].shadow.map.fit=\"sdsm\""}), 800, 600);
+    ASSERT_GT(sdsm.lights[0].referenceShadowedPixels, 500u) << "the boxes' shadows must be in view";
+    EXPECT_LE(sdsm.lights[0].texelFootprintP95, 0.25 * tight.lights[0].texelFootprintP95);
+    EXPECT_LE(awayFromEdges(sdsm.lights[0]), 0.0005);
+    EXPECT_LE(awayFromEdges(sdsm.lights[0]), awayFromEdges(tight.lights[0]));
+}
+
+// The issue's scene: one 1024^2 map down a 300 m street. The street is
+// seen to its end, so the gain is small (measured p95 30.2 against 31.7,
+// 3.32 % against 3.49 % misclassified), but never a loss: the samples lie
+// inside the receivers' boxes in view, which the tight fit takes.
+TEST_F(SdsmGLTest, NeverWorseThanTheTightFitDownALongStreet) {
+    const std::string street = std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/long-view.json";
+    const std::vector<std::string> oneMap{"lights[0].shadow.map.cascades=1", "lights[0].shadow.map.size=1024"};
+    std::vector<std::string> sdsmSet = oneMap;
+    sdsmSet.push_back("lights[0].shadow.map.fit=\"sdsm\"");
+    const Comparison tight = compareScene(loadSceneFile(street, oneMap), 800, 600);
+    const Comparison sdsm = compareScene(loadSceneFile(street, sdsmSet), 800, 600);
+    EXPECT_LE(sdsm.lights[0].texelFootprintP95, tight.lights[0].texelFootprintP95);
+    EXPECT_LE(awayFromEdges(sdsm.lights[0]), awayFromEdges(tight.lights[0]));
+}
+
+// What it does not take yet is refused in one line naming the option.
+TEST_F(SdsmGLTest, SpotLightsAndCascadesAreRefused) {
+    const std::string spot = R"({ "lights": [ { "type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0],
+                                                 "shadow": { "technique": "map", "map": { "fit": "sdsm" } } } ] })";
+    const std::string cascades = R"({ "lights": [ { "type": "directional", "direction": [0, -1, 0.2],
+                                                     "shadow": { "technique": "map", "map": { "fit": "sdsm", "cascades": 2 } } } ] })";
+    for (const std::string& json : {spot, cascades}) {
+        try {
+            sceneOf(json);
+            ADD_FAILURE() << "accepted: " << json;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("lights[0].shadow.map.fit"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("fit \"sdsm\""), std::string::npos) << e.what();
+        }
+    }
+}
