@@ -70,19 +70,29 @@ TEST_F(SdsmGLTest, NeverWorseThanTheTightFitDownALongStreet) {
     EXPECT_LE(awayFromEdges(sdsm.lights[0]), awayFromEdges(tight.lights[0]));
 }
 
-// What it does not take yet is refused in one line naming the option.
-TEST_F(SdsmGLTest, SpotLightsAndCascadesAreRefused) {
+// Four cascades of 1024^2 on cascades-field, as it ships (stabilised,
+// lambda 0.9), split over the view depths the camera sees instead of from
+// the near plane to the scene's reach. The issue's bars: at most 0.05 %
+// misclassified away from the band, and no more than the tight fit's four
+// cascades (measured at 800x600: 0.039 % against 0.040 %).
+TEST_F(SdsmGLTest, FourSdsmCascadesHoldTheFieldAsWellAsTightOnes) {
+    const std::string field = std::string(SHADOWLAB_SOURCE_DIR) + "/scenes/cascades-field.json";
+    const Comparison tight = compareScene(loadSceneFile(field, {"lights[0].shadow.map.size=1024"}), 800, 600);
+    const Comparison sdsm = compareScene(loadSceneFile(field, {"lights[0].shadow.map.size=1024", "lights[0].shadow.map.fit=\"sdsm\""}), 800, 600);
+    ASSERT_GT(sdsm.lights[0].referenceShadowedPixels, 3000u);
+    EXPECT_LE(awayFromEdges(sdsm.lights[0]), 0.0005);
+    EXPECT_LE(awayFromEdges(sdsm.lights[0]), awayFromEdges(tight.lights[0]));
+}
+
+// Spot and point lights are refused in one line naming the option.
+TEST_F(SdsmGLTest, SpotLightsAreRefused) {
     const std::string spot = R"({ "lights": [ { "type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0],
                                                  "shadow": { "technique": "map", "map": { "fit": "sdsm" } } } ] })";
-    const std::string cascades = R"({ "lights": [ { "type": "directional", "direction": [0, -1, 0.2],
-                                                     "shadow": { "technique": "map", "map": { "fit": "sdsm", "cascades": 2 } } } ] })";
-    for (const std::string& json : {spot, cascades}) {
-        try {
-            sceneOf(json);
-            ADD_FAILURE() << "accepted: " << json;
-        } catch (const Error& e) {
-            EXPECT_NE(std::string(e.what()).find("lights[0].shadow.map.fit"), std::string::npos) << e.what();
-            EXPECT_NE(std::string(e.what()).find("fit \"sdsm\""), std::string::npos) << e.what();
-        }
+    try {
+        sceneOf(spot);
+        ADD_FAILURE() << "accepted: " << spot;
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("lights[0].shadow.map.fit"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("fit \"sdsm\" is for directional lights"), std::string::npos) << e.what();
     }
 }

@@ -102,8 +102,11 @@ public:
             p.spot = light.type == LightType::Spot;
             checkSplitsInView(p.options, light, frame.scene.camera, index);
             fitCameras(p, light, frame);
-            if (auto old = lights_.find(index); old != lights_.end())
+            if (auto old = lights_.find(index); old != lights_.end()) {
+                // Fit "sdsm" refits in the shadow pass (renderShadowPass).
+                if (usesSamples(p, light) && old->second.cascades.size() == p.cascades.size()) p.keepCamerasOf(old->second);
                 p.keepTargetsOf(old->second, !p.cube || cubeWindowDepth(p.options) == cubeWindowDepth(old->second.options));
+            }
             attachTargets(p, res_.arrays[p.array]);
             perLight.emplace(index, std::move(p));
         }
@@ -127,12 +130,19 @@ public:
                 const auto pre = host.timeScope("prepass");
                 samples_.prepass(host, frame, frame.frameIndex);
             }
+            const bool cascades = cascadeCount(light, p.options) > 1;
             Bounds seen;
             {
+                // Cascades: the view's own space, whose z is minus the distance along the view.
                 const auto reduction = host.timeScope("reduce");
-                seen = samples_.reduce(host, frame, sdsmLightView(light, frame));
+                seen = samples_.reduce(host, frame, cascades ? frame.viewFromWorld : sdsmLightView(light, frame));
             }
-            fitCameras(p, light, frame, &seen);
+            if (!cascades) {
+                fitCameras(p, light, frame, &seen);
+            } else if (!seen.empty()) {
+                const glm::vec2 depths(-seen.hi.z, -seen.lo.z);
+                fitCameras(p, light, frame, nullptr, &depths);
+            }
         }
         if (p.cube)
             renderCubePass(host, frame, view, res_, p);

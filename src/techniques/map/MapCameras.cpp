@@ -5,7 +5,9 @@
 #include "techniques/map/MapSettings.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 
 namespace shadowlab::map {
 
@@ -31,14 +33,42 @@ float stableReach(const Camera& camera, const FitInput& in) {
     return std::clamp(stepped, camera.nearPlane * 2.0f, camera.farPlane);
 }
 
-void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in) {
+// Fit "sdsm": the view depths the camera sees, [near, far] along its axis
+// (reduced from its depth pre-pass), within the camera's planes.
+// Stabilised, in whole steps of 2^(1/4) with headroom (near two steps
+// below the nearest depth seen, far one past the farthest), kept from frame
+// to frame (`kept`) while the depths seen stay inside it and it is at most
+// four steps too wide at the near end and three at the far: the splits stay
+// put as the camera moves (each change moves every slice's texel grid: a
+// frame of flips), and follow a view that changes.
+glm::vec2 sampledRange(const Camera& camera, glm::vec2 seen, bool stabilize, glm::vec2 kept) {
+    float near = std::max(seen.x, camera.nearPlane), far = std::min(seen.y, camera.farPlane);
+    if (stabilize) {
+        const float step = std::exp2(0.25f);
+        if (kept.y > kept.x && kept.x <= near && far <= kept.y && near <= kept.x * std::pow(step, 4.0f) &&
+            kept.y <= far * std::pow(step, 3.0f))
+            return kept;
+        near = std::exp2((std::floor(4.0f * std::log2(near)) - 2.0f) / 4.0f);
+        far = std::exp2((std::ceil(4.0f * std::log2(far)) + 1.0f) / 4.0f);
+    }
+    near = std::max(near, camera.nearPlane);
+    far = std::clamp(far, near * 1.01f, camera.farPlane);
+    return {near, far};
+}
+
+void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in, const glm::vec2* seenDepths) {
     const Camera& camera = frame.scene.camera;
     const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
     // Stabilised slices must not move with the camera: they end at a reach
     // that changes by steps (stableReach); tight ones at the farthest
-    // receiver it sees.
-    const float near = camera.nearPlane;
-    const float far = p.options.stabilize ? stableReach(camera, in) : viewReach(camera, in);
+    // receiver it sees; sdsm's over the depths the camera sees.
+    float near = camera.nearPlane;
+    float far = p.options.stabilize ? stableReach(camera, in) : viewReach(camera, in);
+    if (seenDepths) {
+        p.sampledDepths = sampledRange(camera, *seenDepths, p.options.stabilize, p.sampledDepths);
+        near = p.sampledDepths.x;
+        far = p.sampledDepths.y;
+    }
     std::string problem;  // checked when the scene was read (the registry's unsupported())
     const std::vector<float> given = parseSplits(p.options, problem);
     p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
@@ -69,8 +99,7 @@ bool mayIntersectSides(const glm::mat4& clipFromWorld, const Bounds& box) {
 } // namespace
 
 bool usesSamples(const MapLight& p, const Light& light) {
-    return p.options.fit == MapFit::Sdsm && p.options.preset == MapPreset::Default && light.type == LightType::Directional &&
-           cascadeCount(light, p.options) <= 1;
+    return p.options.fit == MapFit::Sdsm && p.options.preset == MapPreset::Default && light.type == LightType::Directional;
 }
 
 glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
@@ -78,7 +107,7 @@ glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
     return directionalLightView(glm::normalize(light.direction), in);
 }
 
-void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples) {
+void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples, const glm::vec2* seenDepths) {
     const FitInput in{frame.itemBounds, frame.items,          frame.itemPlanes,
                       frame.itemConvex, frame.clipFromWorld, p.options.size,
                       footprint(p.options), filterInfo(p.options.filter).rawDepth, samples};
@@ -95,7 +124,7 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
     else if (light.type == LightType::Spot)
         p.camera = fitSpot(light, lightFit(p.options.fit), in);
     else if (cascadeCount(light, p.options) > 1)
-        fitCascades(p, light, frame, in);
+        fitCascades(p, light, frame, in, seenDepths);
     else
         p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in);
     // The presets' fixed cameras skip what shadows nothing too (a ground

@@ -9,11 +9,14 @@ namespace shadowlab::map {
 /// Fits `p`'s cameras for `light` (p.options and p.cube already set): a
 /// cube's six faces, a spot's frustum, a directional light's box or
 /// cascades, or a preset's fixed camera.
-/// `samples` (fit "sdsm"): the receiver points the camera sees, in
-/// sdsmLightView()'s space, for a directional light's one map.
-void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples = nullptr);
+/// Fit "sdsm": `samples`, the points the camera sees in sdsmLightView()'s
+/// space, for a directional light's one map; `seenDepths`, their nearest
+/// and farthest distance along the view, for cascades (the slices split
+/// that range).
+void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples = nullptr,
+                const glm::vec2* seenDepths = nullptr);
 
-/// Whether `p` takes fit "sdsm" (a directional light's one map, no preset).
+/// Whether `p` takes fit "sdsm" (a directional light, no preset).
 bool usesSamples(const MapLight& p, const Light& light);
 
 /// The light view a directional light's fit works in (core/LightCamera's

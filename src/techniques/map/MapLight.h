@@ -56,6 +56,9 @@ struct MapLight {
     std::vector<LightCamera> cascades;
     std::vector<float> cascadeFar;
     glm::vec3 viewForward{0.0f, 0.0f, -1.0f};
+    /// Fit "sdsm", stabilised cascades: the view depths the slices split,
+    /// kept while the depths seen stay within it (0, 0: none yet).
+    glm::vec2 sampledDepths{0.0f};
     std::vector<gl::Framebuffer> cascadeFbos;
     /// The cameras its 2D map layers were drawn from: the cascades, or the one camera.
     std::span<const LightCamera> cameras() const { return cascades.empty() ? std::span<const LightCamera>(&camera, 1) : std::span<const LightCamera>(cascades); }
@@ -64,6 +67,17 @@ struct MapLight {
     std::uint8_t faceMask(std::size_t i) const {
         const std::uint8_t mask = cubeCamera.faceMasks[i];
         return options.faceCulling || !mask ? mask : std::uint8_t{0x3F};
+    }
+    /// Fit "sdsm": the cameras the last shadow pass drew from, kept until
+    /// this frame's pass refits them, so that a frame without shadow passes
+    /// (lit by the reference, or through the previous frame's maps) reads
+    /// the maps with the cameras they were drawn from.
+    void keepCamerasOf(const MapLight& old) {
+        camera = old.camera;
+        cascades = old.cascades;
+        cascadeFar = old.cascadeFar;
+        viewForward = old.viewForward;
+        sampledDepths = old.sampledDepths;
     }
     /// Takes what survives from last frame's state of the same light: its
     /// framebuffers and which layer they hold, the cube faces' dirty texels

@@ -33,7 +33,7 @@ const OptionTable& mapOptionTable() {
             .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
-                    "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights, one map): around the receiver points the viewer does see, reduced from a depth pre-pass of the frame (docs/techniques.md)")
+                    "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights): around the points the viewer does see, reduced from a depth pre-pass of the frame; with cascades, the slices split the view depths it sees (docs/techniques.md)")
             .choice(&MapOptions::filter, "filter", map::filterNames(), map::filterDoc())
             .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
@@ -111,8 +111,6 @@ std::string unsupported(const Light& light) {
     if (o.fit == MapFit::Sdsm && o.preset == MapPreset::Default) {
         if (light.type != LightType::Directional)
             return std::string("map: fit \"sdsm\" is for directional lights (a spot or point light takes \"tight\" or \"scene\")");
-        if (o.cascades > 1)
-            return std::string("map: fit \"sdsm\" fits one map; cascades take fit \"tight\" (their depth-reduced splits are not built yet)");
     }
     if (o.cascades > 1) {
         if (light.type != LightType::Directional)
