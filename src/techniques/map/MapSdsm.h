@@ -1,10 +1,11 @@
 #pragma once
 // Technique "map", fit "sdsm" (Lauritzen et al., "Sample Distribution Shadow
-// Maps", 2011): the receiver points the camera sees, from a depth pre-pass
-// of the frame (once a frame, shared by the lights that ask), bounded in a
-// directional light's view by a compute reduction (shaders/shadow_map_sdsm.*).
-// The tight fit then takes those bounds (FitInput::visibleSamples) instead of
-// the boxes of the receivers in view. The bounds come back to the CPU, which
+// Maps", 2011): the points the camera sees, from a depth pre-pass of the
+// frame (once a frame, shared by the lights that ask), bounded in a light's
+// view (or, for cascades, the camera's) by a fragment reduction of 4x4-pixel
+// blocks (shaders/shadow_map_sdsm_reduce.frag) that the CPU merges. The tight
+// fit then takes those bounds (FitInput::visibleSamples) instead of the boxes
+// of the receivers in view; cascades split the depths they span. The bounds come back to the CPU, which
 // fits the light camera: a read-back the frame waits for (on a GPU a
 // pipeline bubble; the camera fitted on the GPU is left for later).
 #include "core/Bounds.h"
