@@ -1,16 +1,24 @@
 #pragma once
-// What the technique tests share: one scene against the ray-traced
+// What the technique tests share: a scene from JSON text, one scene against the ray-traced
 // reference on a fresh renderer, and the misclassified share away from the
 // 1-pixel edge band.
 #include "GLTestContext.h"
 
 #include <shadowlab/Compare.h>
+#include <shadowlab/SceneFile.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace shadowlab::test {
+
+// A scene from JSON text with `--set`-style overrides, relative paths from
+// the source tree; `name` is the file its errors name.
+inline Scene sceneOf(const std::string& json, const std::vector<std::string>& overrides = {}, const char* name = "test-scene.json") {
+    return parseScene(json, name, SHADOWLAB_SOURCE_DIR, overrides);
+}
 
 inline Comparison compareScene(const Scene& scene, int width = 960, int height = 540, int softSamples = 256) {
     Renderer renderer(glContext());

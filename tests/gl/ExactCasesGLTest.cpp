@@ -13,13 +13,10 @@
 using namespace shadowlab;
 using shadowlab::test::awayFromEdges;
 using shadowlab::test::compareScene;
+using shadowlab::test::sceneOf;
 using shadowlab::test::GLTest;
 
 namespace {
-
-Scene sceneOf(const std::string& json, const std::vector<std::string>& overrides = {}) {
-    return parseScene(json, "exact-case.json", SHADOWLAB_SOURCE_DIR, overrides);
-}
 
 // A spot 6 m up with a 70° outer cone over a 40 m ground; four boxes stand
 // across the cone's rim (it meets the ground 16.5 m out), so their large

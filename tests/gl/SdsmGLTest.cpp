@@ -14,13 +14,10 @@
 using namespace shadowlab;
 using shadowlab::test::awayFromEdges;
 using shadowlab::test::compareScene;
+using shadowlab::test::sceneOf;
 using shadowlab::test::GLTest;
 
 namespace {
-
-Scene sceneOf(const std::string& json, const std::vector<std::string>& overrides = {}) {
-    return parseScene(json, "sdsm.json", SHADOWLAB_SOURCE_DIR, overrides);
-}
 
 // A 200 m ground seen from eye height, hidden 9 m away by a wall 6 m high:
 // the tight fit takes the ground's box as far as the frustum reaches

@@ -14,6 +14,7 @@
 
 using namespace shadowlab;
 using shadowlab::test::compareScene;
+using shadowlab::test::sceneOf;
 using shadowlab::test::GLTest;
 
 namespace {
@@ -26,10 +27,6 @@ std::string wallScene(const std::string& light) {
       "lights": [ )" + light + R"( ],
       "nodes": [ { "name": "wall", "shape": { "type": "plane", "size": [30, 30] }, "rotation": [90, 0, 0] } ]
     })";
-}
-
-Scene sceneOf(const std::string& json, const std::vector<std::string>& overrides = {}) {
-    return parseScene(json, "footprint.json", SHADOWLAB_SOURCE_DIR, overrides);
 }
 
 constexpr int kWidth = 800, kHeight = 600;
