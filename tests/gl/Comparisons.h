@@ -1,7 +1,7 @@
 #pragma once
-// What the technique tests share: a scene from JSON text, one scene against the ray-traced
-// reference on a fresh renderer, and the misclassified share away from the
-// 1-pixel edge band.
+// What the technique tests share: a scene from JSON text, one scene against
+// the ray-traced reference on a fresh renderer, and the misclassified share
+// away from the 1-pixel edge band.
 #include "GLTestContext.h"
 
 #include <shadowlab/Compare.h>
@@ -15,9 +15,9 @@
 namespace shadowlab::test {
 
 // A scene from JSON text with `--set`-style overrides, relative paths from
-// the source tree; `name` is the file its errors name.
-inline Scene sceneOf(const std::string& json, const std::vector<std::string>& overrides = {}, const char* name = "test-scene.json") {
-    return parseScene(json, name, SHADOWLAB_SOURCE_DIR, overrides);
+// the source tree (its errors name the file "test-scene.json").
+inline Scene sceneOf(const std::string& json, const std::vector<std::string>& overrides = {}) {
+    return parseScene(json, "test-scene.json", SHADOWLAB_SOURCE_DIR, overrides);
 }
 
 inline Comparison compareScene(const Scene& scene, int width = 960, int height = 540, int softSamples = 256) {

@@ -5,9 +5,10 @@
 // view (or, for cascades, the camera's) by a fragment reduction of 4x4-pixel
 // blocks (shaders/shadow_map_sdsm_reduce.frag) that the CPU merges. The tight
 // fit then takes those bounds (FitInput::visibleSamples) instead of the boxes
-// of the receivers in view; cascades split the depths they span. The bounds come back to the CPU, which
-// fits the light camera: a read-back the frame waits for (on a GPU a
-// pipeline bubble; the camera fitted on the GPU is left for later).
+// of the receivers in view; cascades split the depths they span. The bounds
+// come back to the CPU, which fits the light camera: a read-back the frame
+// waits for (on a GPU a pipeline bubble; the camera fitted on the GPU is
+// left for later).
 #include "core/Bounds.h"
 #include "techniques/Technique.h"
 
