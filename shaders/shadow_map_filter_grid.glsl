@@ -14,6 +14,57 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
                 sum += cubeTap(v + (vec3(x, y, z) * step - vec3(MAP_KERNEL > 1 ? radius : 0.0)), ref);
     return sum / float(MAP_KERNEL * MAP_KERNEL * MAP_KERNEL);
 }
+#elif MAP_EARLY_OUT
+// The same MAP_KERNEL x MAP_KERNEL nearest taps, the kernel's corners
+// first (after an odd kernel's centre), and the rest, four at a time, only
+// where those disagree: a shadow edge that runs straight across the kernel
+// leaves the corners on both sides of it, so agreeing corners (and centre)
+// put every tap between them on their side (MapOptions::earlyOut). Rounds
+// of four so that a round is one stretch of code; their count comes from
+// the block (map.kernelRounds) so that the compiler keeps the loop, whose
+// rounds a rasteriser can skip only as a whole (MapSettings: kernelRounds).
+
+// Cell k (column, row) of the kernel in that order: the four corners, then
+// the others row by row, leaving out the corners and an odd kernel's
+// centre (taken first, outside this order).
+ivec2 gridCell(int k) {
+    const int n = MAP_KERNEL;
+    if (k < 4) return ivec2(k & 1, k >> 1) * (n - 1);
+    int q = k - 3;                            // past cell 0, a corner
+    q += q >= n - 1 ? 1 : 0;                  // past the corner ending row 0
+    if (n % 2 == 1) q += q >= (n * n - 1) / 2 ? 1 : 0;  // past the centre
+    q += q >= n * n - n ? 1 : 0;              // past the corner starting the last row
+    return ivec2(q % n, q / n);
+}
+
+float mapFilter(MapLookup m, vec2 uv, float ref) {
+    float du = map.texelUv;
+    float start = -0.5 * float(MAP_KERNEL - 1);
+    float sum = 0.0, taken = 0.0;
+#if MAP_KERNEL % 2 == 1
+    sum = mapTap(m.layer, uv + du * vec2(start + float(MAP_KERNEL / 2)), ref);
+    taken = 1.0;
+#endif
+    int rounds = int(map.kernelRounds);
+    for (int r = 0; r < rounds; ++r) {
+        for (int j = 0; j < 4; ++j) {
+#if MAP_KERNEL == 3
+            // The default kernel (and LearnOpenGL's): gridCell's cells as
+            // offsets written out (its integer arithmetic cost llvmpipe
+            // about what the skipped taps saved), corners then edges.
+            vec2 o = r == 0 ? vec2((j & 1) != 0 ? 1.0 : -1.0, (j & 2) != 0 ? 1.0 : -1.0)
+                            : vec2(j == 0 ? 1.0 : j == 1 ? -1.0 : 0.0, j == 2 ? 1.0 : j == 3 ? -1.0 : 0.0);
+            sum += mapTap(m.layer, uv + du * o, ref);
+#else
+            ivec2 c = gridCell(4 * r + j);
+            sum += mapTap(m.layer, uv + du * vec2(start + float(c.x), start + float(c.y)), ref);
+#endif
+        }
+        taken += 4.0;
+        if (r == 0 && (sum == 0.0 || sum == taken)) break;  // the corners (and centre) agree
+    }
+    return sum / taken;
+}
 #elif !MAP_GRID_BILINEAR
 // MAP_KERNEL x MAP_KERNEL nearest taps one texel apart, centred on the point.
 float mapFilter(MapLookup m, vec2 uv, float ref) {

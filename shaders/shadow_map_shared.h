@@ -71,7 +71,8 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float blurLayer;        // moment blur pass: the layer blurred
     float bleedReduction;   // moment maps: light-bleeding reduction (share of the bound)
     float transmittance;    // 1 when the transmittance layers hold translucent casters (the shaders test MAP_TRANSMIT)
-    float padding0, padding1; // to a whole 16 bytes (std140 rounds the block up)
+    float kernelRounds;     // grid and pcf20 with MAP_EARLY_OUT: rounds of four taps after the first (a loop bound the compiler cannot unroll)
+    float padding1;         // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

@@ -76,6 +76,12 @@ struct MapOptions {
     MapFit fit = MapFit::Tight;
     MapFilter filter = MapFilter::Hardware;
     int kernel = 3;                      ///< grid: samples per side, 2..8; default 3
+    /// grid (nearest taps, 2D maps) and pcf20: the kernel's corners first (with
+    /// an odd grid's centre), and where they all agree the taps between them
+    /// are skipped; the answer differs from every tap's only where a
+    /// caster's edge bends or ends between agreeing corners (thinner than
+    /// the kernel). false: every tap, every pixel. Default true
+    bool earlyOut = true;
     MapGridTaps gridTaps = MapGridTaps::Auto; ///< grid: how the kernel^2 comparisons are fetched (same result); default auto
     int samples = 16;                    ///< poisson and pcss: filter taps, 4..64; default 16
     int blockerSamples = 16;             ///< pcss: blocker-search taps, 4..64; default 16

@@ -1,8 +1,10 @@
 // Shader variants and source assembly, without a GPU.
 #include "gl/ShaderSource.h"
 #include "render/ShaderVariant.h"
+#include "techniques/map/MapSettings.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
 
 #include <gtest/gtest.h>
 
@@ -107,4 +109,37 @@ TEST(ShaderSource, CompileLogNamesFileLineAndText) {
     EXPECT_EQ(log, "fullscreen.vert:1: error: something is wrong | " + firstLine);
     // NVIDIA's form "<source>(<line>) : error ...".
     EXPECT_EQ(gl::describeShaderLog("0(2) : error C0000: bad", s).rfind("<variant preamble>:2: error C0000: bad", 0), 0u);
+}
+
+// The filters' early out (MapOptions::earlyOut): the rounds of four taps
+// after the first (an odd grid's centre) are exactly the rest of the
+// kernel, so a pixel whose corners disagree takes every tap once; filters
+// and maps without an early-out path, or with it off, take none.
+TEST(MapEarlyOut, RoundsTakeEveryTapOfTheKernelOnce) {
+    using shadowlab::MapFilter;
+    shadowlab::MapOptions o;
+    o.filter = MapFilter::Grid;
+    for (int n = 3; n <= 8; ++n) {
+        o.kernel = n;
+        EXPECT_EQ(4 * shadowlab::map::kernelRounds(o, false) + n % 2, n * n) << "kernel " << n;
+        EXPECT_EQ(shadowlab::map::kernelRounds(o, true), 0) << "a cube's 3-D grid has no early out";
+        EXPECT_TRUE(shadowlab::map::earlyOut(o, false, true)) << "nearest taps on a software rasteriser";
+    }
+    o.kernel = 2;  // four corners and nothing between them
+    EXPECT_EQ(shadowlab::map::kernelRounds(o, false), 0);
+    o.kernel = 3;
+    o.gridTaps = shadowlab::MapGridTaps::Bilinear;  // pairs of taps per fetch: every tap
+    EXPECT_FALSE(shadowlab::map::earlyOut(o, false, true));
+    o.filter = MapFilter::Pcf20;
+    EXPECT_EQ(4 * shadowlab::map::kernelRounds(o, true), 20);
+    EXPECT_TRUE(shadowlab::map::earlyOut(o, true, false));
+    o.earlyOut = false;
+    EXPECT_EQ(shadowlab::map::kernelRounds(o, true), 0);
+    EXPECT_FALSE(shadowlab::map::earlyOut(o, true, false));
+    o.earlyOut = true;
+    for (MapFilter f : {MapFilter::None, MapFilter::Hardware, MapFilter::Dither4, MapFilter::Poisson, MapFilter::Pcss, MapFilter::Box}) {
+        o.filter = f;
+        EXPECT_EQ(shadowlab::map::kernelRounds(o, false), 0);
+        EXPECT_EQ(shadowlab::map::kernelRounds(o, true), 0);
+    }
 }

@@ -77,6 +77,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.texelUv = 1.0f / static_cast<float>(g.size());
     u.poissonRadius = p.options.radius;
     u.filterTaps = static_cast<float>(p.options.samples);
+    u.kernelRounds = static_cast<float>(kernelRounds(p.options, p.cube));
     if (light.type == LightType::Directional)
         u.towardsLight = -glm::normalize(light.direction);
     else

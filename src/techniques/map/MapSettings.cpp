@@ -46,6 +46,17 @@ bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer) {
     return cube ? !f.linearCube : !f.linear2D(bilinearGrid(o, softwareRasterizer));
 }
 
+int kernelRounds(const MapOptions& o, bool cube) {
+    if (!o.earlyOut || o.representation != MapRepresentation::Depth) return 0;
+    if (o.filter == MapFilter::Pcf20 && cube) return 5;
+    if (o.filter == MapFilter::Grid && !cube && o.kernel >= 3) return 1 + (o.kernel * o.kernel - 4 - o.kernel % 2) / 4;
+    return 0;
+}
+
+bool earlyOut(const MapOptions& o, bool cube, bool softwareRasterizer) {
+    return kernelRounds(o, cube) > 0 && !(o.filter == MapFilter::Grid && bilinearGrid(o, softwareRasterizer));
+}
+
 // Texels around the fitted region that the filter may read.
 float footprint(const MapOptions& o) {
     if (o.representation != MapRepresentation::Depth) return static_cast<float>(o.blur) + 2.0f;  // the blur, then a bilinear lookup

@@ -58,6 +58,21 @@ bool bilinearGrid(const MapOptions& o, bool softwareRasterizer);
 /// the same border.
 bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer);
 
+/// The filter's early out (MapOptions::earlyOut): how many rounds of four
+/// taps its kernel takes after the first taps, 0 when it takes every tap
+/// in one go. grid on a 2D map (kernel >= 3; its nearest taps only: see
+/// earlyOut below): the odd
+/// kernel's centre, then rounds of four from the corners (kernel^2 - 4,
+/// less the centre, is a multiple of four); pcf20: five (the cube's eight
+/// corners, then its twelve edge midpoints). The light pass stops after
+/// the corners' round where they all agree. A loop bound from the block,
+/// not a constant: a compiler unrolls a constant loop, and an unrolled
+/// loop cannot stop early (llvmpipe runs a stopped branch's taps anyway).
+int kernelRounds(const MapOptions& o, bool cube);
+/// Whether the light pass takes the early out: kernelRounds > 0, and a
+/// grid's taps are nearest ones (bilinear pairs keep every tap).
+bool earlyOut(const MapOptions& o, bool cube, bool softwareRasterizer);
+
 /// Why "map" cannot shadow this light with its options, or "" (the registry's unsupported()).
 std::string unsupported(const Light& light);
 

@@ -71,6 +71,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.transmittance = translucentCasters;
     v.plainFetch = map::plainFetch(o, v.cube, softwareRasterizer);
     v.pcssNearest = softwareRasterizer && o.filter == MapFilter::Pcss;
+    v.earlyOut = map::earlyOut(o, v.cube, softwareRasterizer);
     return v;
 }
 
@@ -87,6 +88,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_TRANSMIT", transmittance)
         .set("MAP_PLAIN_FETCH", plainFetch)
         .set("MAP_PCSS_NEAREST", pcssNearest)
+        .set("MAP_EARLY_OUT", earlyOut)
         .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))
         .str();
 }

@@ -33,6 +33,8 @@ struct LightPassVariant {
     /// 800x600; RMSE against the area light 0.0250 against 0.0245). A GPU
     /// keeps the bilinear compare.
     bool pcssNearest = false;
+    /// grid and pcf20: the corners first, the rest skipped where they agree (MapSettings: kernelRounds)
+    bool earlyOut = false;
     /// The variant of `light` (its effective options); `softwareRasterizer`
     /// picks the grid's taps; `translucentCasters`, whether the frame has any.
     static LightPassVariant of(const Light& light, bool softwareRasterizer, bool translucentCasters);
