@@ -119,12 +119,21 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     vec3 worldDx = dFdx(worldPosition), worldDy = dFdy(worldPosition);
     float depth = cascadeDepth(worldPosition);
     int c = cascadeOf(depth);
-    float v = cascadeTest(c, worldPosition, n, NdotL, tanTheta, worldDx, worldDy, transmit);
-    if (c < MAP_CASCADES - 1) {
-        float t = cascadeBlend(depth, c);
-        if (t > 0.0) v = mix(v, cascadeTest(c + 1, worldPosition, n, NdotL, tanTheta, worldDx, worldDy, transmit), min(t, 1.0));
+    float t = c < MAP_CASCADES - 1 ? cascadeBlend(depth, c) : 0.0;
+    // The slice's test, then the next cascade's where the slice fades into
+    // it: rounds of a loop whose count (2) comes from the block, so that the
+    // compiler keeps it and a rasteriser that runs both sides of a branch
+    // (llvmpipe) skips the second round for a group of pixels none of which
+    // fades, as it could not skip an if's.
+    float v = 1.0, next = 1.0;
+    int rounds = int(map.cascadeRounds);
+    for (int r = 0; r < rounds; ++r) {
+        float tested = cascadeTest(min(c + r, MAP_CASCADES - 1), worldPosition, n, NdotL, tanTheta, worldDx, worldDy, transmit);
+        if (r == 0) v = tested;
+        else next = tested;
+        if (t <= 0.0) break;
     }
-    return v;
+    return t > 0.0 ? mix(v, next, min(t, 1.0)) : v;
 }
 #else
 in vec4 vShadowCoord;   // from shadow_map_vertex.glsl: the offset point in texture space

@@ -72,7 +72,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float bleedReduction;   // moment maps: light-bleeding reduction (share of the bound)
     float transmittance;    // 1 when the transmittance layers hold translucent casters (the shaders test MAP_TRANSMIT)
     float kernelRounds;     // grid and pcf20 with MAP_EARLY_OUT: rounds of four taps after the first (a loop bound the compiler cannot unroll)
-    float padding1;         // to a whole 16 bytes (std140 rounds the block up)
+    float cascadeRounds;    // cascades: 2, the slice's test and the next one's where it fades into it (a loop bound the compiler cannot unroll)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

@@ -50,6 +50,7 @@ void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
     }
     u.viewForward = glm::normalize(p.viewForward);
     u.cascadeBlend = p.options.cascadeBlend;
+    u.cascadeRounds = 2.0f;  // the slice's cascade, then the next where it fades (shadow_map_2d.glsl)
     for (std::size_t c = 0; c < p.cascades.size(); ++c) u.cascadeRange[c] = glm::vec4(p.cascades[c].nearPlane, p.cascades[c].farPlane, 0.0f, 0.0f);
 }
 
