@@ -42,6 +42,11 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     float db = blockerSum / blockers;
     // 2. The penumbra's half width at the receiver, by similar triangles.
     float penumbra = size * (dr - db) / max(db, 1e-6);
+#if MAP_EARLY_OUT
+    // Umbra: every blocker tap blocked and the filter's disk inside their
+    // hull (MapSettings: vogelHullInradius): every filter tap is too.
+    if (blockers == float(blockerTaps) && penumbra <= map.blockerHull * 3.0 * size) return 0.0;
+#endif
     // 3. Percentage-closer filtering over it.
     int taps = int(map.filterTaps);
     float sum = 0.0;
@@ -95,6 +100,11 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     float db = blockerSum / blockers;
     // 2. The penumbra's half width at the receiver, by similar triangles.
     float radius = min((perspective ? size * (dr - db) / max(db, 1e-6) : (dr - db) * size) / texel, limit);
+#if MAP_EARLY_OUT
+    // Umbra: every blocker tap blocked and the filter's disk inside their
+    // hull (MapSettings: vogelHullInradius): every filter tap is too.
+    if (blockers == float(blockerTaps) && radius <= map.blockerHull * search) return 0.0;
+#endif
     // 3. Percentage-closer filtering over it.
     int taps = int(map.filterTaps);
     float sum = 0.0;

@@ -16,7 +16,7 @@ float mapRotation() { return 6.2831853 * mapNoise(gl_FragCoord.xy); }
 float vogelRadius(int k, int n) { return sqrt((float(k) + 0.5) / float(n)); }
 vec2 vogelFirst(float rotation) { return vec2(cos(rotation), sin(rotation)); }
 vec2 vogelTurn(vec2 d) {
-    const vec2 g = vec2(cos(2.3999632), sin(2.3999632));
+    const vec2 g = vec2(cos(SL_MAP_GOLDEN_ANGLE), sin(SL_MAP_GOLDEN_ANGLE));
     return vec2(d.x * g.x - d.y * g.y, d.x * g.y + d.y * g.x);
 }
 // Tap k of n, in direction `d`, on a disk of `radius` texels, in uv (`du`: one texel).

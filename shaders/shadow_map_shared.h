@@ -17,6 +17,10 @@
 // Cascaded maps of a directional light, at most.
 #define SL_MAP_MAX_CASCADES 8
 
+// The golden angle, radians: the turn between a Vogel disk's taps
+// (shadow_map_sampling.glsl; MapSettings: vogelHullInradius).
+#define SL_MAP_GOLDEN_ANGLE 2.3999632
+
 // The block: matrices, then vec4 arrays, then each vec3 with a float, then
 // floats four at a time, so std140 lays it out as C++ does (a vec3 starts
 // on 16 bytes, a float packs after it; MapBlock.cpp checks the offsets).
@@ -73,6 +77,8 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float transmittance;    // 1 when the transmittance layers hold translucent casters (the shaders test MAP_TRANSMIT)
     float kernelRounds;     // grid and pcf20 with MAP_EARLY_OUT: rounds of four taps after the first (a loop bound the compiler cannot unroll)
     float cascadeRounds;    // cascades: 2, the slice's test and the next one's where it fades into it (a loop bound the compiler cannot unroll)
+    float blockerHull;      // pcss with MAP_EARLY_OUT: the blocker taps' convex hull's inradius, a share of the search radius
+    float padding0, padding1, padding2; // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

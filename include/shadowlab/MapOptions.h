@@ -78,9 +78,10 @@ struct MapOptions {
     int kernel = 3;                      ///< grid: samples per side, 2..8; default 3
     /// grid (nearest taps, 2D maps) and pcf20: the kernel's corners first (with
     /// an odd grid's centre), and where they all agree the taps between them
-    /// are skipped; the answer differs from every tap's only where a
-    /// caster's edge bends or ends between agreeing corners (thinner than
-    /// the kernel). false: every tap, every pixel. Default true
+    /// are skipped; pcss: where every blocker tap finds a blocker and the
+    /// filter's disk lies inside their hull, the filter is skipped (umbra).
+    /// The answer differs from every tap's only where a caster's edge bends
+    /// or ends between agreeing taps. false: every tap, every pixel. Default true
     bool earlyOut = true;
     MapGridTaps gridTaps = MapGridTaps::Auto; ///< grid: how the kernel^2 comparisons are fetched (same result); default auto
     int samples = 16;                    ///< poisson and pcss: filter taps, 4..64; default 16

@@ -2,15 +2,21 @@
 #include "gl/ShaderSource.h"
 #include "render/ShaderVariant.h"
 #include "techniques/map/MapSettings.h"
+#include "shadow_map_shared.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/MapOptions.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
+#include <string>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 using namespace shadowlab;
 
@@ -142,4 +148,45 @@ TEST(MapEarlyOut, RoundsTakeEveryTapOfTheKernelOnce) {
         EXPECT_EQ(shadowlab::map::kernelRounds(o, false), 0);
         EXPECT_EQ(shadowlab::map::kernelRounds(o, true), 0);
     }
+}
+
+// pcss's umbra early out: vogelHullInradius(n) is the distance from the
+// centre to the nearest edge of the convex hull of the disk's n taps,
+// checked without building a hull: for a point inside a convex hull that
+// distance is the least, over all directions, of how far the taps reach
+// along the direction (its support function), here over 7200 directions
+// half a tenth of a degree apart. A sampled direction misses the nearest
+// edge's normal by at most 4.4e-4 radians, which adds at most that times
+// the edge's length (under 1.2 in the unit disk): the sampled least is at
+// or above the true distance and at most 5.3e-4 above it.
+TEST(MapEarlyOut, TheBlockerHullsInradiusIsTheTapsLeastReach) {
+    const double golden = SL_MAP_GOLDEN_ANGLE, pi = 3.14159265358979;
+    for (int n : {4, 5, 8, 16, 32, 64}) {
+        SCOPED_TRACE("taps " + std::to_string(n));
+        std::vector<std::pair<double, double>> taps;
+        for (int k = 0; k < n; ++k) {
+            const double r = std::sqrt((k + 0.5) / n), a = k * golden;
+            taps.emplace_back(r * std::cos(a), r * std::sin(a));
+        }
+        double least = 1e9;
+        for (int d = 0; d < 7200; ++d) {
+            const double ux = std::cos(d * pi / 3600.0), uy = std::sin(d * pi / 3600.0);
+            double reach = -1e9;
+            for (const auto& [tx, ty] : taps) reach = std::max(reach, tx * ux + ty * uy);
+            least = std::min(least, reach);
+        }
+        ASSERT_GT(least, 0.0) << "the centre is inside the taps' hull";
+        const double inradius = shadowlab::map::vogelHullInradius(n);
+        EXPECT_LE(inradius, least + 1e-6);
+        EXPECT_GE(inradius, least - 5.3e-4);
+        if (n >= 8) {
+            EXPECT_GT(least, 0.5) << "8 taps and more leave most of the disk inside their hull";
+        }
+    }
+    shadowlab::MapOptions o;
+    o.filter = shadowlab::MapFilter::Pcss;
+    EXPECT_TRUE(shadowlab::map::earlyOut(o, false, true));
+    EXPECT_TRUE(shadowlab::map::earlyOut(o, true, false));
+    o.earlyOut = false;
+    EXPECT_FALSE(shadowlab::map::earlyOut(o, false, true));
 }

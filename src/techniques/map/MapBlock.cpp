@@ -95,6 +95,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.nearPlane = p.cube ? p.cubeCamera.nearPlane : p.camera.nearPlane;  // a cube's reversed window depth needs both (cubeWindowDepth)
     u.farPlane = p.cube ? p.cubeCamera.farPlane : p.camera.farPlane;
     u.blockerTaps = static_cast<float>(p.options.blockerSamples);
+    u.blockerHull = vogelHullInradius(p.options.blockerSamples);
     u.bleedReduction = p.options.bleedReduction;
     u.transmittance = translucent ? 1.0f : 0.0f;
     uniforms_ = u;

@@ -39,7 +39,7 @@ const OptionTable& mapOptionTable() {
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
                     "grid filter: the same comparisons from ceil(kernel/2)^2 bilinear or kernel^2 nearest fetches; auto: nearest on a software rasteriser")
             .boolean(&MapOptions::earlyOut, "earlyOut",
-                     "grid (nearest taps, 2D maps) and pcf20 filters: the kernel's corners first (and an odd grid's centre); where they all agree, the taps between them are skipped, which differs from taking every tap only where a caster's edge bends or ends between agreeing corners; false: every tap (docs/techniques.md)")
+                     "grid (nearest taps, 2D maps) and pcf20 filters: the kernel's corners first (and an odd grid's centre), and where they all agree the taps between them are skipped; pcss: where every blocker tap finds a blocker and the filter's disk lies inside their hull, the filter is skipped; either differs from taking every tap only where a caster's edge bends or ends between agreeing taps; false: every tap (docs/techniques.md)")
             .integer(&MapOptions::samples, "samples", 4, 64, "taps", "poisson and pcss filters: taps on the disk")
             .integer(&MapOptions::blockerSamples, "blockerSamples", 4, 64, "taps", "pcss filter: taps of the blocker search")
             .number(&MapOptions::radius, "radius", 0.0, 32.0, "texels", "poisson filter: disk radius")

@@ -3,12 +3,14 @@
 #include "techniques/map/MapSettings.h"
 
 #include "techniques/map/MapFilters.h"
+#include "shadow_map_shared.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
 namespace shadowlab::map {
 
@@ -54,7 +56,37 @@ int kernelRounds(const MapOptions& o, bool cube) {
 }
 
 bool earlyOut(const MapOptions& o, bool cube, bool softwareRasterizer) {
+    if (o.filter == MapFilter::Pcss) return o.earlyOut && o.representation == MapRepresentation::Depth;
     return kernelRounds(o, cube) > 0 && !(o.filter == MapFilter::Grid && bilinearGrid(o, softwareRasterizer));
+}
+
+float vogelHullInradius(int n) {
+    std::vector<glm::dvec2> taps;
+    for (int k = 0; k < n; ++k) {
+        const double r = std::sqrt((k + 0.5) / n), a = k * static_cast<double>(SL_MAP_GOLDEN_ANGLE);
+        taps.push_back(r * glm::dvec2(std::cos(a), std::sin(a)));
+    }
+    // The convex hull, counter-clockwise (Andrew's monotone chain).
+    std::sort(taps.begin(), taps.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+    std::vector<glm::dvec2> hull;
+    for (int pass = 0; pass < 2; ++pass) {
+        const std::size_t start = hull.size();
+        for (const glm::dvec2& t : taps) {
+            while (hull.size() >= start + 2 && cross(hull[hull.size() - 2], hull.back(), t) <= 0.0) hull.pop_back();
+            hull.push_back(t);
+        }
+        hull.pop_back();  // the chain's last point starts the other chain
+        std::reverse(taps.begin(), taps.end());
+    }
+    if (hull.size() < 3) return 0.0f;
+    // The centre's distance to each edge, positive on the inside (left).
+    double inradius = 1.0;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+        const glm::dvec2 a = hull[i], b = hull[(i + 1) % hull.size()];
+        inradius = std::min(inradius, cross(a, b, glm::dvec2(0.0)) / glm::length(b - a));
+    }
+    return static_cast<float>(std::max(inradius, 0.0));
 }
 
 // Texels around the fitted region that the filter may read.

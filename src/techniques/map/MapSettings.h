@@ -69,9 +69,19 @@ bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer);
 /// not a constant: a compiler unrolls a constant loop, and an unrolled
 /// loop cannot stop early (llvmpipe runs a stopped branch's taps anyway).
 int kernelRounds(const MapOptions& o, bool cube);
-/// Whether the light pass takes the early out: kernelRounds > 0, and a
-/// grid's taps are nearest ones (bilinear pairs keep every tap).
+/// Whether the light pass takes the early out: pcss (its umbra: below), or
+/// kernelRounds > 0 and a grid's taps nearest ones (bilinear pairs keep
+/// every tap).
 bool earlyOut(const MapOptions& o, bool cube, bool softwareRasterizer);
+
+/// The Vogel disk of n taps (shaders/shadow_map_sampling.glsl): the radius,
+/// as a share of the disk's, of the largest circle about the centre inside
+/// the taps' convex hull (0 when the centre is not inside it). The same for
+/// every rotation of the disk. pcss's early out: where every blocker tap
+/// finds a blocker and the filter's disk lies within this circle of the
+/// search's, a straight-edged caster covers every filter tap too (they
+/// compare against the same receiver plane), so the filter is skipped.
+float vogelHullInradius(int n);
 
 /// Why "map" cannot shadow this light with its options, or "" (the registry's unsupported()).
 std::string unsupported(const Light& light);
