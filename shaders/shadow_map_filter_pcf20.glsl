@@ -20,10 +20,11 @@ float cubeReach(float texel, float radius) { return radius * 1.7320508; }  // |(
 // (MapOptions::earlyOut). The rounds' count comes from the block
 // (map.kernelRounds: 5) so that the compiler keeps the loop, whose rounds
 // a rasteriser can skip only as a whole.
-vec3 pcf20Direction(int round, int j) {
+// Tap j of round r.
+vec3 pcf20Direction(int r, int j) {
     vec2 s = vec2((j & 1) != 0 ? -1.0 : 1.0, (j & 2) != 0 ? -1.0 : 1.0);
-    if (round < 2) return vec3(s, round == 0 ? 1.0 : -1.0);  // the corners
-    return round == 2 ? vec3(s, 0.0) : round == 3 ? vec3(s.x, 0.0, s.y) : vec3(0.0, s);
+    if (r < 2) return vec3(s, r == 0 ? 1.0 : -1.0);  // the corners
+    return r == 2 ? vec3(s, 0.0) : r == 3 ? vec3(s.x, 0.0, s.y) : vec3(0.0, s);
 }
 
 float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
