@@ -4,6 +4,7 @@
 /// (Renderer::debugImages, `shadowlab render --debug-images`).
 #include <shadowlab/Image.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,14 @@ enum class DebugImageKind {
     CubeCross,    ///< a cube map's six faces as a cross (a point light's map)
     TexelDensity, ///< the frame coloured by the texel footprint (screen pixels a shadow-map texel covers); values: the footprint per pixel, rows as GL stores them, -1 where not measured
     Cascades,     ///< the frame coloured by the cascade each point falls in
+};
+
+/// The kinds of debug image a caller asks for: reading a map back to draw
+/// it costs (a cube of 1024^2 faces: 6 M texels), so a caller that wants
+/// one kind names it. Empty: every kind.
+struct DebugImageKinds {
+    std::vector<DebugImageKind> only;
+    bool wants(DebugImageKind kind) const { return only.empty() || std::find(only.begin(), only.end(), kind) != only.end(); }
 };
 
 /// An image a technique offers for inspection (a depth map, a cube cross).

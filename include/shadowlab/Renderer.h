@@ -119,8 +119,10 @@ public:
     std::vector<float> readVisibility(const Scene& scene, std::size_t light);
     /// The same per channel (transmittance through coloured casters).
     std::vector<glm::vec3> readVisibilityRgb(const Scene& scene, std::size_t light);
-    /// Every technique's debug images for the last frame, named by light.
-    std::vector<DebugImage> debugImages(const Scene& scene);
+    /// Every technique's debug images for the last frame, named by light;
+    /// only those of the kinds in `kinds` (default: every kind), the others
+    /// not made at all (compare asks for the texel density alone).
+    std::vector<DebugImage> debugImages(const Scene& scene, const DebugImageKinds& kinds = {});
     /// The light cameras the techniques used in the last frame (each 2D
     /// map's frustum, a cube map's six faces), light by light.
     std::vector<LightFrustum> lightFrustums(const Scene& scene) const;

@@ -248,7 +248,7 @@ std::vector<float> Renderer::readVisibility(const Scene& scene, std::size_t ligh
     return out;
 }
 
-std::vector<DebugImage> Renderer::debugImages(const Scene& scene) {
+std::vector<DebugImage> Renderer::debugImages(const Scene& scene, const DebugImageKinds& kinds) {
     Impl& d = *impl_;
     if (!d.targets) throw Error("Renderer::debugImages: nothing rendered yet");
     d.checkScene(scene);
@@ -258,8 +258,9 @@ std::vector<DebugImage> Renderer::debugImages(const Scene& scene) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         std::vector<DebugImage> images;
         d.setLight(i);
-        d.technique(scene.lights[i].shadow.technique).debugImages(d, *d.info, d.view(i), images);
+        d.technique(scene.lights[i].shadow.technique).debugImages(d, *d.info, d.view(i), kinds, images);
         for (DebugImage& image : images) {
+            if (!kinds.wants(image.kind)) continue;  // a technique that makes every kind regardless
             image.name = "light" + std::to_string(i) + "-" + image.name;
             image.light = static_cast<int>(i);
             out.push_back(std::move(image));

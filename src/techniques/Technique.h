@@ -148,8 +148,9 @@ public:
     }
     /// Images worth looking at (depth maps, cube crosses, texel density),
     /// each with the kind that `shadowlab render --debug` picks it by;
-    /// `shadowlab render --debug-images DIR` writes them all.
-    virtual void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, std::vector<DebugImage>&) {}
+    /// `shadowlab render --debug-images DIR` writes them all. Only the
+    /// kinds `kinds` wants need be made.
+    virtual void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, const DebugImageKinds& /*kinds*/, std::vector<DebugImage>&) {}
     /// The clip-from-world matrices of the light's cameras in the last frame
     /// (a 2D map's one, a cube's six faces), for drawing their frustums;
     /// none for techniques without a light camera.

@@ -179,7 +179,7 @@ public:
         host.apply(clear);
         host.drawItems(ItemFilter::Casters, depth);
     }
-    void debugImages(TechniqueHost&, const FrameInfo&, const LightView& view, std::vector<DebugImage>& out) override {
+    void debugImages(TechniqueHost&, const FrameInfo&, const LightView& view, const DebugImageKinds&, std::vector<DebugImage>& out) override {
         const int layer = layerOf_.at(view.index);
         std::vector<float> depth(static_cast<std::size_t>(size_) * size_);
         glGetTextureSubImage(array_.id(), 0, 0, 0, layer, size_, size_, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
@@ -312,7 +312,7 @@ public:
             }
         }
     }
-    void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, std::vector<DebugImage>& out) override {
+    void debugImages(TechniqueHost&, const FrameInfo&, const LightView&, const DebugImageKinds&, std::vector<DebugImage>& out) override {
         for (int i = 0; i < 2; ++i) {
             ImageRGBA8 image{kSize, kSize, std::vector<std::uint8_t>(static_cast<std::size_t>(kSize) * kSize * 4)};
             glGetTextureImage(targets_[i].id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());

@@ -6,6 +6,8 @@
 #include "Comparisons.h"
 #include "GLTestContext.h"
 
+#include <shadowlab/DebugImage.h>
+#include <shadowlab/Renderer.h>
 #include <shadowlab/SceneFile.h>
 
 #include <cmath>
@@ -82,4 +84,31 @@ TEST_F(TexelFootprintGLTest, TwiceTheMapsSideHalvesTheFootprintAndNoMapMeasuresN
     EXPECT_NEAR(small.lights[0].texelFootprintP95 / large.lights[0].texelFootprintP95, 2.0, 0.1);
     const Comparison none = compareScene(loadSceneFile(scene, {"lights[0].shadow.technique=none"}), 480, 360);
     EXPECT_LT(none.lights[0].texelFootprintP50, 0.0);
+}
+
+// compare asks Renderer::debugImages for the texel density alone: it gets
+// that kind only (no map or cube read back), with the same values as
+// among every kind; a 2D map with cascades and a point light's cube.
+TEST_F(TexelFootprintGLTest, AskedForOneKindDebugImagesMakeOnlyThatKindAndTheSameValues) {
+    const std::string sun = R"({"type": "directional", "direction": [0, -1, -1], "shadow": {"technique": "map", "map": {"size": 256, "cascades": 2}}})";
+    const std::string lamp = R"({"type": "point", "position": [0, 0, 4], "shadow": {"technique": "map", "map": {"size": 256}}})";
+    const Scene scene = sceneOf(wallScene(sun + ", " + lamp));
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    renderer.render(scene, {160, 120});
+    const std::vector<DebugImage> every = renderer.debugImages(scene);
+    const std::vector<DebugImage> density = renderer.debugImages(scene, {{DebugImageKind::TexelDensity}});
+    ASSERT_EQ(density.size(), 2u) << "one texel-density image per light";
+    std::size_t compared = 0;
+    for (const DebugImage& d : density) {
+        EXPECT_EQ(d.kind, DebugImageKind::TexelDensity);
+        for (const DebugImage& e : every)
+            if (e.kind == DebugImageKind::TexelDensity && e.light == d.light) {
+                EXPECT_EQ(e.values, d.values) << d.name;
+                EXPECT_EQ(e.image.pixels, d.image.pixels) << d.name;
+                ++compared;
+            }
+    }
+    EXPECT_EQ(compared, 2u);
+    EXPECT_GT(every.size(), density.size()) << "every kind: the maps, the cube cross and the cascades too";
 }

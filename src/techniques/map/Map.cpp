@@ -167,8 +167,9 @@ public:
                            plainFetch(p.options, p.cube, res_.software));
     }
 
-    void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, std::vector<DebugImage>& out) override {
-        map::debugImages(host, frame, view, res_, lights_.at(view.index), out);
+    void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, const DebugImageKinds& kinds,
+                     std::vector<DebugImage>& out) override {
+        map::debugImages(host, frame, view, res_, lights_.at(view.index), kinds, out);
     }
 
     void lightFrustums(const LightView& view, std::vector<glm::mat4>& out) const override {

@@ -168,24 +168,24 @@ ImageRGBA8 mapImage(const MapArray& g, int layer, const LightCamera& camera) {
 } // namespace
 
 void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, MapResources& res, const MapLight& p,
-                 std::vector<DebugImage>& out) {
+                 const DebugImageKinds& kinds, std::vector<DebugImage>& out) {
     const MapArray& g = res.arrays[p.array];
-    if (p.cube) {
+    const std::span<const LightCamera> cameras = p.cameras();
+    if (p.cube && kinds.wants(DebugImageKind::CubeCross)) {
         std::vector<float> values;
         ImageRGBA8 cross = cubeCross(g, p, values);
         out.push_back({"cube", std::move(cross), std::move(values), DebugImageKind::CubeCross});
+    }
+    if (!p.cube && kinds.wants(DebugImageKind::ShadowMap))
+        for (std::size_t c = 0; c < cameras.size(); ++c)
+            out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), mapImage(g, p.layer + static_cast<int>(c), cameras[c]), {}, DebugImageKind::ShadowMap});
+    if (kinds.wants(DebugImageKind::TexelDensity)) {
         std::vector<float> footprint;
         ImageRGBA8 density = frameView(host, frame, view, res, p, "shadow_map_density.frag", &footprint);
         out.push_back({"texel-density", std::move(density), std::move(footprint), DebugImageKind::TexelDensity});
-        return;
     }
-    const std::span<const LightCamera> cameras = p.cameras();
-    for (std::size_t c = 0; c < cameras.size(); ++c)
-        out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), mapImage(g, p.layer + static_cast<int>(c), cameras[c]), {}, DebugImageKind::ShadowMap});
-    std::vector<float> footprint;
-    ImageRGBA8 density = frameView(host, frame, view, res, p, "shadow_map_density.frag", &footprint);
-    out.push_back({"texel-density", std::move(density), std::move(footprint), DebugImageKind::TexelDensity});
-    if (cameras.size() > 1) out.push_back({"cascades", frameView(host, frame, view, res, p, "shadow_map_cascades.frag"), {}, DebugImageKind::Cascades});
+    if (!p.cube && cameras.size() > 1 && kinds.wants(DebugImageKind::Cascades))
+        out.push_back({"cascades", frameView(host, frame, view, res, p, "shadow_map_cascades.frag"), {}, DebugImageKind::Cascades});
 }
 
 } // namespace shadowlab::map

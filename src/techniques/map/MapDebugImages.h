@@ -9,7 +9,8 @@
 
 namespace shadowlab::map {
 
+// Only the kinds `kinds` wants: a map or cube read back costs its texels.
 void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, MapResources& res, const MapLight& p,
-                 std::vector<DebugImage>& out);
+                 const DebugImageKinds& kinds, std::vector<DebugImage>& out);
 
 } // namespace shadowlab::map
