@@ -298,7 +298,7 @@ ComparisonJob::ComparisonJob(Renderer& renderer, const Scene& scene, const Compa
     // Each light's texel footprint, from the debug image that shows it.
     d.footprints.assign(scene.lights.size(), {});
     for (DebugImage& image : renderer.debugImages(scene, {{DebugImageKind::TexelDensity}}))
-        if (image.kind == DebugImageKind::TexelDensity && image.light >= 0 && static_cast<std::size_t>(image.light) < scene.lights.size())
+        if (image.light >= 0 && static_cast<std::size_t>(image.light) < scene.lights.size())
             d.footprints[static_cast<std::size_t>(image.light)] = std::move(image.values);
     const SurfaceBuffer& surfaces = out.surfaces;
     const std::size_t n = static_cast<std::size_t>(surfaces.width) * surfaces.height;

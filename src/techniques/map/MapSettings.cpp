@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -60,7 +61,10 @@ bool earlyOut(const MapOptions& o, bool cube, bool softwareRasterizer) {
     return kernelRounds(o, cube) > 0 && !(o.filter == MapFilter::Grid && bilinearGrid(o, softwareRasterizer));
 }
 
-float vogelHullInradius(int n) {
+namespace {
+
+// vogelHullInradius, computed.
+float hullInradiusOf(int n) {
     std::vector<glm::dvec2> taps;
     for (int k = 0; k < n; ++k) {
         const double r = std::sqrt((k + 0.5) / n), a = k * static_cast<double>(SL_MAP_GOLDEN_ANGLE);
@@ -87,6 +91,19 @@ float vogelHullInradius(int n) {
         inradius = std::min(inradius, cross(a, b, glm::dvec2(0.0)) / glm::length(b - a));
     }
     return static_cast<float>(std::max(inradius, 0.0));
+}
+
+} // namespace
+
+float vogelHullInradius(int n) {
+    // Once for every tap count the options allow (at most 64): the block
+    // that carries it is uploaded every frame.
+    static const std::array<float, 65> table = [] {
+        std::array<float, 65> t{};
+        for (int k = 1; k <= 64; ++k) t[static_cast<std::size_t>(k)] = hullInradiusOf(k);
+        return t;
+    }();
+    return n >= 1 && n <= 64 ? table[static_cast<std::size_t>(n)] : hullInradiusOf(n);
 }
 
 // Texels around the fitted region that the filter may read.
