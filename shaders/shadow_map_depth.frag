@@ -20,7 +20,7 @@ void main() {
 #if MAP_RGBA8
     outPacked = packDepth(gl_FragCoord.z);
 #elif MAP_MOMENTS > 0
-    float z = gl_FragCoord.z;
+    float z = clamp(gl_FragCoord.z, 0.0, 1.0);  // pancaked casters (depth clamp) at the near plane
 #if MAP_SPOT
     // Perspective depth is far from linear: the moments take the distance
     // along the axis between the near and far planes instead.

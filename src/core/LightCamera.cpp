@@ -273,17 +273,34 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     const float half = radius * size / std::max(size - 2.0f * in.paddingTexels, 1.0f);
     const float texel = 2.0f * half / size;
     const glm::vec2 snapped = glm::floor(glm::vec2(sphere) / texel + 0.5f) * texel;
-    // Depth: the whole scene along the light (fixed, like the orientation).
-    const Bounds depth = scene.transformed(cam.viewFromWorld);
+    FitInput reads = in;
+    const float from = readFrom > 0.0f ? std::min(readFrom, near) : near;
+    reads.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, from, far) * camera.viewFromWorld();
+    // Depth: the scene along the light, cut to what the slice's lookups
+    // can reach (its frustum within the scene's box), so the map's depth
+    // range is the slice's, not the whole scene's: moments leaked at
+    // casters' feet wherever depths a few decimetres apart became too
+    // close in a range of hundreds of metres. Casters nearer the light are
+    // pancaked onto the near plane (depth clamp). The ends are rounded
+    // out to 1/32 of the slice's box so that they move by steps, rarely.
+    Bounds depth = scene.transformed(cam.viewFromWorld);
+    if (!scene.empty()) {
+        Bounds world = frustumBounds(reads.cameraClipFromWorld, glm::mat4(1.0f));
+        world.lo = glm::max(world.lo, scene.lo);
+        world.hi = glm::min(world.hi, scene.hi);
+        const Bounds reach = world.transformed(cam.viewFromWorld);
+        const float step = 0.0625f * half;
+        if (!world.empty() && step > 0.0f) {
+            depth.lo.z = std::max(depth.lo.z, std::floor(reach.lo.z / step) * step);
+            depth.hi.z = std::min(depth.hi.z, std::ceil(reach.hi.z / step) * step);
+        }
+    }
     const float depthPad = 1e-3f * diagonal;
     cam.nearPlane = scene.empty() ? 0.0f : -depth.hi.z - depthPad;
     cam.farPlane = scene.empty() ? 2.0f * diagonal : -depth.lo.z + depthPad;
     cam.clipFromView = glm::ortho(snapped.x - half, snapped.x + half, snapped.y - half, snapped.y + half, cam.nearPlane, cam.farPlane);
     cam.texelSize = texel;
     cam.perspective = false;
-    FitInput reads = in;
-    const float from = readFrom > 0.0f ? std::min(readFrom, near) : near;
-    reads.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, from, far) * camera.viewFromWorld();
     cam.casts = castersOverSlice(cam, reads, (in.paddingTexels + 2.0f) * texel);
     return cam;
 }

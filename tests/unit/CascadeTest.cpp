@@ -149,18 +149,24 @@ TEST(CascadeTest, AStabilisedCascadeKeepsItsTexelGridWhileTheCameraMovesAndTurns
     const float texel = first.texelSize;
     glm::vec2 lo0, hi0;
     box(first, lo0, hi0);
-    int shifted = 0;
+    int shifted = 0, depthMoves = 0;
+    float previousNear = first.nearPlane, previousFar = first.farPlane;
     for (int step = 1; step <= 60; ++step) {
         // 3 mm and 0.05 degrees a step: sub-texel (a texel is about 2 cm here).
         const Camera camera = walker(glm::vec3(0.003f * static_cast<float>(step), 1.8f, 5.0f - 0.002f * static_cast<float>(step)),
                                      0.05f * static_cast<float>(step));
         const LightCamera cam = fitCascade(kSun, camera, kAspect, 0.1f, 20.0f, true, field.input(camera, kAspect));
         SCOPED_TRACE("step " + std::to_string(step));
-        // The same light view and depth range, the same texel size...
+        // The same light view and texel size, a depth range that moves by
+        // whole steps of 1/32 of the box (64 texels) or not at all...
         EXPECT_EQ(cam.viewFromWorld, first.viewFromWorld);
         EXPECT_EQ(cam.texelSize, texel);
-        EXPECT_EQ(cam.nearPlane, first.nearPlane);
-        EXPECT_EQ(cam.farPlane, first.farPlane);
+        const float depthStep = 64.0f * texel;
+        for (const float moved : {(cam.nearPlane - first.nearPlane) / depthStep, (cam.farPlane - first.farPlane) / depthStep})
+            EXPECT_NEAR(moved, std::round(moved), 1e-2f);
+        depthMoves += cam.nearPlane != previousNear || cam.farPlane != previousFar;
+        previousNear = cam.nearPlane;
+        previousFar = cam.farPlane;
         // ... and a box moved by whole texels only: the grid of texel
         // centres is the same in the world. 1e-2 texel: the box's edges are
         // floats of at most a few hundred light-space units, whose rounding
@@ -174,6 +180,42 @@ TEST(CascadeTest, AStabilisedCascadeKeepsItsTexelGridWhileTheCameraMovesAndTurns
         shifted += moved != glm::vec2(0.0f);
     }
     EXPECT_GT(shifted, 0) << "the path must move the box at least once for the test to mean something";
+    EXPECT_LE(depthMoves, 3) << "the depth range moves rarely";
+}
+
+// A stabilised cascade's depth range is its slice's within the scene, not
+// the whole scene's along the light (moments could not part a caster's foot
+// from the ground under it in the 400 m field's 500 m): every point of the
+// slice inside the scene's box lies between the near and far planes, and
+// the first slice's range is a small part of the scene's.
+TEST(CascadeTest, AStabilisedCascadesDepthRangeIsItsSlices) {
+    const Field field;
+    const Camera camera = walker(glm::vec3(0.0f, 1.8f, 5.0f), 10.0f);
+    const FitInput in = field.input(camera, kAspect);
+    Bounds scene;
+    for (const Bounds& b : field.bounds) scene.add(b);
+    const LightCamera whole = fitDirectional(kSun, LightFit::Scene, in);
+    for (const auto [near, far] : {std::pair{0.1f, 20.0f}, std::pair{20.0f, 100.0f}, std::pair{100.0f, 400.0f}}) {
+        SCOPED_TRACE("slice " + std::to_string(near) + " to " + std::to_string(far));
+        const LightCamera cam = fitCascade(kSun, camera, kAspect, near, far, true, in);
+        const glm::mat4 worldFromClip = glm::inverse(glm::perspective(glm::radians(camera.fovYDeg), kAspect, near, far) * camera.viewFromWorld());
+        int inside = 0;
+        for (int i = 0; i <= 10; ++i)
+            for (int j = 0; j <= 10; ++j)
+                for (int k = 0; k <= 10; ++k) {
+                    const glm::vec4 h = worldFromClip * glm::vec4(0.2f * i - 1.0f, 0.2f * j - 1.0f, 0.2f * k - 1.0f, 1.0f);
+                    const glm::vec3 p = glm::vec3(h) / h.w;
+                    if (glm::any(glm::lessThan(p, scene.lo)) || glm::any(glm::greaterThan(p, scene.hi))) continue;
+                    ++inside;
+                    const float depth = -(cam.viewFromWorld * glm::vec4(p, 1.0f)).z;
+                    EXPECT_GE(depth, cam.nearPlane);
+                    EXPECT_LE(depth, cam.farPlane);
+                }
+        EXPECT_GT(inside, 0) << "the slice must cross the scene for the test to mean something";
+        if (far <= 20.0f) {
+            EXPECT_LT(cam.farPlane - cam.nearPlane, 0.1f * (whole.farPlane - whole.nearPlane));
+        }
+    }
 }
 
 // A stabilised cascade keeps only the casters whose shadow can reach what
