@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadowlab {
 
@@ -24,6 +25,47 @@ bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box) {
     }
     for (int plane = 0; plane < 6; ++plane)
         if (outside[plane] == 8) return false;
+    return true;
+}
+
+bool shadowMayReach(const Bounds& caster, const glm::vec3& direction, const Bounds& scene, float pad, bool bothWays,
+                    const glm::mat4& clipFromWorld) {
+    if (caster.empty() || scene.empty()) return !caster.empty();
+    const glm::vec3 l = glm::normalize(direction);
+    const glm::vec3 lo = caster.lo - glm::vec3(pad), hi = caster.hi + glm::vec3(pad);
+    const glm::vec3 sceneLo = glm::min(scene.lo, lo), sceneHi = glm::max(scene.hi, hi);
+    // How far along l (and -l) a corner may go before it leaves the scene's
+    // box: the farthest over the corners, so the hull holds every sweep.
+    const auto exit = [&](const glm::vec3& p, const glm::vec3& d) {
+        float t = std::numeric_limits<float>::max();
+        for (int a = 0; a < 3; ++a) {
+            if (d[a] > 0.0f) t = std::min(t, (sceneHi[a] - p[a]) / d[a]);
+            else if (d[a] < 0.0f) t = std::min(t, (sceneLo[a] - p[a]) / d[a]);
+        }
+        return std::max(t, 0.0f);
+    };
+    glm::vec3 corners[8];
+    float forward = 0.0f, backward = 0.0f;
+    for (int c = 0; c < 8; ++c) {
+        corners[c] = glm::vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+        forward = std::max(forward, exit(corners[c], l));
+        if (bothWays) backward = std::max(backward, exit(corners[c], -l));
+    }
+    int outside[6] = {0, 0, 0, 0, 0, 0};
+    int points = 0;
+    for (const glm::vec3& corner : corners)
+        for (const float t : {-backward, forward}) {  // the hull's vertices: the box lies between
+            const glm::vec4 p = clipFromWorld * glm::vec4(corner + t * l, 1.0f);
+            outside[0] += p.x < -p.w;
+            outside[1] += p.x > p.w;
+            outside[2] += p.y < -p.w;
+            outside[3] += p.y > p.w;
+            outside[4] += p.z < -p.w;
+            outside[5] += p.z > p.w;
+            ++points;
+        }
+    for (int plane = 0; plane < 6; ++plane)
+        if (outside[plane] == points) return false;
     return true;
 }
 
@@ -228,19 +270,23 @@ namespace {
 // beyond it from the light (unless in.planeReachesBeyond). A caster
 // outside cannot write a texel a lookup there reads, or only farther from
 // the light than the receiver looking it up, where a comparison comes out
-// the same with it or without it.
-std::vector<std::uint8_t> castersOverSlice(const LightCamera& cam, const FitInput& reads, float pad) {
+// the same with it or without it. Nor can one whose shadow misses the
+// slice: the volume its shadow can fill (shadowMayReach) must cross the
+// slice's frustum; the light-view box of a far slice holds the near ones.
+std::vector<std::uint8_t> castersOverSlice(const LightCamera& cam, const glm::vec3& direction, const FitInput& reads, float pad) {
     std::vector<std::uint8_t> out(reads.items.size(), 0);  // cam.casts (castersThatMatter) and over the slice
     Bounds region = visibleReceivers(reads, cam.viewFromWorld);
     if (region.empty()) return out;
     const Bounds frustum = frustumBounds(reads.cameraClipFromWorld, cam.viewFromWorld);
     region.lo = glm::max(region.lo, frustum.lo) - glm::vec3(pad, pad, 0.0f);
     region.hi = glm::min(region.hi, frustum.hi) + glm::vec3(pad, pad, 0.0f);
+    const Bounds scene = all(reads);
     for (std::size_t i = 0; i < reads.items.size(); ++i) {
         if (!reads.items[i].castsShadows || (!cam.casts.empty() && !cam.casts[i])) continue;
         const Bounds b = reads.itemBounds[i].transformed(cam.viewFromWorld);
         out[i] = b.hi.x >= region.lo.x && b.lo.x <= region.hi.x && b.hi.y >= region.lo.y && b.lo.y <= region.hi.y &&
-                 (reads.planeReachesBeyond || b.hi.z >= region.lo.z);
+                 (reads.planeReachesBeyond || b.hi.z >= region.lo.z) &&
+                 shadowMayReach(reads.itemBounds[i], direction, scene, pad, reads.planeReachesBeyond, reads.cameraClipFromWorld);
     }
     return out;
 }
@@ -301,7 +347,7 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     cam.clipFromView = glm::ortho(snapped.x - half, snapped.x + half, snapped.y - half, snapped.y + half, cam.nearPlane, cam.farPlane);
     cam.texelSize = texel;
     cam.perspective = false;
-    cam.casts = castersOverSlice(cam, reads, (in.paddingTexels + 2.0f) * texel);
+    cam.casts = castersOverSlice(cam, direction, reads, (in.paddingTexels + 2.0f) * texel);
     return cam;
 }
 

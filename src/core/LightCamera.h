@@ -64,6 +64,14 @@ glm::mat4 directionalLightView(const glm::vec3& direction, const FitInput& in);
 /// `clipFromWorld` (all eight corners beyond one of its six planes): a
 /// conservative test, a box it keeps may still be outside.
 bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box);
+/// Whether a caster's shadow under a directional light shining along
+/// `direction` may fall inside a camera's frustum: the caster's box widened
+/// by `pad` on every side, swept along the light until it leaves the
+/// scene's box (both ways when `bothWays`), crosses the frustum (tested
+/// against its planes: it may answer true for a volume that only passes
+/// near a corner, never false for one inside).
+bool shadowMayReach(const Bounds& caster, const glm::vec3& direction, const Bounds& scene, float pad, bool bothWays,
+                    const glm::mat4& clipFromWorld);
 
 /// The light as one homogeneous vector: a point or spot light's position
 /// with w = 1, or the unit direction towards a directional light with w = 0

@@ -218,6 +218,41 @@ TEST(CascadeTest, AStabilisedCascadesDepthRangeIsItsSlices) {
     }
 }
 
+// Whether a caster's shadow may fall in a slice (shadowMayReach): the sun
+// is 30 degrees high and shines towards +z, back at a camera looking down
+// -z, so a 2 m box's shadow runs 3.5 m towards the camera. A box 7 m ahead
+// casts nothing into the slice from 20 to 100 m; one 22 m ahead, outside
+// the slice from 0.1 to 20 m, still shadows it (its shadow reaches 18.5 m);
+// one 35 m ahead shadows the far slice, not the near one.
+TEST(CascadeTest, ACastersShadowReachesTheSlicesItFallsIn) {
+    const Camera camera = walker(glm::vec3(0.0f, 1.8f, 5.0f), 0.0f);
+    Bounds scene;
+    scene.add(glm::vec3(-200.0f, 0.0f, -200.0f));
+    scene.add(glm::vec3(200.0f, 2.0f, 200.0f));
+    const auto boxAt = [](float z) {
+        Bounds b;
+        b.add(glm::vec3(-0.5f, 0.0f, z - 0.5f));
+        b.add(glm::vec3(0.5f, 2.0f, z + 0.5f));
+        return b;
+    };
+    const auto slice = [&](float near, float far) {
+        return glm::perspective(glm::radians(camera.fovYDeg), kAspect, near, far) * camera.viewFromWorld();
+    };
+    const glm::vec3 sun = glm::normalize(glm::vec3(0.0f, -0.5f, 0.866f));
+    EXPECT_FALSE(shadowMayReach(boxAt(-2.0f), sun, scene, 0.05f, false, slice(20.0f, 100.0f)));
+    EXPECT_TRUE(shadowMayReach(boxAt(-2.0f), sun, scene, 0.05f, false, slice(0.1f, 20.0f)));
+    EXPECT_TRUE(shadowMayReach(boxAt(-17.0f), sun, scene, 0.05f, false, slice(0.1f, 20.0f)));
+    EXPECT_TRUE(shadowMayReach(boxAt(-30.0f), sun, scene, 0.05f, false, slice(20.0f, 100.0f)));
+    EXPECT_FALSE(shadowMayReach(boxAt(-30.0f), sun, scene, 0.05f, false, slice(0.1f, 20.0f)));
+    // Swept both ways (a filter that compares against the receiver's plane
+    // beyond the caster) in a scene 40 m tall, the box 7 m ahead reaches
+    // back towards the sun, away from the camera, into the far slice.
+    Bounds tall = scene;
+    tall.add(glm::vec3(0.0f, 40.0f, 0.0f));
+    EXPECT_FALSE(shadowMayReach(boxAt(-2.0f), sun, tall, 0.05f, false, slice(20.0f, 100.0f)));
+    EXPECT_TRUE(shadowMayReach(boxAt(-2.0f), sun, tall, 0.05f, true, slice(20.0f, 100.0f)));
+}
+
 // A stabilised cascade keeps only the casters whose shadow can reach what
 // its lookups read (LightCamera.cpp: castersOverSlice): the boxes along the
 // view axis, the first slice (0.1 to 10 m) keeps those near it and drops
