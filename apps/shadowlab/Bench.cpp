@@ -4,6 +4,7 @@
 #include "BenchParts.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
 
 #include <shadowlab/Text.h>
 
@@ -19,36 +20,15 @@ namespace shadowlab::tool {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-namespace {
-
-// OUT.partial-PID directories left by benches that were killed (their
-// process is gone) are removed; those of a bench still running stay.
-void removeStaleStaging(const fs::path& target) {
-    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    const std::string prefix = target.filename().string() + ".partial-";
-    std::error_code ec;
-    for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::string name = it->path().filename().string();
-        if (name.rfind(prefix, 0) != 0) continue;
-        const std::string digits = name.substr(prefix.size());
-        if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
-        const pid_t pid = static_cast<pid_t>(std::stol(digits));
-        if (pid == getpid() || kill(pid, 0) == 0 || errno != ESRCH) continue;
-        std::error_code removeError;
-        fs::remove_all(it->path(), removeError);
-    }
-}
-
-} // namespace
 
 StagingDirectory::StagingDirectory(fs::path target) : target_(std::move(target)) {
-    removeStaleStaging(target_);
+    removeStaleTemporaries(target_, "partial");  // OUT.partial-PID of benches that were killed
     staging_ = target_;
     staging_ += ".partial-" + std::to_string(getpid());
     std::error_code ec;
     fs::remove_all(staging_, ec);
     fs::create_directories(staging_, ec);
-    if (ec) throw Error(staging_.string() + ": cannot create directory (" + ec.message() + ")");
+    if (ec) throw Error("-o " + target_.string() + ": cannot create the directory (" + ec.message() + ")");
 }
 
 StagingDirectory::~StagingDirectory() {
@@ -128,6 +108,9 @@ json runBench(Context& context, const BenchArgs& args) {
             renderer.upload(scene);
             const TimedFrames timed = timeFrames(renderer, scene, run.loaded, args);
             const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args);
+            // What the techniques noticed (no planar receiver, no disc): said here and kept in the row.
+            for (const std::string& note : accuracy.comparison.techniqueFrame.notes)
+                std::fprintf(stderr, "shadowlab: note: bench run %zu/%zu (%s): %s\n", records.size() + 1, runs.size(), label.c_str(), note.c_str());
             records.push_back(runRecord(run, scene, timed, accuracy, records.size(), label, args));
         } catch (const Error& e) {
             // Name the run that failed: its scene and the combination of --vary values.

@@ -126,6 +126,7 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
             {"frameOverHardMap", timed.timedBaseline ? frame / std::max(median(timed.baselineTimes), 1e-9) : 1.0},
             {"referenceMs", accuracy.comparison.referenceMs},
             {"lights", lights},
+            {"notes", accuracy.comparison.techniqueFrame.notes},
             {"techniqueImage", "images/" + stem + "-technique.png"},
             {"referenceImage", "images/" + stem + "-reference.png"}};
 }

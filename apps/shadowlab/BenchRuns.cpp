@@ -62,15 +62,39 @@ std::size_t countRuns(std::size_t sceneCount, const std::vector<Variation>& vari
     return runs;
 }
 
+namespace {
+
+// Whether two override paths name the same setting, or one holds the other
+// (lights[0].shadow holds lights[0].shadow.technique).
+bool overlaps(const std::string& a, const std::string& b) {
+    const std::string& shorter = a.size() <= b.size() ? a : b;
+    const std::string& longer = a.size() <= b.size() ? b : a;
+    if (longer.compare(0, shorter.size(), shorter) != 0) return false;
+    return longer.size() == shorter.size() || longer[shorter.size()] == '.' || longer[shorter.size()] == '[';
+}
+
+} // namespace
+
 std::vector<BenchRun> loadRuns(const BenchArgs& args) {
     std::vector<Variation> variations;
     for (std::size_t i = 0; i < args.vary.size(); ++i) {
         variations.push_back(parseVariation(args.vary[i]));
-        // Two --vary of one key would make every combination run at the last one's value.
+        // Two --vary of one key (or of a key and what holds it) would make
+        // every combination run at the last one's value.
         for (std::size_t j = 0; j < i; ++j)
-            if (variations[j].key == variations[i].key)
+            if (overlaps(variations[j].key, variations[i].key))
                 throw Error("--vary " + args.vary[i] + ": " + variations[i].key + " is already varied by --vary " + args.vary[j] +
-                            " (give all its values in one --vary)");
+                            (variations[j].key == variations[i].key ? " (give all its values in one --vary)" : " (one holds the other)"));
+        // A value twice would run the same combination twice under two labels.
+        for (std::size_t a = 0; a < variations[i].values.size(); ++a)
+            for (std::size_t b = 0; b < a; ++b)
+                if (variations[i].values[a] == variations[i].values[b])
+                    throw Error("--vary " + args.vary[i] + ": the value " + variations[i].values[a] + " is given twice");
+        // A --set of the same key would be replaced by every run's value without a word.
+        for (const std::string& set : args.overrides)
+            if (overlaps(set.substr(0, set.find('=')), variations[i].key))
+                throw Error("--vary " + args.vary[i] + ": " + variations[i].key + " is also set by --set " + set +
+                            " (a varied key takes its values from --vary alone)");
     }
     std::vector<std::string> scenes = args.scenes;
     if (scenes.empty()) scenes.push_back("");
@@ -85,11 +109,14 @@ std::vector<BenchRun> loadRuns(const BenchArgs& args) {
             try {
                 runs.push_back({file, combo, file.empty() ? defaultScene(overrides) : loadSceneFile(file, overrides)});
             } catch (const Error& e) {
-                // A varied value is applied like --set; name the flag the user wrote.
-                const std::string message = e.what();
+                // A varied value is applied like --set; name the flag the user wrote,
+                // and the scene and combination the check failed in.
+                std::string message = e.what();
                 for (const std::string& c : combo)
-                    if (message.rfind("--set " + c + ":", 0) == 0) throw Error("--vary " + c + message.substr(6 + c.size()));
-                throw;
+                    if (message.rfind("--set " + c + ":", 0) == 0) message = "--vary " + c + message.substr(6 + c.size());
+                std::string where = file.empty() ? std::string("the default scene") : file;
+                for (const std::string& c : combo) where += ", --vary " + c;
+                throw Error(message + " (bench: " + where + ")");
             }
         }
     return runs;

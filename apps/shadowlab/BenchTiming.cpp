@@ -1,6 +1,7 @@
 // shadowlab bench: a run's timed frames (BenchParts.h): the scene, the same
 // unshadowed and at its techniques' baseline, frame by frame through time.
 #include "BenchParts.h"
+#include "Interrupt.h"
 
 #include <shadowlab/Techniques.h>
 
@@ -63,6 +64,7 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
     // lights and the camera are moved (outside the timed render())
     // and the three frames of a step see them at the same place.
     for (int i = 0; i < args.frames; ++i) {
+        throwIfInterrupted();
         const double t = args.timeSeconds + i / args.fps;
         moveToTime(scene, loaded, t);
         moveToTime(unshadowed, loaded, t);

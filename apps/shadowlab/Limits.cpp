@@ -2,10 +2,12 @@
 #include "Limits.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/Text.h>
 
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -45,7 +47,11 @@ void checkMemory(int width, int height) {
     if (const char* limit = std::getenv("SHADOWLAB_MEMORY_LIMIT_BYTES"); limit && *limit) {
         char* end = nullptr;
         budget = std::strtod(limit, &end);
-        if (*end != '\0' || !(budget > 0.0)) throw Error(std::string("SHADOWLAB_MEMORY_LIMIT_BYTES=") + limit + ": expected a number of bytes > 0");
+        // Decimal digits only (no hex, no inf), at least 1 KiB and finite.
+        const bool decimal = std::string(limit).find_first_not_of("0123456789.eE+") == std::string::npos;
+        if (*end != '\0' || !decimal || !std::isfinite(budget) || !(budget >= 1024.0))
+            throw Error(text::escapeControl(text::clipMiddle(std::string("SHADOWLAB_MEMORY_LIMIT_BYTES=") + limit)) +
+                        ": expected a finite decimal number of bytes, at least 1024");
         what = "SHADOWLAB_MEMORY_LIMIT_BYTES";
     } else {
         const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES)), pageSize = static_cast<double>(sysconf(_SC_PAGE_SIZE));

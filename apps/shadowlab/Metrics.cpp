@@ -1,6 +1,7 @@
 #include "Metrics.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
 
 #include <fstream>
 #include <system_error>
@@ -39,19 +40,7 @@ nlohmann::json lightRecord(const Light& light, const LightComparison& c,
 }
 
 void writeJsonAtomically(const std::filesystem::path& path, const nlohmann::json& value) {
-    std::filesystem::path partial = path;
-    partial += ".partial";
-    {
-        std::ofstream out(partial);
-        out << value.dump(2) << "\n";
-        if (!out) throw Error(path.string() + ": cannot write");
-    }
-    std::error_code ec;
-    std::filesystem::rename(partial, path, ec);
-    if (ec) {
-        std::filesystem::remove(partial, ec);
-        throw Error(path.string() + ": cannot write (" + ec.message() + ")");
-    }
+    writeFileAtomically(path, value.dump(2) + "\n");
 }
 
 } // namespace shadowlab::tool

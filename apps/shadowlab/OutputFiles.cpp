@@ -1,7 +1,10 @@
 // The files the subcommands write (OutputFiles.h).
 #include "OutputFiles.h"
 
+#include "Interrupt.h"
+
 #include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
 
 #include <unistd.h>
 
@@ -102,6 +105,8 @@ PendingFiles::~PendingFiles() {
 }
 
 void PendingFiles::write(const fs::path& target, const std::function<void(const fs::path&)>& writeTo) {
+    throwIfInterrupted();
+    removeStaleTemporaries(target, "pending");  // TARGET.pending-PID of runs that were killed
     const fs::path temporary = besideTarget(target, "pending");
     files_.emplace_back(temporary, target);  // first: removed even if the write fails half way
     try {

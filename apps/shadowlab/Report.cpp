@@ -3,6 +3,7 @@
 #include "Bench.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
 
 #include <algorithm>
 #include <cmath>
@@ -330,19 +331,7 @@ window.addEventListener('load', () => {
 </script>
 </body></html>
 )";
-    const fs::path path = directory / "report.html";
-    const fs::path tmp = directory / "report.html.partial";
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << h.str();
-        if (!out) throw Error(path.string() + ": cannot write");
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw Error(path.string() + ": cannot write (" + ec.message() + ")");
-    }
+    writeFileAtomically(directory / "report.html", h.str());
 }
 
 } // namespace shadowlab::tool

@@ -12,6 +12,7 @@
 #include "ViewerSession.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
 #include <shadowlab/SceneFile.h>
 
 #include <epoxy/gl.h>
@@ -104,21 +105,7 @@ void ViewerSession::save(const fs::path& path) {
     const std::string saved = sceneJsonWithOverrides(text, fromFile ? args.scene : std::string("<default scene>"), overrides.all());
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw Error(path.string() + ": cannot save the scene (a directory of that name is in the way)");
-    const fs::path partial = path.string() + ".partial";
-    {
-        std::ofstream out(partial, std::ios::binary);
-        if (!(out << saved)) {
-            out.close();
-            fs::remove(partial, ec);
-            throw Error(path.string() + ": cannot save the scene (cannot write there)");
-        }
-    }
-    fs::rename(partial, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(partial, ignored);
-        throw Error(path.string() + ": cannot save the scene (" + ec.message() + ")");
-    }
+    writeFileAtomically(path, saved);
 }
 
 // The scene's JSON text as read now: the file's, or the default scene's.
@@ -266,13 +253,12 @@ void ViewerSession::endFrame(int width, int height, bool screenshotKey) {
     }
     ++frame;
     if (waitFrames > 0) --waitFrames;
-    if (args.frames > 0 && frame >= args.frames) {
-        if (!args.screenshot.empty()) {
-            writePng(args.screenshot, readWindow(width, height));
-            std::cout << args.screenshot << "\n";
-        }
-        quit = true;
+    if (args.frames > 0 && frame == args.frames && !args.screenshot.empty()) {
+        writePng(args.screenshot, readWindow(width, height));
+        std::cout << args.screenshot << "\n";
     }
+    // --frames ends the run, but not before a comparison the script asked for is traced and written.
+    if (args.frames > 0 && frame >= args.frames && !referenceAsked && !tracing) quit = true;
     // The script ends once what it started is done: a comparison it asked for is traced and written first.
     if (!args.script.empty() && nextAction >= script.size() && waitFrames == 0 && !referenceAsked && !tracing) quit = true;
 }

@@ -2,6 +2,7 @@
 // the window opens, then run one action a frame.
 #include "ViewerScript.h"
 
+#include "Limits.h"
 #include "OutputFiles.h"
 #include "ViewerSession.h"
 
@@ -36,6 +37,7 @@ std::vector<Action> readScript(const std::string& path) {
     std::vector<Action> out;
     std::string text;
     for (int line = 1; std::getline(in, text); ++line) {
+        if (text.find('\0') != std::string::npos) throw Error(path + ":" + std::to_string(line) + ": a NUL byte in the line (expected text)");
         const auto hash = text.find('#');
         if (hash != std::string::npos) text.resize(hash);
         std::istringstream words(text);
@@ -69,6 +71,11 @@ std::vector<Action> readScript(const std::string& path) {
             std::string rest;
             if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
+            try {
+                tool::checkMemory(w, h);  // the window's targets, as --width and --height's (GL's limits: when it runs)
+            } catch (const Error& e) {
+                throw Error(where + "resize " + a.argument + ": " + e.what());
+            }
         } else if (a.verb == "compare") {
             // An optional directory for the error images: it must exist before anything is traced.
             if (!a.argument.empty() && !std::filesystem::is_directory(a.argument))
@@ -100,12 +107,21 @@ void ViewerSession::runScript() {
             --nextAction;  // taken after this frame is drawn
             break;
         } else if (a.verb == "save") {
-            save(a.argument);
+            try {
+                save(a.argument);
+            } catch (const Error& e) {
+                throw Error(args.script + ":" + std::to_string(a.line) + ": save: " + e.what());
+            }
             std::cout << a.argument << "\n";
         } else if (a.verb == "resize") {
             std::istringstream size(a.argument);
             int w = 0, h = 0;
             size >> w >> h;
+            try {
+                tool::checkSize(w, h, context.info());  // GL's limits and the device's memory
+            } catch (const Error& e) {
+                throw Error(args.script + ":" + std::to_string(a.line) + ": resize " + a.argument + ": " + e.what());
+            }
             glfwSetWindowSize(window, w, h);
         } else if (a.verb == "uploads") {
             std::cout << "uploads: " << uploads << "\n";  // how often the scene was read whole and uploaded

@@ -12,11 +12,13 @@
 #endif
 #include "Metrics.h"
 #include "Limits.h"
+#include "Interrupt.h"
 #include "OutputFiles.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
 #include <shadowlab/Image.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/SceneFile.h>
@@ -145,6 +147,7 @@ int runRender(const RenderArgs& args) {
     tool::PendingFiles pending;
     Scene scene = loaded;
     for (int k = 0; k < args.frames; ++k) {
+        tool::throwIfInterrupted();
         const fs::path& output = outputs[static_cast<std::size_t>(k)];
         // The lights and the camera where their paths put them at this
         // frame's time, the camera from a light's view after it moved.
@@ -211,6 +214,7 @@ int runCompare(const CompareArgs& args) {
     options.softSamples = args.softSamples;
     options.timeSeconds = args.timeSeconds;
     const Comparison c = compareWithReference(renderer, scene, options);
+    tool::throwIfInterrupted();
     printNotes(c.techniqueFrame.notes);
     requireNoGlErrors(context);
 
@@ -218,6 +222,15 @@ int runCompare(const CompareArgs& args) {
     std::error_code ec;
     const bool madeDirectory = fs::create_directories(dir, ec);
     if (ec) throw Error("-o " + args.output + ": cannot create the directory (" + ec.message() + ")");
+    // Made here and the run fails: removed again once the files are (declared first, destroyed last).
+    struct MadeDirectory {
+        fs::path dir;
+        bool made, keep = false;
+        ~MadeDirectory() {
+            std::error_code ignored;
+            if (made && !keep) fs::remove(dir, ignored);  // only if empty
+        }
+    } made{dir, madeDirectory};
     tool::PendingFiles pending;
     pending.write(dir / "technique.png", c.technique);
     pending.write(dir / "reference.png", c.reference);
@@ -265,13 +278,8 @@ int runCompare(const CompareArgs& args) {
                                  {"referenceImage", "reference.png"},
                                  {"lights", lights}};
     pending.write(dir / "metrics.json", [&](const fs::path& p) { tool::writeJsonAtomically(p, metrics); });
-    std::vector<fs::path> written;
-    try {
-        written = pending.commit();
-    } catch (const Error&) {
-        if (madeDirectory) fs::remove(dir, ec);  // empty again: nothing of this run is left
-        throw;
-    }
+    const std::vector<fs::path> written = pending.commit();
+    made.keep = true;
     std::cout << "wrote";
     for (const fs::path& p : written) std::cout << " " << p.string();
     std::cout << "\n";
@@ -279,6 +287,7 @@ int runCompare(const CompareArgs& args) {
 }
 
 int runBenchCommand(const tool::BenchArgs& args) {
+    removeStaleTemporaries(args.output, "partial");  // what killed benches left, even if this one fails next
     for (const std::string& file : args.scenes) {
         if (file.empty()) throw Error("bench: empty scene path");
         if (text::invalidUtf8At(file) != std::string::npos)
@@ -297,15 +306,17 @@ int runBenchCommand(const tool::BenchArgs& args) {
     tool::StagingDirectory staging(args.output);
     tool::BenchArgs staged = args;
     staged.output = staging.path();
-    const nlohmann::json results = tool::runBench(context, staged);
-    requireNoGlErrors(context);
-    const fs::path json = staged.output / "results.json";
-    {
-        std::ofstream out(json);
-        out << results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-        if (!out) throw Error((args.output / "results.json").string() + ": cannot write");
+    try {
+        const nlohmann::json results = tool::runBench(context, staged);
+        requireNoGlErrors(context);
+        writeFileAtomically(staged.output / "results.json", results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+        tool::writeReport(results, staged.output);
+    } catch (const Error& e) {  // a file named where it goes, not in the staging directory
+        std::string message = e.what();
+        const std::string from = staged.output.string(), to = args.output.string();
+        for (std::size_t at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size())) message.replace(at, from.size(), to);
+        throw Error(message);
     }
-    tool::writeReport(results, staged.output);
     staging.commit();
     std::cout << (args.output / "results.json").string() << "\n" << (args.output / "report.html").string() << "\n";
     return 0;
@@ -494,6 +505,7 @@ int main(int argc, char** argv) {
 #endif
 
     refuseEmptyValues(app);
+    tool::installInterruptHandlers();
     if (argc > 1 && argv[1][0] != '-' && !isCommand(app, argv[1])) {
         std::cerr << "shadowlab: error: " << text::escapeControl(argv[1]) << ": not a command (expected one of" << commandList(app) << ")\n";
         return 1;

@@ -1,13 +1,15 @@
 #include <shadowlab/Image.h>
 
 #include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
 
 #include <png.h>
 #include <stb_image.h>
 #include <stb_image_write.h>
 
-#include <cstdio>
 #include <memory>
+#include <string>
+#include <string_view>
 #include <system_error>
 
 namespace shadowlab {
@@ -16,72 +18,47 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path temporaryBeside(const fs::path& path) {
-    fs::path tmp = path;
-    tmp += ".partial";
-    return tmp;
+void requireSize(const fs::path& path, int width, int height, std::size_t pixels, std::size_t channels) {
+    if (width <= 0 || height <= 0 || pixels != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * channels)
+        throw Error(path.string() + ": cannot write an empty or inconsistent image");
 }
 
-void commit(const fs::path& tmp, const fs::path& path) {
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        std::error_code ignored; // removing the temporary must not overwrite the rename's error
-        fs::remove(tmp, ignored);
-        throw Error(path.string() + ": cannot write (" + ec.message() + ")");
-    }
+// An 8-bit PNG of `channels` channels, encoded in memory and written whole.
+void writeStbPng(const fs::path& path, int width, int height, int channels, const std::uint8_t* pixels) {
+    std::string bytes;
+    const auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+    };
+    if (!stbi_write_png_to_func(append, &bytes, width, height, channels, pixels, width * channels))
+        throw Error(path.string() + ": cannot write PNG (cannot encode it)");
+    writeFileAtomically(path, bytes);
 }
 
-void requireDirectory(const fs::path& path) {
-    const fs::path dir = path.parent_path();
-    std::error_code ec;
-    if (!dir.empty() && !fs::is_directory(dir, ec))
-        throw Error(path.string() + ": cannot write (directory " + dir.string() + (ec ? ": " + ec.message() : " does not exist") + ")");
+void appendBytes(png_structp png, png_bytep data, png_size_t length) {
+    static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(data), length);
 }
+void flushNothing(png_structp) {}
 
 } // namespace
 
 void writePng(const fs::path& path, const ImageRGBA8& image) {
-    if (image.width <= 0 || image.height <= 0 ||
-        image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 4)
-        throw Error(path.string() + ": cannot write an empty or inconsistent image");
-    requireDirectory(path);
-    const fs::path tmp = temporaryBeside(path);
-    if (!stbi_write_png(tmp.string().c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4)) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw Error(path.string() + ": cannot write PNG");
-    }
-    commit(tmp, path);
+    requireSize(path, image.width, image.height, image.pixels.size(), 4);
+    writeStbPng(path, image.width, image.height, 4, image.pixels.data());
 }
 
 void writePng(const fs::path& path, const ImageGray8& image) {
-    if (image.width <= 0 || image.height <= 0 ||
-        image.pixels.size() != static_cast<std::size_t>(image.width) * image.height)
-        throw Error(path.string() + ": cannot write an empty or inconsistent image");
-    requireDirectory(path);
-    const fs::path tmp = temporaryBeside(path);
-    if (!stbi_write_png(tmp.string().c_str(), image.width, image.height, 1, image.pixels.data(), image.width)) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw Error(path.string() + ": cannot write PNG");
-    }
-    commit(tmp, path);
+    requireSize(path, image.width, image.height, image.pixels.size(), 1);
+    writeStbPng(path, image.width, image.height, 1, image.pixels.data());
 }
 
 void writePng16(const fs::path& path, const ImageGray16& image) {
-    if (image.width <= 0 || image.height <= 0 ||
-        image.pixels.size() != static_cast<std::size_t>(image.width) * image.height)
-        throw Error(path.string() + ": cannot write an empty or inconsistent image");
-    requireDirectory(path);
-    const fs::path tmp = temporaryBeside(path);
-    std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(tmp.string().c_str(), "wb"), &std::fclose);
-    if (!file) throw Error(path.string() + ": cannot open for writing");
+    requireSize(path, image.width, image.height, image.pixels.size(), 1);
+    std::string bytes;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     volatile bool ok = png && info;
     if (ok && setjmp(png_jmpbuf(png)) == 0) {
-        png_init_io(png, file.get());
+        png_set_write_fn(png, &bytes, &appendBytes, &flushNothing);
         png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 16,
                      PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
         png_write_info(png, info);
@@ -93,13 +70,8 @@ void writePng16(const fs::path& path, const ImageGray16& image) {
         ok = false;
     }
     png_destroy_write_struct(&png, &info);
-    file.reset();
-    if (!ok) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw Error(path.string() + ": cannot write 16-bit PNG");
-    }
-    commit(tmp, path);
+    if (!ok) throw Error(path.string() + ": cannot write 16-bit PNG (cannot encode it)");
+    writeFileAtomically(path, bytes);
 }
 
 ImageRGBA8 readPng(const fs::path& path) {

@@ -1,5 +1,7 @@
 #include <shadowlab/Text.h>
 
+#include <charconv>
+
 #include <cstdint>
 #include <sstream>
 
@@ -115,9 +117,14 @@ std::string clipMiddle(std::string_view s, std::size_t limit) {
 }
 
 std::string numberText(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
+    // The shortest text that reads back as the same value: as a 32-bit
+    // float when it is one (0.3f is "0.3"), else as a double (1.0000001 is
+    // not "1", 1e300 is not 301 digits).
+    char buffer[64];
+    const float f = static_cast<float>(v);
+    const std::to_chars_result r = static_cast<double>(f) == v ? std::to_chars(buffer, buffer + sizeof buffer, f)
+                                                                 : std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, r.ptr);
 }
 
 } // namespace shadowlab::text

@@ -1,9 +1,11 @@
 #include "gl/Debug.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/Text.h>
 
 #include <epoxy/gl.h>
 
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -90,7 +92,14 @@ GlInfo queryGlInfo() {
     // GL_NVX_gpu_memory_info reporting that much free memory (llvmpipe
     // reports none): the tests check the device-memory guard through it.
     const char* injected = std::getenv("SHADOWLAB_DEVICE_MEMORY_KIB");
-    const int injectedKiB = injected && *injected ? std::atoi(injected) : 0;
+    int injectedKiB = 0;
+    if (injected && *injected) {
+        const std::string value = injected;
+        const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), injectedKiB);
+        if (ec != std::errc() || end != value.data() + value.size() || injectedKiB <= 0)
+            throw Error(text::escapeControl(text::clipMiddle("SHADOWLAB_DEVICE_MEMORY_KIB=" + value)) +
+                        ": expected a whole number of KiB in 1..2147483647");
+    }
     const DeviceMemory memory =
         injectedKiB > 0 ? queryDeviceMemory([](const char* name) { return std::string(name) == "GL_NVX_gpu_memory_info"; },
                                             [injectedKiB](unsigned, int* values) { values[0] = injectedKiB; })

@@ -383,7 +383,7 @@ private:
         for (std::size_t c = 0; c < pbr.baseColorFactor.size(); ++c)
             if (!(pbr.baseColorFactor[c] >= 0.0 && pbr.baseColorFactor[c] <= 1.0))
                 fail(at + ".pbrMetallicRoughness.baseColorFactor[" + std::to_string(c) + "]: expected a number in 0..1, got " +
-                     std::to_string(pbr.baseColorFactor[c]));
+                     text::numberText(pbr.baseColorFactor[c]));
         if (pbr.baseColorFactor.size() >= 3)
             m.baseColor = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
                                     static_cast<float>(pbr.baseColorFactor[2]));
@@ -393,7 +393,7 @@ private:
             fail(at + ".alphaMode: expected \"OPAQUE\", \"MASK\" or \"BLEND\", got \"" + src.alphaMode + "\"");
         m.alphaMode = src.alphaMode == "MASK" ? AlphaMode::Mask : src.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
         if (!(src.alphaCutoff >= 0.0 && src.alphaCutoff <= 1.0))
-            fail(at + ".alphaCutoff: expected a number in 0..1, got " + std::to_string(src.alphaCutoff));
+            fail(at + ".alphaCutoff: expected a number in 0..1, got " + text::numberText(src.alphaCutoff));
         m.alphaCutoff = static_cast<float>(src.alphaCutoff);
         const int tex = pbr.baseColorTexture.index;
         if (tex >= 0 && tex < static_cast<int>(gltf_.textures.size())) {

@@ -131,7 +131,8 @@ struct ObjParser {
             fail("bad number '" + std::string(word) + "' after '" + std::string(keyword) + "'");
         if (ec == std::errc::result_out_of_range) // overflow becomes +-inf (rejected below), underflow 0 or denormal
             value = std::strtof(std::string(digits).c_str(), nullptr);
-        if (!std::isfinite(value)) fail("non-finite number '" + std::string(word) + "' after '" + std::string(keyword) + "'");
+        if (!std::isfinite(value))
+            fail("number '" + std::string(word) + "' after '" + std::string(keyword) + "' is not finite or past a 32-bit float's range (about 3.4e38)");
         return value;
     }
 

@@ -77,7 +77,7 @@ glm::vec3 Reader::vec3() const {
 float Reader::positive(const std::string& key, float def) const {
     if (!has(key)) return def;
     const float v = child(key).number();
-    if (!(v > 0.0f)) child(key).fail("expected a number > 0, got " + fmt(v));
+    if (!(v > 0.0f)) child(key).fail("expected a number > 0, got " + fmt(child(key).value().get<double>()) + (v == 0.0f ? " (0 as a 32-bit float)" : ""));
     return v;
 }
 
@@ -116,11 +116,7 @@ glm::vec3 Reader::direction(const std::string& key, glm::vec3 def) const {
     return unit;
 }
 
-std::string Reader::fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
+std::string Reader::fmt(double v) { return text::numberText(v); }
 
 // --- Keyframes --------------------------------------------------------------
 

@@ -135,13 +135,22 @@ expect_error bench-scene-in-link-loop "loop-a/s.json: Too many levels of symboli
 if "$tool" view --help >/dev/null 2>&1; then
   # A NUL byte in a script line is shown, not where the message stops.
   printf 'bogus\0tail\n' > "$work/nul.txt"
-  expect_error script-nul-byte "nul.txt:1: unknown action 'bogus\\x00tail' (expected" view --script nul.txt
+  expect_error script-nul-byte "nul.txt:1: a NUL byte in the line (expected text)" view --script nul.txt
+  printf 'set lights[0].intensity=1\0x\n' > "$work/nul-set.txt"
+  expect_error script-nul-in-value "nul-set.txt:1: a NUL byte in the line" view --script nul-set.txt
+  # A resize is held to the frame-memory guard as --width and --height are.
+  printf 'resize 1024 768\n' > "$work/resize.txt"
+  TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=1000000 expect_error script-resize-past-memory "resize.txt:1: resize 1024 768: --width 1024 --height 768: the frame needs about 48.0 MiB" view --width 64 --height 64 --script resize.txt
   expect_error script-in-link-loop "--script loop-a/s.txt: Too many levels of symbolic links" view --script loop-a/s.txt
 fi
 # The device-memory guard, with a driver that reports 1 MiB free (injected: llvmpipe reports none).
 TOOL_ENV=SHADOWLAB_DEVICE_MEMORY_KIB=1024 expect_error memory-device "--width 640 --height 360: the frame needs about 14.1 MiB (estimated 64 bytes per pixel), more than the budget of 1.0 MiB (the device memory GL_NVX_gpu_memory_info reports free)" render -o out.png --width 640 --height 360
 if ! env SHADOWLAB_DEVICE_MEMORY_KIB=1024 "$tool" info | grep -q '^device memory free: 1 MiB (GL_NVX_gpu_memory_info)$'; then echo "FAIL info-device-memory"; failures=$((failures + 1)); fi
-TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=lots expect_error memory-limit-bad "SHADOWLAB_MEMORY_LIMIT_BYTES=lots: expected a number of bytes > 0" render -o out.png
+TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=lots expect_error memory-limit-bad "SHADOWLAB_MEMORY_LIMIT_BYTES=lots: expected a finite decimal number of bytes, at least 1024" render -o out.png
+TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=1e400 expect_error memory-limit-infinite "SHADOWLAB_MEMORY_LIMIT_BYTES=1e400: expected a finite decimal number of bytes" render -o out.png
+TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=0x10 expect_error memory-limit-hex "SHADOWLAB_MEMORY_LIMIT_BYTES=0x10: expected a finite decimal number of bytes" render -o out.png
+TOOL_ENV=SHADOWLAB_DEVICE_MEMORY_KIB=abc expect_error device-memory-bad "SHADOWLAB_DEVICE_MEMORY_KIB=abc: expected a whole number of KiB" render -o out.png
+TOOL_ENV=SHADOWLAB_DEVICE_MEMORY_KIB=-5 expect_error device-memory-negative "SHADOWLAB_DEVICE_MEMORY_KIB=-5: expected a whole number of KiB" render -o out.png
 # --debug-images names itself when its directory cannot be (was a raw "filesystem error"), and nothing is written.
 touch "$work/plainfile"
 expect_error debug-images-is-a-file "--debug-images plainfile: exists and is not a directory" render -o out.png --debug-images plainfile
@@ -303,6 +312,78 @@ expect_all_or_nothing render-sequence-blocked-by-directory "-o seq/shot-0002.png
 mkdir -p "$work/dbg" "$work/dbg/blocker-light0-map.png" && echo earlier > "$work/dbg/blocker.png"
 expect_all_or_nothing render-debug-image-blocked-by-directory "dbg/blocker-light0-map.png: cannot write (a directory of that name is in the way)" \
   dbg blocker-light0-map.png blocker.png render --set lights[0].shadow.technique=map -o dbg/blocker.png --debug shadow-maps --width 32 --height 18
+
+# bench's --vary and --set: one key (or a key and what holds it) set twice is refused, as is a value given twice.
+PROGRESS_OK=1 expect_error vary-holding-key "--vary lights[0].shadow.technique=planar,map: lights[0].shadow.technique is already varied by --vary lights[0].shadow={\"technique\":\"none\"},{\"technique\":\"map\"} (one holds the other)" bench -o outdir --vary 'lights[0].shadow={"technique":"none"},{"technique":"map"}' --vary lights[0].shadow.technique=planar,map
+PROGRESS_OK=1 expect_error vary-value-twice "--vary lights[0].intensity=1,1: the value 1 is given twice" bench -o outdir --vary lights[0].intensity=1,1
+PROGRESS_OK=1 expect_error vary-and-set "--vary lights[0].intensity=1,2: lights[0].intensity is also set by --set lights[0].intensity=5" bench -o outdir --set lights[0].intensity=5 --vary lights[0].intensity=1,2
+PROGRESS_OK=1 expect_error bench-check-names-scene "cascades are for directional lights; a spot or point light takes one map (cascades 1) (bench: $src/scenes/spot-objects.json, --vary lights[0].shadow.map.cascades=4)" bench "$src/scenes/two-boxes-sun.json" "$src/scenes/spot-objects.json" -o outdir --set lights[0].shadow.technique=map --vary lights[0].shadow.map.cascades=1,4
+expect_error bench-output-cannot-be-made "-o /proc/shadowlab-bench: cannot create the directory" bench -o /proc/shadowlab-bench "${bench_small[@]}"
+# bench says what the techniques noticed (a planar light with nothing planar to fall on) and keeps it in the row.
+printf '{"lights":[{"type":"directional","shadow":{"technique":"planar"}}],"nodes":[{"name":"ball","shape":{"type":"sphere"},"translation":[0,2,0]}]}' > "$work/planar-none.json"
+if (cd "$work" && "$tool" bench planar-none.json -o planar-bench "${bench_small[@]}" 2>planar-bench.err >/dev/null) &&
+   grep -q "^shadowlab: note: bench run 1/1 (.*): lights\[0\].shadow.planar" "$work/planar-bench.err" && grep -q '"notes": \[' "$work/planar-bench/results.json" &&
+   ! grep -q '"notes": \[\]' "$work/planar-bench/results.json"; then
+  echo "ok   bench-notes"; passed=$((passed + 1))
+else
+  echo "FAIL bench-notes: $(cat "$work/planar-bench.err")"; failures=$((failures + 1))
+fi
+
+# A write that fails part way (a full disk; here the file-size limit, which
+# fails the same write calls) is an error naming the file and its reason,
+# with nothing left: no truncated image, no temporary, no directory made.
+# expect_clean_failure NAME EXPECTED ARGS...: run in a fresh directory, which must stay empty.
+expect_clean_failure() {
+  local name=$1 expected=$2
+  shift 2
+  local dir="$work/clean-$name"
+  mkdir -p "$dir"
+  local stderr code
+  stderr=$(cd "$dir" && "$@" 2>&1 >/dev/null)
+  code=$?
+  stderr=$(printf '%s\n' "$stderr" | grep -v '^\[[#.]*\] \|^bench: [0-9]* runs\?$')  # bench's progress is not error output
+  local left
+  left=$(ls -A "$dir")
+  if [[ $code -ne 0 && $code -lt 128 && $(printf '%s' "$stderr" | grep -c '') -eq 1 && "$stderr" == *"$expected"* && -z "$left" ]]; then
+    echo "ok   $name: $stderr"; passed=$((passed + 1))
+  else
+    echo "FAIL $name (exit $code): $stderr; left: $left"; failures=$((failures + 1))
+  fi
+}
+limited() { (ulimit -f 4; "$tool" "$@"); }  # 4 KiB a file: the images written here are larger
+expect_clean_failure render-disk-full "out.png: cannot write (File too large)" limited render -o out.png --width 320 --height 240
+expect_clean_failure render-sequence-disk-full "cannot write (File too large)" limited render -o 'f%d.png' --frames 3 --width 320 --height 240
+expect_clean_failure compare-disk-full "cannot write (File too large)" limited compare -o cmp --width 320 --height 240 --samples 1
+expect_clean_failure bench-disk-full "cannot write (File too large)" limited bench -o b --frames 1 --warmup 0 --width 160 --height 120 --samples 1
+
+# An interrupt (SIGTERM, SIGINT) stops a run at its next frame as an error:
+# the frames written so far under temporary names are removed.
+(cd "$work" && mkdir -p interrupted && cd interrupted && exec "$tool" render -o 'f%05d.png' --frames 100000 --width 32 --height 24) 2> "$work/interrupted.err" &
+pid=$!
+sleep 3
+kill -TERM "$pid"
+wait "$pid"
+code=$?
+if [[ $code -ne 0 && $code -lt 128 && "$(cat "$work/interrupted.err")" == *"interrupted (SIGTERM)"* && -z "$(ls -A "$work/interrupted")" ]]; then
+  echo "ok   render-interrupted: $(cat "$work/interrupted.err")"; passed=$((passed + 1))
+else
+  echo "FAIL render-interrupted (exit $code): $(cat "$work/interrupted.err"); left: $(ls -A "$work/interrupted" | head -3)"; failures=$((failures + 1))
+fi
+
+# What a killed run left (its process is gone) is removed by the next run
+# to the same output, even one that then fails; a live process's stays.
+true & dead=$!
+wait "$dead"
+mkdir -p "$work/stale" "$work/stale/b.partial-$dead"
+touch "$work/stale/out.png.pending-$dead" "$work/stale/out.png.pending-$dead.partial-$dead" "$work/stale/out.png.pending-$$"
+(cd "$work/stale" && "$tool" render -o out.png --width 32 --height 24 >/dev/null 2>&1)
+(cd "$work/stale" && "$tool" bench nope.json -o b >/dev/null 2>&1)
+left=$(cd "$work/stale" && ls -A | sort | tr '\n' ' ')
+if [[ "$left" == "out.png out.png.pending-$$ " ]]; then
+  echo "ok   stale-temporaries-removed"; passed=$((passed + 1))
+else
+  echo "FAIL stale-temporaries-removed: left $left"; failures=$((failures + 1))
+fi
 
 echo "$passed passed, $failures failed"
 [[ $failures -eq 0 ]]

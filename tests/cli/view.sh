@@ -45,6 +45,11 @@ printf 'set lights[0].shadow.technique="map"\ncompare cmp\nshow-density\nshow-li
 grep -q "^compare: light 0 " out4.txt && [[ -s cmp/error-0.png && -s e.png ]] || { echo "no comparison from the viewer: $(cat out4.txt err.txt)"; exit 1; }
 "$tool" compare "$src/scenes/spot-objects.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' -o cli >/dev/null || exit 1
 cmp -s cmp/error-0.png cli/error-0.png || { echo "the viewer's error image differs from compare's"; exit 1; }
+# --frames ends the run only once the comparison the script asked for is written.
+mkdir cmp2
+printf 'compare cmp2\n' > steps5.txt
+"$tool" view "$src/scenes/spot-objects.json" --width 320 --height 180 --frames 1 --script steps5.txt >out5.txt 2>err.txt || { echo "compare before --frames: $(cat err.txt)"; exit 1; }
+[[ -s cmp2/error-0.png ]] || { echo "--frames 1 dropped the script's comparison: $(cat out5.txt err.txt)"; exit 1; }
 # The texel-density tint and the frustums change the picture right of the panel.
 "$tool" render "$src/scenes/spot-objects.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' -o re.png >/dev/null || exit 1
 tinted=$("$diff" e.png re.png --from-x $panel)

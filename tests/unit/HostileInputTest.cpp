@@ -6,6 +6,7 @@
 #include "scene/MeshFile.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
 #include <shadowlab/Image.h>
 #include <shadowlab/SceneFile.h>
 
@@ -13,7 +14,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -175,6 +179,43 @@ TEST(HostileInput, WritePngOntoADirectoryNamesTheRealError) {
     fs::remove_all(dir);
     EXPECT_NE(message.find(": cannot write ("), std::string::npos) << message;
     EXPECT_EQ(message.find("Success"), std::string::npos) << message;
+}
+
+// A write that fails part way (a full disk; here the file-size limit, which
+// fails the same calls) throws naming the file and the reason, and leaves
+// neither the file nor a temporary. SIGXFSZ is ignored as the tool does.
+TEST(HostileInput, AWriteThatFailsPartWayLeavesNothing) {
+    const fs::path dir = fs::temp_directory_path() / ("shadowlab-hostile-full-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    fs::create_directories(dir);
+    const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit previous{};
+    getrlimit(RLIMIT_FSIZE, &previous);
+    rlimit limited = previous;
+    limited.rlim_cur = 4096;
+    setrlimit(RLIMIT_FSIZE, &limited);
+    const std::string message = errorOf([&] { writeFileAtomically(dir / "big.json", std::string(100000, 'x')); });
+    setrlimit(RLIMIT_FSIZE, &previous);
+    std::signal(SIGXFSZ, previousHandler);
+    EXPECT_NE(message.find("big.json: cannot write (File too large)"), std::string::npos) << message;
+    EXPECT_TRUE(fs::is_empty(dir)) << "a temporary or a truncated file is left";
+    fs::remove_all(dir);
+}
+
+// Numbers in messages read back as the value given: no 300 digits for
+// 1e300, no "1" for 1.0000001, a float's shortest text for a float.
+TEST(Text, NumbersInMessagesAreShortAndExact) {
+    EXPECT_EQ(text::numberText(1e300), "1e+300");
+    EXPECT_EQ(text::numberText(1.0000001), "1.0000001");
+    EXPECT_EQ(text::numberText(static_cast<double>(0.3f)), "0.3");
+    EXPECT_EQ(text::numberText(16385.0), "16385");
+    EXPECT_EQ(text::numberText(-2.5), "-2.5");
+}
+
+// A value a 32-bit float cannot hold is quoted as written, not as the 0 it became.
+TEST(HostileInput, AnUnderflowingSizeIsQuotedAsWritten) {
+    const std::string message = errorOf(
+        [&] { parseScene(R"({"nodes": [{"shape": {"type": "sphere", "radius": 1e-50}}]})", "scene.json", ".", {}); });
+    EXPECT_NE(message.find("nodes[0].shape.radius: expected a number > 0, got 1e-50 (0 as a 32-bit float)"), std::string::npos) << message;
 }
 
 TEST(Text, EscapesControlCharactersAndInvalidUtf8Once) {

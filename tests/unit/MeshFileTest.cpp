@@ -415,9 +415,10 @@ TEST_F(MeshFileTest, ObjOutOfRangeIndicesAreErrors) {
 
 TEST_F(MeshFileTest, ObjNonFiniteNumbersAreErrors) {
     expectError([&] { shadowlab::loadObj(write("nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); },
-                {"nan.obj:1:", "non-finite number 'nan' after 'v'"});
-    expectError([&] { shadowlab::loadObj(write("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n")); }, {"inf.obj:3:", "non-finite"});
-    expectError([&] { shadowlab::loadObj(write("huge.obj", "v 0 0 0\nv 1e999 0 0\n")); }, {"huge.obj:2:", "non-finite"});
+                {"nan.obj:1:", "number 'nan' after 'v' is not finite"});
+    expectError([&] { shadowlab::loadObj(write("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n")); }, {"inf.obj:3:", "is not finite or past a 32-bit float's range"});
+    expectError([&] { shadowlab::loadObj(write("huge.obj", "v 0 0 0\nv 1e999 0 0\n")); }, {"huge.obj:2:", "is not finite or past a 32-bit float's range"});
+    expectError([&] { shadowlab::loadObj(write("float-range.obj", "v 1e39 0 0\n")); }, {"float-range.obj:1:", "past a 32-bit float's range (about 3.4e38)"});
     expectError([&] { shadowlab::loadObj(write("vn_nan.obj", "vn 0 NaN 1\n")); }, {"vn_nan.obj:1:", "after 'vn'"});
 }
 

@@ -1,0 +1,15 @@
+#pragma once
+// Interrupts (SIGINT, SIGTERM, SIGHUP): the first one asks the run to stop
+// at its next check, where it throws like any other error, so that what it
+// has half written is removed on the way out; a second one ends the process
+// at once. A file past the size limit (SIGXFSZ) fails its write instead of
+// ending the process, so the write's error names the file.
+
+namespace shadowlab::tool {
+
+/// Installs the handlers (once, at the start of main).
+void installInterruptHandlers();
+/// Throws Error "interrupted (SIGNAL)" once an interrupt came.
+void throwIfInterrupted();
+
+} // namespace shadowlab::tool

@@ -1,0 +1,22 @@
+#pragma once
+// Writing a file whole or not at all: the bytes go to a temporary file
+// beside it, checked to the last byte and through the close (a full disk
+// shows there), and only then is it renamed into place.
+#include <shadowlab/Export.h>
+
+#include <filesystem>
+#include <string_view>
+
+namespace shadowlab {
+
+/// Writes `bytes` to `path` whole, or throws shadowlab::Error naming `path`
+/// and the reason ("PATH: cannot write (No space left on device)") and
+/// leaves neither `path` changed nor a temporary behind.
+SHADOWLAB_API void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
+
+/// Removes what killed processes left beside `target`: the files and
+/// directories named `TARGET.TAG-PID` (and `TARGET.TAG-PID.partial-PID`)
+/// whose process is gone. Those of a process still running stay.
+SHADOWLAB_API void removeStaleTemporaries(const std::filesystem::path& target, std::string_view tag);
+
+} // namespace shadowlab

@@ -1,0 +1,72 @@
+#include <shadowlab/FileWrite.h>
+
+#include <shadowlab/Error.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include <signal.h>
+#include <unistd.h>
+
+namespace shadowlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Whether `digits` names a process that is gone (not this one).
+bool deadProcess(const std::string& digits) {
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    return pid != getpid() && kill(pid, 0) != 0 && errno == ESRCH;
+}
+
+} // namespace
+
+void removeStaleTemporaries(const fs::path& target, std::string_view tag) {
+    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    const std::string prefix = target.filename().string() + "." + std::string(tag) + "-";
+    std::error_code ec;
+    for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.rfind(prefix, 0) != 0) continue;
+        std::string digits = name.substr(prefix.size());
+        if (const std::size_t inner = digits.find(".partial-"); inner != std::string::npos) digits.resize(inner);
+        if (!deadProcess(digits)) continue;
+        std::error_code removeError;
+        fs::remove_all(it->path(), removeError);
+    }
+}
+
+void writeFileAtomically(const fs::path& path, std::string_view bytes) {
+    const auto fail = [&](const std::string& reason) { return Error(path.string() + ": cannot write (" + reason + ")"); };
+    std::error_code ec;
+    const fs::path dir = path.parent_path();
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+        throw fail("directory " + dir.string() + (ec ? ": " + ec.message() : " does not exist"));
+    if (fs::is_directory(path, ec)) throw fail("a directory of that name is in the way");
+    removeStaleTemporaries(path, "partial");
+    fs::path tmp = path;
+    tmp += ".partial-" + std::to_string(getpid());
+    std::FILE* file = std::fopen(tmp.string().c_str(), "wb");
+    if (!file) throw fail(std::strerror(errno));
+    int error = 0;
+    if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size()) error = errno ? errno : EIO;
+    if (std::fflush(file) != 0 && !error) error = errno ? errno : EIO;
+    if (std::fclose(file) != 0 && !error) error = errno ? errno : EIO;
+    if (error) {
+        fs::remove(tmp, ec);
+        throw fail(std::strerror(error));
+    }
+    fs::rename(tmp, path, ec);
+    if (ec) {
+        std::error_code ignored;  // removing the temporary must not overwrite the rename's error
+        fs::remove(tmp, ignored);
+        throw fail(ec.message());
+    }
+}
+
+} // namespace shadowlab
