@@ -3,6 +3,7 @@
 // Every index, offset, stride and count read from the file is checked in
 // overflow-safe arithmetic before any byte is read; the node graph is walked
 // with an explicit stack, so a deep hierarchy cannot overflow the call stack.
+#include "scene/GltfSchema.h"
 #include "scene/MeshFile.h"
 
 #include <shadowlab/Text.h>
@@ -539,6 +540,7 @@ ImportedModel parseGltf(const std::string& bytes, const std::string& file, const
     if (bytes.size() > std::numeric_limits<unsigned int>::max()) throw Error(file + ": larger than 4 GB");
     if (text::jsonDepth(jsonPart(bytes, binary)) > text::kMaxJsonDepth)
         throw Error(file + ": JSON nested deeper than " + std::to_string(text::kMaxJsonDepth) + " levels");
+    checkGltfTypes(jsonPart(bytes, binary), file);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&loadImageChecked, nullptr);
     loader.SetFsCallbacks({&fileExists, &tinygltf::ExpandFilePath, &readWholeFileChecked, &tinygltf::WriteWholeFile, nullptr});

@@ -503,6 +503,14 @@ TEST_F(MeshFileTest, GltfMaterialValuesOutOfRangeAreRefused) {
          "materials[0].pbrMetallicRoughness.baseColorFactor[3]: expected a number in 0..1, got 2"},
         {R"({"pbrMetallicRoughness": {"baseColorFactor": [-0.5, 0.5, 0.5, 1.0]}})",
          "materials[0].pbrMetallicRoughness.baseColorFactor[0]: expected a number in 0..1, got -0.5"},
+        // Wrong types, which the glTF loader kept its defaults for without a word.
+        {R"({"alphaMode": 3})", "materials[0].alphaMode: expected \"OPAQUE\", \"MASK\" or \"BLEND\", got 3"},
+        {R"({"alphaMode": "MASK", "alphaCutoff": "half"})", "materials[0].alphaCutoff: expected a number in 0..1, got \"half\""},
+        {R"({"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5]}})",
+         "materials[0].pbrMetallicRoughness.baseColorFactor: expected 4 numbers, got [0.5,0.5,0.5]"},
+        {R"({"pbrMetallicRoughness": {"baseColorFactor": "red"}})", "materials[0].pbrMetallicRoughness.baseColorFactor: expected 4 numbers"},
+        {R"({"pbrMetallicRoughness": {"baseColorFactor": [1e300, 0.5, 0.5, 1.0]}})",
+         "materials[0].pbrMetallicRoughness.baseColorFactor[0]: expected a number in 0..1, got 1e+300"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.material);
@@ -514,6 +522,34 @@ TEST_F(MeshFileTest, GltfMaterialValuesOutOfRangeAreRefused) {
         } catch (const shadowlab::Error& e) {
             const std::string what = e.what();
             EXPECT_NE(what.find("bad-material.gltf: "), std::string::npos) << what;
+            EXPECT_NE(what.find(c.expected), std::string::npos) << what;
+        }
+    }
+}
+
+// A node's transform of the wrong shape is refused (the loader took it as
+// the identity, or as no transform at all).
+TEST_F(MeshFileTest, GltfNodeTransformsOfTheWrongShapeAreRefused) {
+    const struct {
+        const char* node;
+        const char* expected;
+    } cases[] = {
+        {R"({"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,"x"]})", "nodes[0].matrix[15]: expected a number, got \"x\""},
+        {R"({"mesh": 0, "matrix": [1,0,0,0]})", "nodes[0].matrix: expected 16 numbers"},
+        {R"({"mesh": 0, "translation": [1, 2]})", "nodes[0].translation: expected 3 numbers"},
+        {R"({"mesh": 0, "rotation": "none"})", "nodes[0].rotation: expected 4 numbers"},
+        {R"({"mesh": 0, "scale": [1, 1, null]})", "nodes[0].scale[2]: expected a number, got null"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.node);
+        const std::string nodes = std::string(R"("nodes": [)") + c.node + "]";
+        const fs::path p = write("bad-node.gltf", triangleGltf(dataUri(triangleBuffer().data), nodes));
+        try {
+            shadowlab::loadMeshFile(p);
+            ADD_FAILURE() << "accepted";
+        } catch (const shadowlab::Error& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("bad-node.gltf: "), std::string::npos) << what;
             EXPECT_NE(what.find(c.expected), std::string::npos) << what;
         }
     }

@@ -1,0 +1,55 @@
+// glTF fields the loader would take silently with a wrong type (GltfSchema.h).
+#include "scene/GltfSchema.h"
+
+#include <shadowlab/Error.h>
+#include <shadowlab/Text.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+
+namespace shadowlab {
+
+namespace {
+
+using nlohmann::json;
+
+// Fails unless `value` is an array of `count` numbers.
+void requireNumbers(const json& value, std::size_t count, const std::string& at) {
+    if (!value.is_array() || value.size() != count)
+        throw Error(at + ": expected " + std::to_string(count) + " numbers, got " + text::clipMiddle(value.dump(), 80));
+    for (std::size_t i = 0; i < count; ++i)
+        if (!value[i].is_number()) throw Error(at + "[" + std::to_string(i) + "]: expected a number, got " + text::clipMiddle(value[i].dump(), 80));
+}
+
+} // namespace
+
+void checkGltfTypes(std::string_view text, const std::string& file) {
+    const json root = json::parse(text.begin(), text.end(), nullptr, false);
+    if (root.is_discarded() || !root.is_object()) return;
+    if (const auto materials = root.find("materials"); materials != root.end() && materials->is_array()) {
+        for (std::size_t i = 0; i < materials->size(); ++i) {
+            const json& m = (*materials)[i];
+            if (!m.is_object()) continue;
+            const std::string at = file + ": materials[" + std::to_string(i) + "]";
+            if (const auto mode = m.find("alphaMode"); mode != m.end() && !mode->is_string())
+                throw Error(at + ".alphaMode: expected \"OPAQUE\", \"MASK\" or \"BLEND\", got " + text::clipMiddle(mode->dump(), 80));
+            if (const auto cutoff = m.find("alphaCutoff"); cutoff != m.end() && !cutoff->is_number())
+                throw Error(at + ".alphaCutoff: expected a number in 0..1, got " + text::clipMiddle(cutoff->dump(), 80));
+            if (const auto pbr = m.find("pbrMetallicRoughness"); pbr != m.end() && pbr->is_object())
+                if (const auto factor = pbr->find("baseColorFactor"); factor != pbr->end())
+                    requireNumbers(*factor, 4, at + ".pbrMetallicRoughness.baseColorFactor");
+        }
+    }
+    if (const auto nodes = root.find("nodes"); nodes != root.end() && nodes->is_array()) {
+        for (std::size_t i = 0; i < nodes->size(); ++i) {
+            const json& n = (*nodes)[i];
+            if (!n.is_object()) continue;
+            const std::string at = file + ": nodes[" + std::to_string(i) + "]";
+            for (const auto& [key, count] : {std::pair{"matrix", 16u}, std::pair{"translation", 3u}, std::pair{"rotation", 4u}, std::pair{"scale", 3u}})
+                if (const auto value = n.find(key); value != n.end()) requireNumbers(*value, count, at + "." + key);
+        }
+    }
+}
+
+} // namespace shadowlab
