@@ -62,6 +62,16 @@ void checkMemory(int width, int height) {
     if (needed > budget) refuse(width, height, needed, budget, what);
 }
 
+void checkReferenceRays(int width, int height, int samples) {
+    constexpr double kMaxRays = 2147483648.0;  // 2^31: about two minutes of tracing on two cores
+    const double rays = static_cast<double>(width) * static_cast<double>(height) * static_cast<double>(samples);
+    if (rays > kMaxRays) {
+        char text[160];
+        std::snprintf(text, sizeof text, "%.3g rays for each soft light's reference, more than the limit of 2^31 (lower --samples, --width or --height)", rays);
+        throw Error("--samples " + std::to_string(samples) + " at " + std::to_string(width) + "x" + std::to_string(height) + ": " + text);
+    }
+}
+
 void checkSize(int width, int height, const GlInfo& info) {
     const int limit = std::min({info.maxTextureSize, info.maxViewportWidth, info.maxViewportHeight});
     if (width > limit) throw Error("--width " + std::to_string(width) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");

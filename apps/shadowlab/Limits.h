@@ -12,6 +12,9 @@ namespace shadowlab::tool {
 /// SHADOWLAB_MEMORY_LIMIT_BYTES, when set, is the budget instead (the tests
 /// check this path with a small one). Throws Error naming --width --height.
 void checkMemory(int width, int height);
+/// Refuses a reference of more than 2^31 rays per soft light (--samples
+/// rays a pixel at width x height; about two minutes here), naming --samples.
+void checkReferenceRays(int width, int height, int samples);
 
 /// Refuses a frame past GL's limits (texture and viewport size) or whose
 /// estimated memory exceeds the device memory the driver reports

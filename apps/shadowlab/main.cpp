@@ -204,6 +204,7 @@ int runCompare(const CompareArgs& args) {
     const Scene scene = sceneAtTime(loadScene(args.scene, args.overrides), args.timeSeconds);
     const fs::path dir = tool::checkOutputDirectory(args.output);
     tool::checkMemory(args.width, args.height);
+    tool::checkReferenceRays(args.width, args.height, args.softSamples);
     Context context = Context::createHeadless();
     tool::checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
@@ -298,6 +299,7 @@ int runBenchCommand(const tool::BenchArgs& args) {
     }
     tool::checkOutputDirectory(args.output.string());
     tool::checkMemory(args.width, args.height);
+    tool::checkReferenceRays(args.width, args.height, args.softSamples);
     Context context = Context::createHeadless();
     tool::checkSize(args.width, args.height, context.info());
     // Everything is written into a staging directory beside the output and

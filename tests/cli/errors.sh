@@ -318,6 +318,9 @@ PROGRESS_OK=1 expect_error vary-holding-key "--vary lights[0].shadow.technique=p
 PROGRESS_OK=1 expect_error vary-value-twice "--vary lights[0].intensity=1,1: the value 1 is given twice" bench -o outdir --vary lights[0].intensity=1,1
 PROGRESS_OK=1 expect_error vary-and-set "--vary lights[0].intensity=1,2: lights[0].intensity is also set by --set lights[0].intensity=5" bench -o outdir --set lights[0].intensity=5 --vary lights[0].intensity=1,2
 PROGRESS_OK=1 expect_error bench-check-names-scene "cascades are for directional lights; a spot or point light takes one map (cascades 1) (bench: $src/scenes/spot-objects.json, --vary lights[0].shadow.map.cascades=4)" bench "$src/scenes/two-boxes-sun.json" "$src/scenes/spot-objects.json" -o outdir --set lights[0].shadow.technique=map --vary lights[0].shadow.map.cascades=1,4
+# The reference's rays are bounded: --samples 65536 at 1920x1080 traced for many minutes.
+expect_error compare-too-many-rays "--samples 65536 at 1920x1080: 1.36e+11 rays for each soft light's reference, more than the limit of 2^31" compare -o cmpdir --samples 65536 --width 1920 --height 1080
+expect_error bench-too-many-rays "--samples 65536 at 512x512: 1.72e+10 rays" bench -o outdir --samples 65536 --width 512 --height 512
 expect_error bench-output-cannot-be-made "-o /proc/shadowlab-bench: cannot create the directory" bench -o /proc/shadowlab-bench "${bench_small[@]}"
 # bench says what the techniques noticed (a planar light with nothing planar to fall on) and keeps it in the row.
 printf '{"lights":[{"type":"directional","shadow":{"technique":"planar"}}],"nodes":[{"name":"ball","shape":{"type":"sphere"},"translation":[0,2,0]}]}' > "$work/planar-none.json"
