@@ -548,6 +548,9 @@ int main(int argc, char** argv) {
             message = (f->path1().empty() ? std::string("a file") : f->path1().string()) + ": " + f->code().message();
         if (*render) message = withValueSource(message, renderArgs.scene.empty() ? "the default scene" : renderArgs.scene, renderArgs.overrides);
         if (*compare) message = withValueSource(message, compareArgs.scene.empty() ? "the default scene" : compareArgs.scene, compareArgs.overrides);
+#if SHADOWLAB_VIEWER
+        if (*view) message = withValueSource(message, viewArgs.scene.empty() ? "the default scene" : viewArgs.scene, viewArgs.overrides);
+#endif
         // Escaped once more here: whatever a message quotes, it stays one line.
         std::cerr << "shadowlab: error: " << text::escapeControl(text::clipMiddle(message)) << "\n";
         return 1;

@@ -66,7 +66,7 @@ expect_error set-bad-path "--set lights[3].intensity=2: index 3 out of range" re
 expect_error set-bad-value "--set lights[0].intensity=bright: lights[0].intensity: expected a number, got a string" render -o out.png --set 'lights[0].intensity=bright'
 expect_error set-unknown-key "--set camera.fov=30: camera.fov: unknown key" render -o out.png --set camera.fov=30
 expect_error set-no-value "--set camera: expected key=value" render -o out.png --set camera
-expect_error map-past-budget "lights[0].shadow.map.size: the shadow maps of 1 light(s) need 2.00 GiB, more than the budget of 1 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set 'lights[0].shadow.map.format="rgba8"'
+expect_error map-past-budget "lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB, more than the budget of 1 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set 'lights[0].shadow.map.format="rgba8"'
 expect_error map-size-range "--set lights[0].shadow.map.size=16385: lights[0].shadow.map.size: expected an integer in 16..16384, got 16385" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16385
 # The names come from the filters' table (src/techniques/map/MapFilters.cpp): the list's start, and what was given.
 expect_error map-bad-filter "--set lights[0].shadow.map.filter=pcf: lights[0].shadow.map.filter: expected one of \"none\", \"hardware\", \"grid\"" render -o out.png --set lights[0].shadow.map.filter=pcf
@@ -100,15 +100,18 @@ expect_error frame-width-999 "-o f%999d.png: the frame number's width is 999 (at
 expect_error frame-width-left-999 "-o f%-999d.png: the frame number's width is 999 (at most 20)" render -o 'f%-999d.png' --frames 2
 if compgen -G "$work/f*.png" >/dev/null; then echo "FAIL frame-width: left $(cd "$work" && echo f*.png)"; failures=$((failures + 1)); fi
 # Render-time errors name where the value came from: the --set, else the scene file.
-expect_error budget-from-set "--set lights[0].shadow.map.size=16384: lights[0].shadow.map.size: the shadow maps of 1 light(s) need 8.00 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set lights[0].shadow.map.cascades=8
+expect_error budget-from-set "--set lights[0].shadow.map.cascades=8: lights[0].shadow.map: the shadow maps of 1 light(s) need 8.00 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set lights[0].shadow.map.cascades=8
 expect_error planar-receivers-from-set "--set lights[0].shadow.planar.receivers=nope: lights[0].shadow.planar.receivers: no node named 'nope'" render -o out.png --set lights[0].shadow.technique=planar --set lights[0].shadow.planar.receivers=nope
 expect_error planar-receivers-from-file "planar-nope.json: lights[0].shadow.planar.receivers: no node named 'nope'" render planar-nope.json -o out.png
 expect_error splits-beyond-far "--set lights[0].shadow.map.cascadeSplits=\"500\": lights[0].shadow.map.cascadeSplits: \"500\": the last split must lie before the camera's far plane (camera.far 100)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="500"'
 expect_error splits-inside-near "the first split must lie beyond the camera's near plane (camera.near 0.1)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="0.01"'
 # The map budget counts translucent casters' transmittance and mip chains, and names the light that holds the memory.
-expect_error budget-translucent "lights[0].shadow.map.size: the shadow maps of 1 light(s) need 3.00 GiB" render "$src/scenes/glass-panel.json" -o out.png --set 'materials.glass.alphaMode="blend"' --set lights[0].shadow.map.size=16384
-expect_error budget-mipmaps "lights[0].shadow.map.size: the shadow maps of 1 light(s) need 2.58 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.representation=evsm4 --set lights[0].shadow.map.mipmaps=true --set lights[0].shadow.map.size=8192
-expect_error budget-names-the-light "lights[1].shadow.map.size: the shadow maps of 2 light(s) need 2.00 GiB" render -o out.png --set 'lights=[{"type":"directional","direction":[0,-1,0.3],"shadow":{"technique":"map","map":{"size":512}}},{"type":"directional","direction":[0,-1,0.2],"shadow":{"technique":"map","map":{"size":16384,"cascades":2}}}]'
+# The file's size alone fits; a --set of cascades takes it past the budget: the --set is named, not the file.
+printf '{"lights":[{"type":"directional","shadow":{"technique":"map","map":{"size":8192,"cascades":2}}}],"nodes":[{"shape":{"type":"box"}}]}' > "$work/fits.json"
+expect_error budget-from-set-over-file "--set lights[0].shadow.map.cascades=8: lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB" render fits.json -o out.png --set lights[0].shadow.map.cascades=8
+expect_error budget-translucent "lights[0].shadow.map: the shadow maps of 1 light(s) need 3.00 GiB" render "$src/scenes/glass-panel.json" -o out.png --set 'materials.glass.alphaMode="blend"' --set lights[0].shadow.map.size=16384
+expect_error budget-mipmaps "lights[0].shadow.map: the shadow maps of 1 light(s) need 2.58 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.representation=evsm4 --set lights[0].shadow.map.mipmaps=true --set lights[0].shadow.map.size=8192
+expect_error budget-names-the-light "lights[1].shadow.map: the shadow maps of 2 light(s) need 2.00 GiB" render -o out.png --set 'lights=[{"type":"directional","direction":[0,-1,0.3],"shadow":{"technique":"map","map":{"size":512}}},{"type":"directional","direction":[0,-1,0.2],"shadow":{"technique":"map","map":{"size":16384,"cascades":2}}}]'
 # A combination check names the option at fault and the --set that set it, not the technique.
 expect_error splits-order-blames-splits "--set lights[0].shadow.map.cascadeSplits=\"5 3\": lights[0].shadow.map.cascadeSplits: map: cascadeSplits \"5 3\": expected increasing distances > 0" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=3 --set 'lights[0].shadow.map.cascadeSplits="5 3"'
 expect_error moments-filter-blames-filter "--set lights[0].shadow.map.filter=pcss: lights[0].shadow.map.filter: map: filter \"pcss\": a moment map" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.representation=vsm --set lights[0].shadow.map.filter=pcss
@@ -187,7 +190,7 @@ expect_dir_error compare-output-is-file "-o malformed.json: exists and is not a 
 expect_dir_error bench-missing-scene "nope.json: file not found" bench nope.json -o outdir
 expect_dir_error bench-bad-vary "--vary lights[0].intensity: expected key=value1,value2" bench -o outdir --vary 'lights[0].intensity'
 # A run that fails mid-bench names its scene and combination (its maps pass the load, not the memory budget).
-PROGRESS_OK=1 expect_dir_error bench-run-names-combination "bench run 2/2 ($src/scenes/two-boxes-sun.json, --vary lights[0].shadow.map.size=16384): lights[0].shadow.map.size: the shadow maps of 1 light(s) need" \
+PROGRESS_OK=1 expect_dir_error bench-run-names-combination "bench run 2/2 ($src/scenes/two-boxes-sun.json, --vary lights[0].shadow.map.size=16384): lights[0].shadow.map: the shadow maps of 1 light(s) need" \
   bench "$src/scenes/two-boxes-sun.json" -o outdir --frames 1 --warmup 0 --width 32 --height 32 --set lights[0].shadow.technique=map --set 'lights[0].shadow.map.format="rgba8"' --vary lights[0].shadow.map.size=64,16384
 expect_dir_error bench-vary-bad-value "--vary lights[0].intensity=abc: lights[0].intensity: expected a number" bench -o outdir --vary 'lights[0].intensity=1,abc'
 expect_dir_error bench-vary-empty-value "--vary lights[0].intensity=1,,2: empty value" bench -o outdir --vary 'lights[0].intensity=1,,2'

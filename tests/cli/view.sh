@@ -67,6 +67,9 @@ sleep 1; echo '{ "nodes": [ broken' > live.json
 sleep 1; cp "$src/scenes/torus-floating.json" live.json; touch live.json
 wait $viewer || { echo "the viewer died on a broken scene file: $(cat err.txt)"; exit 1; }
 [[ -s d.png ]] || { echo "no screenshot after the repair"; exit 1; }
+# An error raised once the scene is drawn names where its value came from, as render's does.
+if "$tool" view --frames 2 --set lights[0].shadow.technique=planar --set lights[0].shadow.planar.receivers=nope >/dev/null 2>err.txt; then echo "a missing planar receiver accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--set lights\[0\].shadow.planar.receivers=nope: lights\[0\].shadow.planar.receivers: no node named 'nope'" err.txt || { echo "viewer error without its source: $(cat err.txt)"; exit 1; }
 # A bad script is a one-line error before any window.
 printf 'jump 3\n' > bad.txt
 if "$tool" view --script bad.txt 2>err.txt; then echo "bad script accepted"; exit 1; fi

@@ -75,7 +75,8 @@ void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<Arr
                  std::size_t lightCount, bool translucent) {
     constexpr double kMapBudgetBytes = 1024.0 * 1024.0 * 1024.0;
     double bytes = 0.0, largest = -1.0;
-    int largestLight = 0;
+    int largestLight = 0, largestLayers = 0;
+    ArrayKey largestKey;
     for (const auto& wanted : layersWanted) {
         const ArrayKey& key = wanted.first;
         const int perLight = key.cube ? 6 : 1;
@@ -85,6 +86,8 @@ void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<Arr
         if (these > largest) {
             largest = these;
             largestLight = firstLight;
+            largestKey = key;
+            largestLayers = wanted.second * perLight;
         }
         if (wanted.second * perLight > info.maxArrayLayers)
             throw Error("lights[" + std::to_string(firstLight) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
@@ -92,10 +95,14 @@ void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<Arr
                         "), past this GPU's limit of " + std::to_string(info.maxArrayLayers) + " layers");
     }
     if (bytes > kMapBudgetBytes) {
-        char text[256];
-        std::snprintf(text, sizeof text, "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB (lower lights[i].shadow.map.size, or set technique \"none\" on lights that need no shadow)",
-                      lightCount, bytes / kMapBudgetBytes);
-        throw Error("lights[" + std::to_string(largestLight) + "].shadow.map.size: " + text);
+        // Named at the map block of the light whose array takes the most, so
+        // that the source named is whichever set its size, cascades or
+        // format (a --set of cascades on a file's size, say).
+        char text[400];
+        std::snprintf(text, sizeof text,
+                      "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB (the largest array, from this light: %d layer(s) of %d^2, %.2f GiB; lower lights[i].shadow.map.size or cascades, or set technique \"none\" on lights that need no shadow)",
+                      lightCount, bytes / kMapBudgetBytes, largestLayers, largestKey.size, largest / kMapBudgetBytes);
+        throw Error("lights[" + std::to_string(largestLight) + "].shadow.map: " + text);
     }
 }
 
