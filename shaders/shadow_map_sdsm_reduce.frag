@@ -2,13 +2,13 @@
 // of the points the camera sees (Lauritzen et al., "Sample Distribution
 // Shadow Maps", 2011), reduced by blocks: each fragment of a target
 // kBlock x kBlock times smaller than the frame bounds its block of the
-// depth pre-pass (MapSdsm), each covered pixel taken from window depth back
-// to the world and into the light's view, and writes the block's lowest
-// (location 0) and highest (location 1) corner, w = 1 if any pixel was
-// covered. (Surfaces that receive no shadow count too: their points only
+// depth pre-pass (MapSdsm): the covered pixels' depth range, its box in
+// window space taken back to the world and into the light's view, and
+// writes the block's lowest (location 0) and highest (location 1) corner,
+// w = 1 if any pixel was covered. (Surfaces that receive no shadow count too: their points only
 // widen the bounds.) MapSdsm merges the blocks.
 #include "shadowlab_shared.h"
-const int kBlock = 4;  // MapSdsm::kBlock
+const int kBlock = 8;  // MapSdsm::kBlock
 
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D sdsmDepth;
 // Light view from (pixel x, pixel y, window depth, 1): the light's view
@@ -21,20 +21,37 @@ layout(location = 0) out vec4 outLo;
 layout(location = 1) out vec4 outHi;
 
 void main() {
+    // The block's nearest and farthest window depth (four gathers of 2x2
+    // texels; clamped at the frame's edge), then the light-view box of the
+    // eight corners of its window-space box: the map from window to light
+    // is projective, so the box of those corners holds every point of the
+    // block (a little more, where the block's depths differ).
     ivec2 origin = ivec2(gl_FragCoord.xy) * kBlock;
-    vec3 lo = vec3(3.0e38), hi = vec3(-3.0e38);
-    float any = 0.0;
-    for (int j = 0; j < kBlock; ++j)
-        for (int i = 0; i < kBlock; ++i) {
-            ivec2 p = min(origin + ivec2(i, j), viewport - 1);
-            float d = texelFetch(sdsmDepth, p, 0).r;
-            vec4 h = lightFromWindow * vec4(vec2(p) + 0.5, d, 1.0);
-            vec3 light = h.xyz / h.w;
-            bool covered = d < 1.0;
-            lo = covered ? min(lo, light) : lo;
-            hi = covered ? max(hi, light) : hi;
-            any = covered ? 1.0 : any;
+    vec2 texel = 1.0 / vec2(viewport);
+    float dmin = 1.0, dmax = 0.0;
+    for (int j = 0; j < kBlock; j += 2)
+        for (int i = 0; i < kBlock; i += 2) {
+            vec4 d = textureGather(sdsmDepth, (vec2(origin + ivec2(i, j)) + 1.0) * texel, 0);
+            // Uncovered pixels (depth 1) count for neither end.
+            vec4 covered = step(d, vec4(0.99999994));
+            dmin = min(dmin, min(min(d.x, d.y), min(d.z, d.w)));
+            vec4 far = d * covered;
+            dmax = max(dmax, max(max(far.x, far.y), max(far.z, far.w)));
         }
-    outLo = vec4(lo, any);
-    outHi = vec4(hi, any);
+    if (dmin >= 1.0) {
+        outLo = vec4(0.0);
+        outHi = vec4(0.0);
+        return;
+    }
+    vec2 first = vec2(origin) + 0.5, last = min(vec2(origin + (kBlock - 1)), vec2(viewport - 1)) + 0.5;
+    vec3 lo = vec3(3.0e38), hi = vec3(-3.0e38);
+    for (int c = 0; c < 8; ++c) {
+        vec3 w = vec3((c & 1) != 0 ? last.x : first.x, (c & 2) != 0 ? last.y : first.y, (c & 4) != 0 ? dmax : dmin);
+        vec4 h = lightFromWindow * vec4(w, 1.0);
+        vec3 light = h.xyz / h.w;
+        lo = min(lo, light);
+        hi = max(hi, light);
+    }
+    outLo = vec4(lo, 1.0);
+    outHi = vec4(hi, 1.0);
 }

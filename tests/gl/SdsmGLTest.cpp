@@ -81,6 +81,33 @@ TEST_F(SdsmGLTest, FourSdsmCascadesHoldTheFieldAsWellAsTightOnes) {
     EXPECT_LE(awayFromEdges(sdsm.lights[0]), awayFromEdges(tight.lights[0]));
 }
 
+// A mesh of more triangles than SampleBounds::kBoxedTriangles (a sphere of
+// 128 x 64 segments, 16k triangles, 3 m across, shadowing itself and the
+// ground) is left out of the pre-pass; its box, cut to the view's, joins
+// the bounds instead, and the ground behind it is sampled too. The fit
+// must still hold the wall scene's bars (at most 0.05 % away from the
+// band, no worse than tight, a p95 footprint no larger). This scene does
+// not need the box in the bounds (the ground around the ball and the
+// casters over it already span it); the box is there for a large mesh
+// that is the nearest or farthest thing seen.
+TEST_F(SdsmGLTest, ALargeMeshLeftOutOfThePrePassStaysInsideTheFit) {
+    const std::string scene = R"({
+      "camera": { "position": [0, 1.7, 0], "target": [0, 0.9, -10], "fovY": 60, "near": 0.1, "far": 150 },
+      "lights": [ { "type": "directional", "direction": [0.5, -0.6, -0.4], "shadow": { "technique": "map" } } ],
+      "nodes": [
+        { "name": "ground", "shape": { "type": "plane", "size": [200, 200] }, "translation": [0, 0, -90] },
+        { "name": "wall", "shape": { "type": "box", "size": [60, 6, 0.5] }, "translation": [0, 3, -12] },
+        { "name": "ball", "shape": { "type": "sphere", "radius": 1.5, "segments": 128, "rings": 64 }, "translation": [0.5, 1.5, -7] }
+      ]
+    })";
+    const Comparison tight = compareScene(sceneOf(scene), 800, 600);
+    const Comparison sdsm = compareScene(sceneOf(scene, {"lights[0].shadow.map.fit=\"sdsm\""}), 800, 600);
+    ASSERT_GT(sdsm.lights[0].referenceShadowedPixels, 5000u) << "the ball's shadows must be in view";
+    EXPECT_LE(awayFromEdges(sdsm.lights[0]), 0.0005);
+    EXPECT_LE(awayFromEdges(sdsm.lights[0]), awayFromEdges(tight.lights[0]) + 0.0001);
+    EXPECT_LE(sdsm.lights[0].texelFootprintP95, tight.lights[0].texelFootprintP95);
+}
+
 // Spot and point lights are refused in one line naming the option.
 TEST_F(SdsmGLTest, SpotLightsAreRefused) {
     const std::string spot = R"({ "lights": [ { "type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0],

@@ -19,6 +19,11 @@ void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame, std::uin
         size_ = frame.viewport;
         depth_ = gl::Texture(GL_TEXTURE_2D);
         glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size_.x, size_.y);
+        // The reduction gathers 2x2 texels: past the frame's edge, the edge.
+        glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         fbo_ = gl::Framebuffer();
         glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
         glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
@@ -38,10 +43,20 @@ void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame, std::uin
         const int m = frame.items[i].material;
         return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Mask;
     };
-    // Only what may be in view.
+    // Only what may be in view; large meshes as their boxes (kBoxedTriangles).
     const auto seen = [&](std::size_t i) { return mayIntersect(frame.clipFromWorld, frame.itemBounds[i]); };
-    host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}}, std::string()}),
-                   [&](std::size_t i) { return !masked(i) && seen(i); });
+    const auto large = [&](std::size_t i) {
+        return frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount() > kBoxedTriangles;
+    };
+    boxed_.clear();
+    host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}}, std::string()}), [&](std::size_t i) {
+        if (masked(i) || !seen(i)) return false;
+        if (large(i)) {
+            boxed_.push_back(i);
+            return false;
+        }
+        return true;
+    });
     host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_sdsm.frag"}}, std::string()}),
                    [&](std::size_t i) { return masked(i) && seen(i); });
     drawnFor_ = frameNumber;
@@ -93,6 +108,21 @@ Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const g
             b.add(glm::vec3(lo[k]));
             b.add(glm::vec3(hi[k]));
         }
+    // The large meshes left out of the pre-pass: their boxes, cut to the view's.
+    if (!boxed_.empty()) {
+        const glm::mat4 worldFromClip = glm::inverse(frame.clipFromWorld);
+        Bounds view;
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec4 w = worldFromClip * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? 1.0f : -1.0f, 1.0f);
+            view.add(glm::vec3(lightFromWorld * glm::vec4(glm::vec3(w) / w.w, 1.0f)));
+        }
+        for (const std::size_t i : boxed_) {
+            Bounds box = frame.itemBounds[i].transformed(lightFromWorld);
+            box.lo = glm::max(box.lo, view.lo);
+            box.hi = glm::min(box.hi, view.hi);
+            if (!box.empty()) b.add(box);
+        }
+    }
     if (b.empty()) return b;
     // Reconstructed from depth where the light pass interpolates: a relative margin covers the rounding.
     const glm::vec3 margin(1e-4f * glm::length(b.size()));

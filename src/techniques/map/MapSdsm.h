@@ -14,7 +14,9 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace shadowlab::map {
 
@@ -27,16 +29,25 @@ public:
     /// the camera sees no receiver.
     Bounds reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld);
 
+    /// Meshes of more triangles than this are not drawn in the pre-pass:
+    /// their boxes, cut to the view's, join the bounds on the CPU instead
+    /// (every point of theirs the camera can see lies in both). Bounds that
+    /// way are never smaller than the points seen, a little larger where a
+    /// large mesh hid what lies behind it; the pre-pass, which the vertex
+    /// stage bounds on a large scene, then costs what the small meshes do.
+    static constexpr std::size_t kBoxedTriangles = 4096;
+
 private:
     gl::Texture depth_{gl::NoCreate};
     gl::Framebuffer fbo_{gl::NoCreate};
-    static constexpr int kBlock = 4;  ///< pixels per side of a block (shadow_map_sdsm_reduce.frag)
+    static constexpr int kBlock = 8;  ///< pixels per side of a block (shadow_map_sdsm_reduce.frag)
     gl::Texture lo_{gl::NoCreate}, hi_{gl::NoCreate};
     gl::Framebuffer reduceFbo_{gl::NoCreate};
     glm::ivec2 blocks_{0};
     glm::ivec2 size_{0};
     std::uint64_t drawnFor_ = ~std::uint64_t(0);
     glm::mat4 drawnFrom_{0.0f};  ///< the camera of the pre-pass drawn
+    std::vector<std::size_t> boxed_;  ///< items in view left out of the pre-pass (kBoxedTriangles)
 };
 
 } // namespace shadowlab::map
