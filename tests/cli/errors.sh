@@ -321,6 +321,11 @@ PROGRESS_OK=1 expect_error vary-holding-key "--vary lights[0].shadow.technique=p
 PROGRESS_OK=1 expect_error vary-value-twice "--vary lights[0].intensity=1,1: the value 1 is given twice" bench -o outdir --vary lights[0].intensity=1,1
 PROGRESS_OK=1 expect_error vary-and-set "--vary lights[0].intensity=1,2: lights[0].intensity is also set by --set lights[0].intensity=5" bench -o outdir --set lights[0].intensity=5 --vary lights[0].intensity=1,2
 PROGRESS_OK=1 expect_error bench-check-names-scene "cascades are for directional lights; a spot or point light takes one map (cascades 1) (bench: $src/scenes/spot-objects.json, --vary lights[0].shadow.map.cascades=4)" bench "$src/scenes/two-boxes-sun.json" "$src/scenes/spot-objects.json" -o outdir --set lights[0].shadow.technique=map --vary lights[0].shadow.map.cascades=1,4
+# Cascade splits: what is wrong with them, in the numbers as written and as the 32-bit floats they become.
+expect_error splits-past-float "cascadeSplits \"1e39\": expected increasing distances > 0; 1e39 is not finite or past a 32-bit float's range" render -o out.png --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="1e39"'
+expect_error splits-equal-as-floats "5.0000001 does not follow 5 (it is 5 as a 32-bit float)" render -o out.png --set lights[0].shadow.map.cascades=3 --set 'lights[0].shadow.map.cascadeSplits="5, 5.0000001"'
+printf '{"camera":{"far":50},"lights":[{"type":"directional","shadow":{"technique":"map","map":{"cascades":2,"cascadeSplits":"49.99999999"}}}]}' > "$work/split-far.json"
+expect_error splits-round-onto-far "split-far.json: lights[0].shadow.map.cascadeSplits: \"49.99999999\": the last split must lie before the camera's far plane (camera.far 50); as a 32-bit float it is 50" render split-far.json -o out.png
 # The reference's rays are bounded: --samples 65536 at 1920x1080 traced for many minutes.
 expect_error compare-too-many-rays "--samples 65536 at 1920x1080: 1.36e+11 rays for each soft light's reference, more than the limit of 2^31" compare -o cmpdir --samples 65536 --width 1920 --height 1080
 expect_error bench-too-many-rays "--samples 65536 at 512x512: 1.72e+10 rays" bench -o outdir --samples 65536 --width 512 --height 512

@@ -44,8 +44,12 @@ void checkSplitsInView(const MapOptions& o, const Light& light, const Camera& ca
     const std::string at = "lights[" + std::to_string(index) + "].shadow.map.cascadeSplits: \"" + text::escapeControl(o.cascadeSplits) + "\": ";
     if (splits.front() <= camera.nearPlane)
         throw Error(at + "the first split must lie beyond the camera's near plane (camera.near " + text::numberText(camera.nearPlane) + ")");
-    if (splits.back() >= camera.farPlane)
-        throw Error(at + "the last split must lie before the camera's far plane (camera.far " + text::numberText(camera.farPlane) + ")");
+    if (splits.back() >= camera.farPlane) {
+        // A split a hair under the far plane may round onto it as a 32-bit float.
+        const bool rounded = splits.back() == camera.farPlane;
+        throw Error(at + "the last split must lie before the camera's far plane (camera.far " + text::numberText(camera.farPlane) + ")" +
+                    (rounded ? "; as a 32-bit float it is " + text::numberText(splits.back()) : ""));
+    }
 }
 
 class ShadowMap final : public Technique {

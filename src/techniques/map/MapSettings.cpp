@@ -5,11 +5,14 @@
 #include "techniques/map/MapFilters.h"
 #include "shadow_map_shared.h"
 
+#include <shadowlab/Text.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <vector>
 
@@ -226,8 +229,19 @@ std::vector<float> parseSplits(const MapOptions& o, std::string& problem) {
         if (*at == '\0') break;
         char* end = nullptr;
         const float v = std::strtof(at, &end);
-        if (end == at || !std::isfinite(v) || v <= 0.0f || (!out.empty() && v <= out.back())) {
-            problem = "expected increasing distances > 0";
+        const std::string word(at, end == at ? std::strcspn(at, " \t") : static_cast<std::size_t>(end - at));
+        if (end == at) {
+            problem = "expected increasing distances > 0, got '" + word + "'";
+            return {};
+        }
+        if (!std::isfinite(v)) {
+            problem = "expected increasing distances > 0; " + word + " is not finite or past a 32-bit float's range (about 3.4e38)";
+            return {};
+        }
+        if (v <= 0.0f || (!out.empty() && v <= out.back())) {
+            problem = "expected increasing distances > 0" +
+                      (v <= 0.0f ? ", got " + word : "; " + word + " does not follow " + text::numberText(out.back()) +
+                                                         (std::strtod(word.c_str(), nullptr) != static_cast<double>(v) ? " (it is " + text::numberText(v) + " as a 32-bit float)" : ""));
             return {};
         }
         out.push_back(v);
