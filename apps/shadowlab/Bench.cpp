@@ -2,9 +2,11 @@
 // bench's parts (BenchParts.h) over every scene and combination, and the
 // staging directory main writes its results through.
 #include "BenchParts.h"
+#include "Interrupt.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/FileWrite.h>
+#include <shadowlab/SceneFile.h>
 
 #include <shadowlab/Text.h>
 
@@ -108,6 +110,7 @@ json runBench(Context& context, const BenchArgs& args) {
             renderer.upload(scene);
             const TimedFrames timed = timeFrames(renderer, scene, run.loaded, args);
             const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args);
+            throwIfInterrupted();  // an interrupt during the reference's trace
             // What the techniques noticed (no planar receiver, no disc): said here and kept in the row.
             for (const std::string& note : accuracy.comparison.techniqueFrame.notes)
                 std::fprintf(stderr, "shadowlab: note: bench run %zu/%zu (%s): %s\n", records.size() + 1, runs.size(), label.c_str(), note.c_str());
@@ -116,8 +119,15 @@ json runBench(Context& context, const BenchArgs& args) {
             // Name the run that failed: its scene and the combination of --vary values.
             std::string where = run.file.empty() ? std::string("the default scene") : run.file;
             for (const std::string& c : run.combo) where += ", --vary " + c;
+            // A value's source, as render names it: the --set or --vary value applied last to it.
+            std::vector<std::string> applied = args.overrides;
+            applied.insert(applied.end(), run.combo.begin(), run.combo.end());
+            std::string message = withValueSource(e.what(), "", applied);
+            if (message.rfind(": ", 0) == 0) message = e.what();  // from the scene file: the prefix names it
+            for (const std::string& c : run.combo)
+                if (message.rfind("--set " + c + ":", 0) == 0) message = "--vary " + message.substr(6);
             throw Error("bench run " + std::to_string(records.size() + 1) + "/" + std::to_string(runs.size()) + " (" + where +
-                        "): " + e.what());
+                        "): " + message);
         }
         progress.step(records.size(), label);
         run.loaded = Scene{};  // its meshes and textures are not needed again

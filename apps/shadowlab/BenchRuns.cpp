@@ -4,6 +4,8 @@
 #include "BenchParts.h"
 
 #include <shadowlab/Error.h>
+
+#include <nlohmann/json.hpp>
 #include <shadowlab/SceneFile.h>
 
 namespace shadowlab::tool {
@@ -64,6 +66,12 @@ std::size_t countRuns(std::size_t sceneCount, const std::vector<Variation>& vari
 
 namespace {
 
+// A --vary value as the JSON it stands for (a bare word is a string, as --set takes it).
+nlohmann::json asJson(const std::string& value) {
+    nlohmann::json j = nlohmann::json::parse(value, nullptr, false);
+    return j.is_discarded() ? nlohmann::json(value) : j;
+}
+
 // Whether two override paths name the same setting, or one holds the other
 // (lights[0].shadow holds lights[0].shadow.technique).
 bool overlaps(const std::string& a, const std::string& b) {
@@ -85,11 +93,13 @@ std::vector<BenchRun> loadRuns(const BenchArgs& args) {
             if (overlaps(variations[j].key, variations[i].key))
                 throw Error("--vary " + args.vary[i] + ": " + variations[i].key + " is already varied by --vary " + args.vary[j] +
                             (variations[j].key == variations[i].key ? " (give all its values in one --vary)" : " (one holds the other)"));
-        // A value twice would run the same combination twice under two labels.
+        // A value twice (as JSON: 1 and 1.0 are one value) would run the same
+        // combination twice under two labels.
         for (std::size_t a = 0; a < variations[i].values.size(); ++a)
             for (std::size_t b = 0; b < a; ++b)
-                if (variations[i].values[a] == variations[i].values[b])
-                    throw Error("--vary " + args.vary[i] + ": the value " + variations[i].values[a] + " is given twice");
+                if (asJson(variations[i].values[a]) == asJson(variations[i].values[b]))
+                    throw Error("--vary " + args.vary[i] + ": the value " + variations[i].values[a] +
+                                (variations[i].values[a] == variations[i].values[b] ? "" : " (" + variations[i].values[b] + ")") + " is given twice");
         // A --set of the same key would be replaced by every run's value without a word.
         for (const std::string& set : args.overrides)
             if (overlaps(set.substr(0, set.find('=')), variations[i].key))

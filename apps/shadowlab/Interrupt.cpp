@@ -20,8 +20,9 @@ extern "C" void onInterrupt(int signal) {
 
 void installInterruptHandlers() {
     for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, onInterrupt);
-    std::signal(SIGXFSZ, SIG_IGN);
 }
+
+void ignoreFileSizeSignal() { std::signal(SIGXFSZ, SIG_IGN); }
 
 void throwIfInterrupted() {
     const int signal = received;

@@ -7,8 +7,12 @@
 
 namespace shadowlab::tool {
 
-/// Installs the handlers (once, at the start of main).
+/// Installs the interrupt handlers (render, compare and bench: the runs
+/// that write files as they go; the viewer keeps the default, which ends
+/// it at once).
 void installInterruptHandlers();
+/// A file past the size limit fails its write (every command).
+void ignoreFileSizeSignal();
 /// Throws Error "interrupted (SIGNAL)" once an interrupt came.
 void throwIfInterrupted();
 

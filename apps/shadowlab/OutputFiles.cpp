@@ -99,6 +99,25 @@ fs::path besideTarget(const fs::path& target, const char* what) {
 
 } // namespace
 
+MadeDirectories::~MadeDirectories() {
+    for (auto it = made_.rbegin(); it != made_.rend(); ++it) {
+        std::error_code ec;
+        fs::remove(*it, ec);  // only if empty: fs::remove does not remove a directory with files
+    }
+}
+
+void MadeDirectories::make(const fs::path& dir, const std::string& label) {
+    std::vector<fs::path> missing;
+    std::error_code ec;
+    for (fs::path p = dir; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+        missing.push_back(p);
+        if (p == p.parent_path()) break;
+    }
+    fs::create_directories(dir, ec);
+    if (ec) throw Error(label + ": cannot create the directory (" + ec.message() + ")");
+    made_.insert(made_.end(), missing.rbegin(), missing.rend());
+}
+
 PendingFiles::~PendingFiles() {
     std::error_code ec;
     for (const auto& [temporary, target] : files_) fs::remove(temporary, ec);

@@ -37,6 +37,23 @@ std::filesystem::path checkOutput(const std::string& output, const std::string& 
 /// Checks an output directory (-o): not an existing file, its parent there.
 std::filesystem::path checkOutputDirectory(const std::string& output);
 
+/// Directories a run creates for its outputs, removed again (deepest first,
+/// each only if empty) unless keep() is called: a run that fails leaves no
+/// directory it made. Declare it before the PendingFiles written into them.
+class MadeDirectories {
+public:
+    MadeDirectories() = default;
+    MadeDirectories(const MadeDirectories&) = delete;
+    MadeDirectories& operator=(const MadeDirectories&) = delete;
+    ~MadeDirectories();
+    /// Creates `dir` and any missing parent; throws Error "LABEL: cannot create the directory (REASON)".
+    void make(const std::filesystem::path& dir, const std::string& label);
+    void keep() { made_.clear(); }
+
+private:
+    std::vector<std::filesystem::path> made_;  ///< in the order made (parents first)
+};
+
 /// Files written under temporary names beside their targets and renamed
 /// into place together by commit(): a failure at frame 7 of 10, or a target
 /// that cannot be replaced (a directory of that name), leaves no file of the

@@ -61,8 +61,10 @@ std::vector<Action> readScript(const std::string& path) {
             // The scene JSON's name: not a directory, in one that exists.
             if (a.verb == "save") {
                 const std::filesystem::path file(a.argument), dir = file.parent_path();
-                if (std::filesystem::is_directory(file)) throw Error(where + "save " + a.argument + ": is a directory (expected a file name for the scene JSON)");
-                if (!dir.empty() && !std::filesystem::is_directory(dir))
+                // pathStatus: a name in a loop of links or too long is this line's error too.
+                if (std::filesystem::is_directory(tool::pathStatus(file, where + "save " + a.argument)))
+                    throw Error(where + "save " + a.argument + ": is a directory (expected a file name for the scene JSON)");
+                if (!dir.empty() && !std::filesystem::is_directory(tool::pathStatus(dir, where + "save " + a.argument)))
                     throw Error(where + "save " + a.argument + ": directory " + dir.string() + " does not exist");
             }
         } else if (a.verb == "resize") {
@@ -78,7 +80,7 @@ std::vector<Action> readScript(const std::string& path) {
             }
         } else if (a.verb == "compare") {
             // An optional directory for the error images: it must exist before anything is traced.
-            if (!a.argument.empty() && !std::filesystem::is_directory(a.argument))
+            if (!a.argument.empty() && !std::filesystem::is_directory(tool::pathStatus(a.argument, where + "compare " + a.argument)))
                 throw Error(where + "compare " + a.argument + ": not a directory (the error images go there; create it first)");
         } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "show-light" &&
                    a.verb != "show-density" && a.verb != "uploads") {

@@ -144,6 +144,7 @@ int runRender(const RenderArgs& args) {
     tool::checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(loaded);
+    tool::MadeDirectories made;  // --debug-images DIR, if this run makes it (before the files in it)
     tool::PendingFiles pending;
     Scene scene = loaded;
     for (int k = 0; k < args.frames; ++k) {
@@ -171,14 +172,14 @@ int runRender(const RenderArgs& args) {
         // --debug-images DIR: <image>.png, or <frame stem>-<image>.png for a sequence.
         if (!args.debugImages.empty()) {
             const fs::path dir(args.debugImages);
-            std::error_code ec;
-            fs::create_directories(dir, ec);
-            if (ec) throw Error("--debug-images " + args.debugImages + ": cannot create the directory (" + ec.message() + ")");
+            if (k == 0) made.make(dir, "--debug-images " + args.debugImages);
             for (const DebugImage& d : debug)
                 pending.write(dir / ((args.frames > 1 ? output.stem().string() + "-" : std::string()) + d.name + ".png"), d.image);
         }
     }
-    for (const fs::path& path : pending.commit()) std::cout << path.string() << "\n";
+    const std::vector<fs::path> written = pending.commit();
+    made.keep();
+    for (const fs::path& path : written) std::cout << path.string() << "\n";
     return 0;
 }
 
@@ -220,18 +221,9 @@ int runCompare(const CompareArgs& args) {
     requireNoGlErrors(context);
 
     // Every file staged, then all renamed into place or none (OutputFiles.h).
-    std::error_code ec;
-    const bool madeDirectory = fs::create_directories(dir, ec);
-    if (ec) throw Error("-o " + args.output + ": cannot create the directory (" + ec.message() + ")");
     // Made here and the run fails: removed again once the files are (declared first, destroyed last).
-    struct MadeDirectory {
-        fs::path dir;
-        bool made, keep = false;
-        ~MadeDirectory() {
-            std::error_code ignored;
-            if (made && !keep) fs::remove(dir, ignored);  // only if empty
-        }
-    } made{dir, madeDirectory};
+    tool::MadeDirectories made;
+    made.make(dir, "-o " + args.output);
     tool::PendingFiles pending;
     pending.write(dir / "technique.png", c.technique);
     pending.write(dir / "reference.png", c.reference);
@@ -280,7 +272,7 @@ int runCompare(const CompareArgs& args) {
                                  {"lights", lights}};
     pending.write(dir / "metrics.json", [&](const fs::path& p) { tool::writeJsonAtomically(p, metrics); });
     const std::vector<fs::path> written = pending.commit();
-    made.keep = true;
+    made.keep();
     std::cout << "wrote";
     for (const fs::path& p : written) std::cout << " " << p.string();
     std::cout << "\n";
@@ -310,6 +302,7 @@ int runBenchCommand(const tool::BenchArgs& args) {
     staged.output = staging.path();
     try {
         const nlohmann::json results = tool::runBench(context, staged);
+        tool::throwIfInterrupted();
         requireNoGlErrors(context);
         writeFileAtomically(staged.output / "results.json", results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
         tool::writeReport(results, staged.output);
@@ -507,7 +500,7 @@ int main(int argc, char** argv) {
 #endif
 
     refuseEmptyValues(app);
-    tool::installInterruptHandlers();
+    tool::ignoreFileSizeSignal();
     if (argc > 1 && argv[1][0] != '-' && !isCommand(app, argv[1])) {
         std::cerr << "shadowlab: error: " << text::escapeControl(argv[1]) << ": not a command (expected one of" << commandList(app) << ")\n";
         return 1;
@@ -523,6 +516,7 @@ int main(int argc, char** argv) {
         requireNonEmpty(compare, "scene", compareArgs.scene, "compare: scene");
         requireNonEmpty(compare, "--output", compareArgs.output, "-o");
         requireNonEmpty(bench, "--output", benchOutput, "-o");
+        if (*render || *compare || *bench) tool::installInterruptHandlers();
         if (*render) return runRender(renderArgs);
         if (*compare) return runCompare(compareArgs);
         if (*bench) {

@@ -145,6 +145,10 @@ if "$tool" view --help >/dev/null 2>&1; then
   printf 'resize 1024 768\n' > "$work/resize.txt"
   TOOL_ENV=SHADOWLAB_MEMORY_LIMIT_BYTES=1000000 expect_error script-resize-past-memory "resize.txt:1: resize 1024 768: --width 1024 --height 768: the frame needs about 48.0 MiB" view --width 64 --height 64 --script resize.txt
   expect_error script-in-link-loop "--script loop-a/s.txt: Too many levels of symbolic links" view --script loop-a/s.txt
+  printf 'save loop-a/x.json\n' > "$work/save-loop.txt"
+  expect_error script-save-in-link-loop "save-loop.txt:1: save loop-a/x.json: Too many levels of symbolic links" view --script save-loop.txt
+  printf 'compare loop-a/d\n' > "$work/compare-loop.txt"
+  expect_error script-compare-in-link-loop "compare-loop.txt:1: compare loop-a/d: Too many levels of symbolic links" view --script compare-loop.txt
 fi
 # The device-memory guard, with a driver that reports 1 MiB free (injected: llvmpipe reports none).
 TOOL_ENV=SHADOWLAB_DEVICE_MEMORY_KIB=1024 expect_error memory-device "--width 640 --height 360: the frame needs about 14.1 MiB (estimated 64 bytes per pixel), more than the budget of 1.0 MiB (the device memory GL_NVX_gpu_memory_info reports free)" render -o out.png --width 640 --height 360
@@ -190,7 +194,7 @@ expect_dir_error compare-output-is-file "-o malformed.json: exists and is not a 
 expect_dir_error bench-missing-scene "nope.json: file not found" bench nope.json -o outdir
 expect_dir_error bench-bad-vary "--vary lights[0].intensity: expected key=value1,value2" bench -o outdir --vary 'lights[0].intensity'
 # A run that fails mid-bench names its scene and combination (its maps pass the load, not the memory budget).
-PROGRESS_OK=1 expect_dir_error bench-run-names-combination "bench run 2/2 ($src/scenes/two-boxes-sun.json, --vary lights[0].shadow.map.size=16384): lights[0].shadow.map: the shadow maps of 1 light(s) need" \
+PROGRESS_OK=1 expect_dir_error bench-run-names-combination "bench run 2/2 ($src/scenes/two-boxes-sun.json, --vary lights[0].shadow.map.size=16384): --vary lights[0].shadow.map.size=16384: lights[0].shadow.map: the shadow maps of 1 light(s) need" \
   bench "$src/scenes/two-boxes-sun.json" -o outdir --frames 1 --warmup 0 --width 32 --height 32 --set lights[0].shadow.technique=map --set 'lights[0].shadow.map.format="rgba8"' --vary lights[0].shadow.map.size=64,16384
 expect_dir_error bench-vary-bad-value "--vary lights[0].intensity=abc: lights[0].intensity: expected a number" bench -o outdir --vary 'lights[0].intensity=1,abc'
 expect_dir_error bench-vary-empty-value "--vary lights[0].intensity=1,,2: empty value" bench -o outdir --vary 'lights[0].intensity=1,,2'
@@ -340,6 +344,8 @@ else
   echo "FAIL bench-notes: $(cat "$work/planar-bench.err")"; failures=$((failures + 1))
 fi
 
+PROGRESS_OK=1 expect_error vary-value-twice-spelled "--vary lights[0].intensity=1,1.0: the value 1.0 (1) is given twice" bench -o outdir --vary lights[0].intensity=1,1.0
+PROGRESS_OK=1 expect_error bench-budget-from-set "bench run 1/1 (fits.json): --set lights[0].shadow.map.cascades=8: lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB" bench fits.json -o outdir --set lights[0].shadow.map.cascades=8 "${bench_small[@]}"
 # A write that fails part way (a full disk; here the file-size limit, which
 # fails the same write calls) is an error naming the file and its reason,
 # with nothing left: no truncated image, no temporary, no directory made.
@@ -365,6 +371,7 @@ limited() { (ulimit -f 4; "$tool" "$@"); }  # 4 KiB a file: the images written h
 expect_clean_failure render-disk-full "out.png: cannot write (File too large)" limited render -o out.png --width 320 --height 240
 expect_clean_failure render-sequence-disk-full "cannot write (File too large)" limited render -o 'f%d.png' --frames 3 --width 320 --height 240
 expect_clean_failure compare-disk-full "cannot write (File too large)" limited compare -o cmp --width 320 --height 240 --samples 1
+expect_clean_failure render-debug-images-disk-full "dbg/sub/" limited render -o out.png --width 32 --height 24 --set lights[0].shadow.technique=map --debug-images dbg/sub
 expect_clean_failure bench-disk-full "cannot write (File too large)" limited bench -o b --frames 1 --warmup 0 --width 160 --height 120 --samples 1
 
 # An interrupt (SIGTERM, SIGINT) stops a run at its next frame as an error:
@@ -379,6 +386,19 @@ if [[ $code -ne 0 && $code -lt 128 && "$(cat "$work/interrupted.err")" == *"inte
   echo "ok   render-interrupted: $(cat "$work/interrupted.err")"; passed=$((passed + 1))
 else
   echo "FAIL render-interrupted (exit $code): $(cat "$work/interrupted.err"); left: $(ls -A "$work/interrupted" | head -3)"; failures=$((failures + 1))
+fi
+
+# bench stops for an interrupt that comes while the reference is traced.
+(cd "$work" && mkdir -p interrupted-bench && cd interrupted-bench && exec "$tool" bench -o b --frames 1 --warmup 0 --width 160 --height 120 --samples 4096 --set lights[0].size=1) 2> "$work/interrupted-bench.err" >/dev/null &
+pid=$!
+sleep 1
+kill -TERM "$pid"
+wait "$pid"
+code=$?
+if [[ $code -ne 0 && $code -lt 128 && "$(grep -v '^\[[#.]*\] \|^bench: [0-9]* runs\?$' "$work/interrupted-bench.err")" == *"interrupted (SIGTERM)"* && -z "$(ls -A "$work/interrupted-bench")" ]]; then
+  echo "ok   bench-interrupted"; passed=$((passed + 1))
+else
+  echo "FAIL bench-interrupted (exit $code): $(cat "$work/interrupted-bench.err"); left: $(ls -A "$work/interrupted-bench")"; failures=$((failures + 1))
 fi
 
 # What a killed run left (its process is gone) is removed by the next run

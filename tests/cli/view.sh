@@ -70,6 +70,15 @@ wait $viewer || { echo "the viewer died on a broken scene file: $(cat err.txt)";
 # An error raised once the scene is drawn names where its value came from, as render's does.
 if "$tool" view --frames 2 --set lights[0].shadow.technique=planar --set lights[0].shadow.planar.receivers=nope >/dev/null 2>err.txt; then echo "a missing planar receiver accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--set lights\[0\].shadow.planar.receivers=nope: lights\[0\].shadow.planar.receivers: no node named 'nope'" err.txt || { echo "viewer error without its source: $(cat err.txt)"; exit 1; }
+# SIGTERM ends the viewer at once (it keeps the default action: it writes nothing as it goes).
+printf 'wait 100000\n' > long.txt
+timeout 30 "$tool" view --width 320 --height 180 --script long.txt >/dev/null 2>&1 &
+viewer=$!
+sleep 2
+pkill -TERM -P "$viewer" shadowlab 2>/dev/null || pkill -TERM -f "view --width 320 --height 180 --script long.txt"
+wait "$viewer"
+code=$?
+(( code != 124 )) || { echo "the viewer ignored SIGTERM"; exit 1; }
 # A bad script is a one-line error before any window.
 printf 'jump 3\n' > bad.txt
 if "$tool" view --script bad.txt 2>err.txt; then echo "bad script accepted"; exit 1; fi
