@@ -6,6 +6,8 @@
 #include <shadowlab/Error.h>
 
 #include <nlohmann/json.hpp>
+
+#include <cctype>
 #include <shadowlab/SceneFile.h>
 
 namespace shadowlab::tool {
@@ -74,7 +76,21 @@ nlohmann::json asJson(const std::string& value) {
 
 // Whether two override paths name the same setting, or one holds the other
 // (lights[0].shadow holds lights[0].shadow.technique).
-bool overlaps(const std::string& a, const std::string& b) {
+// An override path with its indices as plain numbers (lights[00] is lights[0]).
+std::string canonicalPath(const std::string& path) {
+    std::string out;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        out += path[i];
+        if (path[i] != '[') continue;
+        std::size_t j = i + 1;
+        while (j + 1 < path.size() && path[j] == '0' && std::isdigit(static_cast<unsigned char>(path[j + 1]))) ++j;
+        i = j - 1;
+    }
+    return out;
+}
+
+bool overlaps(const std::string& pathA, const std::string& pathB) {
+    const std::string a = canonicalPath(pathA), b = canonicalPath(pathB);
     const std::string& shorter = a.size() <= b.size() ? a : b;
     const std::string& longer = a.size() <= b.size() ? b : a;
     if (longer.compare(0, shorter.size(), shorter) != 0) return false;

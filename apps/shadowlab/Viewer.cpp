@@ -231,7 +231,19 @@ void ViewerSession::renderFrame(int width, int height) {
     options.height = height;
     options.timeSeconds = seconds;
     options.clock = TimingClock::Auto;
-    stats = renderer.render(shown, options);
+    try {
+        stats = renderer.render(shown, options);
+    } catch (const Error& e) {
+        // A value the script set (the maps past their budget, say): named by its line.
+        std::vector<std::string> sets;
+        for (const auto& [keyValue, line] : scriptSets) sets.push_back(keyValue);
+        const std::string named = withValueSource(e.what(), "", sets);
+        for (auto it = scriptSets.rbegin(); it != scriptSets.rend(); ++it) {
+            const std::string flag = "--set " + it->first + ": ";
+            if (named.rfind(flag, 0) == 0) throw Error(it->second + ": " + named.substr(flag.size()));
+        }
+        throw;
+    }
     lastShown = std::move(shown);
     renderer.blitToDefaultFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -103,6 +103,7 @@ void ViewerSession::runScript() {
             const auto eq = a.argument.find('=');
             apply(a.argument.substr(0, eq), a.argument.substr(eq + 1));
             if (!error.empty()) throw Error(args.script + ":" + std::to_string(a.line) + ": " + error);
+            scriptSets.emplace_back(a.argument, args.script + ":" + std::to_string(a.line) + ": set " + a.argument);
         } else if (a.verb == "wait") {
             waitFrames = std::stoi(a.argument);
         } else if (a.verb == "screenshot") {

@@ -142,6 +142,9 @@ private:
     const bool fromFile;
     std::vector<Action> script;
     Overrides overrides;
+    /// The script's `set` lines applied so far: KEY=VALUE and "FILE:LINE: set KEY=VALUE",
+    /// so that an error a later frame raises about that value names the line.
+    std::vector<std::pair<std::string, std::string>> scriptSets;
     Scene scene;
     Context context;
     GLFWwindow* window;

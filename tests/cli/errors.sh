@@ -344,6 +344,8 @@ else
   echo "FAIL bench-notes: $(cat "$work/planar-bench.err")"; failures=$((failures + 1))
 fi
 
+PROGRESS_OK=1 expect_error vary-index-spelled-twice "--vary lights[00].intensity=3,4: lights[00].intensity is already varied by --vary lights[0].intensity=1,2" bench -o outdir --vary lights[0].intensity=1,2 --vary lights[00].intensity=3,4
+PROGRESS_OK=1 expect_error vary-and-set-index-spelled "is also set by --set lights[00].intensity=5" bench -o outdir --set lights[00].intensity=5 --vary lights[0].intensity=1,2
 PROGRESS_OK=1 expect_error vary-value-twice-spelled "--vary lights[0].intensity=1,1.0: the value 1.0 (1) is given twice" bench -o outdir --vary lights[0].intensity=1,1.0
 PROGRESS_OK=1 expect_error bench-budget-from-set "bench run 1/1 (fits.json): --set lights[0].shadow.map.cascades=8: lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB" bench fits.json -o outdir --set lights[0].shadow.map.cascades=8 "${bench_small[@]}"
 # A write that fails part way (a full disk; here the file-size limit, which
@@ -389,9 +391,11 @@ else
 fi
 
 # bench stops for an interrupt that comes while the reference is traced.
-(cd "$work" && mkdir -p interrupted-bench && cd interrupted-bench && exec "$tool" bench -o b --frames 1 --warmup 0 --width 160 --height 120 --samples 4096 --set lights[0].size=1) 2> "$work/interrupted-bench.err" >/dev/null &
+# 320x240 at 4096 rays a pixel: a trace of seconds, long after the signal, which comes once the run has begun.
+(cd "$work" && mkdir -p interrupted-bench && cd interrupted-bench && exec "$tool" bench -o b --frames 1 --warmup 0 --width 320 --height 240 --samples 4096 --set lights[0].size=1) 2> "$work/interrupted-bench.err" >/dev/null &
 pid=$!
-sleep 1
+for _ in $(seq 100); do grep -q '^bench: 1 run' "$work/interrupted-bench.err" 2>/dev/null && break; sleep 0.1; done
+sleep 0.5
 kill -TERM "$pid"
 wait "$pid"
 code=$?

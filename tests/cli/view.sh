@@ -70,6 +70,11 @@ wait $viewer || { echo "the viewer died on a broken scene file: $(cat err.txt)";
 # An error raised once the scene is drawn names where its value came from, as render's does.
 if "$tool" view --frames 2 --set lights[0].shadow.technique=planar --set lights[0].shadow.planar.receivers=nope >/dev/null 2>err.txt; then echo "a missing planar receiver accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q -- "--set lights\[0\].shadow.planar.receivers=nope: lights\[0\].shadow.planar.receivers: no node named 'nope'" err.txt || { echo "viewer error without its source: $(cat err.txt)"; exit 1; }
+# A script's set that a later frame finds wrong (the maps past their budget) is named by its line.
+printf '{"lights":[{"type":"directional","shadow":{"technique":"map","map":{"size":8192,"cascades":2}}}],"nodes":[{"shape":{"type":"box"}}]}' > fits.json
+printf 'set lights[0].shadow.map.cascades=8\nwait 2\nquit\n' > budget.txt
+if "$tool" view fits.json --width 320 --height 180 --script budget.txt >/dev/null 2>err.txt; then echo "a script's set past the budget accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q "budget.txt:1: set lights\[0\].shadow.map.cascades=8: lights\[0\].shadow.map: the shadow maps" err.txt || { echo "the script's set not named: $(cat err.txt)"; exit 1; }
 # SIGTERM ends the viewer at once (it keeps the default action: it writes nothing as it goes).
 printf 'wait 100000\n' > long.txt
 timeout 30 "$tool" view --width 320 --height 180 --script long.txt >/dev/null 2>&1 &
