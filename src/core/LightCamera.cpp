@@ -7,15 +7,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 namespace shadowlab {
 
-bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box) {
-    if (box.empty()) return false;
+namespace {
+
+// False when every point lies beyond one of the clip volume's six planes:
+// then so does their convex hull.
+bool hullMayIntersect(const glm::mat4& clipFromWorld, std::span<const glm::vec3> points) {
     int outside[6] = {0, 0, 0, 0, 0, 0};
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z);
-        const glm::vec4 p = clipFromWorld * glm::vec4(corner, 1.0f);
+    for (const glm::vec3& point : points) {
+        const glm::vec4 p = clipFromWorld * glm::vec4(point, 1.0f);
         outside[0] += p.x < -p.w;
         outside[1] += p.x > p.w;
         outside[2] += p.y < -p.w;
@@ -24,8 +27,17 @@ bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box) {
         outside[5] += p.z > p.w;
     }
     for (int plane = 0; plane < 6; ++plane)
-        if (outside[plane] == 8) return false;
+        if (outside[plane] == static_cast<int>(points.size())) return false;
     return true;
+}
+
+} // namespace
+
+bool mayIntersect(const glm::mat4& clipFromWorld, const Bounds& box) {
+    if (box.empty()) return false;
+    glm::vec3 corners[8];
+    for (int c = 0; c < 8; ++c) corners[c] = glm::vec3((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z);
+    return hullMayIntersect(clipFromWorld, corners);
 }
 
 bool shadowMayReach(const Bounds& caster, const glm::vec3& direction, const Bounds& scene, float pad, bool bothWays,
@@ -51,22 +63,13 @@ bool shadowMayReach(const Bounds& caster, const glm::vec3& direction, const Boun
         forward = std::max(forward, exit(corners[c], l));
         if (bothWays) backward = std::max(backward, exit(corners[c], -l));
     }
-    int outside[6] = {0, 0, 0, 0, 0, 0};
-    int points = 0;
-    for (const glm::vec3& corner : corners)
-        for (const float t : {-backward, forward}) {  // the hull's vertices: the box lies between
-            const glm::vec4 p = clipFromWorld * glm::vec4(corner + t * l, 1.0f);
-            outside[0] += p.x < -p.w;
-            outside[1] += p.x > p.w;
-            outside[2] += p.y < -p.w;
-            outside[3] += p.y > p.w;
-            outside[4] += p.z < -p.w;
-            outside[5] += p.z > p.w;
-            ++points;
-        }
-    for (int plane = 0; plane < 6; ++plane)
-        if (outside[plane] == points) return false;
-    return true;
+    // The hull's vertices: each corner swept both ways (the box lies between).
+    glm::vec3 swept[16];
+    for (int c = 0; c < 8; ++c) {
+        swept[2 * c] = corners[c] - backward * l;
+        swept[2 * c + 1] = corners[c] + forward * l;
+    }
+    return hullMayIntersect(clipFromWorld, swept);
 }
 
 namespace {
