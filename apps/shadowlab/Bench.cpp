@@ -119,13 +119,15 @@ json runBench(Context& context, const BenchArgs& args) {
             // Name the run that failed: its scene and the combination of --vary values.
             std::string where = run.file.empty() ? std::string("the default scene") : run.file;
             for (const std::string& c : run.combo) where += ", --vary " + c;
-            // A value's source, as render names it: the --set or --vary value applied last to it.
-            std::vector<std::string> applied = args.overrides;
-            applied.insert(applied.end(), run.combo.begin(), run.combo.end());
-            std::string message = withValueSource(e.what(), "", applied);
-            if (message.rfind(": ", 0) == 0) message = e.what();  // from the scene file: the prefix names it
-            for (const std::string& c : run.combo)
-                if (message.rfind("--set " + c + ":", 0) == 0) message = "--vary " + message.substr(6);
+            // A value's source, as render names it: the --set or --vary value
+            // applied last to it (from the scene file: the prefix names it).
+            std::vector<std::string> applied = args.overrides, labels;
+            for (const std::string& o : args.overrides) labels.push_back("--set " + o);
+            for (const std::string& c : run.combo) {
+                applied.push_back(c);
+                labels.push_back("--vary " + c);
+            }
+            const std::string message = withValueSource(e.what(), "", applied, labels);
             throw Error("bench run " + std::to_string(records.size() + 1) + "/" + std::to_string(runs.size()) + " (" + where +
                         "): " + message);
         }

@@ -4,11 +4,9 @@
 #include "BenchParts.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/SceneFile.h>
 
 #include <nlohmann/json.hpp>
-
-#include <cctype>
-#include <shadowlab/SceneFile.h>
 
 namespace shadowlab::tool {
 
@@ -74,29 +72,6 @@ nlohmann::json asJson(const std::string& value) {
     return j.is_discarded() ? nlohmann::json(value) : j;
 }
 
-// Whether two override paths name the same setting, or one holds the other
-// (lights[0].shadow holds lights[0].shadow.technique).
-// An override path with its indices as plain numbers (lights[00] is lights[0]).
-std::string canonicalPath(const std::string& path) {
-    std::string out;
-    for (std::size_t i = 0; i < path.size(); ++i) {
-        out += path[i];
-        if (path[i] != '[') continue;
-        std::size_t j = i + 1;
-        while (j + 1 < path.size() && path[j] == '0' && std::isdigit(static_cast<unsigned char>(path[j + 1]))) ++j;
-        i = j - 1;
-    }
-    return out;
-}
-
-bool overlaps(const std::string& pathA, const std::string& pathB) {
-    const std::string a = canonicalPath(pathA), b = canonicalPath(pathB);
-    const std::string& shorter = a.size() <= b.size() ? a : b;
-    const std::string& longer = a.size() <= b.size() ? b : a;
-    if (longer.compare(0, shorter.size(), shorter) != 0) return false;
-    return longer.size() == shorter.size() || longer[shorter.size()] == '.' || longer[shorter.size()] == '[';
-}
-
 } // namespace
 
 std::vector<BenchRun> loadRuns(const BenchArgs& args) {
@@ -106,7 +81,7 @@ std::vector<BenchRun> loadRuns(const BenchArgs& args) {
         // Two --vary of one key (or of a key and what holds it) would make
         // every combination run at the last one's value.
         for (std::size_t j = 0; j < i; ++j)
-            if (overlaps(variations[j].key, variations[i].key))
+            if (overridePathsOverlap(variations[j].key, variations[i].key))
                 throw Error("--vary " + args.vary[i] + ": " + variations[i].key + " is already varied by --vary " + args.vary[j] +
                             (variations[j].key == variations[i].key ? " (give all its values in one --vary)" : " (one holds the other)"));
         // A value twice (as JSON: 1 and 1.0 are one value) would run the same
@@ -118,7 +93,7 @@ std::vector<BenchRun> loadRuns(const BenchArgs& args) {
                                 (variations[i].values[a] == variations[i].values[b] ? "" : " (" + variations[i].values[b] + ")") + " is given twice");
         // A --set of the same key would be replaced by every run's value without a word.
         for (const std::string& set : args.overrides)
-            if (overlaps(set.substr(0, set.find('=')), variations[i].key))
+            if (overridePathsOverlap(set.substr(0, set.find('=')), variations[i].key))
                 throw Error("--vary " + args.vary[i] + ": " + variations[i].key + " is also set by --set " + set +
                             " (a varied key takes its values from --vary alone)");
     }

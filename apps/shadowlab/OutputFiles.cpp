@@ -84,13 +84,6 @@ fs::path checkOutputDirectory(const std::string& output) {
 
 namespace {
 
-// `message` with every mention of `temporary` replaced by `target`.
-std::string naming(std::string message, const std::string& temporary, const std::string& target) {
-    for (std::size_t at = message.find(temporary); at != std::string::npos; at = message.find(temporary, at + target.size()))
-        message.replace(at, temporary.size(), target);
-    return message;
-}
-
 fs::path besideTarget(const fs::path& target, const char* what) {
     fs::path p = target;
     p += std::string(".") + what + "-" + std::to_string(getpid());
@@ -98,6 +91,12 @@ fs::path besideTarget(const fs::path& target, const char* what) {
 }
 
 } // namespace
+
+std::string naming(std::string message, const std::string& temporary, const std::string& target) {
+    for (std::size_t at = message.find(temporary); at != std::string::npos; at = message.find(temporary, at + target.size()))
+        message.replace(at, temporary.size(), target);
+    return message;
+}
 
 MadeDirectories::~MadeDirectories() {
     for (auto it = made_.rbegin(); it != made_.rend(); ++it) {
@@ -125,7 +124,8 @@ PendingFiles::~PendingFiles() {
 
 void PendingFiles::write(const fs::path& target, const std::function<void(const fs::path&)>& writeTo) {
     throwIfInterrupted();
-    removeStaleTemporaries(target, "pending");  // TARGET.pending-PID of runs that were killed
+    // NAME.pending-PID of runs that were killed, once per directory written to.
+    if (fs::path dir = target.parent_path(); cleaned_.insert(dir).second) removeStaleTemporariesIn(dir, "pending");
     const fs::path temporary = besideTarget(target, "pending");
     files_.emplace_back(temporary, target);  // first: removed even if the write fails half way
     try {

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +37,10 @@ std::filesystem::path checkOutput(const std::string& output, const std::string& 
 
 /// Checks an output directory (-o): not an existing file, its parent there.
 std::filesystem::path checkOutputDirectory(const std::string& output);
+
+/// `message` with every mention of `temporary` (a staging name) replaced by
+/// `target`: errors name the file the user asked for.
+std::string naming(std::string message, const std::string& temporary, const std::string& target);
 
 /// Directories a run creates for its outputs, removed again (deepest first,
 /// each only if empty) unless keep() is called: a run that fails leaves no
@@ -77,6 +82,7 @@ public:
 
 private:
     std::vector<std::pair<std::filesystem::path, std::filesystem::path>> files_; ///< temporary, target
+    std::set<std::filesystem::path> cleaned_;  ///< directories whose stale temporaries were removed
 };
 
 } // namespace shadowlab::tool

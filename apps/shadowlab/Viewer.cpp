@@ -235,14 +235,12 @@ void ViewerSession::renderFrame(int width, int height) {
         stats = renderer.render(shown, options);
     } catch (const Error& e) {
         // A value the script set (the maps past their budget, say): named by its line.
-        std::vector<std::string> sets;
-        for (const auto& [keyValue, line] : scriptSets) sets.push_back(keyValue);
-        const std::string named = withValueSource(e.what(), "", sets);
-        for (auto it = scriptSets.rbegin(); it != scriptSets.rend(); ++it) {
-            const std::string flag = "--set " + it->first + ": ";
-            if (named.rfind(flag, 0) == 0) throw Error(it->second + ": " + named.substr(flag.size()));
+        std::vector<std::string> sets, lines;
+        for (const auto& [keyValue, line] : scriptSets) {
+            sets.push_back(keyValue);
+            lines.push_back(line);
         }
-        throw;
+        throw Error(withValueSource(e.what(), "", sets, lines));
     }
     lastShown = std::move(shown);
     renderer.blitToDefaultFramebuffer();

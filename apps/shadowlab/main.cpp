@@ -307,10 +307,7 @@ int runBenchCommand(const tool::BenchArgs& args) {
         writeFileAtomically(staged.output / "results.json", results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
         tool::writeReport(results, staged.output);
     } catch (const Error& e) {  // a file named where it goes, not in the staging directory
-        std::string message = e.what();
-        const std::string from = staged.output.string(), to = args.output.string();
-        for (std::size_t at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size())) message.replace(at, from.size(), to);
-        throw Error(message);
+        throw Error(tool::naming(e.what(), staged.output.string(), args.output.string()));
     }
     staging.commit();
     std::cout << (args.output / "results.json").string() << "\n" << (args.output / "report.html").string() << "\n";

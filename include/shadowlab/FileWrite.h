@@ -9,14 +9,19 @@
 
 namespace shadowlab {
 
-/// Writes `bytes` to `path` whole, or throws shadowlab::Error naming `path`
-/// and the reason ("PATH: cannot write (No space left on device)") and
-/// leaves neither `path` changed nor a temporary behind.
+/// Writes `bytes` to `path` whole, through `PATH.partial`, or throws
+/// shadowlab::Error naming `path` and the reason ("PATH: cannot write (No
+/// space left on device)") and leaves neither `path` changed nor a
+/// temporary behind.
 SHADOWLAB_API void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 /// Removes what killed processes left beside `target`: the files and
-/// directories named `TARGET.TAG-PID` (and `TARGET.TAG-PID.partial-PID`)
-/// whose process is gone. Those of a process still running stay.
+/// directories named `TARGET.TAG-PID` (and `TARGET.TAG-PID.partial`) whose
+/// process is gone. Those of a process still running stay. It lists the
+/// directory: call it once per target, not per write.
 SHADOWLAB_API void removeStaleTemporaries(const std::filesystem::path& target, std::string_view tag);
+/// The same for every name in `dir`: `NAME.TAG-PID` of dead processes, one
+/// listing for all the files a run writes there.
+SHADOWLAB_API void removeStaleTemporariesIn(const std::filesystem::path& dir, std::string_view tag);
 
 } // namespace shadowlab

@@ -50,6 +50,16 @@ SHADOWLAB_API const std::string& defaultSceneJson();
 /// that value, a part of it or a block around it (as parse errors name it),
 /// else `sourceName` (the scene file). Other messages come back unchanged.
 SHADOWLAB_API std::string withValueSource(const std::string& message, const std::string& sourceName, const std::vector<std::string>& overrides);
+/// The same with each override named by `labels[i]` (a bench `--vary`
+/// value, a viewer script's line) instead of `--set KEY=VALUE`; an empty
+/// `sourceName` leaves a message no override set unchanged.
+SHADOWLAB_API std::string withValueSource(const std::string& message, const std::string& sourceName, const std::vector<std::string>& overrides,
+                                          const std::vector<std::string>& labels);
+
+/// Whether two override keys (`--set`/`--vary` paths) name one value, or
+/// one holds the other (`lights[0].shadow` holds `lights[0].shadow.technique`;
+/// `lights[00]` is `lights[0]`).
+SHADOWLAB_API bool overridePathsOverlap(const std::string& a, const std::string& b);
 
 /// Scene JSON text with `overrides` written into it (the `--set` lines, or
 /// the viewer's settings), pretty-printed: it loads again as the scene those

@@ -26,20 +26,30 @@ bool deadProcess(const std::string& digits) {
 
 } // namespace
 
-void removeStaleTemporaries(const fs::path& target, std::string_view tag) {
-    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    const std::string prefix = target.filename().string() + "." + std::string(tag) + "-";
+namespace {
+
+// Removes the entries of `dir` named `PREFIX.TAG-PID` (PREFIX: `name`, or
+// any when empty), optionally followed by `.partial`, whose process is gone.
+void removeStale(const fs::path& dir, const std::string& name, std::string_view tag) {
+    const std::string marker = "." + std::string(tag) + "-";
     std::error_code ec;
-    for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
-        const std::string name = it->path().filename().string();
-        if (name.rfind(prefix, 0) != 0) continue;
-        std::string digits = name.substr(prefix.size());
-        if (const std::size_t inner = digits.find(".partial-"); inner != std::string::npos) digits.resize(inner);
+    for (fs::directory_iterator it(dir.empty() ? fs::path(".") : dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string entry = it->path().filename().string();
+        const std::size_t at = name.empty() ? entry.rfind(marker) : (entry.rfind(name + marker, 0) == 0 ? name.size() : std::string::npos);
+        if (at == std::string::npos || at == 0) continue;
+        std::string digits = entry.substr(at + marker.size());
+        if (const std::size_t inner = digits.find(".partial"); inner != std::string::npos) digits.resize(inner);  // its own write's temporary
         if (!deadProcess(digits)) continue;
         std::error_code removeError;
         fs::remove_all(it->path(), removeError);
     }
 }
+
+} // namespace
+
+void removeStaleTemporaries(const fs::path& target, std::string_view tag) { removeStale(target.parent_path(), target.filename().string(), tag); }
+
+void removeStaleTemporariesIn(const fs::path& dir, std::string_view tag) { removeStale(dir, std::string(), tag); }
 
 void writeFileAtomically(const fs::path& path, std::string_view bytes) {
     const auto fail = [&](const std::string& reason) { return Error(path.string() + ": cannot write (" + reason + ")"); };
@@ -48,9 +58,12 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes) {
     if (!dir.empty() && !fs::is_directory(dir, ec))
         throw fail("directory " + dir.string() + (ec ? ": " + ec.message() : " does not exist"));
     if (fs::is_directory(path, ec)) throw fail("a directory of that name is in the way");
-    removeStaleTemporaries(path, "partial");
+    // One name per target, as before: a killed write's temporary is replaced
+    // by the next write to that name (the tool's names are per process
+    // already: NAME.pending-PID, OUT.partial-PID/), and no directory is
+    // listed for every file written.
     fs::path tmp = path;
-    tmp += ".partial-" + std::to_string(getpid());
+    tmp += ".partial";
     std::FILE* file = std::fopen(tmp.string().c_str(), "wb");
     if (!file) throw fail(std::strerror(errno));
     int error = 0;

@@ -115,24 +115,42 @@ std::vector<Override> applyOverrides(json& doc, const std::vector<std::string>& 
     return applied;
 }
 
-std::vector<Override> describeOverrides(const std::vector<std::string>& overrides) {
+std::vector<Override> describeOverrides(const std::vector<std::string>& overrides, const std::vector<std::string>& labels) {
     std::vector<Override> described;
-    for (const std::string& text : overrides) {
+    for (std::size_t i = 0; i < overrides.size(); ++i) {
+        const std::string& text = overrides[i];
         const auto eq = text.find('=');
         if (eq == std::string::npos) continue;
+        const std::string label = i < labels.size() ? labels[i] : "--set " + text;
         try {
-            described.push_back({"--set " + text, formatPath(parsePath(text.substr(0, eq), "--set " + text))});
+            described.push_back({label, formatPath(parsePath(text.substr(0, eq), label))});
         } catch (const Error&) {
         }
     }
     return described;
 }
 
+namespace {
+
+// Whether canonical path `inner` is `outer` or lies inside it.
+bool within(const std::string& inner, const std::string& outer) {
+    return inner == outer ||
+           (inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 && (inner[outer.size()] == '.' || inner[outer.size()] == '['));
+}
+
+} // namespace
+
+bool pathsOverlap(const std::string& a, const std::string& b) {
+    std::string ca = a, cb = b;
+    try {
+        ca = formatPath(parsePath(a, a));
+        cb = formatPath(parsePath(b, b));
+    } catch (const Error&) {  // not a valid path: as written (parsing the scene refuses it)
+    }
+    return within(ca, cb) || within(cb, ca);
+}
+
 const Override* overrideAt(const std::vector<Override>& applied, const std::string& path) {
-    auto within = [](const std::string& inner, const std::string& outer) {
-        return inner == outer ||
-               (inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 && (inner[outer.size()] == '.' || inner[outer.size()] == '['));
-    };
     for (auto it = applied.rbegin(); it != applied.rend(); ++it)
         if (within(path, it->path) || within(it->path, path)) return &*it;
     return nullptr;

@@ -24,7 +24,13 @@ std::vector<Override> applyOverrides(nlohmann::json& doc, const std::vector<std:
 /// The overrides as applyOverrides returns them, without a document to
 /// apply them to: each `key=value`'s flag and canonical path (entries with
 /// no valid key are left out: parsing the scene refuses them).
-std::vector<Override> describeOverrides(const std::vector<std::string>& overrides);
+/// `labels`, when given, names each override in messages instead of
+/// "--set KEY=VALUE" (a bench --vary value, a viewer script's line).
+std::vector<Override> describeOverrides(const std::vector<std::string>& overrides, const std::vector<std::string>& labels = {});
+
+/// Whether two paths are one, or one holds the other (lights[0].shadow
+/// holds lights[0].shadow.technique), compared as canonical paths.
+bool pathsOverlap(const std::string& a, const std::string& b);
 
 /// The override a value at `path` came from: the last one that set it, a
 /// part of it, or a block around it (setting camera.fovY.x turned fovY into

@@ -160,6 +160,13 @@ Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overri
 }
 
 std::string withValueSource(const std::string& message, const std::string& sourceName, const std::vector<std::string>& overrides) {
+    return withValueSource(message, sourceName, overrides, {});
+}
+
+bool overridePathsOverlap(const std::string& a, const std::string& b) { return overrides::pathsOverlap(a, b); }
+
+std::string withValueSource(const std::string& message, const std::string& sourceName, const std::vector<std::string>& overrides,
+                            const std::vector<std::string>& labels) {
     const std::size_t colon = message.find(": ");
     if (colon == std::string::npos) return message;
     const std::string path = message.substr(0, colon);
@@ -168,9 +175,9 @@ std::string withValueSource(const std::string& message, const std::string& sourc
     bool rooted = false;
     for (const char* r : roots) rooted = rooted || path.rfind(r, 0) == 0;
     if (!scenePath || !rooted) return message;
-    const std::vector<overrides::Override> described = overrides::describeOverrides(overrides);
+    const std::vector<overrides::Override> described = overrides::describeOverrides(overrides, labels);
     if (const overrides::Override* o = overrides::overrideAt(described, path)) return o->flag + ": " + message;
-    return sourceName + ": " + message;
+    return sourceName.empty() ? message : sourceName + ": " + message;
 }
 
 std::string sceneJsonWithOverrides(const std::string& jsonText, const std::string& sourceName, const std::vector<std::string>& overrides) {

@@ -406,11 +406,12 @@ else
 fi
 
 # What a killed run left (its process is gone) is removed by the next run
-# to the same output, even one that then fails; a live process's stays.
+# writing into that directory (the frames of a sequence it does not write
+# again too), even a bench that then fails; a live process's stays.
 true & dead=$!
 wait "$dead"
 mkdir -p "$work/stale" "$work/stale/b.partial-$dead"
-touch "$work/stale/out.png.pending-$dead" "$work/stale/out.png.pending-$dead.partial-$dead" "$work/stale/out.png.pending-$$"
+touch "$work/stale/out.png.pending-$dead" "$work/stale/out.png.pending-$dead.partial" "$work/stale/f000002.png.pending-$dead" "$work/stale/out.png.pending-$$"
 (cd "$work/stale" && "$tool" render -o out.png --width 32 --height 24 >/dev/null 2>&1)
 (cd "$work/stale" && "$tool" bench nope.json -o b >/dev/null 2>&1)
 left=$(cd "$work/stale" && ls -A | sort | tr '\n' ' ')
