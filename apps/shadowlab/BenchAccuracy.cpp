@@ -1,6 +1,7 @@
 // shadowlab bench: a run's accuracy (BenchParts.h): its comparison with the
 // ray-traced reference, and the temporal stability of its shadows (--flips).
 #include "BenchParts.h"
+#include "Interrupt.h"
 
 #include <algorithm>
 
@@ -111,7 +112,7 @@ Accuracy measureAccuracy(Renderer& renderer, Scene& scene, const Scene& loaded, 
         std::vector<std::vector<float>> techniqueVisibility;
         if (args.flips)
             for (std::size_t l = 0; l < scene.lights.size(); ++l) techniqueVisibility.push_back(renderer.readVisibility(scene, l));
-        job.trace();
+        traceInterruptibly(job);
         Comparison c = job.finish(renderer);
         if (args.flips) out.flips.add(c, techniqueVisibility, throughPreviousMaps, lightStayed);
         if (i == 0) out.comparison = std::move(c);

@@ -83,7 +83,7 @@ std::vector<BenchRun> loadRuns(const BenchArgs& args) {
         for (std::size_t j = 0; j < i; ++j)
             if (overridePathsOverlap(variations[j].key, variations[i].key))
                 throw Error("--vary " + args.vary[i] + ": " + variations[i].key + " is already varied by --vary " + args.vary[j] +
-                            (variations[j].key == variations[i].key ? " (give all its values in one --vary)" : " (one holds the other)"));
+                            (overridePathsEqual(variations[j].key, variations[i].key) ? " (give all its values in one --vary)" : " (one holds the other)"));
         // A value twice (as JSON: 1 and 1.0 are one value) would run the same
         // combination twice under two labels.
         for (std::size_t a = 0; a < variations[i].values.size(); ++a)

@@ -1,6 +1,11 @@
 #include "Interrupt.h"
 
+#include <shadowlab/Compare.h>
 #include <shadowlab/Error.h>
+
+#include <chrono>
+#include <exception>
+#include <future>
 
 #include <csignal>
 #include <string>
@@ -11,6 +16,15 @@ namespace {
 
 volatile std::sig_atomic_t received = 0;
 
+// The signals whose default ends the process without a core's worth of
+// purpose for this tool, with their names for the message.
+struct Named {
+    int signal;
+    const char* name;
+};
+constexpr Named kInterrupts[] = {{SIGINT, "SIGINT"},   {SIGTERM, "SIGTERM"}, {SIGHUP, "SIGHUP"},  {SIGQUIT, "SIGQUIT"},
+                                 {SIGUSR1, "SIGUSR1"}, {SIGUSR2, "SIGUSR2"}, {SIGALRM, "SIGALRM"}};
+
 extern "C" void onInterrupt(int signal) {
     received = signal;
     std::signal(signal, SIG_DFL);  // a second one ends the process
@@ -19,7 +33,7 @@ extern "C" void onInterrupt(int signal) {
 } // namespace
 
 void installInterruptHandlers() {
-    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, onInterrupt);
+    for (const Named& n : kInterrupts) std::signal(n.signal, onInterrupt);
 }
 
 void ignoreFileSizeSignal() { std::signal(SIGXFSZ, SIG_IGN); }
@@ -27,8 +41,22 @@ void ignoreFileSizeSignal() { std::signal(SIGXFSZ, SIG_IGN); }
 void throwIfInterrupted() {
     const int signal = received;
     if (signal == 0) return;
-    const char* name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : signal == SIGHUP ? "SIGHUP" : "a signal";
+    const char* name = "a signal";
+    for (const Named& n : kInterrupts)
+        if (n.signal == signal) name = n.name;
     throw Error(std::string("interrupted (") + name + "): nothing of this run was kept");
+}
+
+void traceInterruptibly(ComparisonJob& job) {
+    std::future<void> traced = std::async(std::launch::async, [&job] { job.trace(); });
+    bool cancelled = false;
+    while (traced.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready)
+        if (!cancelled && received != 0) {
+            job.cancel();
+            cancelled = true;
+        }
+    throwIfInterrupted();  // before the trace's own "cancelled" error
+    traced.get();
 }
 
 } // namespace shadowlab::tool

@@ -1,9 +1,13 @@
 #pragma once
-// Interrupts (SIGINT, SIGTERM, SIGHUP): the first one asks the run to stop
+// Interrupts (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM): the first one asks the run to stop
 // at its next check, where it throws like any other error, so that what it
 // has half written is removed on the way out; a second one ends the process
 // at once. A file past the size limit (SIGXFSZ) fails its write instead of
 // ending the process, so the write's error names the file.
+
+namespace shadowlab {
+class ComparisonJob;
+}
 
 namespace shadowlab::tool {
 
@@ -15,5 +19,9 @@ void installInterruptHandlers();
 void ignoreFileSizeSignal();
 /// Throws Error "interrupted (SIGNAL)" once an interrupt came.
 void throwIfInterrupted();
+/// Traces job's reference on a second thread while this one watches for an
+/// interrupt, which cancels the trace (a trace of minutes stops within a
+/// chunk of rays) and then throws as throwIfInterrupted does.
+void traceInterruptibly(ComparisonJob& job);
 
 } // namespace shadowlab::tool

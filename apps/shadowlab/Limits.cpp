@@ -80,7 +80,7 @@ void checkSize(int width, int height, const GlInfo& info) {
     // memory than half of the host's would otherwise fail inside the driver).
     const double device = static_cast<double>(info.deviceMemoryBytes);
     if (device > 0.0 && frameBytes(width, height) > device)
-        refuse(width, height, frameBytes(width, height), device, "the device memory " + info.deviceMemorySource + " reports free");
+        refuse(width, height, frameBytes(width, height), device, "the device's free memory, as " + info.deviceMemorySource + " reports it");
 }
 
 } // namespace shadowlab::tool

@@ -27,6 +27,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <string_view>
 
 namespace fs = std::filesystem;
 
@@ -240,6 +241,9 @@ void ViewerSession::renderFrame(int width, int height) {
             sets.push_back(keyValue);
             lines.push_back(line);
         }
+        // A window the script made too large for the GPU's memory: named by its resize line.
+        if (!scriptResize.empty() && std::string_view(e.what()).find("GL_OUT_OF_MEMORY") != std::string_view::npos)
+            throw Error(scriptResize + ": " + e.what());
         throw Error(withValueSource(e.what(), "", sets, lines));
     }
     lastShown = std::move(shown);

@@ -126,6 +126,7 @@ void ViewerSession::runScript() {
                 throw Error(args.script + ":" + std::to_string(a.line) + ": resize " + a.argument + ": " + e.what());
             }
             glfwSetWindowSize(window, w, h);
+            scriptResize = args.script + ":" + std::to_string(a.line) + ": resize " + a.argument;
         } else if (a.verb == "uploads") {
             std::cout << "uploads: " << uploads << "\n";  // how often the scene was read whole and uploaded
         } else if (a.verb == "show-maps") {

@@ -145,6 +145,9 @@ private:
     /// The script's `set` lines applied so far: KEY=VALUE and "FILE:LINE: set KEY=VALUE",
     /// so that an error a later frame raises about that value names the line.
     std::vector<std::pair<std::string, std::string>> scriptSets;
+    /// The script line of the last resize ("FILE:LINE: resize W H"): named by
+    /// a frame that then runs out of GPU memory.
+    std::string scriptResize;
     Scene scene;
     Context context;
     GLFWwindow* window;

@@ -215,8 +215,16 @@ int runCompare(const CompareArgs& args) {
     options.height = args.height;
     options.softSamples = args.softSamples;
     options.timeSeconds = args.timeSeconds;
-    const Comparison c = compareWithReference(renderer, scene, options);
-    tool::throwIfInterrupted();
+    // compareWithReference's three steps, so that an interrupt stops the trace.
+    ComparisonJob job(renderer, scene, options);
+    // A trace of seconds or more says that it has begun (a soft light's rays
+    // per pixel, every light's pixels).
+    double rays = 0.0;
+    for (const Light& light : scene.lights)
+        rays += static_cast<double>(args.width) * args.height * (light.size > 0.0f ? args.softSamples : 1);
+    if (rays >= 1e8) std::fprintf(stderr, "compare: tracing the reference, %.3g rays\n", rays);
+    tool::traceInterruptibly(job);
+    const Comparison c = job.finish(renderer);
     printNotes(c.techniqueFrame.notes);
     requireNoGlErrors(context);
 

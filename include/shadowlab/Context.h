@@ -33,7 +33,7 @@ struct GlInfo {
     /// else GL_ATI_meminfo's free texture memory); 0 when it reports none
     /// (llvmpipe, which uses host memory).
     long long deviceMemoryBytes = 0;
-    std::string deviceMemorySource; ///< the extension deviceMemoryBytes came from, or ""
+    std::string deviceMemorySource; ///< the extension deviceMemoryBytes came from (or SHADOWLAB_DEVICE_MEMORY_KIB when that stands in for it), or ""
 };
 
 /// A headless context: EGL on Mesa's surfaceless platform (llvmpipe where

@@ -60,6 +60,8 @@ SHADOWLAB_API std::string withValueSource(const std::string& message, const std:
 /// one holds the other (`lights[0].shadow` holds `lights[0].shadow.technique`;
 /// `lights[00]` is `lights[0]`).
 SHADOWLAB_API bool overridePathsOverlap(const std::string& a, const std::string& b);
+/// Whether two override keys name one value (`lights[00].size` is `lights[0].size`).
+SHADOWLAB_API bool overridePathsEqual(const std::string& a, const std::string& b);
 
 /// Scene JSON text with `overrides` written into it (the `--set` lines, or
 /// the viewer's settings), pretty-printed: it loads again as the scene those

@@ -9,10 +9,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <string_view>
 
 namespace shadowlab::gl {
 
 namespace {
+thread_local bool quiet = false;
+
 void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
                                const GLchar* message, const void* user) {
     auto& state = *static_cast<DebugState*>(const_cast<void*>(user));
@@ -22,6 +25,9 @@ void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLs
         std::lock_guard lock(state.mutex);
         state.lastError = message;
     }
+    if (quiet && !state.verbose) return;
+    // Out of memory is said in one line by throwIfOutOfMemory or the run's error count.
+    if (error && std::string_view(message).find("GL_OUT_OF_MEMORY") != std::string_view::npos && !state.verbose) return;
     const bool important = severity == GL_DEBUG_SEVERITY_HIGH || severity == GL_DEBUG_SEVERITY_MEDIUM;
     if (error || (important && type != GL_DEBUG_TYPE_PERFORMANCE) || state.verbose)
         std::fprintf(stderr, "shadowlab: GL %s: %s\n", error ? "error" : "debug", message);
@@ -61,6 +67,9 @@ DeviceMemory queryDeviceMemory(const std::function<bool(const char*)>& hasExtens
     }
     return {};
 }
+
+QuietDebugOutput::QuietDebugOutput() : wasQuiet_(quiet) { quiet = true; }
+QuietDebugOutput::~QuietDebugOutput() { quiet = wasQuiet_; }
 
 void throwIfOutOfMemory(const char* where) {
     bool outOfMemory = false;
@@ -106,7 +115,7 @@ GlInfo queryGlInfo() {
                         : queryDeviceMemory([](const char* name) { return epoxy_has_gl_extension(name); },
                                             [](unsigned pname, int* values) { glGetIntegerv(pname, values); });
     info.deviceMemoryBytes = memory.bytes;
-    info.deviceMemorySource = memory.source;
+    info.deviceMemorySource = injectedKiB > 0 ? "SHADOWLAB_DEVICE_MEMORY_KIB" : memory.source;
     return info;
 }
 

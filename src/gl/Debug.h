@@ -52,8 +52,23 @@ DeviceMemory queryDeviceMemory(const std::function<bool(const char*)>& hasExtens
 
 /// Throws shadowlab::Error naming `where` if GL recorded GL_OUT_OF_MEMORY
 /// since the last call (other errors are left to the debug output); clears
-/// GL's error flags.
+/// GL's error flags. The debug output does not print GL_OUT_OF_MEMORY: this
+/// check, or the run's final count of GL errors, says it in one line.
 void throwIfOutOfMemory(const char* where);
+
+/// While one lives on this thread, the debug callback prints nothing (it
+/// still counts errors): around a call whose outcome the caller reports in
+/// its own words, such as a framebuffer's completeness.
+class QuietDebugOutput {
+public:
+    QuietDebugOutput();
+    ~QuietDebugOutput();
+    QuietDebugOutput(const QuietDebugOutput&) = delete;
+    QuietDebugOutput& operator=(const QuietDebugOutput&) = delete;
+
+private:
+    bool wasQuiet_;
+};
 
 /// Fills GlInfo from the current context (platform left to the caller).
 GlInfo queryGlInfo();

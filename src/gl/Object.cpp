@@ -3,13 +3,21 @@
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 
+#include "gl/Debug.h"
+
 #include <string>
 
 namespace shadowlab::gl {
 
 void checkFramebuffer(const Framebuffer& fb, const char* what) {
-    const GLenum status = glCheckNamedFramebufferStatus(fb.id(), GL_FRAMEBUFFER);
+    GLenum status = GL_FRAMEBUFFER_COMPLETE;
+    {
+        QuietDebugOutput quiet;  // the driver's reason is not the user's: the error below says it
+        status = glCheckNamedFramebufferStatus(fb.id(), GL_FRAMEBUFFER);
+    }
     if (status != GL_FRAMEBUFFER_COMPLETE) {
+        // An attachment the GPU had no memory for is the usual cause.
+        throwIfOutOfMemory((std::string("making the ") + what).c_str());
         char hex[16];
         std::snprintf(hex, sizeof hex, "0x%04X", status);
         throw Error(std::string(what) + ": framebuffer incomplete (status " + hex + ")");

@@ -140,15 +140,24 @@ bool within(const std::string& inner, const std::string& outer) {
 
 } // namespace
 
-bool pathsOverlap(const std::string& a, const std::string& b) {
-    std::string ca = a, cb = b;
+namespace {
+// A path as canonical text (lights[00] is lights[0]); as written when it is
+// not a valid path (parsing the scene refuses it).
+std::string canonicalOrAsWritten(const std::string& path) {
     try {
-        ca = formatPath(parsePath(a, a));
-        cb = formatPath(parsePath(b, b));
-    } catch (const Error&) {  // not a valid path: as written (parsing the scene refuses it)
+        return formatPath(parsePath(path, path));
+    } catch (const Error&) {
+        return path;
     }
+}
+} // namespace
+
+bool pathsOverlap(const std::string& a, const std::string& b) {
+    const std::string ca = canonicalOrAsWritten(a), cb = canonicalOrAsWritten(b);
     return within(ca, cb) || within(cb, ca);
 }
+
+bool pathsEqual(const std::string& a, const std::string& b) { return canonicalOrAsWritten(a) == canonicalOrAsWritten(b); }
 
 const Override* overrideAt(const std::vector<Override>& applied, const std::string& path) {
     for (auto it = applied.rbegin(); it != applied.rend(); ++it)

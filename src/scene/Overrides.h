@@ -31,6 +31,8 @@ std::vector<Override> describeOverrides(const std::vector<std::string>& override
 /// Whether two paths are one, or one holds the other (lights[0].shadow
 /// holds lights[0].shadow.technique), compared as canonical paths.
 bool pathsOverlap(const std::string& a, const std::string& b);
+/// Whether two paths are one (lights[00].size is lights[0].size).
+bool pathsEqual(const std::string& a, const std::string& b);
 
 /// The override a value at `path` came from: the last one that set it, a
 /// part of it, or a block around it (setting camera.fovY.x turned fovY into

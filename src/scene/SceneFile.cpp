@@ -164,6 +164,7 @@ std::string withValueSource(const std::string& message, const std::string& sourc
 }
 
 bool overridePathsOverlap(const std::string& a, const std::string& b) { return overrides::pathsOverlap(a, b); }
+bool overridePathsEqual(const std::string& a, const std::string& b) { return overrides::pathsEqual(a, b); }
 
 std::string withValueSource(const std::string& message, const std::string& sourceName, const std::vector<std::string>& overrides,
                             const std::vector<std::string>& labels) {

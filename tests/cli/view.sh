@@ -120,4 +120,10 @@ for target in . nowhere/x.json; do
   [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "save.txt:2: save $target: " err.txt || { echo "save $target: $(cat err.txt)"; exit 1; }
 done
 [[ -z $(ls -A | grep partial) ]] || { echo "save left $(ls -A | grep partial)"; exit 1; }
+# A resize under the memory guard but past what the process may allocate
+# (ulimit -v 8 GB; a 14000^2 frame needs about 12 GB): GL_OUT_OF_MEMORY said
+# in one line naming the script's line, no GL debug lines before it.
+printf 'resize 14000 14000\nwait 3\nquit\n' > huge.txt
+if (ulimit -v 8000000; "$tool" view --script huge.txt 2>err.txt); then echo "resize past the process's memory accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q "huge.txt:1: resize 14000 14000: the GPU ran out of memory making the .* (GL_OUT_OF_MEMORY)" err.txt || { echo "resize past memory: $(cat err.txt)"; exit 1; }
 echo ok

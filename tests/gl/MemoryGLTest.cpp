@@ -5,6 +5,7 @@
 #include "GLTestContext.h"
 
 #include "gl/Debug.h"
+#include "gl/Object.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/Renderer.h>
@@ -98,5 +99,26 @@ TEST_F(GLTest, AFrameAfterOutOfMemoryFailsInsteadOfDrawingGarbage) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("ran out of memory while drawing the frame (GL_OUT_OF_MEMORY)"), std::string::npos) << e.what();
     }
+    glContext().resetDebugErrors();
+}
+
+// A framebuffer left incomplete because its attachment got no memory says
+// so in one line (the error thrown), and the debug output prints nothing of
+// it: no "GL error: GL_OUT_OF_MEMORY" or "FBO incomplete" lines before it.
+TEST_F(GLTest, AnIncompleteFramebufferAfterOutOfMemoryIsOneLine) {
+    gl::Framebuffer fbo;  // no attachment: incomplete
+    testing::internal::CaptureStderr();
+    exhaustMemory();
+    std::string message;
+    try {
+        gl::checkFramebuffer(fbo, "test framebuffer");
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    const std::string printed = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(message, "the GPU ran out of memory making the test framebuffer (GL_OUT_OF_MEMORY): lower --width/--height or "
+                       "lights[i].shadow.map.size");
+    EXPECT_EQ(printed, "");
+    EXPECT_EQ(glContext().debugErrorCount(), 1u);  // still counted for the run's final check
     glContext().resetDebugErrors();
 }
