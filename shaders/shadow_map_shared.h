@@ -71,7 +71,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float farPlane;         // and far plane
     float blockerTaps;      // pcss: blocker-search taps
     float blurRadius;       // moment blur pass: radius, texels
-    float blurAxis;         // moment blur pass: 0 across, 1 down
+    float blurAxis;         // unused (the moment passes' variants say their direction)
     float blurLayer;        // moment blur pass: the layer blurred
     float bleedReduction;   // moment maps: light-bleeding reduction (share of the bound)
     float transmittance;    // 1 when the transmittance layers hold translucent casters (the shaders test MAP_TRANSMIT)

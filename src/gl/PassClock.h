@@ -31,8 +31,8 @@ bool isSoftwareRasterizer(const std::string& glRenderer);
 /// CpuFinish for a software rasteriser, GpuTimestamp otherwise.
 ClockKind clockFor(const std::string& glRenderer);
 
-/// Times nested scopes of a frame: begin("shadow[0]") ... begin("blur") ...
-/// end() end() records "shadow[0]" and "shadow[0].blur".
+/// Times nested scopes of a frame: begin("shadow[0]") ... begin("moments") ...
+/// end() end() records "shadow[0]" and "shadow[0].moments".
 class PassClock {
 public:
     explicit PassClock(ClockKind kind) : kind_(kind) {}

@@ -103,7 +103,7 @@ public:
     virtual void bindFrameTarget() = 0;
     /// Index buffer with adjacency of Scene::meshes[mesh] (built on first use).
     virtual const gl::Buffer& adjacencyIndices(int mesh) = 0;
-    /// Times a nested scope of the current pass: "shadow[2]" + "blur".
+    /// Times a nested scope of the current pass: "shadow[2]" + "moments".
     virtual gl::ScopedPass timeScope(const std::string& name) = 0;
     /// Records a number for the current pass, e.g. count("triangles", n) in
     /// shadow pass 2 gives FrameStats::counters "shadow[2].triangles".

@@ -114,7 +114,10 @@ TEST_F(MapVariantGLTest, EveryVariantOneOptionFromTheDefaultsCompilesAndDraws) {
                     shadowPasses.insert(map::CubePassVariant{o.format, o.cubePasses == MapCubePasses::One, o.faceCulling}.defines());
                 else {
                     const map::ArrayKey key = map::ArrayKey::of(o, false);
-                    shadowPasses.insert(map::DepthPassVariant{key.format, l.type == LightType::Spot, key.representation, key.momentFormat}.defines());
+                    const bool moments = key.representation != MapRepresentation::Depth;
+                    shadowPasses.insert(map::DepthPassVariant{moments ? MapFormat::Depth32F : key.format}.defines());
+                    if (moments)  // the moments made from that depth, across (and down when blurred)
+                        shadowPasses.insert(map::BlurVariant{true, o.blur, l.type == LightType::Spot, key.representation, key.momentFormat}.defines());
                 }
                 // The frame has the scene in it, not only the clear colour: the
                 // ground alone fills over half of the 3,072 pixels; 500 leaves

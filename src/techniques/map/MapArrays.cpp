@@ -23,6 +23,10 @@ GLenum depthFormat(MapFormat f) {
     return GL_DEPTH_COMPONENT32F;
 }
 
+GLenum depthFormat(const ArrayKey& key) {
+    return key.representation != MapRepresentation::Depth ? GL_DEPTH_COMPONENT32F : depthFormat(key.format);
+}
+
 int momentCount(MapRepresentation r) { return r == MapRepresentation::Depth ? 0 : r == MapRepresentation::Vsm || r == MapRepresentation::Evsm2 ? 2 : 4; }
 
 bool sharedDepthBuffer(const ArrayKey& key) { return key.format == MapFormat::R8 && !key.cube; }
@@ -30,7 +34,7 @@ bool sharedDepthBuffer(const ArrayKey& key) { return key.format == MapFormat::R8
 namespace {
 
 // Bytes a texel of each texture of an array takes.
-double depthTexelBytes(const ArrayKey& key) { return key.format == MapFormat::Depth16 ? 2.0 : 4.0; }  // depth24 is stored in 4 bytes
+double depthTexelBytes(const ArrayKey& key) { return depthFormat(key) == GL_DEPTH_COMPONENT16 ? 2.0 : 4.0; }  // depth24 is stored in 4 bytes
 double colourTexelBytes(const ArrayKey& key) { return key.format == MapFormat::Rgba8 ? 4.0 : key.format == MapFormat::R8 ? 1.0 : 0.0; }
 double momentTexelBytes(const ArrayKey& key) {
     return momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
@@ -117,7 +121,7 @@ MapArray makeArray(const ArrayKey& key, int layers, std::uint64_t generation) {
     const int levels = key.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(size)))) : 1;
     const bool colour = isPacked(key.format) || g.hasMoments();  // the depth array only serves the depth test
     g.depth = gl::Texture(g.target());
-    glTextureStorage3D(g.depth.id(), colour ? 1 : levels, depthFormat(key.format), size, size,
+    glTextureStorage3D(g.depth.id(), colour ? 1 : levels, depthFormat(key), size, size,
                        sharedDepthBuffer(key) ? 1 : layers * g.layersPerLight());
     if (isPacked(key.format)) {
         g.packed = gl::Texture(g.target());
@@ -132,6 +136,8 @@ MapArray makeArray(const ArrayKey& key, int layers, std::uint64_t generation) {
         glNamedFramebufferTexture(g.blurFbo.id(), GL_COLOR_ATTACHMENT0, g.blurScratch.id(), 0);
         glNamedFramebufferDrawBuffer(g.blurFbo.id(), GL_COLOR_ATTACHMENT0);
         gl::checkFramebuffer(g.blurFbo, "moment blur framebuffer");
+        g.momentFbo = gl::Framebuffer();
+        glNamedFramebufferDrawBuffer(g.momentFbo.id(), GL_COLOR_ATTACHMENT0);
     }
     return g;
 }

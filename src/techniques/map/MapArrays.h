@@ -17,6 +17,9 @@ namespace shadowlab::map {
 
 /// The depth texture format of a map (rgba8 and r8: their depth test's buffer).
 GLenum depthFormat(MapFormat f);
+/// The depth texture format of an array: depthFormat, but 32-bit float for
+/// moments (their moments are made from it, whatever `format` says).
+GLenum depthFormat(const struct ArrayKey& key);
 
 /// What lights must agree on to share one texture array.
 struct ArrayKey {
@@ -52,13 +55,14 @@ struct MapArray {
     ArrayKey key;
     int layers = 0;                   ///< lights' maps (a cube counts once, a cascaded light once per cascade)
     std::uint64_t generation = 0;     ///< unique per allocation: framebuffers attached to an older one are rebuilt
-    gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, or the depth test's buffer for rgba8 and moments
+    gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, the depth test's buffer for rgba8, or for moments the depth they are made from (32-bit)
     gl::Texture packed{gl::NoCreate}; ///< RGBA8 array: the map for rgba8
     gl::Texture moments{gl::NoCreate};///< RG/RGBA float array: the map for moment representations
     gl::Texture blurScratch{gl::NoCreate};   ///< moments: one layer's horizontal blur
     gl::Texture transmit{gl::NoCreate};      ///< RGBA8 array: the translucent casters' transmittance per layer (cube: per face)
     gl::Texture transmitDepth{gl::NoCreate}; ///< R32F array: the nearest translucent caster's depth per layer
     gl::Framebuffer blurFbo{gl::NoCreate};   ///< the scratch as a target
+    gl::Framebuffer momentFbo{gl::NoCreate}; ///< moments: one moment layer as the only target (makeMoments attaches it)
     GLenum target() const { return key.cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY; }
     int layersPerLight() const { return key.cube ? 6 : 1; }
     bool hasMoments() const { return key.representation != MapRepresentation::Depth; }

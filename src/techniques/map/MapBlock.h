@@ -17,7 +17,7 @@ public:
     void upload(const MapLight& p, const MapArray& g, const Light& light, bool translucent);
     /// Only the shadow pass's camera (the block's first member).
     void setLightClip(const glm::mat4& lightClipFromWorld);
-    /// The moment blur's pass: radius (texels), axis (0 across, 1 down) and the layer blurred.
+    /// The moments' passes: radius (texels), axis (unused: the variant says it) and the depth layer they are made from.
     void setBlur(float radius, float axis, float layer);
     /// The last uploaded block with another shadow-pass camera, whole.
     void writeWithLightClip(const glm::mat4& lightClipFromWorld);

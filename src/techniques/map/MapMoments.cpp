@@ -1,4 +1,4 @@
-// Technique "map": moment maps' constants and blur (MapMoments.h).
+// Technique "map": moment maps' constants, and a layer's moments made and blurred (MapMoments.h).
 #include "techniques/map/MapMoments.h"
 
 #include "techniques/map/MapVariants.h"
@@ -12,28 +12,23 @@ MomentConstants MomentConstants::of(MapMomentFormat format) {
     return {};
 }
 
-glm::vec4 farMoments(const ArrayKey& k) {
-    const MomentConstants c = MomentConstants::of(k.momentFormat);
-    const auto positive = static_cast<float>(c.evsmPositive), negative = static_cast<float>(c.evsmNegative);
-    switch (k.representation) {
-    case MapRepresentation::Evsm2:
-    case MapRepresentation::Evsm4:
-        return {std::exp(positive), std::exp(2.0f * positive), -std::exp(-negative), std::exp(-2.0f * negative)};
-    default: return glm::vec4(1.0f);
-    }
-}
-
-void blurLayer(TechniqueHost& host, MapBlock& block, const MapArray& g, int layer, int radius, const gl::Framebuffer& fbo) {
-    const auto scope = host.timeScope("blur");
+void makeMoments(TechniqueHost& host, MapBlock& block, const MapArray& g, int layer, int radius, bool spot) {
+    const auto scope = host.timeScope("moments");
     host.apply(gl::RenderState{.depthTest = false, .depthWrite = false});
-    for (int axis = 0; axis < 2; ++axis) {
-        block.setBlur(static_cast<float>(radius), static_cast<float>(axis), static_cast<float>(layer));
-        glBindFramebuffer(GL_FRAMEBUFFER, axis == 0 ? g.blurFbo.id() : fbo.id());
-        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, axis == 0 ? g.moments.id() : g.blurScratch.id());
-        glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
-        const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_blur.frag"}},
-                                                   BlurVariant{axis == 0}.defines()});
-        glUseProgram(program.id());
+    // The layer as the only target (the depth it is made from stays unattached: it is read).
+    glNamedFramebufferTextureLayer(g.momentFbo.id(), GL_COLOR_ATTACHMENT0, g.moments.id(), 0, layer);
+    block.setBlur(static_cast<float>(radius), 0.0f, static_cast<float>(layer));
+    const BlurVariant across{true, radius, spot, g.key.representation, g.key.momentFormat};
+    const BlurVariant down{false, radius};
+    glBindFramebuffer(GL_FRAMEBUFFER, radius > 0 ? g.blurFbo.id() : g.momentFbo.id());
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
+    glUseProgram(host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_blur.frag"}}, across.defines()}).id());
+    host.drawFullscreenTriangle();
+    if (radius > 0) {
+        glBindFramebuffer(GL_FRAMEBUFFER, g.momentFbo.id());
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.blurScratch.id());
+        glUseProgram(host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_blur.frag"}}, down.defines()}).id());
         host.drawFullscreenTriangle();
     }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);

@@ -1,7 +1,7 @@
 #pragma once
 // Technique "map": filterable moment maps (VSM, EVSM, MSM; shaders
 // shadow_map_shared.h momentsOf, shadow_map.glsl momentVisibility): their
-// constants, their clear colour and the separable blur of a layer.
+// constants, and a layer's moments made from its depth and blurred.
 #include "techniques/Technique.h"
 #include "techniques/map/MapArrays.h"
 #include "techniques/map/MapBlock.h"
@@ -25,10 +25,10 @@ struct MomentConstants {
     double minVariance = 1e-6;   ///< MAP_MIN_VARIANCE: VSM's floor
     static MomentConstants of(MapMomentFormat format);
 };
-/// The moments of depth 1 (nothing in front of the far plane): the clear colour.
-glm::vec4 farMoments(const ArrayKey& k);
-/// The separable Gaussian blur of one moment layer: across into the
-/// scratch texture, then down back into the layer (its framebuffer `fbo`).
-void blurLayer(TechniqueHost& host, MapBlock& block, const MapArray& g, int layer, int radius, const gl::Framebuffer& fbo);
+/// The moments of one layer, made from the depth its shadow pass left
+/// (g.depth's layer) and blurred: across into the scratch texture, then
+/// down into the moment layer; with radius 0, straight into the layer.
+/// `spot`: the depth is a spot's perspective depth (linearised first).
+void makeMoments(TechniqueHost& host, MapBlock& block, const MapArray& g, int layer, int radius, bool spot);
 
 } // namespace shadowlab::map

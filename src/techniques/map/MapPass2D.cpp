@@ -17,26 +17,25 @@ namespace shadowlab::map {
 namespace {
 
 // Clears the layer `fbo` holds (all writes on): depth 1, and the colour
-// the pass writes, a packed depth of 1 or the moments of depth 1.
+// the pass writes, a packed depth of 1 (moments are made from the depth
+// afterwards, every texel: makeMoments).
 void clearLayer(TechniqueHost& host, const MapArray& g, const gl::Framebuffer& fbo) {
     host.apply(gl::RenderState{});
     const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, one);
     if (isPacked(g.format())) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, one);
-    if (g.hasMoments()) {
-        const glm::vec4 far = farMoments(g.key);
-        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, &far.x);
-    }
 }
 
 // The casters' draw state: depth (and the colour the map is, if any), the
 // light's polygon offset and culling. Back faces (cullFront) are drawn where
 // they are: they lie behind the lit surfaces already, and an offset pushes
-// them past the receivers at a caster's foot (light leaks there).
+// them past the receivers at a caster's foot (light leaks there). Moments
+// are made from the depth as drawn, so it takes no offset (moments bound
+// the depths' spread instead).
 gl::RenderState casterState(const MapArray& g, const MapOptions& o, const LightCamera& camera) {
     gl::RenderState state;
-    if (!isPacked(g.format()) && !g.hasMoments()) state.noColor();
-    state.polygonOffset = !o.cullFront && (o.slopeBias != 0.0f || o.offsetUnits != 0.0f);
+    if (!isPacked(g.format())) state.noColor();
+    state.polygonOffset = !o.cullFront && !g.hasMoments() && (o.slopeBias != 0.0f || o.offsetUnits != 0.0f);
     state.offsetFactor = o.slopeBias;
     state.offsetUnits = o.offsetUnits;
     state.cull = o.cullFront ? gl::Cull::Front : gl::Cull::None;
@@ -53,7 +52,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
     res.block.upload(p, g, view.light, res.translucent);
     const gl::Program& program = host.program(
         {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
-         DepthPassVariant{g.format(), p.spot, g.key.representation, g.key.momentFormat}.defines()});
+         DepthPassVariant{g.hasMoments() ? MapFormat::Depth32F : g.format()}.defines()});
     std::size_t drawn = 0;
     const std::span<const LightCamera> cameras = p.cameras();
     for (std::size_t c = 0; c < cameras.size(); ++c) {
@@ -74,7 +73,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         });
         if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
         drawn += drawnHere;
-        if (g.hasMoments() && p.options.blur > 0) blurLayer(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, fbo);
+        if (g.hasMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot);
         if (res.translucent) drawTranslucent(host, res.block, frame, g, camera, p.layer + static_cast<int>(c));
     }
     host.count("triangles", static_cast<double>(drawn));

@@ -30,8 +30,9 @@ void attachTargets(MapLight& p, const MapArray& g) {
     if (attached) return;
     if (!p.fbo || p.attachedGeneration != g.generation) p.fbo = gl::Framebuffer();
     const bool packed = isPacked(g.format());
-    // The colour the pass writes: depth packed into RGBA8, or moments.
-    const GLuint colour = packed ? g.packed.id() : g.hasMoments() ? g.moments.id() : 0;
+    // The colour the pass writes: depth packed into RGBA8 (moment maps are
+    // drawn as depth alone, their moments made from it: makeMoments).
+    const GLuint colour = packed ? g.packed.id() : 0;
     if (p.cube) {
         attachLayer(p.fbo, g, colour, -1, "cube shadow map framebuffer (layered)");
         for (int f = 0; f < 6; ++f) {

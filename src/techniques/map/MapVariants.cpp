@@ -97,10 +97,7 @@ std::string LightPassVariant::kernelFile() const {
     return representation != MapRepresentation::Depth ? std::string("shadow_map_moments.glsl") : map::kernelFile(filter);
 }
 
-std::string DepthPassVariant::defines() const {
-    // MAP_SPOT only changes moments; a depth map's spot and directional programs are one.
-    return Defines().packing(format).set("MAP_SPOT", spot && representation != MapRepresentation::Depth).set("MAP_MOMENTS", static_cast<int>(representation)).moments(momentFormat).str();
-}
+std::string DepthPassVariant::defines() const { return Defines().packing(format).str(); }
 
 std::string CubePassVariant::defines() const {
     return Defines()
@@ -115,6 +112,11 @@ std::string TranslucentVariant::defines() const { return Defines().str(); }
 
 std::string FrameViewVariant::defines() const { return Defines().set("MAP_CASCADES", cascades).set("MAP_CUBE", cube).str(); }
 
-std::string BlurVariant::defines() const { return Defines().set("BLUR_FROM_ARRAY", fromArray).str(); }
+std::string BlurVariant::defines() const {
+    Defines d;
+    d.set("BLUR_FROM_DEPTH", fromDepth).set("BLUR_RADIUS", radius);
+    if (fromDepth) d.set("MAP_SPOT", spot).set("MAP_MOMENTS", static_cast<int>(representation)).moments(momentFormat);
+    return d.str();
+}
 
 } // namespace shadowlab::map

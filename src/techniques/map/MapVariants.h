@@ -44,11 +44,9 @@ struct LightPassVariant {
 };
 
 /// The 2D shadow pass: shadow_map_depth.vert/.frag (the floors' bare draw: the defaults).
+/// Moment maps are drawn as depth32f (their moments made after: BlurVariant).
 struct DepthPassVariant {
     MapFormat format = MapFormat::Depth32F;
-    bool spot = false;              ///< a spot: moments of its depth linearised (depth maps: no difference)
-    MapRepresentation representation = MapRepresentation::Depth;
-    MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;
     std::string defines() const;
 };
 
@@ -75,9 +73,14 @@ struct FrameViewVariant {
     std::string defines() const;
 };
 
-/// The moment blur: shadow_map_blur.frag, across from the array or down from the scratch.
+/// The moments and their blur: shadow_map_blur.frag, across from the depth
+/// layer (the moments made per tap) or down from the scratch.
 struct BlurVariant {
-    bool fromArray = true;
+    bool fromDepth = true;
+    int radius = 1;  ///< BLUR_RADIUS: taps -radius .. radius (0: the moments alone), weights folded at compile time
+    bool spot = false;  ///< fromDepth: a spot's depth linearised first
+    MapRepresentation representation = MapRepresentation::Vsm;  ///< fromDepth: the moments made
+    MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;
     std::string defines() const;
 };
 
