@@ -104,7 +104,7 @@ struct MapOptions {
     // Directional and spot lights: filterable maps.
     MapRepresentation representation = MapRepresentation::Depth;
     MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;
-    int blur = 2;                        ///< moments: separable Gaussian blur, texels each side (sigma = blur / 2), 0..16; default 2
+    int blur = 0;                        ///< moments: separable Gaussian blur, texels each side (sigma = blur / 2), 0..16; default 0 (none: the bilinear lookup alone, faster and no less accurate against hard shadows; docs/techniques.md)
     float bleedReduction = 0.0f;         ///< moments: light-bleeding reduction, the bound's values below this count as 0 (rescaled above), 0..0.9; default 0
     // Point lights (cube maps) only.
     MapCubePasses cubePasses = MapCubePasses::One;

@@ -68,7 +68,7 @@ const OptionTable& mapOptionTable() {
                     "directional and spot lights: what the map stores; depth, compared per tap, or moments of depth that are blurred and filtered like colour (variance, exponential variance with 2 or 4 moments, moment shadow maps)")
             .choice(&MapOptions::momentFormat, "momentFormat", {"rgba32f", "rgba16f"},
                     "moments: 32- or 16-bit floats; 16 takes half the memory and holds on scenes a few metres across (torus-floating, spheres-sun: at most 0.007 % misclassified), less well on large ones (the 400 m cascades-field as shipped: vsm and msm 0.20-0.22 % against 0.05-0.06 % in 32 bits, evsm4 0.058 % against 0.040 %; docs/techniques.md)")
-            .integer(&MapOptions::blur, "blur", 0, 16, "texels each side", "moments: separable Gaussian blur of sigma blur / 2 texels before the light pass")
+            .integer(&MapOptions::blur, "blur", 0, 16, "texels each side", "moments: separable Gaussian blur of sigma blur / 2 texels before the light pass; 0 by default (none: the bilinear lookup's one-texel edge), which bench finds faster and no less accurate against hard shadows (docs/techniques.md); more for wider soft edges")
             .number(&MapOptions::bleedReduction, "bleedReduction", 0.0, 0.9, "share of the bound",
                     "moments: light-bleeding reduction, the upper bound's values under this become 0 and the rest is stretched to 0..1 (darkens penumbrae)")
             .choice(&MapOptions::cubePasses, "cubePasses", {"one", "six"},
