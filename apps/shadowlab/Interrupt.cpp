@@ -8,6 +8,7 @@
 #include <future>
 
 #include <csignal>
+#include <ctime>
 #include <string>
 
 namespace shadowlab::tool {
@@ -15,6 +16,7 @@ namespace shadowlab::tool {
 namespace {
 
 volatile std::sig_atomic_t received = 0;
+constexpr long long kRepeatGraceMs = 1000;
 
 // The signals whose default ends the process without a core's worth of
 // purpose for this tool, with their names for the message.
@@ -25,9 +27,24 @@ struct Named {
 constexpr Named kInterrupts[] = {{SIGINT, "SIGINT"},   {SIGTERM, "SIGTERM"}, {SIGHUP, "SIGHUP"},  {SIGQUIT, "SIGQUIT"},
                                  {SIGUSR1, "SIGUSR1"}, {SIGUSR2, "SIGUSR2"}, {SIGALRM, "SIGALRM"}};
 
+// When the first interrupt came (CLOCK_MONOTONIC; clock_gettime is
+// async-signal-safe). Only the handler reads and writes it.
+timespec firstInterrupt{};
+
 extern "C" void onInterrupt(int signal) {
-    received = signal;
-    std::signal(signal, SIG_DFL);  // a second one ends the process
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    if (received == 0) {
+        firstInterrupt = now;
+        received = signal;
+        return;
+    }
+    // Repeats within a second (an impatient double Ctrl-C) wait for the run
+    // to stop cleanly at its next check; a later one ends the process at once.
+    const long long ms = (now.tv_sec - firstInterrupt.tv_sec) * 1000LL + (now.tv_nsec - firstInterrupt.tv_nsec) / 1000000;
+    if (ms < kRepeatGraceMs) return;
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);  // delivered, with the default action, once this handler returns
 }
 
 } // namespace

@@ -1,7 +1,8 @@
 #pragma once
 // Interrupts (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM): the first one asks the run to stop
 // at its next check, where it throws like any other error, so that what it
-// has half written is removed on the way out; a second one ends the process
+// has half written is removed on the way out; a second one within a second
+// of it waits for that too (a double Ctrl-C), a later one ends the process
 // at once. A file past the size limit (SIGXFSZ) fails its write instead of
 // ending the process, so the write's error names the file.
 

@@ -260,13 +260,19 @@ void ViewerSession::endFrame(int width, int height, bool screenshotKey) {
         writePng(name, readWindow(width, height));
         std::cout << name << "\n";
     }
-    if (waitFrames == 0 && nextAction < script.size() && script[nextAction].verb == "screenshot") {
+    if (waitFrames == 0 && !resizing() && nextAction < script.size() && script[nextAction].verb == "screenshot") {
         writePng(script[nextAction].argument, readWindow(width, height));
         std::cout << script[nextAction].argument << "\n";
         ++nextAction;
     }
     ++frame;
     if (waitFrames > 0) --waitFrames;
+    if (resizing()) {
+        // The script's resize is done once a frame was drawn at that size.
+        int windowWidth = 0, windowHeight = 0;
+        glfwGetWindowSize(window, &windowWidth, &windowHeight);
+        if ((windowWidth == resizeWidth && windowHeight == resizeHeight) || ++resizeFrames >= kResizeFrames) resizeWidth = resizeHeight = 0;
+    }
     if (args.frames > 0 && frame == args.frames && !args.screenshot.empty()) {
         writePng(args.screenshot, readWindow(width, height));
         std::cout << args.screenshot << "\n";
@@ -274,7 +280,7 @@ void ViewerSession::endFrame(int width, int height, bool screenshotKey) {
     // --frames ends the run, but not before a comparison the script asked for is traced and written.
     if (args.frames > 0 && frame >= args.frames && !referenceAsked && !tracing) quit = true;
     // The script ends once what it started is done: a comparison it asked for is traced and written first.
-    if (!args.script.empty() && nextAction >= script.size() && waitFrames == 0 && !referenceAsked && !tracing) quit = true;
+    if (!args.script.empty() && nextAction >= script.size() && waitFrames == 0 && !referenceAsked && !tracing && !resizing()) quit = true;
 }
 
 void ViewerSession::timeFrame() {

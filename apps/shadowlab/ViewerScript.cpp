@@ -97,7 +97,7 @@ std::vector<Action> readScript(const std::string& path) {
 void ViewerSession::runScript() {
     // The script: one action per frame, "wait N" holds it N frames, a
     // comparison holds it until the reference is traced.
-    while (waitFrames == 0 && nextAction < script.size() && !referenceAsked && !tracing) {
+    while (waitFrames == 0 && nextAction < script.size() && !referenceAsked && !tracing && !resizing()) {
         const Action& a = script[nextAction++];
         if (a.verb == "set") {
             const auto eq = a.argument.find('=');
@@ -127,6 +127,9 @@ void ViewerSession::runScript() {
             }
             glfwSetWindowSize(window, w, h);
             scriptResize = args.script + ":" + std::to_string(a.line) + ": resize " + a.argument;
+            resizeWidth = w;  // the next action waits for a frame of this size (endFrame)
+            resizeHeight = h;
+            resizeFrames = 0;
         } else if (a.verb == "uploads") {
             std::cout << "uploads: " << uploads << "\n";  // how often the scene was read whole and uploaded
         } else if (a.verb == "show-maps") {

@@ -148,6 +148,12 @@ private:
     /// The script line of the last resize ("FILE:LINE: resize W H"): named by
     /// a frame that then runs out of GPU memory.
     std::string scriptResize;
+    /// A script's resize holds the script until a frame is drawn at that
+    /// window size (the window system applies it some frames later), or
+    /// kResizeFrames frames have passed (a window manager may refuse it).
+    int resizeWidth = 0, resizeHeight = 0, resizeFrames = 0;
+    static constexpr int kResizeFrames = 120;
+    bool resizing() const { return resizeWidth > 0; }
     Scene scene;
     Context context;
     GLFWwindow* window;

@@ -33,6 +33,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+
+#include <unistd.h>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -217,12 +219,13 @@ int runCompare(const CompareArgs& args) {
     options.timeSeconds = args.timeSeconds;
     // compareWithReference's three steps, so that an interrupt stops the trace.
     ComparisonJob job(renderer, scene, options);
-    // A trace of seconds or more says that it has begun (a soft light's rays
-    // per pixel, every light's pixels).
+    // On a terminal, a trace of seconds or more says that it has begun (a
+    // soft light's rays per pixel, every light's pixels); a log or a pipe
+    // gets the error line alone when it fails.
     double rays = 0.0;
     for (const Light& light : scene.lights)
         rays += static_cast<double>(args.width) * args.height * (light.size > 0.0f ? args.softSamples : 1);
-    if (rays >= 1e8) std::fprintf(stderr, "compare: tracing the reference, %.3g rays\n", rays);
+    if (rays >= 1e8 && isatty(STDERR_FILENO)) std::fprintf(stderr, "compare: tracing the reference, %.3g rays\n", rays);
     tool::traceInterruptibly(job);
     const Comparison c = job.finish(renderer);
     printNotes(c.techniqueFrame.notes);

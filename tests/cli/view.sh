@@ -120,10 +120,17 @@ for target in . nowhere/x.json; do
   [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "save.txt:2: save $target: " err.txt || { echo "save $target: $(cat err.txt)"; exit 1; }
 done
 [[ -z $(ls -A | grep partial) ]] || { echo "save left $(ls -A | grep partial)"; exit 1; }
+# A resize holds the script until a frame of that size is drawn: the next
+# line's screenshot has the new size (it took the old one), and a resize
+# followed by quit still draws that frame (below: it exited 0 without it).
+printf 'resize 400 300\nscreenshot resized.png\nquit\n' > resize.txt
+"$tool" view --width 320 --height 240 --script resize.txt >/dev/null 2>err.txt || { echo "resize then screenshot: $(cat err.txt)"; exit 1; }
+size=$(python3 -c "import struct; d=open('resized.png','rb').read(24); print(*struct.unpack('>II', d[16:24]))")
+[[ "$size" == "400 300" ]] || { echo "the screenshot after resize 400 300 is $size"; exit 1; }
 # A resize under the memory guard but past what the process may allocate
 # (ulimit -v 8 GB; a 14000^2 frame needs about 12 GB): GL_OUT_OF_MEMORY said
 # in one line naming the script's line, no GL debug lines before it.
-printf 'resize 14000 14000\nwait 3\nquit\n' > huge.txt
+printf 'resize 14000 14000\nquit\n' > huge.txt
 if (ulimit -v 8000000; "$tool" view --script huge.txt 2>err.txt); then echo "resize past the process's memory accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "huge.txt:1: resize 14000 14000: the GPU ran out of memory making the .* (GL_OUT_OF_MEMORY)" err.txt || { echo "resize past memory: $(cat err.txt)"; exit 1; }
 echo ok
