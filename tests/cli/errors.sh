@@ -376,80 +376,61 @@ expect_clean_failure compare-disk-full "cannot write (File too large)" limited c
 expect_clean_failure render-debug-images-disk-full "dbg/sub/" limited render -o out.png --width 32 --height 24 --set lights[0].shadow.technique=map --debug-images dbg/sub
 expect_clean_failure bench-disk-full "cannot write (File too large)" limited bench -o b --frames 1 --warmup 0 --width 160 --height 120 --samples 1
 
-# An interrupt (SIGTERM, SIGINT) stops a run at its next frame as an error:
-# the frames written so far under temporary names are removed.
-(cd "$work" && mkdir -p interrupted && cd interrupted && exec "$tool" render -o 'f%05d.png' --frames 100000 --width 32 --height 24) 2> "$work/interrupted.err" &
-pid=$!
-sleep 3
-kill -TERM "$pid"
-wait "$pid"
-code=$?
-if [[ $code -ne 0 && $code -lt 128 && "$(cat "$work/interrupted.err")" == *"interrupted (SIGTERM)"* && -z "$(ls -A "$work/interrupted")" ]]; then
-  echo "ok   render-interrupted: $(cat "$work/interrupted.err")"; passed=$((passed + 1))
-else
-  echo "FAIL render-interrupted (exit $code): $(cat "$work/interrupted.err"); left: $(ls -A "$work/interrupted" | head -3)"; failures=$((failures + 1))
-fi
-
-# bench stops for an interrupt that comes while the reference is traced.
-# 320x240 at 4096 rays a pixel: a trace of seconds, long after the signal, which comes once the run has begun.
-(cd "$work" && mkdir -p interrupted-bench && cd interrupted-bench && exec "$tool" bench -o b --frames 1 --warmup 0 --width 320 --height 240 --samples 4096 --set lights[0].size=1) 2> "$work/interrupted-bench.err" >/dev/null &
-pid=$!
-for _ in $(seq 100); do grep -q '^bench: 1 run' "$work/interrupted-bench.err" 2>/dev/null && break; sleep 0.1; done
-sleep 0.5
-kill -TERM "$pid"
-wait "$pid"
-code=$?
-if [[ $code -ne 0 && $code -lt 128 && "$(grep -v '^\[[#.]*\] \|^bench: [0-9]* runs\?$' "$work/interrupted-bench.err")" == *"interrupted (SIGTERM)"* && -z "$(ls -A "$work/interrupted-bench")" ]]; then
-  echo "ok   bench-interrupted"; passed=$((passed + 1))
-else
-  echo "FAIL bench-interrupted (exit $code): $(cat "$work/interrupted-bench.err"); left: $(ls -A "$work/interrupted-bench")"; failures=$((failures + 1))
-fi
-
-# compare stops for an interrupt in the middle of its trace, not at its end:
-# 960x540 at 4096 rays a pixel is about 29 s of tracing on a 2-core llvmpipe
-# machine; the run must end within 5 s of the signal (the trace stops within
-# a chunk of 16 pixels' rays). SIGUSR1 is one of the interrupts too.
-(cd "$work" && mkdir -p interrupted-compare && cd interrupted-compare && exec "$tool" compare -o c --samples 4096 --set lights[0].size=1) 2> "$work/interrupted-compare.err" >/dev/null &
-pid=$!
-sleep 3  # the technique's frame takes about a second; the trace has begun, and goes on for seconds more
-kill -USR1 "$pid"
-signalled=$(date +%s%N)
-wait "$pid"
-code=$?
-took=$(( ($(date +%s%N) - signalled) / 1000000 ))
-if [[ $code -ne 0 && $code -lt 128 && $took -lt 5000 && $(wc -l < "$work/interrupted-compare.err") -eq 1 && "$(cat "$work/interrupted-compare.err")" == *"interrupted (SIGUSR1)"* && -z "$(ls -A "$work/interrupted-compare")" ]]; then
-  echo "ok   compare-interrupted-in-trace (${took} ms after the signal)"; passed=$((passed + 1))
-else
-  echo "FAIL compare-interrupted-in-trace (exit $code, ${took} ms after the signal): $(cat "$work/interrupted-compare.err"); left: $(ls -A "$work/interrupted-compare")"; failures=$((failures + 1))
-fi
-
-# SIGQUIT stops a frame sequence as SIGTERM does: its frames so far removed.
-(cd "$work" && mkdir -p interrupted-quit && cd interrupted-quit && exec "$tool" render -o 'f%05d.png' --frames 100000 --width 32 --height 24) 2> "$work/interrupted-quit.err" &
-pid=$!
-for _ in $(seq 100); do compgen -G "$work/interrupted-quit/*.pending-*" >/dev/null && break; sleep 0.1; done
-kill -QUIT "$pid"
-wait "$pid"
-code=$?
-if [[ $code -ne 0 && $code -lt 128 && "$(cat "$work/interrupted-quit.err")" == *"interrupted (SIGQUIT)"* && -z "$(ls -A "$work/interrupted-quit")" ]]; then
-  echo "ok   render-interrupted-quit"; passed=$((passed + 1))
-else
-  echo "FAIL render-interrupted-quit (exit $code): $(cat "$work/interrupted-quit.err"); left: $(ls -A "$work/interrupted-quit" | head -3)"; failures=$((failures + 1))
-fi
-
+# expect_interrupted NAME WAIT SIGNALS MESSAGE MAX_MS -- ARGS...: runs the
+# tool with ARGS in $work/NAME, waits (WAIT: "pending", until a frame's
+# .pending file is there; "bench", until bench's "1 run" line and half a
+# second; or seconds), sends SIGNALS (comma-separated, 1 ms apart), and
+# expects a non-zero exit under 128, one error line (bench's progress lines
+# aside) holding MESSAGE, nothing left in $work/NAME, and with MAX_MS the end
+# within MAX_MS of the signal.
+expect_interrupted() {
+  local name=$1 wait=$2 signals=$3 message=$4 max=$5
+  shift 6
+  local dir="$work/$name" err="$work/$name.err" first=1 s
+  (mkdir -p "$dir" && cd "$dir" && exec "$tool" "$@") 2> "$err" >/dev/null &
+  local pid=$!
+  case $wait in
+    pending) for _ in $(seq 100); do compgen -G "$dir/*.pending-*" >/dev/null && break; sleep 0.1; done ;;
+    bench) for _ in $(seq 100); do grep -q '^bench: 1 run' "$err" 2>/dev/null && break; sleep 0.1; done; sleep 0.5 ;;
+    *) sleep "$wait" ;;
+  esac
+  for s in ${signals//,/ }; do
+    ((first)) || sleep 0.001
+    first=0
+    kill -"$s" "$pid" 2>/dev/null
+  done
+  local signalled
+  signalled=$(date +%s%N)
+  wait "$pid"
+  local code=$?
+  local took=$((($(date +%s%N) - signalled) / 1000000))
+  local errors
+  errors=$(grep -v '^\[[#.]*\] \|^bench: [0-9]* runs\?$' "$err")
+  if [[ $code -ne 0 && $code -lt 128 && $(grep -c '' <<<"$errors") -eq 1 && "$errors" == *"$message"* && -z "$(ls -A "$dir")" && (-z "$max" || $took -lt $max) ]]; then
+    echo "ok   $name (${took} ms after the signal): $errors"; passed=$((passed + 1))
+  else
+    echo "FAIL $name (exit $code, ${took} ms after the signal): $(cat "$err"); left: $(ls -A "$dir" | head -3)"; failures=$((failures + 1))
+  fi
+}
+sequence=(render -o 'f%05d.png' --frames 100000 --width 32 --height 24)
+# An interrupt stops a run at its next frame as an error: the frames written
+# so far under temporary names are removed. SIGQUIT is one too.
+expect_interrupted render-interrupted 3 TERM "interrupted (SIGTERM)" "" -- "${sequence[@]}"
+expect_interrupted render-interrupted-quit pending QUIT "interrupted (SIGQUIT)" "" -- "${sequence[@]}"
 # Two SIGTERMs 1 ms apart (an impatient double Ctrl-C): the second waits
 # for the clean stop the first asked for; nothing is left (the second one
 # used to end the process at once, leaving its frames' .pending files).
-(cd "$work" && mkdir -p interrupted-twice && cd interrupted-twice && exec "$tool" render -o 'f%05d.png' --frames 100000 --width 32 --height 24) 2> "$work/interrupted-twice.err" &
-pid=$!
-for _ in $(seq 100); do compgen -G "$work/interrupted-twice/*.pending-*" >/dev/null && break; sleep 0.1; done
-kill -TERM "$pid"; sleep 0.001; kill -TERM "$pid" 2>/dev/null
-wait "$pid"
-code=$?
-if [[ $code -ne 0 && $code -lt 128 && $(wc -l < "$work/interrupted-twice.err") -eq 1 && "$(cat "$work/interrupted-twice.err")" == *"interrupted (SIGTERM)"* && -z "$(ls -A "$work/interrupted-twice")" ]]; then
-  echo "ok   render-interrupted-twice"; passed=$((passed + 1))
-else
-  echo "FAIL render-interrupted-twice (exit $code): $(cat "$work/interrupted-twice.err"); left: $(ls -A "$work/interrupted-twice" | wc -l) files"; failures=$((failures + 1))
-fi
+expect_interrupted render-interrupted-twice pending TERM,TERM "interrupted (SIGTERM)" "" -- "${sequence[@]}"
+# bench stops for an interrupt that comes while the reference is traced:
+# 320x240 at 4096 rays a pixel, a trace of seconds, long after the signal,
+# which comes once the run has begun.
+expect_interrupted bench-interrupted bench TERM "interrupted (SIGTERM)" "" -- bench -o b --frames 1 --warmup 0 --width 320 --height 240 --samples 4096 --set lights[0].size=1
+# compare stops for an interrupt in the middle of its trace, not at its end:
+# 960x540 at 4096 rays a pixel is 10-29 s of tracing on a 2-core llvmpipe
+# machine; the run must end within 5 s of the signal (the trace stops within
+# a chunk of 16 pixels' rays). The technique's frame takes about a second,
+# so at 3 s the trace has begun. SIGUSR1 is one of the interrupts too.
+expect_interrupted compare-interrupted-in-trace 3 USR1 "interrupted (SIGUSR1)" 5000 -- compare -o c --samples 4096 --set lights[0].size=1
 
 # What a killed run left (its process is gone) is removed by the next run
 # writing into that directory (the frames of a sequence it does not write
