@@ -27,6 +27,11 @@ enum class MapFit {
     Sdsm,  ///< "sdsm": directional lights: the tight fit around the receiver points the camera sees, reduced on the GPU from a depth pre-pass of the same frame (Lauritzen's sample distribution shadow maps)
 };
 
+enum class MapWarp {
+    None,   ///< "none": the light camera as fitted (default)
+    Lispsm, ///< "lispsm": directional lights, one map: the fitted box warped by a perspective along the view (light space perspective shadow maps, Wimmer et al. 2004), more texels near the camera
+};
+
 enum class MapFilter {
     None,     ///< "none": one nearest sample
     Hardware, ///< "hardware": one 2x2 bilinear hardware compare (default)
@@ -74,6 +79,8 @@ struct MapOptions {
     int size = 1024;                     ///< texels per side of the map (a cube: of each face), 16..16384; default 1024
     MapFormat format = MapFormat::Depth32F;
     MapFit fit = MapFit::Tight;
+    MapWarp warp = MapWarp::None;
+    float warpNear = 1.0f;               ///< lispsm: the view distance (scene units) below which the warp gives no more texels, like Filament's near hint; 0.01..1000, default 1
     MapFilter filter = MapFilter::Hardware;
     int kernel = 3;                      ///< grid: samples per side, 2..8; default 3
     /// grid (nearest taps, 2D maps) and pcf20: the kernel's corners first (with

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <optional>
 #include <span>
 
 namespace shadowlab {
@@ -176,10 +178,91 @@ glm::mat4 directionalLightView(const glm::vec3& direction, const FitInput& in) {
     return lightViewOf(direction, scene, diagonalOf(scene));
 }
 
-LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitInput& in) {
+namespace {
+
+// The warp's axis: the view direction across the light, or none when the
+// light is within about 1 degree of the view (sin below 0.02).
+std::optional<glm::vec3> warpAxis(const glm::vec3& direction, const LightWarp* warp) {
+    if (!warp) return std::nullopt;
+    const glm::vec3 across = warp->forward - glm::dot(warp->forward, direction) * direction;
+    if (glm::length(across) < 0.02f) return std::nullopt;
+    return glm::normalize(across);
+}
+
+// LiSPSM: `region` (light view space, the light looking down -z, the view's
+// direction across the light along +y) seen through a perspective whose
+// centre lies n below the region along y, so that texels shrink towards the
+// camera; n from Wimmer et al.'s n_opt = (z0 + sqrt(z0 z1)) / sin(gamma), z0
+// and z1 the nearest and farthest view distances of the region's corners
+// (z0 at least the near distance), gamma the angle between view and light.
+void warpRegion(LightCamera& cam, const Bounds& region, const LightWarp& warp, float sinGamma, const FitInput& in) {
+    const glm::mat4 worldFromView = glm::inverse(cam.viewFromWorld);
+    float z0 = std::numeric_limits<float>::max(), z1 = 0.0f;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 v((c & 1) ? region.hi.x : region.lo.x, (c & 2) ? region.hi.y : region.lo.y, (c & 4) ? region.hi.z : region.lo.z);
+        const float distance = glm::dot(glm::vec3(worldFromView * glm::vec4(v, 1.0f)) - warp.eye, warp.forward);
+        z0 = std::min(z0, distance);
+        z1 = std::max(z1, distance);
+    }
+    z0 = std::max(z0, warp.nearDistance);
+    z1 = std::max(z1, z0);
+    const float depth = std::max(region.hi.y - region.lo.y, 1e-6f);
+    const float n = std::max((z0 + std::sqrt(z0 * z1)) / sinGamma, 1e-3f * depth);
+    const float f = n + depth;
+    // The perspective along +y: x and z over t = y - (lo.y - n), t in [n, f] to y' in [-1, 1].
+    const glm::vec3 centre(0.5f * (region.lo.x + region.hi.x), region.lo.y - n, 0.5f * (region.lo.z + region.hi.z));
+    const float a = (f + n) / (f - n), b = -2.0f * n * f / (f - n);
+    glm::mat4 perspective(0.0f);  // column-major: [col][row]
+    perspective[0][0] = n;
+    perspective[1][1] = a;
+    perspective[3][1] = b;
+    perspective[2][2] = n;
+    perspective[1][3] = 1.0f;
+    const glm::mat4 warped = perspective * glm::translate(glm::mat4(1.0f), -centre);
+    Bounds box;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 q = warped * glm::vec4((c & 1) ? region.hi.x : region.lo.x, (c & 2) ? region.hi.y : region.lo.y,
+                                               (c & 4) ? region.hi.z : region.lo.z, 1.0f);
+        box.add(glm::vec3(q) / q.w);
+    }
+    // Pad by the filter's footprint, in texels of the warped map.
+    const glm::vec2 texel = glm::vec2(box.hi - box.lo) / static_cast<float>(std::max(in.size, 1));
+    box.lo -= glm::vec3(texel * in.paddingTexels, 0.0f);
+    box.hi += glm::vec3(texel * in.paddingTexels, 0.0f);
+    const float zPad = 1e-4f * (box.hi.z - box.lo.z) + 1e-12f;
+    box.lo.z -= zPad;
+    box.hi.z += zPad;
+    // To clip space: x, y across, z from the light (warped z grows towards it: the nearest at -1).
+    glm::mat4 fit(1.0f);
+    fit[0][0] = 2.0f / (box.hi.x - box.lo.x);
+    fit[1][1] = 2.0f / (box.hi.y - box.lo.y);
+    fit[2][2] = -2.0f / (box.hi.z - box.lo.z);
+    fit[3] = glm::vec4(-(box.hi.x + box.lo.x) / (box.hi.x - box.lo.x), -(box.hi.y + box.lo.y) / (box.hi.y - box.lo.y),
+                       (box.hi.z + box.lo.z) / (box.hi.z - box.lo.z), 1.0f);
+    cam.clipFromView = fit * warped;
+    // A texel's world size: across, (box width / size) t / n; along the
+    // view, (box height / size) t^2 / |b| (y' = a + b / t).
+    cam.warped = true;
+    cam.warpU = texel.x / n;
+    cam.warpV = texel.y / std::abs(b);
+    const glm::vec4 rowY(cam.viewFromWorld[0][1], cam.viewFromWorld[1][1], cam.viewFromWorld[2][1], cam.viewFromWorld[3][1]);
+    cam.warpPlane = glm::vec4(glm::vec3(rowY), rowY.w - centre.y);
+    cam.texelSize = std::max(cam.warpU * n, cam.warpV * n * n);
+}
+
+} // namespace
+
+LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitInput& in, const LightWarp* warp) {
     const Bounds scene = all(in);
     const float diagonal = diagonalOf(scene);
     LightCamera cam = directionalView(direction, in, scene, diagonal);
+    const std::optional<glm::vec3> axis = fit == LightFit::Scene ? std::nullopt : warpAxis(direction, warp);
+    if (axis) {
+        // The light's view turned so that the view's direction across the light is +y.
+        const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
+        cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, *axis);
+        cam.casts = castersThatMatter(glm::vec4(-direction, 0.0f), cam.viewFromWorld, in);
+    }
     Bounds region; // light view space: x, y across the light, z = -distance from the eye
     if (fit == LightFit::Scene) {
         // The lecture's box: sides equal to the diagonal, centred on the scene.
@@ -189,6 +272,8 @@ LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitIn
     } else {
         if (in.visibleSamples) {
             region = *in.visibleSamples;  // the receiver points the camera sees, reduced from its depth (SDSM)
+            // Given in directionalLightView's space: a warp's turned view takes their box's corners.
+            if (axis) region = region.transformed(cam.viewFromWorld * glm::inverse(lightViewOf(direction, scene, diagonal)));
         } else {
             // The receivers the camera may see, clipped to its frustum.
             const Bounds frustum = frustumBounds(in.cameraClipFromWorld, cam.viewFromWorld);
@@ -221,6 +306,15 @@ LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitIn
             region.hi.y = std::min(region.hi.y, casters.hi.y);
             region.hi.z = std::max(region.hi.z, casters.hi.z);
         }
+    }
+    if (axis) {
+        const float depthPad = 1e-3f * diagonal;
+        cam.nearPlane = -region.hi.z - depthPad;
+        cam.farPlane = -region.lo.z + depthPad;
+        const float sinGamma = glm::length(warp->forward - glm::dot(warp->forward, direction) * direction);
+        warpRegion(cam, region, *warp, sinGamma, in);
+        cam.perspective = false;
+        return cam;
     }
     // Pad by the filter's footprint, in texels of the final size.
     const float extent = std::max(region.hi.x - region.lo.x, region.hi.y - region.lo.y);

@@ -30,7 +30,23 @@ struct LightCamera {
     /// Per item: 1 when it may shadow a receiver the camera sees (drawn into
     /// the map), 0 when it cannot; empty: every caster is drawn.
     std::vector<std::uint8_t> casts;
+    /// A warped map (LightWarp): clipFromView is projective along the view,
+    /// and a texel's world size at a point is max(warpU t, warpV t^2), t =
+    /// dot(warpPlane.xyz, point) + warpPlane.w (texelSize: the smallest).
+    bool warped = false;
+    glm::vec4 warpPlane{0.0f};
+    float warpU = 0.0f, warpV = 0.0f;
     glm::mat4 clipFromWorld() const { return clipFromView * viewFromWorld; }
+};
+
+/// The view a directional light's map is warped for (light space
+/// perspective shadow maps, Wimmer, Scherzer and Purgathofer 2004): the
+/// camera's position, its unit forward direction, and the view distance the
+/// warp's near plane stands for at the least (map option warpNear).
+struct LightWarp {
+    glm::vec3 eye{0.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};
+    float nearDistance = 1.0f;
 };
 
 /// What the fit looks at: every item's world bounds, which cast and which
@@ -95,7 +111,10 @@ std::vector<std::uint8_t> castersThatMatter(const glm::vec4& towardsLight, const
 /// farthest receiver; the shadow pass clamps depth (casters nearer than
 /// the near plane still occlude). Scene: the lecture's cube around the
 /// scene's bounds, sides equal to their diagonal.
-LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitInput& in);
+/// With `warp` (tight and sdsm fits), the fitted box is warped by a
+/// perspective along the view; a light within about 1 degree of the view
+/// direction gets none (the warp's axis is undefined there).
+LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitInput& in, const LightWarp* warp = nullptr);
 
 /// A point light's cube: six 90-degree cameras from its position with the
 /// cube-map convention's directions and up vectors (+X, -X, +Y, -Y, +Z, -Z).

@@ -105,6 +105,9 @@ expect_error planar-receivers-from-set "--set lights[0].shadow.planar.receivers=
 expect_error planar-receivers-from-file "planar-nope.json: lights[0].shadow.planar.receivers: no node named 'nope'" render planar-nope.json -o out.png
 expect_error splits-beyond-far "--set lights[0].shadow.map.cascadeSplits=\"500\": lights[0].shadow.map.cascadeSplits: \"500\": the last split must lie before the camera's far plane (camera.far 100)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="500"'
 expect_error splits-inside-near "the first split must lie beyond the camera's near plane (camera.near 0.1)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="0.01"'
+expect_error warp-spot "--set lights[0].shadow.map.warp=lispsm: lights[0].shadow.map.warp: map: warp \"lispsm\" is for directional lights" render "$src/scenes/spot-objects.json" -o out.png --set lights[0].shadow.map.warp=lispsm
+expect_error warp-cascades "lights[0].shadow.map.warp: map: warp \"lispsm\" is for one map; with cascades > 1 use warp \"none\"" render -o out.png --set lights[0].shadow.map.warp=lispsm --set lights[0].shadow.map.cascades=3
+expect_error warp-near-zero "--set lights[0].shadow.map.warpNear=0: lights[0].shadow.map.warpNear: expected a number in 0.01..1000, got 0" render -o out.png --set lights[0].shadow.map.warpNear=0
 # The map budget counts translucent casters' transmittance and mip chains, and names the light that holds the memory.
 # The file's size alone fits; a --set of cascades takes it past the budget: the --set is named, not the file.
 printf '{"lights":[{"type":"directional","shadow":{"technique":"map","map":{"size":8192,"cascades":2}}}],"nodes":[{"shape":{"type":"box"}}]}' > "$work/fits.json"

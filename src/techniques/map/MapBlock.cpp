@@ -63,6 +63,13 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.layer = static_cast<float>(p.layer);
     u.reachTexels = reach(p.options);
     u.texelWorld = p.camera.texelSize;
+    if (p.camera.warped) {  // a texel's size per point (shadow_map_vertex.glsl)
+        u.warpPlane = p.camera.warpPlane;
+        const glm::mat4& view = p.camera.viewFromWorld;
+        u.warpAcross = glm::vec4(view[0][0], view[1][0], view[2][0], 0.0f);  // the view's first row: light-space x
+        u.warpU = p.camera.warpU;
+        u.warpV = p.camera.warpV;
+    }
     u.perspective = p.camera.perspective ? 1.0f : 0.0f;
     u.constantBias = p.options.constantBias;
     u.normalBiasTexels = p.options.normalBias;

@@ -125,7 +125,11 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
         p.camera = fitSpot(light, lightFit(p.options.fit), in);
     else if (cascadeCount(light, p.options) > 1)
         fitCascades(p, light, frame, in, seenDepths);
-    else
+    else if (p.options.warp == MapWarp::Lispsm) {
+        const glm::mat4 worldFromView = glm::inverse(frame.viewFromWorld);
+        const LightWarp warp{glm::vec3(worldFromView[3]), -glm::normalize(glm::vec3(worldFromView[2])), p.options.warpNear};
+        p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in, &warp);
+    } else
         p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in);
     // The presets' fixed cameras skip what shadows nothing too (a ground
     // plane under everything): their maps stay the peers', drawn with less.

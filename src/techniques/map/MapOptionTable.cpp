@@ -34,6 +34,10 @@ const OptionTable& mapOptionTable() {
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
                     "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights): around the points the viewer does see, reduced from a depth pre-pass of the frame; with cascades, the slices split the view depths it sees (docs/techniques.md)")
+            .choice(&MapOptions::warp, "warp", {"none", "lispsm"},
+                    "directional lights, one map: none; lispsm, the fitted box warped by a perspective along the view (light space perspective shadow maps), more texels near the camera and fewer far away; a light along the view gets no warp (docs/techniques.md)")
+            .number(&MapOptions::warpNear, "warpNear", 0.01, 1000.0, "scene units",
+                    "warp lispsm: the view distance below which the warp gives no more texels (the warp's near plane stands for max(warpNear, the nearest receiver seen)); larger: a milder warp")
             .choice(&MapOptions::filter, "filter", map::filterNames(), map::filterDoc())
             .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
@@ -113,6 +117,16 @@ std::string unsupported(const Light& light) {
     if (o.fit == MapFit::Sdsm && o.preset == MapPreset::Default) {
         if (light.type != LightType::Directional)
             return std::string("map: fit \"sdsm\" is for directional lights (a spot or point light takes \"tight\" or \"scene\")");
+    }
+    if (o.warp == MapWarp::Lispsm) {
+        if (light.type != LightType::Directional)
+            return std::string("map: warp \"lispsm\" is for directional lights (a spot's map is a perspective already; a point light's cube takes \"none\")");
+        if (o.cascades > 1) return std::string("map: warp \"lispsm\" is for one map; with cascades > 1 use warp \"none\"");
+        if (o.preset != MapPreset::Default) return std::string("map: preset: the presets' fixed cameras take no warp; use warp \"none\"");
+        if (o.filter == MapFilter::Pcss)
+            return std::string("map: filter \"pcss\" takes distances along the light from an unwarped map; with warp \"lispsm\" use another filter");
+        if (o.representation != MapRepresentation::Depth)
+            return std::string("map: representation: moment maps blur in texels of an unwarped map; with warp \"lispsm\" use representation \"depth\"");
     }
     if (o.cascades > 1) {
         if (light.type != LightType::Directional)
