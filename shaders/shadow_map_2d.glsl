@@ -96,6 +96,9 @@ float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
 // fragment with the cascade's own texel size.
 float cascadeTest(int c, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 worldDx, vec3 worldDy, inout vec3 transmit) {
     float texel = map.cascadeTexel[c >> 2][c & 3];
+#if MAP_WARP
+    if (map.warpU > 0.0) texel = mapWarpedTexel(map.cascadeWarpPlane[c], map.cascadeWarp[c].xy, worldPosition, n);  // warped cascades
+#endif
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), map.towardsLight, texel, tanTheta);
     MapLookup m = mapLookup(map.layer + float(c));
 #if MAP_FILTER == SL_MAP_FILTER_PCSS

@@ -18,4 +18,19 @@ vec3 mapNormalOffset(vec3 p, vec3 n, float NdotL, float texel) { return p + n * 
 // the point moved towards the light (L) by as much.
 vec3 mapReceiverPlaneOffset(vec3 p, vec3 L, float texel, float tanTheta) { return p + L * (map.reachTexels * texel * tanTheta); }
 
+// A warped map's texel (warp lispsm, LightCamera): its world size at point
+// p grows with t = dot(plane.xyz, p) + plane.w, the distance from the warp's
+// centre along the view, as uv.x t across the view and uv.y t^2 along it, so
+// it is long and narrow far away. The offsets are against the surface's
+// depth change over a texel, which runs along the normal n's direction
+// across the light (the map's x: map.warpAcross, y: plane.xyz): the
+// texel's extent that way.
+float mapWarpedTexel(vec4 plane, vec2 uv, vec3 p, vec3 n) {
+    float t = max(dot(plane.xyz, p) + plane.w, 0.0);
+    vec2 extent = vec2(uv.x * t, uv.y * t * t);
+    vec2 g = abs(vec2(dot(map.warpAcross.xyz, n), dot(plane.xyz, n)));
+    float lg = g.x + g.y;
+    return lg > 1e-4 ? dot(extent, g) / lg : max(extent.x, extent.y);
+}
+
 #endif

@@ -47,6 +47,8 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     SL_MAP_VEC4 cascadeRange[SL_MAP_MAX_CASCADES]; // cascades: x near, y far plane of each cascade's light camera, scene units
     SL_MAP_VEC4 warpPlane;  // warp lispsm: t, the distance from the warp's centre along the view across the light (LightCamera::warpPlane); xyz: the map's y in the world
     SL_MAP_VEC4 warpAcross; // warp lispsm: the map's x in the world (xyz)
+    SL_MAP_VEC4 cascadeWarpPlane[SL_MAP_MAX_CASCADES]; // warp lispsm, cascades: each one's warpPlane
+    SL_MAP_VEC4 cascadeWarp[SL_MAP_MAX_CASCADES];      // warp lispsm, cascades: each one's warpU (x) and warpV (y)
     SL_MAP_VEC3 lightPosition; float shadowedLight; // spot and point lights: world position; the light a shadowed point keeps (share, shadowedLight)
     SL_MAP_VEC3 towardsLight; float reachTexels;    // directional lights: unit vector towards the light; the filter's reach (texels from the centre to its farthest tap)
     SL_MAP_VEC3 lightAxis; float cascadeBlend;      // a perspective light camera's unit view direction (texels grow along it); cascades: the blend share of a slice
@@ -80,7 +82,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float kernelRounds;     // grid and pcf20 with MAP_EARLY_OUT: rounds of four taps after the first (a loop bound the compiler cannot unroll)
     float cascadeRounds;    // cascades: 2, the slice's test and the next one's where it fades into it (a loop bound the compiler cannot unroll)
     float blockerHull;      // pcss with MAP_EARLY_OUT: the blocker taps' convex hull's inradius, a share of the search radius
-    float warpU;            // warp lispsm: a texel's world size across the view per unit of t (0: no warp) ...
+    float warpU;            // warp lispsm: a texel's world size across the view per unit of t (0: no warp; cascades: 1 when warped) ...
     float warpV;            // ... and along it per t^2, t = dot(warpPlane.xyz, point) + warpPlane.w
     float padding0, padding1, padding2, padding3, padding4; // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus

@@ -31,18 +31,10 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     // which is affine in the position, so it interpolates exactly across
     // even a wall-sized triangle.
     if (map.perspective > 0.5) texel *= max(dot(worldPosition - map.lightPosition, map.lightAxis), 0.0);
-    // A warped map (lispsm): texels grow with t, the distance from the warp's
-    // centre along the view, as t across the view and t^2 along it
-    // (LightCamera), so they are long and narrow far away. The offsets are
-    // against the surface's depth change over a texel, which runs along the
-    // normal's direction across the light: the texel's extent that way.
-    if (map.warpU > 0.0) {
-        float t = max(dot(map.warpPlane.xyz, worldPosition) + map.warpPlane.w, 0.0);
-        vec2 extent = vec2(map.warpU * t, map.warpV * t * t);
-        vec2 g = vec2(dot(map.warpAcross.xyz, n), dot(map.warpPlane.xyz, n));
-        float lg = abs(g.x) + abs(g.y);
-        texel = lg > 1e-4 ? dot(extent, abs(g)) / lg : max(extent.x, extent.y);
-    }
+    // A warped map (lispsm): its texel's size here (shadow_map_bias.glsl).
+#if MAP_WARP
+    if (map.warpU > 0.0) texel = mapWarpedTexel(map.warpPlane, vec2(map.warpU, map.warpV), worldPosition, n);
+#endif
     // The normal offset, then the receiver-plane bias for the filter's reach (shadow_map_bias.glsl).
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), toLight, texel, mapTanTheta(n, toLight, NdotL));
     vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);

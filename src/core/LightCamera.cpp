@@ -391,11 +391,11 @@ std::vector<std::uint8_t> castersOverSlice(const LightCamera& cam, const glm::ve
 } // namespace
 
 LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in,
-                       float readFrom) {
+                       float readFrom, const LightWarp* warp) {
     const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
     FitInput slice = in;
     slice.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, near, far) * camera.viewFromWorld();
-    if (!stabilize) return fitDirectional(direction, LightFit::Tight, slice);
+    if (!stabilize) return fitDirectional(direction, LightFit::Tight, slice, warp);
 
     // A view of fixed orientation and origin: it moves with neither the camera nor the slice.
     const Bounds scene = all(in);

@@ -161,8 +161,10 @@ float viewReach(const Camera& camera, const FitInput& in);
 /// read this cascade (the previous slice's blend zone; at most `near`, 0:
 /// `near`): only casters that can shadow a receiver seen between it and
 /// `far` are kept in `casts` (castersOverSlice).
+/// `warp` (tight cascades only, stabilize false): each slice's map warped
+/// as fitDirectional warps one.
 LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in,
-                       float readFrom = 0.0f);
+                       float readFrom = 0.0f, const LightWarp* warp = nullptr);
 
 /// Spot light: perspective along its axis, field of view just containing
 /// the outer cone (plus the padding), far at the farthest projection of the

@@ -57,6 +57,22 @@ TEST_F(LispsmGLTest, SmallScenesKeepTheirShadowsWithoutAcne) {
     }
 }
 
+// Cascades fitted tightly (stabilize false) take the warp slice by slice,
+// each slice's warp near plane at least its own near end. On cascades-field
+// as shipped but unstabilised (four of 1024^2, 960x540), measured: 0.007 %
+// misclassified away from the band against 0.011 % unwarped, p95 footprint
+// 8.6 against 6.7 pixels a texel (each slice's far end gets fewer texels).
+// The bar: the issue's 0.05 %, and no more than the unwarped cascades.
+TEST_F(LispsmGLTest, TightCascadesTakeTheWarpSliceBySlice) {
+    const std::vector<std::string> tight{"lights[0].shadow.map.stabilize=false"};
+    std::vector<std::string> warped = tight;
+    warped.push_back("lights[0].shadow.map.warp=\"lispsm\"");
+    const Comparison none = compareScene(loadSceneFile(bundled("cascades-field.json"), tight));
+    const Comparison lispsm = compareScene(loadSceneFile(bundled("cascades-field.json"), warped));
+    EXPECT_LE(awayFromEdges(lispsm.lights[0]), 0.0005);
+    EXPECT_LE(awayFromEdges(lispsm.lights[0]), awayFromEdges(none.lights[0]));
+}
+
 // A camera looking along the light: the warp has no axis (the view's
 // direction across the light vanishes), so the map is the unwarped one,
 // the frame the same pixel for pixel. The same scene under a light 30
@@ -89,13 +105,14 @@ TEST_F(LispsmGLTest, ALightAlongTheViewIsNotWarped) {
     EXPECT_GT(differing(frame("none", across), frame("lispsm", across)), 0u);
 }
 
-// What the warp is not for, refused in one line naming the option.
-TEST_F(LispsmGLTest, SpotLightsCascadesAndPcssAreRefused) {
+// What the warp is not for, refused in one line naming the option:
+// stabilised cascades (snapped to whole texels, which a warp undoes).
+TEST_F(LispsmGLTest, SpotLightsStabilisedCascadesAndPcssAreRefused) {
     const std::vector<std::pair<std::string, std::string>> cases{
         {R"({ "lights": [ { "type": "spot", "position": [0, 4, 0], "direction": [0, -1, 0], "shadow": { "technique": "map", "map": { "warp": "lispsm" } } } ] })",
          "warp \"lispsm\" is for directional lights"},
         {R"({ "lights": [ { "type": "directional", "direction": [0, -1, 0.3], "shadow": { "technique": "map", "map": { "warp": "lispsm", "cascades": 4 } } } ] })",
-         "warp \"lispsm\" is for one map"},
+         "warp \"lispsm\" with cascades takes stabilize false"},
         {R"({ "lights": [ { "type": "directional", "direction": [0, -1, 0.3], "size": 1, "shadow": { "technique": "map", "map": { "warp": "lispsm", "filter": "pcss" } } } ] })",
          "filter \"pcss\" takes distances along the light from an unwarped map"},
     };

@@ -56,6 +56,12 @@ glm::vec2 sampledRange(const Camera& camera, glm::vec2 seen, bool stabilize, glm
     return {near, far};
 }
 
+// The view a warped map is warped for: the frame's camera and warpNear.
+LightWarp lightWarp(const FrameInfo& frame, const MapOptions& o) {
+    const glm::mat4 worldFromView = glm::inverse(frame.viewFromWorld);
+    return LightWarp{glm::vec3(worldFromView[3]), -glm::normalize(glm::vec3(worldFromView[2])), o.warpNear};
+}
+
 void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in, const glm::vec2* seenDepths) {
     const Camera& camera = frame.scene.camera;
     const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
@@ -75,9 +81,14 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
     p.cascades.clear();
     // A slice's lookups reach into the next cascade over its far blend
     // share: cascade c is read from slice c - 1's near end on (conservative).
-    for (std::size_t c = 0; c < p.cascadeFar.size(); ++c)
-        p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, c == 0 ? near : p.cascadeFar[c - 1], p.cascadeFar[c],
-                                        p.options.stabilize, in, c < 2 ? near : p.cascadeFar[c - 2]));
+    for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) {
+        const float sliceNear = c == 0 ? near : p.cascadeFar[c - 1];
+        // A warped slice's near plane stands for the slice's own near end at the least.
+        LightWarp warp = lightWarp(frame, p.options);
+        warp.nearDistance = std::max(warp.nearDistance, sliceNear);
+        p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, in,
+                                        c < 2 ? near : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr));
+    }
     p.camera = p.cascades.front();
     const glm::mat4& v = frame.viewFromWorld;
     p.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
@@ -126,8 +137,7 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
     else if (cascadeCount(light, p.options) > 1)
         fitCascades(p, light, frame, in, seenDepths);
     else if (p.options.warp == MapWarp::Lispsm) {
-        const glm::mat4 worldFromView = glm::inverse(frame.viewFromWorld);
-        const LightWarp warp{glm::vec3(worldFromView[3]), -glm::normalize(glm::vec3(worldFromView[2])), p.options.warpNear};
+        const LightWarp warp = lightWarp(frame, p.options);
         p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in, &warp);
     } else
         p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in);

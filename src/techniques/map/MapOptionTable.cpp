@@ -35,7 +35,7 @@ const OptionTable& mapOptionTable() {
             .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
                     "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights): around the points the viewer does see, reduced from a depth pre-pass of the frame; with cascades, the slices split the view depths it sees (docs/techniques.md)")
             .choice(&MapOptions::warp, "warp", {"none", "lispsm"},
-                    "directional lights, one map: none; lispsm, the fitted box warped by a perspective along the view (light space perspective shadow maps), more texels near the camera and fewer far away; a light along the view gets no warp (docs/techniques.md)")
+                    "directional lights (one map, or cascades with stabilize false): none; lispsm, the fitted box warped by a perspective along the view (light space perspective shadow maps), more texels near the camera and fewer far away; a light along the view gets no warp (docs/techniques.md)")
             .number(&MapOptions::warpNear, "warpNear", 0.01, 1000.0, "scene units",
                     "warp lispsm: the view distance below which the warp gives no more texels (the warp's near plane stands for max(warpNear, the nearest receiver seen)); larger: a milder warp")
             .choice(&MapOptions::filter, "filter", map::filterNames(), map::filterDoc())
@@ -121,7 +121,8 @@ std::string unsupported(const Light& light) {
     if (o.warp == MapWarp::Lispsm) {
         if (light.type != LightType::Directional)
             return std::string("map: warp \"lispsm\" is for directional lights (a spot's map is a perspective already; a point light's cube takes \"none\")");
-        if (o.cascades > 1) return std::string("map: warp \"lispsm\" is for one map; with cascades > 1 use warp \"none\"");
+        if (o.cascades > 1 && o.stabilize)
+            return std::string("map: warp \"lispsm\" with cascades takes stabilize false (a warped map cannot be snapped to whole texels); or use warp \"none\"");
         if (o.preset != MapPreset::Default) return std::string("map: preset: the presets' fixed cameras take no warp; use warp \"none\"");
         if (o.filter == MapFilter::Pcss)
             return std::string("map: filter \"pcss\" takes distances along the light from an unwarped map; with warp \"lispsm\" use another filter");

@@ -72,6 +72,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.plainFetch = map::plainFetch(o, v.cube, softwareRasterizer);
     v.pcssNearest = softwareRasterizer && o.filter == MapFilter::Pcss;
     v.earlyOut = map::earlyOut(o, v.cube, softwareRasterizer);
+    v.warped = !v.cube && o.warp == MapWarp::Lispsm;
     return v;
 }
 
@@ -89,6 +90,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_PLAIN_FETCH", plainFetch)
         .set("MAP_PCSS_NEAREST", pcssNearest)
         .set("MAP_EARLY_OUT", earlyOut)
+        .set("MAP_WARP", warped)
         .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))
         .str();
 }

@@ -35,6 +35,9 @@ struct LightPassVariant {
     bool pcssNearest = false;
     /// grid and pcf20: the corners first, the rest skipped where they agree (MapSettings: kernelRounds)
     bool earlyOut = false;
+    /// warp lispsm: the offsets take the warped texel's size per point (a
+    /// define, so that unwarped maps do not pay for it on llvmpipe)
+    bool warped = false;
     /// The variant of `light` (its effective options); `softwareRasterizer`
     /// picks the grid's taps; `translucentCasters`, whether the frame has any.
     static LightPassVariant of(const Light& light, bool softwareRasterizer, bool translucentCasters);
