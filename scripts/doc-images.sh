@@ -104,6 +104,8 @@ compare pcss-spot-objects-reference reference.png scenes/spot-objects.json --wid
 render  light-leak-vsm          scenes/light-leak.json --width 480 --height 270 --set "$MAP.size=2048" --set "$MAP.representation=vsm" --set "$MAP.blur=6"   # techniques "Filterable maps" (2048^2)
 render  light-leak-evsm4        scenes/light-leak.json --width 480 --height 270 --set "$MAP.size=2048" --set "$MAP.representation=evsm4" --set "$MAP.blur=6"   # techniques "Filterable maps" (2048^2)
 
+compare long-view-tight-error error-0.png scenes/long-view.json --width 480 --height 270 --set "$MAP.cascades=1" --set "$MAP.warp=none"   # techniques "Warped maps": one 2048^2 map, unwarped, its errors
+compare long-view-lispsm-error error-0.png scenes/long-view.json --width 480 --height 270 --set "$MAP.cascades=1" --set "$MAP.warp=lispsm"   # techniques "Warped maps": the same map warped
 # docs/techniques.md, planar
 render  planar-room             scenes/room-point.json --width 960 --height 540 --set "$L.shadow.technique=planar"   # techniques `planar`
 render  planar-room-lecture     scenes/room-point.json --width 1280 --height 720 --set "$L.shadow.technique=planar" --set "$L.shadow.planar.style=lecture"   # techniques `planar`: style lecture
