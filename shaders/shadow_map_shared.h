@@ -82,7 +82,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float kernelRounds;     // grid and pcf20 with MAP_EARLY_OUT: rounds of four taps after the first (a loop bound the compiler cannot unroll)
     float cascadeRounds;    // cascades: 2, the slice's test and the next one's where it fades into it (a loop bound the compiler cannot unroll)
     float blockerHull;      // pcss with MAP_EARLY_OUT: the blocker taps' convex hull's inradius, a share of the search radius
-    float warpU;            // warp lispsm: a texel's world size across the view per unit of t (0: no warp; cascades: 1 when warped) ...
+    float warpU;            // warp lispsm: a texel's world size across the view per unit of t (0: no warp; cascades: cascade 0's, > 0 when warped) ...
     float warpV;            // ... and along it per t^2, t = dot(warpPlane.xyz, point) + warpPlane.w
     float padding0, padding1, padding2, padding3, padding4; // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus

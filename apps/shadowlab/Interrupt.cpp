@@ -4,7 +4,6 @@
 #include <shadowlab/Error.h>
 
 #include <chrono>
-#include <exception>
 #include <future>
 
 #include <csignal>

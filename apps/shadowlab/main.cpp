@@ -33,12 +33,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
-
-#include <unistd.h>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <set>
+
+#include <unistd.h>  // isatty
 
 namespace fs = std::filesystem;
 using namespace shadowlab;

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <span>
@@ -159,14 +158,15 @@ namespace {
 // for what `in`'s camera sees.
 float diagonalOf(const Bounds& scene) { return scene.empty() ? 1.0f : std::max(glm::length(scene.size()), 1e-3f); }
 
-glm::mat4 lightViewOf(const glm::vec3& direction, const Bounds& scene, float diagonal) {
+// `up`: the view's +y (a warp's axis); lightCameraUp's when not given.
+glm::mat4 lightViewOf(const glm::vec3& direction, const Bounds& scene, float diagonal, const glm::vec3* up = nullptr) {
     const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
-    return glm::lookAt(centre - direction * diagonal, centre, lightCameraUp(direction));
+    return glm::lookAt(centre - direction * diagonal, centre, up ? *up : lightCameraUp(direction));
 }
 
-LightCamera directionalView(const glm::vec3& direction, const FitInput& in, const Bounds& scene, float diagonal) {
+LightCamera directionalView(const glm::vec3& direction, const FitInput& in, const Bounds& scene, float diagonal, const glm::vec3* up = nullptr) {
     LightCamera cam;
-    cam.viewFromWorld = lightViewOf(direction, scene, diagonal);
+    cam.viewFromWorld = lightViewOf(direction, scene, diagonal, up);
     cam.casts = castersThatMatter(glm::vec4(-direction, 0.0f), cam.viewFromWorld, in);
     return cam;
 }
@@ -180,13 +180,19 @@ glm::mat4 directionalLightView(const glm::vec3& direction, const FitInput& in) {
 
 namespace {
 
-// The warp's axis: the view direction across the light, or none when the
-// light is within about 1 degree of the view (sin below 0.02).
-std::optional<glm::vec3> warpAxis(const glm::vec3& direction, const LightWarp* warp) {
+// The warp's axis: the view direction across the light (unit), and the sine
+// of the angle between view and light (its length before normalising); none
+// when the light is within about 1 degree of the view (sine below 0.02).
+struct WarpAxis {
+    glm::vec3 axis;
+    float sinGamma;
+};
+std::optional<WarpAxis> warpAxis(const glm::vec3& direction, const LightWarp* warp) {
     if (!warp) return std::nullopt;
     const glm::vec3 across = warp->forward - glm::dot(warp->forward, direction) * direction;
-    if (glm::length(across) < 0.02f) return std::nullopt;
-    return glm::normalize(across);
+    const float sinGamma = glm::length(across);
+    if (sinGamma < 0.02f) return std::nullopt;
+    return WarpAxis{glm::normalize(across), sinGamma};
 }
 
 // LiSPSM: `region` (light view space, the light looking down -z, the view's
@@ -255,14 +261,9 @@ void warpRegion(LightCamera& cam, const Bounds& region, const LightWarp& warp, f
 LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitInput& in, const LightWarp* warp) {
     const Bounds scene = all(in);
     const float diagonal = diagonalOf(scene);
-    LightCamera cam = directionalView(direction, in, scene, diagonal);
-    const std::optional<glm::vec3> axis = fit == LightFit::Scene ? std::nullopt : warpAxis(direction, warp);
-    if (axis) {
-        // The light's view turned so that the view's direction across the light is +y.
-        const glm::vec3 centre = scene.empty() ? glm::vec3(0.0f) : scene.centre();
-        cam.viewFromWorld = glm::lookAt(centre - direction * diagonal, centre, *axis);
-        cam.casts = castersThatMatter(glm::vec4(-direction, 0.0f), cam.viewFromWorld, in);
-    }
+    const std::optional<WarpAxis> axis = fit == LightFit::Scene ? std::nullopt : warpAxis(direction, warp);
+    // Warped: the light's view turned so that the view's direction across the light is +y.
+    LightCamera cam = directionalView(direction, in, scene, diagonal, axis ? &axis->axis : nullptr);
     Bounds region; // light view space: x, y across the light, z = -distance from the eye
     if (fit == LightFit::Scene) {
         // The lecture's box: sides equal to the diagonal, centred on the scene.
@@ -311,8 +312,7 @@ LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitIn
         const float depthPad = 1e-3f * diagonal;
         cam.nearPlane = -region.hi.z - depthPad;
         cam.farPlane = -region.lo.z + depthPad;
-        const float sinGamma = glm::length(warp->forward - glm::dot(warp->forward, direction) * direction);
-        warpRegion(cam, region, *warp, sinGamma, in);
+        warpRegion(cam, region, *warp, axis->sinGamma, in);
         cam.perspective = false;
         return cam;
     }

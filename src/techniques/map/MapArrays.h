@@ -17,9 +17,6 @@ namespace shadowlab::map {
 
 /// The depth texture format of a map (rgba8 and r8: their depth test's buffer).
 GLenum depthFormat(MapFormat f);
-/// The depth texture format of an array: depthFormat, but 32-bit float for
-/// moments (their moments are made from it, whatever `format` says).
-GLenum depthFormat(const struct ArrayKey& key);
 
 /// What lights must agree on to share one texture array.
 struct ArrayKey {
@@ -38,6 +35,9 @@ struct ArrayKey {
     bool operator==(const ArrayKey& o) const { return tie() == o.tie(); }
 };
 
+/// The depth texture format of an array: depthFormat, but 32-bit float for
+/// moments (their moments are made from it, whatever `format` says).
+GLenum depthFormat(const ArrayKey& key);
 /// Moments stored per texel: 0 for depth maps.
 int momentCount(MapRepresentation r);
 /// Whether the array's depth-test buffer is one layer shared by all its

@@ -45,12 +45,11 @@ void cubeMembers(shared::MapUniforms& u, const MapLight& p, const MapArray& g) {
 void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
     for (std::size_t c = 0; c < p.cascades.size(); ++c) {
         u.cascadeShadowFromWorld[c] = kBias * p.cascades[c].clipFromWorld();
-        if (p.cascades[c].warped) {  // its texel's size per point (shadow_map_2d.glsl: cascadeTexelAt)
+        // Warped: its texel's size per point (shadow_map_bias.glsl: mapWarpedTexel). The
+        // cascades share cascade 0's light view, whose warpAcross and warpU (the flag) upload() sets.
+        if (p.cascades[c].warped) {
             u.cascadeWarpPlane[c] = p.cascades[c].warpPlane;
             u.cascadeWarp[c] = glm::vec4(p.cascades[c].warpU, p.cascades[c].warpV, 0.0f, 0.0f);
-            const glm::mat4& view = p.cascades[c].viewFromWorld;
-            u.warpAcross = glm::vec4(view[0][0], view[1][0], view[2][0], 0.0f);  // one light view for every cascade
-            u.warpU = 1.0f;
         }
         u.cascadeFar[c / 4][static_cast<int>(c % 4)] = p.cascadeFar[c];
         u.cascadeTexel[c / 4][static_cast<int>(c % 4)] = p.cascades[c].texelSize;
@@ -70,7 +69,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.layer = static_cast<float>(p.layer);
     u.reachTexels = reach(p.options);
     u.texelWorld = p.camera.texelSize;
-    if (p.camera.warped) {  // a texel's size per point (shadow_map_vertex.glsl)
+    if (p.camera.warped) {  // a texel's size per point (shadow_map_vertex.glsl; cascades: p.camera is cascade 0)
         u.warpPlane = p.camera.warpPlane;
         const glm::mat4& view = p.camera.viewFromWorld;
         u.warpAcross = glm::vec4(view[0][0], view[1][0], view[2][0], 0.0f);  // the view's first row: light-space x

@@ -81,10 +81,11 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
     p.cascades.clear();
     // A slice's lookups reach into the next cascade over its far blend
     // share: cascade c is read from slice c - 1's near end on (conservative).
+    const LightWarp viewWarp = lightWarp(frame, p.options);
     for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) {
         const float sliceNear = c == 0 ? near : p.cascadeFar[c - 1];
         // A warped slice's near plane stands for the slice's own near end at the least.
-        LightWarp warp = lightWarp(frame, p.options);
+        LightWarp warp = viewWarp;
         warp.nearDistance = std::max(warp.nearDistance, sliceNear);
         p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, in,
                                         c < 2 ? near : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr));
@@ -136,11 +137,10 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
         p.camera = fitSpot(light, lightFit(p.options.fit), in);
     else if (cascadeCount(light, p.options) > 1)
         fitCascades(p, light, frame, in, seenDepths);
-    else if (p.options.warp == MapWarp::Lispsm) {
+    else {
         const LightWarp warp = lightWarp(frame, p.options);
-        p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in, &warp);
-    } else
-        p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in);
+        p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in, p.options.warp == MapWarp::Lispsm ? &warp : nullptr);
+    }
     // The presets' fixed cameras skip what shadows nothing too (a ground
     // plane under everything): their maps stay the peers', drawn with less.
     if (!p.cube && p.camera.casts.empty()) {
