@@ -30,6 +30,7 @@ StagingDirectory::StagingDirectory(fs::path target) : target_(std::move(target))
     std::error_code ec;
     fs::remove_all(staging_, ec);
     fs::create_directories(staging_, ec);
+    removeOnForcedEnd(staging_, OnForcedEnd::Everything);  // if a second interrupt ends the run at once
     if (ec) throw Error("-o " + target_.string() + ": cannot create the directory (" + ec.message() + ")");
 }
 

@@ -115,6 +115,7 @@ void MadeDirectories::make(const fs::path& dir, const std::string& label) {
     fs::create_directories(dir, ec);
     if (ec) throw Error(label + ": cannot create the directory (" + ec.message() + ")");
     made_.insert(made_.end(), missing.rbegin(), missing.rend());
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it) removeOnForcedEnd(*it, OnForcedEnd::IfEmpty);
 }
 
 PendingFiles::~PendingFiles() {
@@ -125,7 +126,10 @@ PendingFiles::~PendingFiles() {
 void PendingFiles::write(const fs::path& target, const std::function<void(const fs::path&)>& writeTo) {
     throwIfInterrupted();
     // NAME.pending-PID of runs that were killed, once per directory written to.
-    if (fs::path dir = target.parent_path(); cleaned_.insert(dir).second) removeStaleTemporariesIn(dir, "pending");
+    if (fs::path dir = target.parent_path(); cleaned_.insert(dir).second) {
+        removeStaleTemporariesIn(dir, "pending");
+        removeOnForcedEnd(dir, OnForcedEnd::OurPendingFiles);  // this run's, if a second interrupt ends it at once
+    }
     const fs::path temporary = besideTarget(target, "pending");
     files_.emplace_back(temporary, target);  // first: removed even if the write fails half way
     try {

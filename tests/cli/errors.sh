@@ -435,6 +435,27 @@ expect_interrupted bench-interrupted bench TERM "interrupted (SIGTERM)" "" -- be
 # so at 3 s the trace has begun. SIGUSR1 is one of the interrupts too.
 expect_interrupted compare-interrupted-in-trace 3 USR1 "interrupted (SIGUSR1)" 5000 -- compare -o c --samples 4096 --set lights[0].size=1
 
+# A second interrupt more than a second after the first ends the run at
+# once (killed by the signal, exit 128+15), removing this run's frames'
+# temporaries first. To hold the run between the two without racing its
+# checks: the first comes just after frame 0's temporary appears (frame 1's
+# render has begun: 3000x3000, a fraction of a second, with no check in
+# it), the process is then stopped for 1.2 s, and the second is delivered
+# as it continues.
+forced="$work/forced-end"
+mkdir -p "$forced"
+(cd "$forced" && exec "$tool" render -o 'z%03d.png' --frames 5 --width 3000 --height 3000) 2>"$forced.err" >/dev/null &
+pid=$!
+for _ in $(seq 3000); do compgen -G "$forced/z000.png.pending-$pid" >/dev/null && break; sleep 0.01; done
+kill -TERM "$pid"; sleep 0.01; kill -STOP "$pid"; sleep 1.2; kill -TERM "$pid"; kill -CONT "$pid"
+wait "$pid"
+code=$?
+if [[ $code -eq 143 && -z "$(ls -A "$forced")" ]]; then
+  echo "ok   render-interrupted-twice-apart (exit $code, nothing left)"; passed=$((passed + 1))
+else
+  echo "FAIL render-interrupted-twice-apart (exit $code): $(cat "$forced.err"); left: $(ls -A "$forced" | head -3)"; failures=$((failures + 1))
+fi
+
 # What a killed run left (its process is gone) is removed by the next run
 # writing into that directory (the frames of a sequence it does not write
 # again too), even a bench that then fails; a live process's stays.
