@@ -4,7 +4,7 @@
 //   colour = globalAmbient*ambient*base
 //          + visibility * light * (diffuse*base*max(N.L,0) + specular*max(N.H,0)^shininess)
 // Variants (ShaderVariant): AMBIENT, LIGHT (0/1: the ambient term, one
-// light's term), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE, ALPHA_TEST
+// light's term), LIGHT_LIST (the tiled list's lights, no shadows), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE, ALPHA_TEST
 // (alphaMode mask: discard under the cutoff),
 // WRITE_SURFACES (world position and geometric normal for the reference),
 // SCREEN_VISIBILITY (visibility from a per-pixel texture: the ray-traced
@@ -47,29 +47,39 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
 vec3 lightVisibility(vec3 worldPosition, vec3 worldNormal) {
     return draw.baseColor.w > 0.5 ? shadowVisibility(worldPosition, worldNormal) : vec3(1.0);
 }
+#endif
 
-// One light's diffuse and specular at this fragment, before visibility;
-// `reached` false outside the light's reach or facing away.
-vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
+#if LIGHT || LIGHT_LIST
+// A light's diffuse and specular at this fragment, before visibility, for
+// a light of `type` (SL_LIGHT_*) at `position` travelling along
+// `direction`, with `params` as LightUniforms.params and `radiance` its
+// colour; `reached` false outside the light's reach or facing away.
+vec3 lightTermOf(int type, vec3 position, vec3 direction, vec4 params, vec3 radiance, vec3 N, vec3 V, vec3 base, out bool reached) {
     vec3 L;
     float attenuation = 1.0;
-#if LIGHT_TYPE == SL_LIGHT_DIRECTIONAL
-    L = -light.direction.xyz;
-#else
-    L = normalize(light.position.xyz - vWorldPosition);
-    if (!slLightReaches(LIGHT_TYPE, light.position.xyz, light.direction.xyz, light.params.x, light.params.z, vWorldPosition))
-        attenuation = 0.0;
-#if LIGHT_TYPE == SL_LIGHT_SPOT
-    // Smooth falloff between the inner and outer cone (cosines in params.yz).
-    attenuation *= smoothstep(light.params.z, light.params.y, dot(-L, light.direction.xyz));
-#endif
-#endif
+    if (type == SL_LIGHT_DIRECTIONAL) {
+        L = -direction;
+    } else {
+        L = normalize(position - vWorldPosition);
+        if (!slLightReaches(type, position, direction, params.x, params.z, vWorldPosition))
+            attenuation = 0.0;
+        // Smooth falloff between the inner and outer cone (cosines in params.yz).
+        if (type == SL_LIGHT_SPOT) attenuation *= smoothstep(params.z, params.y, dot(-L, direction));
+    }
     float NdotL = max(dot(N, L), 0.0);
     reached = NdotL > 0.0 && attenuation > 0.0;
     if (!reached) return vec3(0.0);
     vec3 H = normalize(L + V);
     vec3 diffuse = draw.diffuse.rgb * base * NdotL;
     vec3 specular = draw.specular.rgb * pow(max(dot(N, H), 0.0), draw.specular.w);
+    return attenuation * radiance * (diffuse + specular);
+}
+#endif
+
+#if LIGHT
+// The one light of this pass (LIGHT_TYPE a constant, so the branches above
+// fold away).
+vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
     vec3 radiance = light.radiance.rgb;
 #if HAS_PROJECTOR
     // The slide projector (lecture 000): projective texture coordinates from
@@ -80,7 +90,40 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
     bool onSlide = c.w > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
     radiance *= onSlide ? texture(projectorImage, vec2(uv.x, 1.0 - uv.y)).rgb : vec3(0.0);
 #endif
-    return attenuation * radiance * (diffuse + specular);
+    return lightTermOf(LIGHT_TYPE, light.position.xyz, light.direction.xyz, light.params, radiance, N, V, base, reached);
+}
+#endif
+
+#if LIGHT_LIST
+// The lights without shadows beyond the base pass's, in one pass: the
+// lights whose reach overlaps this pixel's tile (src/render/LightList.cpp
+// bins them on the CPU each frame).
+struct ListedLight {
+    vec4 radiance;
+    vec4 position;
+    vec4 direction;
+    vec4 params;
+};
+layout(std430, binding = SL_STORAGE_LIGHT_LIST) readonly buffer LightList { ListedLight listed[]; };
+layout(std430, binding = SL_STORAGE_LIGHT_TILES) readonly buffer LightTiles {
+    uvec4 tiling;  // tile size in pixels, tiles across, tiles down, 0
+    uint cells[];  // per tile (first, count) into cells itself, then the light indices
+};
+
+vec3 listedLightsTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
+    uvec2 tile = min(uvec2(gl_FragCoord.xy) / tiling.x, tiling.yz - 1u);
+    uint t = tile.y * tiling.y + tile.x;
+    uint first = cells[2u * t], count = cells[2u * t + 1u];
+    vec3 sum = vec3(0.0);
+    reached = false;
+    for (uint k = 0u; k < count; ++k) {
+        ListedLight l = listed[cells[first + k]];
+        bool one;
+        vec3 term = lightTermOf(int(l.params.w), l.position.xyz, l.direction.xyz, l.params, l.radiance.rgb, N, V, base, one);
+        if (one) sum += term;
+        reached = reached || one;
+    }
+    return sum;
 }
 #endif
 
@@ -116,6 +159,12 @@ void main() {
     if (!reached) discard;  // an additive pass adds nothing here
 #endif
     if (reached) color += lightVisibility(vWorldPosition, N) * term;
+#endif
+#if LIGHT_LIST
+    vec3 V = normalize(frame.cameraPosition.xyz - vWorldPosition);
+    bool reached;
+    color += listedLightsTerm(N, V, base, reached);
+    if (!reached) discard;  // an additive pass adds nothing here
 #endif
     // A translucent surface's alpha weighs it over what is behind (BLENDED);
     // opaque passes store 1.

@@ -16,6 +16,13 @@
 #define SL_BINDING_DRAW 2
 #define SL_BINDING_TECHNIQUE 3     // a technique's own block (light-space matrices, bias, ...)
 
+// Shader-storage binding points (their own namespace): the tiled light
+// list of the pass that shades many lights at once (lighting.frag's
+// LIGHT_LIST variant, src/render/LightList.cpp).
+#define SL_STORAGE_LIGHT_LIST 0    // ListedLight[]: each light's terms, as LightUniforms without the projector
+#define SL_STORAGE_LIGHT_TILES 1   // uvec4 (tile size px, tiles across, tiles down, 0), then per tile (first, count), then light indices
+#define SL_LIGHT_TILE_SIZE 16      // pixels per side of a tile
+
 // Texture units.
 #define SL_UNIT_BASE_COLOR 0
 #define SL_UNIT_SCREEN_VISIBILITY 2   // per-pixel visibility from the ray-traced reference (R32F)
@@ -54,6 +61,16 @@ SL_BLOCK(LightUniforms, SL_BINDING_LIGHT, light) {
     SL_VEC4 params;           // x range (0 = unlimited), y cos(inner), z cos(outer), w type
     SL_MAT4 projectorFromWorld; // spot with a projected image: world -> the image's clip space (HAS_PROJECTOR)
 } SL_END_BLOCK(light)
+
+#ifdef __cplusplus
+// One light of the tiled light list (std430; vec4 members only).
+struct ListedLight {
+    SL_VEC4 radiance;
+    SL_VEC4 position;
+    SL_VEC4 direction;
+    SL_VEC4 params;
+};
+#endif
 
 SL_BLOCK(DrawUniforms, SL_BINDING_DRAW, draw) {
     SL_MAT4 worldFromObject;

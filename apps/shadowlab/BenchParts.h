@@ -46,6 +46,11 @@ struct TimedFrames {
     int unshadowedBaseLight = -1;
     std::vector<double> frameTimes;      ///< the plain frames' wall times, ms
     std::vector<double> unshadowedTimes; ///< the same scene with every technique "none"
+    /// The unshadowed scene again with a pass per light (RenderOptions::
+    /// groupLights off, the renderer before the tiled light list); timed
+    /// only for three lights or more, where the list can group some.
+    std::vector<double> unshadowedPerLightTimes;
+    bool timedPerLight = false;
     /// The frame again right after a plain one, RenderOptions::cacheShadowMaps
     /// on: the maps whose inputs did not change are kept, not drawn.
     std::vector<double> cachedTimes;

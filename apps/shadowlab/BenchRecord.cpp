@@ -109,8 +109,20 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
     std::size_t triangles = 0;
     for (const DrawItem& item : scene.drawItems()) triangles += scene.meshes[static_cast<std::size_t>(item.mesh)].triangleCount();
     const double frame = median(timed.frameTimes);
+    json extra = json::object();
+    // The tiled light list's pass ("lights"), where the frame has one.
+    if (timed.counters.count("lights.listed")) {
+        json list = json::object();
+        for (const char* name : {"listed", "tileEntries", "culled"}) list[name] = median(timed.counters.at(std::string("lights.") + name));
+        extra["lightList"] = list;
+    }
+    if (timed.timedPerLight) {
+        // The tiled light list's gain: the unshadowed frame against the same with a pass per light.
+        extra["unshadowedPerLightFrameMs"] = stats(timed.unshadowedPerLightTimes);
+        extra["unshadowedOverPerLight"] = median(timed.unshadowedTimes) / std::max(median(timed.unshadowedPerLightTimes), 1e-9);
+    }
     // frameOverHardMap: over the technique's baseline (for a map, the hard map).
-    return {{"scene", scene.name},
+    json record = {{"scene", scene.name},
             {"sceneFile", run.file.empty() ? "<default>" : run.file},
             {"settings", settings},
             {"triangles", triangles},
@@ -129,6 +141,8 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
             {"notes", accuracy.comparison.techniqueFrame.notes},
             {"techniqueImage", "images/" + stem + "-technique.png"},
             {"referenceImage", "images/" + stem + "-reference.png"}};
+    record.update(extra);
+    return record;
 }
 
 } // namespace shadowlab::tool

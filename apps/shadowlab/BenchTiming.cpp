@@ -55,9 +55,13 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
         timed.timedBaseline = timed.timedBaseline || b.differs;
         light.shadow = std::move(b.shadow);
     }
+    RenderOptions perLight = plain;
+    perLight.groupLights = false;
+    timed.timedPerLight = unshadowed.lights.size() >= 3;
     for (int i = 0; i < args.warmup; ++i) {
         renderer.render(scene, plain);
         renderer.render(unshadowed, plain);
+        if (timed.timedPerLight) renderer.render(unshadowed, perLight);
         if (timed.timedBaseline) renderer.render(baseline, plain);
     }
     // Timed frame i shows the animation at --time + i / --fps: the
@@ -74,6 +78,10 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
         cached.cacheShadowMaps = true;
         timed.cachedTimes.push_back(renderer.render(scene, cached).cpuMs);
         timed.unshadowedTimes.push_back(renderer.render(unshadowed, plain).cpuMs);
+        if (timed.timedPerLight) {
+            perLight.timeSeconds = t;
+            timed.unshadowedPerLightTimes.push_back(renderer.render(unshadowed, perLight).cpuMs);
+        }
         if (timed.timedBaseline) {
             moveToTime(baseline, loaded, t);
             timed.baselineTimes.push_back(renderer.render(baseline, plain).cpuMs);

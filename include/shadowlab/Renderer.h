@@ -60,6 +60,14 @@ struct RenderOptions {
     /// "shadow[i].cached"). Default off: bench's frameMs redraws every map
     /// and reports the cached frame beside it; the viewer turns it on.
     bool cacheShadowMaps = false;
+    /// Lights without shadows (technique "none") beyond the one the base
+    /// pass shades are shaded together in one pass, "lights", each pixel
+    /// looping over the lights whose reach overlaps its 16x16 tile (binned
+    /// on the CPU from each light's range), when there are two or more of
+    /// them. Off: a pass each, "light[i]", as for shadowed lights. The sums
+    /// differ from a pass each only by rounding (one sRGB encoding instead
+    /// of one per light). Default on.
+    bool groupLights = true;
 };
 
 struct PassTiming {

@@ -101,9 +101,29 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
     targets->drawBuffers(false);
 }
 
-void Renderer::Impl::otherLights(const Scene& s, int baseLight, const std::vector<std::vector<float>>* screenVisibility) {
+void Renderer::Impl::lightListPass(const Scene& s, const std::vector<int>& listed) {
+    currentPass = "lights";
+    const gl::ScopedPass scope(*clock, currentPass);
+    lightList.upload(s, listed, info->viewFromWorld, info->clipFromView, targets->size);
+    count("listed", static_cast<double>(listed.size()));
+    count("tileEntries", static_cast<double>(lightList.tiles().entries));
+    count("culled", static_cast<double>(lightList.tiles().culled));
+    resetTechniqueSamplers();
+    litMode = LitMode::Shade;
+    bindFrameTarget();
+    lightList.bind();
+    ShaderVariant variant;
+    variant.ambient = false;
+    variant.lightList = true;
+    gl::apply(litState());
+    drawShaded(variant);
+}
+
+void Renderer::Impl::otherLights(const Scene& s, int baseLight, const std::vector<int>& listed,
+                                 const std::vector<std::vector<float>>* screenVisibility) {
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         if (static_cast<int>(i) == baseLight) continue;
+        if (std::find(listed.begin(), listed.end(), static_cast<int>(i)) != listed.end()) continue;
         setLight(i);
         currentPass = "light[" + std::to_string(i) + "]";
         const gl::ScopedPass scope(*clock, currentPass);
@@ -164,8 +184,16 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
         if (screenVisibility || technique(s.lights[i].shadow.technique).sharesBasePass(s.lights[i])) baseLight = static_cast<int>(i);
     basePass(s, options, baseLight, screenVisibility);
 
-    // 3. Every other light: its technique's pass on the base pass's depth.
-    otherLights(s, baseLight, screenVisibility);
+    // 3. The lights without shadows beyond the base pass's, two or more of
+    // them, in one pass over a tiled list; every other light: its
+    // technique's pass. Both on the base pass's depth.
+    std::vector<int> listed;
+    for (std::size_t i = 0; i < s.lights.size() && options.groupLights && !screenVisibility; ++i)
+        if (static_cast<int>(i) != baseLight && !hasProjector(s.lights[i]) && technique(s.lights[i].shadow.technique).joinsLightList(s.lights[i]))
+            listed.push_back(static_cast<int>(i));
+    if (listed.size() < 2) listed.clear();
+    if (!listed.empty()) lightListPass(s, listed);
+    otherLights(s, baseLight, listed, screenVisibility);
 
     // 4. Translucent surfaces, blended over the rest, back to front.
     blendedPass(s, screenVisibility != nullptr);

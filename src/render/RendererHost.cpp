@@ -10,8 +10,6 @@
 
 namespace shadowlab {
 
-namespace {
-
 shared::LightUniforms lightUniforms(const Light& light) {
     shared::LightUniforms u{};
     u.radiance = glm::vec4(light.color * light.intensity, 0.0f);
@@ -30,8 +28,6 @@ shared::LightUniforms lightUniforms(const Light& light) {
     }
     return u;
 }
-
-} // namespace
 
 void Renderer::Impl::drawItems(ItemFilter filter, const gl::Program& prog, const std::function<bool(std::size_t)>& perItem,
                                Topology topology) {

@@ -7,6 +7,7 @@
 #include "render/DrawList.h"
 #include "render/FrameTargets.h"
 #include "render/GpuScene.h"
+#include "render/LightList.h"
 #include "render/ShaderVariant.h"
 #include "techniques/Registry.h"
 
@@ -23,6 +24,9 @@
 
 namespace shadowlab {
 
+/// A light's block (also the tiled light list's entries).
+shared::LightUniforms lightUniforms(const Light& light);
+
 /// What drawLit draws: the light's shading, its visibility term (compare),
 /// or the shading with the reference's visibility.
 enum class LitMode { Shade, OutputVisibility, ScreenVisibility };
@@ -36,6 +40,7 @@ struct Renderer::Impl final : TechniqueHost {
     std::optional<FrameTargets> targets;
     std::map<std::string, std::unique_ptr<Technique>, std::less<>> instances;
     DrawList drawList;
+    LightList lightList;
     gl::Buffer frameUbo, lightUbo;
     gl::VertexArray emptyVao;
     std::uint64_t frames = 0;
@@ -147,8 +152,11 @@ struct Renderer::Impl final : TechniqueHost {
     FrameStats frame(const Scene& scene, const RenderOptions& options, const std::vector<std::vector<float>>* screenVisibility);
     /// The base pass: depth, clears, ambient and light `baseLight` (-1: none).
     void basePass(const Scene& s, const RenderOptions& options, int baseLight, const std::vector<std::vector<float>>* screenVisibility);
-    /// Each light but `baseLight`, its pass added on the base pass's depth.
-    void otherLights(const Scene& s, int baseLight, const std::vector<std::vector<float>>* screenVisibility);
+    /// The lights in `listed` (indices, at least one) in one pass over the
+    /// tiled light list, added on the base pass's depth.
+    void lightListPass(const Scene& s, const std::vector<int>& listed);
+    /// Each light but `baseLight` and those in `listed`, its pass added on the base pass's depth.
+    void otherLights(const Scene& s, int baseLight, const std::vector<int>& listed, const std::vector<std::vector<float>>* screenVisibility);
     /// Translucent surfaces over the lit frame, back to front (BlendedPass.cpp).
     void blendedPass(const Scene& s, bool screenVisibility);
 };

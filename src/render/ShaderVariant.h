@@ -13,6 +13,9 @@ namespace shadowlab {
 struct ShaderVariant {
     bool ambient = true;            ///< add the ambient term (the base pass)
     bool light = false;             ///< add one light's term (merged base pass, light passes)
+    /// Add the terms of the tiled light list's lights (no shadows; the
+    /// light-list pass, LightList.h). Not with `light`.
+    bool lightList = false;
     LightType lightType = LightType::Directional; ///< with `light`
     std::string techniqueFile = "shadow_none.glsl"; ///< with `light`: fills "@shadow"
     std::string techniqueDefines;   ///< with `light`: the technique's own `#define` lines

@@ -78,7 +78,7 @@ json parseDocument(ParseContext& ctx, const std::string& jsonText, const std::st
     return doc;
 }
 
-const std::vector<const char*> kTopLevelKeys{"name", "camera", "ambient", "background", "materials", "lights", "nodes"};
+const std::vector<const char*> kTopLevelKeys{"name", "camera", "ambient", "background", "materials", "lights", "lightGrid", "nodes"};
 
 // A scene's text parsed and overridden, and its top level checked.
 struct Document {
@@ -117,6 +117,12 @@ void readLights(const Reader& root, Scene& scene, const ParseContext& ctx, bool 
     }
 }
 
+// `lightGrid`'s generated lights after those of `lights`.
+void readGeneratedLights(const Reader& root, Scene& scene) {
+    if (!root.has("lightGrid")) return;
+    for (Light& light : scenefile::readLightGrid(root.child("lightGrid"), scene.lights.size())) scene.lights.push_back(std::move(light));
+}
+
 } // namespace
 
 Scene parseScene(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir,
@@ -132,6 +138,7 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
     SceneBuilder builder(scene, ctx);
     if (root.has("materials")) builder.readMaterials(root.child("materials"));
     readLights(root, scene, ctx, true);
+    readGeneratedLights(root, scene);
     if (root.has("nodes")) builder.readNodes(root.child("nodes"), -1);
     builder.checkFinite();
     return scene;
@@ -142,6 +149,7 @@ std::vector<Light> parseSceneLights(const std::string& jsonText, const std::stri
     const Document d(jsonText, sourceName, baseDir, overrides);
     Scene scene;
     readLights(d.root(), scene, d.ctx, false);
+    readGeneratedLights(d.root(), scene);
     return std::move(scene.lights);
 }
 
@@ -171,7 +179,7 @@ std::string withValueSource(const std::string& message, const std::string& sourc
     const std::size_t colon = message.find(": ");
     if (colon == std::string::npos) return message;
     const std::string path = message.substr(0, colon);
-    static const char* const roots[] = {"lights[", "nodes[", "camera", "materials", "ambient", "background"};
+    static const char* const roots[] = {"lights[", "lightGrid", "nodes[", "camera", "materials", "ambient", "background"};
     const bool scenePath = path.find(' ') == std::string::npos;
     bool rooted = false;
     for (const char* r : roots) rooted = rooted || path.rfind(r, 0) == 0;

@@ -129,6 +129,11 @@ public:
     /// visibility hook reads only what bindLightPass binds). Techniques
     /// that need passes after the base pass (stencil) return false.
     virtual bool sharesBasePass(const Light&) const { return true; }
+    /// Whether the light, when it is not the base pass's, may be shaded in
+    /// the one pass over the tiled light list with the other such lights
+    /// (RenderOptions::groupLights): its visibility is 1 everywhere, with
+    /// nothing to bind ("none").
+    virtual bool joinsLightList(const Light&) const { return false; }
     /// Whether the frame's camera needs its far plane at infinity (shadow
     /// volumes: far caps are never clipped). Any light asking for it turns
     /// it on for the whole frame; FrameInfo::clipFromView says which was used.

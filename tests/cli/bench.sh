@@ -29,7 +29,9 @@ passed=$((passed + 1))
 mkdir -p all
 for scene in "$src"/scenes/*.json; do
   name=$(basename "$scene" .json)
-  out=$("$tool" compare "$scene" -o "all/$name" --width 160 --height 90 --set "lights[0].shadow.technique=none") || fail "compare $name failed"
+  unshadowed="lights[0].shadow.technique=none"
+  [[ $name == many-lights ]] && unshadowed="lightGrid.light.shadow.technique=none"  # generated lights: set through the template
+  out=$("$tool" compare "$scene" -o "all/$name" --width 160 --height 90 --set "$unshadowed") || fail "compare $name failed"
   grep -q "false lit [0-9.]*[1-9][0-9.]*%" <<<"$out" || fail "compare $name: no false-lit share: $out"
   for f in technique.png reference.png error-0.png; do [[ -s all/$name/$f ]] || fail "compare $name did not write $f"; done
 done

@@ -55,11 +55,10 @@ Scene roomScene(const glm::vec3& cameraPosition, const glm::vec3& target, const 
 
 std::vector<fs::path> pointLightScenes() {
     std::vector<fs::path> out;
-    for (const auto& entry : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes")) {
-        if (entry.path().extension() != ".json") continue;
-        for (const Light& light : loadSceneFile(entry.path()).lights)
+    for (const fs::path& file : test::bundledScenes()) {
+        for (const Light& light : loadSceneFile(file).lights)
             if (light.type == LightType::Point) {
-                out.push_back(entry.path());
+                out.push_back(file);
                 break;
             }
     }

@@ -35,15 +35,14 @@ class VolumeGLTest : public GLTest {};
 // over all receivers (measured: at most 0.002 %).
 TEST_F(VolumeGLTest, ClosedCastersAreExactUnderEveryKindOfLight) {
     std::set<LightType> kinds;
-    for (const auto& entry : fs::directory_iterator(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes")) {
-        if (entry.path().extension() != ".json") continue;
-        const std::string name = entry.path().stem().string();
+    for (const fs::path& file : test::bundledScenes()) {
+        const std::string name = file.stem().string();
         // glass-panel's caster is alpha-tested: volumes follow geometry and
         // shadow the whole panel (docs/scene-format.md); the note says so
         // (VolumeGLTest.AlphaTestedCastersAreRefused).
         if (name == "glass-panel") continue;
         SCOPED_TRACE(name);
-        const Scene scene = loadSceneFile(entry.path(), {"lights[0].shadow.technique=volume"});
+        const Scene scene = loadSceneFile(file, {"lights[0].shadow.technique=volume"});
         kinds.insert(scene.lights[0].type);
         const Comparison c = compareScene(scene, 960, 540);
         const bool failedBefore = HasFailure();

@@ -1,0 +1,104 @@
+#include "core/LightTiles.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+// The tile rectangle (inclusive) a light may touch; empty (x0 > x1) when
+// it is outside the view.
+struct TileRect {
+    int x0, y0, x1, y1;
+};
+
+// The bounds of k = a / d over a sphere of centre (a, d) and radius r, d the
+// distance in front of the eye (> r): the slopes of the two tangents from
+// the eye in that plane.
+glm::vec2 slopes(float a, float d, float r) {
+    const float root = r * std::sqrt(std::max(a * a + d * d - r * r, 0.0f));
+    const float denominator = d * d - r * r;
+    return {(a * d - root) / denominator, (a * d + root) / denominator};
+}
+
+TileRect rectOf(const LightReach& r, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size,
+                std::uint32_t tileSize, glm::ivec2 tiles) {
+    const TileRect all{0, 0, tiles.x - 1, tiles.y - 1};
+    if (r.everywhere) return all;
+    // Outside a side plane of the view (Gribb and Hartmann: the planes are
+    // sums of clip matrix rows); a degenerate plane (the far plane at
+    // infinity) is skipped.
+    const glm::mat4 m = glm::transpose(clipFromView * viewFromWorld);  // m[i] is row i
+    const glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[3] + m[2], m[3] - m[2]};
+    for (const glm::vec4& p : planes) {
+        const float length = glm::length(glm::vec3(p));
+        if (!(length > 1e-12f)) continue;
+        if ((glm::dot(glm::vec3(p), r.centre) + p.w) / length < -r.radius) return {1, 1, 0, 0};
+    }
+    // The sphere's exact screen rectangle from its tangents through the
+    // eye (a perspective camera looking down -z: clip w = -z); the whole
+    // frame when the sphere reaches the eye's plane (its projection is
+    // unbounded there).
+    const glm::vec3 c = glm::vec3(viewFromWorld * glm::vec4(r.centre, 1.0f));
+    const float d = -c.z;
+    if (!(d > r.radius * 1.0001f + 1e-6f)) return all;
+    const glm::vec2 kx = slopes(c.x, d, r.radius), ky = slopes(c.y, d, r.radius);
+    // ndc = P[0][0] k - P[2][0] (x), P[1][1] k - P[2][1] (y), with z = -d.
+    const glm::vec2 x = clipFromView[0][0] * kx - clipFromView[2][0], y = clipFromView[1][1] * ky - clipFromView[2][1];
+    const glm::vec2 lo = glm::clamp(glm::vec2(std::min(x.x, x.y), std::min(y.x, y.y)), -1.0f, 1.0f);
+    const glm::vec2 hi = glm::clamp(glm::vec2(std::max(x.x, x.y), std::max(y.x, y.y)), -1.0f, 1.0f);
+    const glm::vec2 pixels(size);
+    const auto tile = [&](float ndc, float extent, int count) {
+        const float pixel = (ndc * 0.5f + 0.5f) * extent;
+        return std::clamp(static_cast<int>(std::floor(pixel / static_cast<float>(tileSize))), 0, count - 1);
+    };
+    return {tile(lo.x, pixels.x, tiles.x), tile(lo.y, pixels.y, tiles.y), tile(hi.x, pixels.x, tiles.x), tile(hi.y, pixels.y, tiles.y)};
+}
+
+} // namespace
+
+LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size,
+                     std::uint32_t tileSize) {
+    LightTiles out;
+    out.tileSize = std::max<std::uint32_t>(tileSize, 1);
+    const glm::ivec2 tiles((std::max(size.x, 1) + static_cast<int>(out.tileSize) - 1) / static_cast<int>(out.tileSize),
+                           (std::max(size.y, 1) + static_cast<int>(out.tileSize) - 1) / static_cast<int>(out.tileSize));
+    out.tiles = glm::uvec2(tiles);
+    const std::size_t count = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
+    std::vector<TileRect> rects;
+    rects.reserve(reach.size());
+    std::vector<std::uint32_t> perTile(count, 0);
+    for (const LightReach& r : reach) {
+        const TileRect rect = rectOf(r, viewFromWorld, clipFromView, size, out.tileSize, tiles);
+        rects.push_back(rect);
+        if (rect.x0 > rect.x1) {
+            ++out.culled;
+            continue;
+        }
+        for (int y = rect.y0; y <= rect.y1; ++y)
+            for (int x = rect.x0; x <= rect.x1; ++x) ++perTile[static_cast<std::size_t>(y) * tiles.x + x];
+    }
+    // Headers first, then each tile's indices in light order.
+    out.cells.assign(2 * count, 0);
+    std::uint32_t next = static_cast<std::uint32_t>(2 * count);
+    for (std::size_t t = 0; t < count; ++t) {
+        out.cells[2 * t] = next;
+        next += perTile[t];
+    }
+    out.entries = next - 2 * count;
+    out.cells.resize(next);
+    std::vector<std::uint32_t> filled(count, 0);
+    for (std::size_t k = 0; k < rects.size(); ++k) {
+        const TileRect& rect = rects[k];
+        for (int y = rect.y0; y <= rect.y1; ++y)
+            for (int x = rect.x0; x <= rect.x1; ++x) {
+                const std::size_t t = static_cast<std::size_t>(y) * tiles.x + x;
+                out.cells[out.cells[2 * t] + filled[t]++] = static_cast<std::uint32_t>(k);
+            }
+    }
+    for (std::size_t t = 0; t < count; ++t) out.cells[2 * t + 1] = filled[t];
+    return out;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,31 @@
+#pragma once
+// The tiled light list on the GPU: the lights that have no shadow of their
+// own to draw (Technique::joinsLightList) beyond the base pass's light,
+// shaded together in one pass (lighting.frag's LIGHT_LIST variant) instead
+// of a pass each. Binned per frame on the CPU (core/LightTiles.h).
+#include "core/LightTiles.h"
+#include "gl/Object.h"
+
+#include <shadowlab/Scene.h>
+
+#include <vector>
+
+namespace shadowlab {
+
+class LightList {
+public:
+    /// Uploads `lights` (indices into scene.lights) and their tiles for the
+    /// frame seen through `viewFromWorld` and `clipFromView` at `size`.
+    void upload(const Scene& scene, const std::vector<int>& lights, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size);
+    /// Binds both buffers at SL_STORAGE_LIGHT_LIST and SL_STORAGE_LIGHT_TILES.
+    void bind() const;
+    /// The last upload's tiles (entries, culled lights).
+    const LightTiles& tiles() const { return tiles_; }
+
+private:
+    gl::Buffer lights_{gl::NoCreate}, cells_{gl::NoCreate};
+    std::size_t lightBytes_ = 0, cellBytes_ = 0;  ///< capacities
+    LightTiles tiles_;
+};
+
+} // namespace shadowlab
