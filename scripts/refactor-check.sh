@@ -58,7 +58,10 @@ M=lights[0].shadow.map
 # Every bundled scene with the technique it names (or none) and with a map.
 for f in "$S"/*.json; do
   s=$(basename "$f" .json)
-  own=$(python3 -c 'import json,sys; l=json.load(open(sys.argv[1]))["lights"][0]; print(l.get("shadow",{}).get("technique","none"))' "$f")
+  # A scene whose lights are all generated (lightGrid: many-lights.json) has
+  # no lights[0] to set; its light list is tested by LightListGLTest.
+  own=$(python3 -c 'import json,sys; l=json.load(open(sys.argv[1])).get("lights") or [None]; print("" if l[0] is None else l[0].get("shadow",{}).get("technique","none"))' "$f")
+  [[ -n $own ]] || continue
   case_ "scene-$s-$own" render "$f" --set "$T=$own"
   [[ $own == map ]] || case_ "scene-$s-map" render "$f" --set "$T=map"
   [[ $own == none ]] || case_ "scene-$s-none" render "$f" --set "$T=none"
