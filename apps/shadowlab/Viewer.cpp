@@ -261,7 +261,11 @@ void ViewerSession::endFrame(int width, int height, bool screenshotKey) {
         std::cout << name << "\n";
     }
     if (waitFrames == 0 && !resizing() && nextAction < script.size() && script[nextAction].verb == "screenshot") {
-        writePng(script[nextAction].argument, readWindow(width, height));
+        try {
+            writePng(script[nextAction].argument, readWindow(width, height));
+        } catch (const Error& e) {
+            throw Error(args.script + ":" + std::to_string(script[nextAction].line) + ": screenshot: " + e.what());
+        }
         std::cout << script[nextAction].argument << "\n";
         ++nextAction;
     }

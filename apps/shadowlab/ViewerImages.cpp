@@ -23,6 +23,7 @@ void ViewerSession::startComparison(int width, int height) {
         options.timeSeconds = seconds;
         auto run = std::make_unique<ReferenceRun>();
         run->directory = compareDirectory;
+        run->label = compareLabel;
         run->startFrame = frame;
         run->job = std::make_unique<ComparisonJob>(renderer, lastShown, options);
         ReferenceRun* r = run.get();
@@ -47,7 +48,7 @@ void ViewerSession::finishComparison() {
     const std::unique_ptr<ReferenceRun> run = std::move(tracing);
     if (!run->error.empty()) {
         error = run->error;
-        if (!script.empty()) throw Error(args.script + ": compare: " + run->error);
+        if (!script.empty()) throw Error((run->label.empty() ? args.script + ": compare" : run->label) + ": " + run->error);
     } else {
         const Comparison c = run->job->finish(renderer);
         if (!script.empty())
@@ -67,7 +68,11 @@ void ViewerSession::finishComparison() {
             if (!script.empty()) std::cout << "compare: light " << l << " " << line << "\n";
             if (!run->directory.empty()) {
                 const std::string file = (fs::path(run->directory) / ("error-" + std::to_string(l) + ".png")).string();
-                writePng(file, lc.errorImage);
+                try {
+                    writePng(file, lc.errorImage);
+                } catch (const Error& e) {
+                    throw Error(run->label.empty() ? std::string(e.what()) : run->label + ": " + e.what());
+                }
                 std::cout << file << "\n";
             }
         }

@@ -141,6 +141,7 @@ void ViewerSession::runScript() {
         } else if (a.verb == "compare") {
             referenceAsked = true;
             compareDirectory = a.argument;
+            compareLabel = args.script + ":" + std::to_string(a.line) + ": compare " + a.argument;
             break;
         } else if (a.verb == "minimize") {
             glfwIconifyWindow(window);

@@ -82,6 +82,7 @@ struct ReferenceRun {
     std::atomic<bool> done{false};
     std::string error;  ///< the worker's failure, written before `done`
     std::string directory;  ///< the script's "compare DIR": where the error images go
+    std::string label;      ///< the script line that asked for it ("s.txt:4: compare DIR"), for its errors
     int startFrame = 0;     ///< the window's frame when it started
     ReferenceRun() = default;
     ReferenceRun(const ReferenceRun&) = delete;
@@ -188,6 +189,7 @@ private:
     std::vector<ImageTexture> referenceTextures;
     std::vector<ImageRGBA8> referenceImages;
     std::string compareDirectory;  // the script's pending "compare DIR"
+    std::string compareLabel;      // and its line, "s.txt:4: compare DIR"
     std::chrono::steady_clock::time_point lastFrame;
 };
 

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -533,6 +534,11 @@ ImportedModel parseGltf(const std::string& bytes, const std::string& file, const
     if (binary) {
         if (bytes.size() < 4 || std::memcmp(bytes.data(), "glTF", 4) != 0)
             throw Error(file + ": not a binary glTF file (missing 'glTF' magic)");
+        if (bytes.size() >= 8) {
+            std::uint32_t version = 0;
+            std::memcpy(&version, bytes.data() + 4, 4);  // little-endian, as the format and this machine are
+            if (version != 2) throw Error(file + ": binary glTF version " + std::to_string(version) + " (expected 2)");
+        }
     } else {
         const std::size_t first = bytes.find_first_not_of(" \t\r\n\f\v");
         if (first == std::string::npos || bytes[first] != '{') throw Error(file + ": not a glTF JSON file (expected '{' at the start)");

@@ -27,6 +27,25 @@ void requireNumbers(const json& value, std::size_t count, const std::string& at)
 void checkGltfTypes(std::string_view text, const std::string& file) {
     const json root = json::parse(text.begin(), text.end(), nullptr, false);
     if (root.is_discarded() || !root.is_object()) return;
+    // The glTF 2.0 header: a version this loader reads, no extension it
+    // must understand and does not, a default scene that exists.
+    if (const auto asset = root.find("asset"); asset != root.end() && asset->is_object())
+        if (const auto version = asset->find("version"); version != asset->end()) {
+            const std::string v = version->is_string() ? version->get<std::string>() : std::string();
+            if (v.rfind("2.", 0) != 0 || v.size() < 3 || v.find_first_not_of("0123456789", 2) != std::string::npos)
+                throw Error(file + ": asset.version: expected glTF 2.x (\"2.0\"), got " + text::clipMiddle(version->dump(), 80));
+        }
+    if (const auto required = root.find("extensionsRequired"); required != root.end() && required->is_array())
+        for (const json& name : *required)
+            throw Error(file + ": extensionsRequired: " + text::clipMiddle(name.dump(), 80) +
+                        " is not supported (shadowlab reads core glTF 2.0 only; export the file without it)");
+    if (const auto scene = root.find("scene"); scene != root.end()) {
+        const auto scenes = root.find("scenes");
+        const std::size_t count = scenes != root.end() && scenes->is_array() ? scenes->size() : 0;
+        if (!scene->is_number_integer() || scene->get<long long>() < 0 || static_cast<std::size_t>(scene->get<long long>()) >= count)
+            throw Error(file + ": scene: expected an index into scenes (0.." + (count ? std::to_string(count - 1) : std::string("none")) + "), got " +
+                        text::clipMiddle(scene->dump(), 80));
+    }
     if (const auto materials = root.find("materials"); materials != root.end() && materials->is_array()) {
         for (std::size_t i = 0; i < materials->size(); ++i) {
             const json& m = (*materials)[i];

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -65,7 +66,18 @@ json parseDocument(ParseContext& ctx, const std::string& jsonText, const std::st
         std::string what = e.what();
         const auto pos = what.find("] ");
         what = pos == std::string::npos ? what : what.substr(pos + 2);
-        if (e.id == 406) what += " (numbers must be finite)";
+        if (e.id == 406) {
+            what += " (numbers must be finite)";
+            // The parser gives no place for it: the number's first occurrence in the text.
+            const std::size_t open = what.find('\''), close = open == std::string::npos ? open : what.find('\'', open + 1);
+            const std::size_t at = close == std::string::npos ? close : jsonText.find(what.substr(open + 1, close - open - 1));
+            if (at != std::string::npos) {
+                const std::size_t line = 1 + static_cast<std::size_t>(std::count(jsonText.begin(), jsonText.begin() + static_cast<long>(at), '\n'));
+                const std::size_t lineStart = jsonText.rfind('\n', at == 0 ? 0 : at - 1);
+                const std::size_t column = at - (lineStart == std::string::npos || at == 0 ? 0 : lineStart + 1) + 1;
+                what += " at line " + std::to_string(line) + ", column " + std::to_string(column);
+            }
+        }
         throw Error(text::escapeControl(sourceName + ": invalid JSON: " + what));
     }
     if (!doc.is_object()) throw Error(sourceName + ": expected a JSON object at the top level, got " + typeName(doc));

@@ -112,6 +112,16 @@ if "$tool" view --script jpg.txt 2>err.txt; then echo "screenshot .jpg accepted"
 [[ $(wc -l <err.txt) -eq 1 && ! -e shot.jpg ]] && grep -q "jpg.txt:2: screenshot shot.jpg: expected a .png file name" err.txt || { echo "screenshot .jpg: $(cat err.txt)"; exit 1; }
 if "$tool" view --frames 1 --screenshot shot.jpg 2>err.txt; then echo "--screenshot .jpg accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 && ! -e shot.jpg ]] && grep -q -- "--screenshot shot.jpg: expected a .png file name" err.txt || { echo "--screenshot .jpg: $(cat err.txt)"; exit 1; }
+# A screenshot or a compare's image that cannot be written names the
+# script's line (/proc takes no new files; a directory of the compare
+# image's name is in the way).
+mkdir -p cmpdir/error-0.png
+printf 'wait 1\nscreenshot /proc/a.png\nquit\n' > shotdir.txt
+if "$tool" view --script shotdir.txt 2>err.txt; then echo "screenshot onto a directory accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q "shotdir.txt:2: screenshot: /proc/a.png: cannot write" err.txt || { echo "screenshot onto a directory: $(cat err.txt)"; exit 1; }
+printf 'compare cmpdir\nquit\n' > cmpdir.txt
+if "$tool" view --width 96 --height 64 --script cmpdir.txt >/dev/null 2>err.txt; then echo "compare onto a directory accepted"; exit 1; fi
+[[ $(wc -l <err.txt) -eq 1 ]] && grep -q "cmpdir.txt:1: compare cmpdir: cmpdir/error-0.png: cannot write" err.txt || { echo "compare onto a directory: $(cat err.txt)"; exit 1; }
 # "save" into a directory's name, or into a directory that is not there:
 # refused before the first frame, in one line, nothing written.
 for target in . nowhere/x.json; do

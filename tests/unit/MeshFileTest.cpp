@@ -726,6 +726,22 @@ TEST_F(MeshFileTest, MalformedGltfIsOneLineError) {
     EXPECT_LT(msg.size(), 300u) << msg;
 }
 
+// The header a glTF 2.0 loader must check: the version, extensions the file
+// requires, the default scene's index; a binary file's version.
+TEST_F(MeshFileTest, GltfHeaderErrors) {
+    const std::string uri = dataUri(triangleBuffer().data);
+    std::string v1 = triangleGltf(uri, R"("nodes": [{"mesh": 0}])");
+    v1.replace(v1.find("\"2.0\""), 5, "\"1.0\"");
+    expectError([&] { shadowlab::loadMeshFile(write("v1.gltf", v1)); }, {"v1.gltf: asset.version: expected glTF 2.x (\"2.0\"), got \"1.0\""});
+    expectError([&] { shadowlab::loadMeshFile(write("draco.gltf", triangleGltf(uri, R"("nodes": [{"mesh": 0}], "extensionsRequired": ["KHR_draco_mesh_compression"])"))); },
+                {"draco.gltf: extensionsRequired: \"KHR_draco_mesh_compression\" is not supported"});
+    expectError([&] { shadowlab::loadMeshFile(write("scene.gltf", triangleGltf(uri, R"("nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 5)"))); },
+                {"scene.gltf: scene: expected an index into scenes (0..0), got 5"});
+    expectError([&] { shadowlab::loadMeshFile(write("v3.glb", std::string("glTF\x03\0\0\0\x0c\0\0\0", 12))); }, {"v3.glb: binary glTF version 3 (expected 2)"});
+    // A file that uses the header as it should loads.
+    EXPECT_NO_THROW(shadowlab::loadMeshFile(write("ok.gltf", triangleGltf(uri, R"("nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0)"))));
+}
+
 TEST_F(MeshFileTest, GltfContentErrors) {
     const std::string uri = dataUri(triangleBuffer().data);
     const std::string oneNode = R"("nodes": [{"mesh": 0}])";

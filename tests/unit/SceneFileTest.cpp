@@ -156,7 +156,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "scene.json: lights[1].direction: expected 3 numbers, got 2"},
         ErrorCase{"ZeroDirection", withLight(R"({"type":"directional","direction":[0,0,0]})"), {}, "lights[0].direction: expected a non-zero direction"},
         ErrorCase{"DirectionNotArray", withLight(R"({"type":"directional","direction":"down"})"), {}, "lights[0].direction: expected 3 numbers, got a string"},
-        ErrorCase{"InfiniteNumber", withLight(R"({"type":"directional","intensity":1e999})"), {}, "invalid JSON: number overflow parsing '1e999' (numbers must be finite)"},
+        ErrorCase{"InfiniteNumber", withLight(R"({"type":"directional","intensity":1e999})"), {}, "invalid JSON: number overflow parsing '1e999' (numbers must be finite) at line 1, column 47"},
         ErrorCase{"NegativeIntensity", withLight(R"({"type":"directional","intensity":-1})"), {}, "lights[0].intensity: expected a number >= 0, got -1"},
         ErrorCase{"UnknownLightType", withLight(R"({"type":"area"})"), {}, "lights[0].type: expected directional, spot or point, got 'area'"},
         ErrorCase{"MissingLightType", withLight(R"({"direction":[0,-1,0]})"), {}, "lights[0]: missing key 'type'"},
