@@ -192,6 +192,9 @@ int ViewerSession::run() {
         timeFrame();
     }
 
+    // The loop ended without an error (errors throw out of run()): the
+    // script's images are put in place together.
+    scriptOutputs.commit();
     tracing.reset();
     freeDebugTextures();
     freeReferenceTextures();
@@ -262,7 +265,7 @@ void ViewerSession::endFrame(int width, int height, bool screenshotKey) {
     }
     if (waitFrames == 0 && !resizing() && nextAction < script.size() && script[nextAction].verb == "screenshot") {
         try {
-            writePng(script[nextAction].argument, readWindow(width, height));
+            scriptOutputs.write(script[nextAction].argument, readWindow(width, height));
         } catch (const Error& e) {
             throw Error(args.script + ":" + std::to_string(script[nextAction].line) + ": screenshot: " + e.what());
         }

@@ -7,6 +7,7 @@
 // picture (ViewerOverlay.cpp), and the images read back for them: the
 // comparison with the reference and the techniques' debug images
 // (ViewerImages.cpp).
+#include "OutputFiles.h"
 #include "Viewer.h"
 #include "ViewerScript.h"
 
@@ -190,6 +191,10 @@ private:
     std::vector<ImageRGBA8> referenceImages;
     std::string compareDirectory;  // the script's pending "compare DIR"
     std::string compareLabel;      // and its line, "s.txt:4: compare DIR"
+    // The script's screenshots, under temporary names
+    // until the script ends well (run() commits them): a script that fails
+    // at a later line leaves none of them, as a failed render leaves no frame.
+    tool::PendingFiles scriptOutputs;
     std::chrono::steady_clock::time_point lastFrame;
 };
 

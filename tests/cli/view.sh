@@ -122,6 +122,12 @@ if "$tool" view --script shotdir.txt 2>err.txt; then echo "screenshot onto a dir
 printf 'compare cmpdir\nquit\n' > cmpdir.txt
 if "$tool" view --width 96 --height 64 --script cmpdir.txt >/dev/null 2>err.txt; then echo "compare onto a directory accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "cmpdir.txt:1: compare cmpdir: cmpdir/error-0.png: cannot write" err.txt || { echo "compare onto a directory: $(cat err.txt)"; exit 1; }
+# A script that fails at a later line leaves none of its screenshots (as a
+# failed render leaves no frame): the screenshot of line 2 is gone when line
+# 3 fails.
+printf 'wait 1\nscreenshot early.png\nscreenshot /proc/b.png\nquit\n' > later.txt
+if "$tool" view --script later.txt >/dev/null 2>err.txt; then echo "a failing script exited 0"; exit 1; fi
+[[ ! -e early.png && -z $(ls -A | grep pending) ]] || { echo "a failing script left $(ls -A | grep -E 'early|pending')"; exit 1; }
 # "save" into a directory's name, or into a directory that is not there:
 # refused before the first frame, in one line, nothing written.
 for target in . nowhere/x.json; do
