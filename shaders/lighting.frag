@@ -98,12 +98,6 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 // The lights without shadows beyond the base pass's, in one pass: the
 // lights whose reach overlaps this pixel's tile (src/render/LightList.cpp
 // bins them on the CPU each frame).
-struct ListedLight {
-    vec4 radiance;
-    vec4 position;
-    vec4 direction;
-    vec4 params;
-};
 layout(std430, binding = SL_STORAGE_LIGHT_LIST) readonly buffer LightList { ListedLight listed[]; };
 layout(std430, binding = SL_STORAGE_LIGHT_TILES) readonly buffer LightTiles {
     uvec4 tiling;  // tile size in pixels, tiles across, tiles down, 0

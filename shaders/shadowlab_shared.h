@@ -62,15 +62,14 @@ SL_BLOCK(LightUniforms, SL_BINDING_LIGHT, light) {
     SL_MAT4 projectorFromWorld; // spot with a projected image: world -> the image's clip space (HAS_PROJECTOR)
 } SL_END_BLOCK(light)
 
-#ifdef __cplusplus
-// One light of the tiled light list (std430; vec4 members only).
+// One light of the tiled light list (std430; vec4 members only): a
+// LightUniforms without the projector.
 struct ListedLight {
     SL_VEC4 radiance;
     SL_VEC4 position;
     SL_VEC4 direction;
     SL_VEC4 params;
 };
-#endif
 
 SL_BLOCK(DrawUniforms, SL_BINDING_DRAW, draw) {
     SL_MAT4 worldFromObject;

@@ -5,9 +5,17 @@
 
 #include "gl/Debug.h"
 
+#include <algorithm>
 #include <string>
 
 namespace shadowlab::gl {
+
+void reserveBuffer(Buffer& buffer, std::size_t& capacity, std::size_t bytes) {
+    if (bytes <= capacity && buffer.id() != 0) return;
+    capacity = std::max(bytes, capacity * 2);
+    buffer = Buffer();
+    glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
 
 void checkFramebuffer(const Framebuffer& fb, const char* what) {
     GLenum status = GL_FRAMEBUFFER_COMPLETE;

@@ -5,6 +5,7 @@
 #include <epoxy/gl.h>
 
 #include <atomic>
+#include <cstddef>
 #include <utility>
 
 namespace shadowlab::gl {
@@ -92,6 +93,12 @@ using Framebuffer = Object<detail::FramebufferTraits>;
 using Query = Object<detail::QueryTraits>;             ///< Query(GL_TIME_ELAPSED) etc.
 using Shader = Object<detail::ShaderTraits>;           ///< Shader(GL_VERTEX_SHADER) etc.
 using ProgramHandle = Object<detail::ProgramTraits>;
+
+/// Makes `buffer` hold at least `bytes` (immutable storage, updatable with
+/// glNamedBufferSubData): a new buffer of max(bytes, 2 x capacity) when
+/// `capacity` (its bytes, updated) is short, so a growing list reallocates
+/// rarely. Its contents are not kept.
+void reserveBuffer(Buffer& buffer, std::size_t& capacity, std::size_t bytes);
 
 /// Throws shadowlab::Error naming `what` unless the framebuffer is complete.
 void checkFramebuffer(const Framebuffer& fb, const char* what);

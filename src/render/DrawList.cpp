@@ -15,12 +15,7 @@ void DrawList::upload(const Scene& scene, const std::vector<DrawItem>& items) {
         const std::size_t a = static_cast<std::size_t>(std::max(alignment, 1));
         stride_ = (sizeof(shared::DrawUniforms) + a - 1) / a * a;
     }
-    const std::size_t count = std::max<std::size_t>(items.size(), 1);
-    if (count > capacity_) {
-        capacity_ = std::max(count, capacity_ * 2);
-        buffer_ = gl::Buffer();
-        glNamedBufferStorage(buffer_.id(), static_cast<GLsizeiptr>(capacity_ * stride_), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    }
+    gl::reserveBuffer(buffer_, capacity_, std::max<std::size_t>(items.size(), 1) * stride_);
     staging_.assign(items.size() * stride_, 0);
     static const Material fallback;
     for (std::size_t i = 0; i < items.size(); ++i) {

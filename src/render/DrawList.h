@@ -21,7 +21,7 @@ public:
 
 private:
     gl::Buffer buffer_{gl::NoCreate};
-    std::size_t capacity_ = 0; ///< blocks the buffer holds
+    std::size_t capacity_ = 0; ///< bytes the buffer holds
     std::size_t stride_ = 0;   ///< bytes between blocks (the uniform-buffer offset alignment)
     std::vector<unsigned char> staging_;
 };

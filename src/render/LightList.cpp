@@ -11,14 +11,6 @@ namespace shadowlab {
 
 namespace {
 
-// Grows `buffer` to hold at least `bytes` (doubling), keeping its binding-free storage immutable.
-void reserve(gl::Buffer& buffer, std::size_t& capacity, std::size_t bytes) {
-    if (bytes <= capacity && buffer.id() != 0) return;
-    capacity = std::max(bytes, capacity * 2);
-    buffer = gl::Buffer();
-    glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_STORAGE_BIT);
-}
-
 // A sphere around what the light reaches: its range, or for a spot the
 // smallest sphere around the cone cut off at the range (through the apex
 // and the rim for an outer half-angle under 45 degrees, around the rim
@@ -56,8 +48,8 @@ void LightList::upload(const Scene& scene, const std::vector<int>& lights, const
     tiles_ = binLights(reach, viewFromWorld, clipFromView, size, SL_LIGHT_TILE_SIZE);
     const std::size_t lightBytes = std::max<std::size_t>(listed.size(), 1) * sizeof(shared::ListedLight);
     const std::size_t cellBytes = sizeof(glm::uvec4) + tiles_.cells.size() * sizeof(std::uint32_t);
-    reserve(lights_, lightBytes_, lightBytes);
-    reserve(cells_, cellBytes_, cellBytes);
+    gl::reserveBuffer(lights_, lightBytes_, lightBytes);
+    gl::reserveBuffer(cells_, cellBytes_, cellBytes);
     if (!listed.empty()) glNamedBufferSubData(lights_.id(), 0, static_cast<GLsizeiptr>(listed.size() * sizeof(shared::ListedLight)), listed.data());
     const glm::uvec4 header(tiles_.tileSize, tiles_.tiles.x, tiles_.tiles.y, 0u);
     glNamedBufferSubData(cells_.id(), 0, sizeof header, &header);
