@@ -4,7 +4,8 @@
 //   colour = globalAmbient*ambient*base
 //          + visibility * light * (diffuse*base*max(N.L,0) + specular*max(N.H,0)^shininess)
 // Variants (ShaderVariant): AMBIENT, LIGHT (0/1: the ambient term, one
-// light's term), LIGHT_LIST (the tiled list's lights, no shadows), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE, ALPHA_TEST
+// light's term), LIGHT_LIST (the tiled list's lights), LIGHT_LIST_SHADOWS (some
+// of them with shadows in the shadow atlas, shadow_atlas.glsl), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE, ALPHA_TEST
 // (alphaMode mask: discard under the cutoff),
 // WRITE_SURFACES (world position and geometric normal for the reference),
 // SCREEN_VISIBILITY (visibility from a per-pixel texture: the ray-traced
@@ -42,7 +43,7 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
 #else
 #include "@shadow"
 #endif
-// The one place `receivesShadows` applies: a node that does not receive
+// Where `receivesShadows` applies (and in the light list's loop below): a node that does not receive
 // shadows is lit whatever the technique (or the reference) says.
 vec3 lightVisibility(vec3 worldPosition, vec3 worldNormal) {
     return draw.baseColor.w > 0.5 ? shadowVisibility(worldPosition, worldNormal) : vec3(1.0);
@@ -95,9 +96,13 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 #endif
 
 #if LIGHT_LIST
-// The lights without shadows beyond the base pass's, in one pass: the
-// lights whose reach overlaps this pixel's tile (src/render/LightList.cpp
-// bins them on the CPU each frame).
+// The lights beyond the base pass's that have no shadow pass after it
+// (none, or a map in the shadow atlas), in one pass: the lights whose
+// reach overlaps this pixel's tile (src/render/LightList.cpp bins them on
+// the CPU each frame).
+#if LIGHT_LIST_SHADOWS
+#include "shadow_atlas.glsl"
+#endif
 layout(std430, binding = SL_STORAGE_LIGHT_LIST) readonly buffer LightList { ListedLight listed[]; };
 layout(std430, binding = SL_STORAGE_LIGHT_TILES) readonly buffer LightTiles {
     uvec4 tiling;  // tile size in pixels, tiles across, tiles down, 0
@@ -114,6 +119,12 @@ vec3 listedLightsTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
         ListedLight l = listed[cells[first + k]];
         bool one;
         vec3 term = lightTermOf(int(l.params.w), l.position.xyz, l.direction.xyz, l.params, l.radiance.rgb, N, V, base, one);
+#if LIGHT_LIST_SHADOWS
+        if (one && l.shadow.y > 0.0 && draw.baseColor.w > 0.5) {  // receivesShadows
+            float NdotL = clamp(dot(N, normalize(l.position.xyz - vWorldPosition)), 0.0, 1.0);
+            term *= atlasVisibility(l.shadow, l.position.xyz, vWorldPosition, N, NdotL);
+        }
+#endif
         if (one) sum += term;
         reached = reached || one;
     }

@@ -5,13 +5,16 @@
 // with MAP_CASCADES maps; MAP_FILTER (SL_MAP_FILTER_*, one kernel file
 // each), MAP_KERNEL (grid side), MAP_GRID_BILINEAR (the grid's
 // comparisons from bilinear fetches), MAP_RGBA8/MAP_R8 (depth packed into
-// colour), MAP_MOMENTS (SL_MAP_MOMENTS_*, a filterable moment map).
+// colour), MAP_MOMENTS (SL_MAP_MOMENTS_*, a filterable moment map),
+// MAP_ATLAS (a spot's or point light's tiles of the shadow atlas).
 // Numbers are uniforms (shadow_map_shared.h's block).
 #include "shadow_map_shared.h"
 #include "shadow_map_sampling.glsl"
 #include "shadow_map_bias.glsl"
 
-#if MAP_CUBE
+#if MAP_ATLAS
+// A tile of the shadow atlas: the "@map_filter" slot is shadow_map_atlas.glsl.
+#elif MAP_CUBE
 #include "shadow_map_cube_lookup.glsl"
 #else
 #include "shadow_map_2d.glsl"

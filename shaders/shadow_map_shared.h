@@ -84,7 +84,9 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float blockerHull;      // pcss with MAP_EARLY_OUT: the blocker taps' convex hull's inradius, a share of the search radius
     float warpU;            // warp lispsm: a texel's world size across the view per unit of t (0: no warp; cascades: cascade 0's, > 0 when warped) ...
     float warpV;            // ... and along it per t^2, t = dot(warpPlane.xyz, point) + warpPlane.w
-    float padding0, padding1, padding2, padding3, padding4; // to a whole 16 bytes (std140 rounds the block up)
+    float atlasTiles;       // atlas: the light's tiles in the shadow atlas (1 a spot's, 6 a point light's; 0 none this frame); `layer` is its first
+    float atlasBilinear;    // atlas: 1 for a bilinear compare (filter hardware), 0 the nearest texel
+    float padding2, padding3, padding4; // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

@@ -7,10 +7,11 @@
 #include "shadow_map_bias.glsl"
 #define SHADOW_VERTEX_HOOK 1
 
-#if MAP_CUBE || MAP_CASCADES > 1
+#if MAP_CUBE || MAP_CASCADES > 1 || MAP_ATLAS
 // Cube maps work per fragment (shadow_map.glsl): a point light's texel size
 // and N.L change too much across a wall-sized triangle to interpolate.
-// Cascades too: the fragment's depth picks the cascade.
+// Cascades too: the fragment's depth picks the cascade. The atlas's tiles:
+// shadow_atlas.glsl, per fragment.
 void shadowVertex(vec3 worldPosition, vec3 worldNormal) {}
 #else
 

@@ -98,11 +98,12 @@ void requireNoGlErrors(const Context& context) {
 }
 
 // Whether --debug's list asks for images of `kind`: shadow-maps (2D maps and
-// cube crosses), texel-density, cascades, or all (every image).
+// cube crosses), texel-density, cascades, atlas, or all (every image).
 bool debugWanted(DebugImageKind kind, const std::vector<std::string>& wanted) {
     for (const std::string& w : wanted)
         if (w == "all" || (w == "shadow-maps" && (kind == DebugImageKind::ShadowMap || kind == DebugImageKind::CubeCross)) ||
-            (w == "texel-density" && kind == DebugImageKind::TexelDensity) || (w == "cascades" && kind == DebugImageKind::Cascades))
+            (w == "texel-density" && kind == DebugImageKind::TexelDensity) || (w == "cascades" && kind == DebugImageKind::Cascades) ||
+            (w == "atlas" && kind == DebugImageKind::Atlas))
             return true;
     return false;
 }
@@ -386,8 +387,8 @@ CLI::App* addRender(CLI::App& app, RenderArgs& args) {
         ->check(CLI::Range(0, static_cast<int>(kMaxLights) - 1));
     render->add_option("--debug", args.debug,
                        "Also write debug images beside the output as <name>-<image>.png: shadow-maps (each light's map, "
-                       "perspective depth linearised; a point light's cube as a cross), texel-density (the texel footprint: screen pixels a map texel covers), cascades (the frame coloured by cascade), all")
-        ->check(CLI::IsMember({"shadow-maps", "texel-density", "cascades", "all"}))
+                       "perspective depth linearised; a point light's cube as a cross), texel-density (the texel footprint: screen pixels a map texel covers), cascades (the frame coloured by cascade), atlas (the shadow atlas's tiles, each light's outlined), all")
+        ->check(CLI::IsMember({"shadow-maps", "texel-density", "cascades", "atlas", "all"}))
         ->delimiter(',');
     render->add_option("--debug-images", args.debugImages, "Also write the techniques' debug images (shadow maps, ...) into this directory");
     render->add_option("--time", args.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are (the first frame's time)")

@@ -118,6 +118,11 @@ struct MapOptions {
     bool faceCulling = true;             ///< draw a caster only into the faces it can touch (false: all six, as LearnOpenGL does); default true
     float diskRadius = 0.04f;            ///< point-light grid, pcf20 and poisson: filter radius at the fragment, world units; default 0.04 (1/25, 001)
     float diskGrowth = 1.0f;             ///< the radius grows by this times (viewer distance / far); default 1 (001: (1 + d/far)/25)
+    /// Spot and point lights: the map is a tile (a point light's faces six
+    /// tiles) of the scene's shared shadow atlas (Scene::shadowAtlas), sized
+    /// each frame from the light's reach on screen, and the light is shaded in
+    /// the one pass over the tiled light list; default false
+    bool atlas = false;
 };
 
 /// The options table of "map" (JSON keys, units, ranges, defaults, docs).

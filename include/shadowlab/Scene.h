@@ -220,6 +220,17 @@ struct DrawItem {
     bool receivesShadows = true;
 };
 
+/// The shadow atlas that lights with `shadow.map.atlas` share (the scene
+/// file's `shadowAtlas`): one depth texture whose square tiles hold their
+/// maps (a spot's one, a point light's six faces), each tile sized every
+/// frame from how large the light's reach is on screen.
+struct ShadowAtlasSettings {
+    int size = 8192;              ///< texels per side of the atlas (depth32f: 256 MiB at 8192), 256..16384 and at most the GPU's limit; default 8192
+    float texelsPerPixel = 1.0f;  ///< a tile's side: the light's reach's extent on screen, pixels, times this, rounded up to a power of two; 0.0625..16, default 1
+    int minTile = 32;             ///< the least tile side, texels (a power of two, 8..maxTile); default 32
+    int maxTile = 1024;           ///< the largest tile side, texels (a power of two, minTile..size); default 1024
+};
+
 struct SHADOWLAB_API Scene {
     std::string name;
     Camera camera;
@@ -231,6 +242,7 @@ struct SHADOWLAB_API Scene {
     std::vector<std::string> textureSources; ///< per texture (when loaded from a file): file and JSON path, for messages
     std::vector<Node> nodes;          ///< parents come before their children
     std::vector<Light> lights;
+    ShadowAtlasSettings shadowAtlas;  ///< for the lights whose map is in the atlas (MapOptions::atlas)
 
     /// Every node with a mesh, with world transforms resolved (parents first).
     std::vector<DrawItem> drawItems() const;

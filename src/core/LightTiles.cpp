@@ -1,5 +1,7 @@
 #include "core/LightTiles.h"
 
+#include <glm/gtc/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,7 +26,20 @@ glm::vec2 slopes(float a, float d, float r) {
 
 TileRect rectOf(const LightReach& r, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size,
                 std::uint32_t tileSize, glm::ivec2 tiles) {
-    const TileRect all{0, 0, tiles.x - 1, tiles.y - 1};
+    const std::optional<glm::vec4> ndc = screenRectOf(r, viewFromWorld, clipFromView);
+    if (!ndc) return {1, 1, 0, 0};
+    const glm::vec2 pixels(size);
+    const auto tile = [&](float v, float extent, int count) {
+        const float pixel = (v * 0.5f + 0.5f) * extent;
+        return std::clamp(static_cast<int>(std::floor(pixel / static_cast<float>(tileSize))), 0, count - 1);
+    };
+    return {tile(ndc->x, pixels.x, tiles.x), tile(ndc->y, pixels.y, tiles.y), tile(ndc->z, pixels.x, tiles.x), tile(ndc->w, pixels.y, tiles.y)};
+}
+
+} // namespace
+
+std::optional<glm::vec4> screenRectOf(const LightReach& r, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView) {
+    const glm::vec4 all(-1.0f, -1.0f, 1.0f, 1.0f);
     if (r.everywhere) return all;
     // Outside a side plane of the view (Gribb and Hartmann: the planes are
     // sums of clip matrix rows); a degenerate plane (the far plane at
@@ -34,7 +49,7 @@ TileRect rectOf(const LightReach& r, const glm::mat4& viewFromWorld, const glm::
     for (const glm::vec4& p : planes) {
         const float length = glm::length(glm::vec3(p));
         if (!(length > 1e-12f)) continue;
-        if ((glm::dot(glm::vec3(p), r.centre) + p.w) / length < -r.radius) return {1, 1, 0, 0};
+        if ((glm::dot(glm::vec3(p), r.centre) + p.w) / length < -r.radius) return std::nullopt;
     }
     // The sphere's exact screen rectangle from its tangents through the
     // eye (a perspective camera looking down -z: clip w = -z); the whole
@@ -48,15 +63,25 @@ TileRect rectOf(const LightReach& r, const glm::mat4& viewFromWorld, const glm::
     const glm::vec2 x = clipFromView[0][0] * kx - clipFromView[2][0], y = clipFromView[1][1] * ky - clipFromView[2][1];
     const glm::vec2 lo = glm::clamp(glm::vec2(std::min(x.x, x.y), std::min(y.x, y.y)), -1.0f, 1.0f);
     const glm::vec2 hi = glm::clamp(glm::vec2(std::max(x.x, x.y), std::max(y.x, y.y)), -1.0f, 1.0f);
-    const glm::vec2 pixels(size);
-    const auto tile = [&](float ndc, float extent, int count) {
-        const float pixel = (ndc * 0.5f + 0.5f) * extent;
-        return std::clamp(static_cast<int>(std::floor(pixel / static_cast<float>(tileSize))), 0, count - 1);
-    };
-    return {tile(lo.x, pixels.x, tiles.x), tile(lo.y, pixels.y, tiles.y), tile(hi.x, pixels.x, tiles.x), tile(hi.y, pixels.y, tiles.y)};
+    return glm::vec4(lo, hi);
 }
 
-} // namespace
+LightReach reachOf(const Light& light) {
+    LightReach r;
+    if (light.type == LightType::Directional || !(light.range > 0.0f)) return r;  // everywhere
+    r.everywhere = false;
+    r.centre = light.position;
+    r.radius = light.range;
+    if (light.type == LightType::Spot) {
+        const float angle = glm::radians(light.outerConeDeg);
+        const glm::vec3 axis = glm::normalize(light.direction);
+        const float along = angle < glm::radians(45.0f) ? light.range / (2.0f * std::cos(angle)) : light.range * std::cos(angle);
+        const float radius = angle < glm::radians(45.0f) ? along : light.range * std::sin(angle);
+        r.centre = light.position + axis * along;
+        r.radius = radius * 1.001f;  // rounding: never smaller than the cone
+    }
+    return r;
+}
 
 LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size,
                      std::uint32_t tileSize) {

@@ -3,9 +3,12 @@
 // that shades many lights at once (render/LightList.cpp uploads it,
 // lighting.frag's LIGHT_LIST variant reads it). GPU-free, so it is tested
 // on its own.
+#include <shadowlab/Scene.h>
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -17,6 +20,19 @@ struct LightReach {
     glm::vec3 centre{0.0f};
     float radius = 0.0f;  ///< scene units, > 0 unless everywhere
 };
+
+/// A sphere around what `light` reaches: its range, or for a spot the
+/// smallest sphere around the cone cut off at the range (through the apex
+/// and the rim for an outer half-angle under 45 degrees, around the rim
+/// above it); everywhere for a directional light or a range of 0.
+LightReach reachOf(const Light& light);
+
+/// The screen rectangle (ndc: lo.x, lo.y, hi.x, hi.y, within -1..1) that
+/// `r` may cover seen through `viewFromWorld` and the perspective
+/// `clipFromView`: exact for a sphere in front of the eye, the whole frame
+/// when it reaches the eye's plane or everywhere; none when it lies
+/// outside one of the view's planes.
+std::optional<glm::vec4> screenRectOf(const LightReach& r, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView);
 
 /// The tiles of a `size` frame, `tileSize` pixels a side (the last row and
 /// column may be partial), and for each the lights whose reach may overlap

@@ -7,6 +7,7 @@
 #include <shadowlab/Techniques.h>
 
 #include <chrono>
+#include <set>
 #include <cmath>
 
 namespace shadowlab {
@@ -104,7 +105,15 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
 void Renderer::Impl::lightListPass(const Scene& s, const std::vector<int>& listed) {
     currentPass = "lights";
     const gl::ScopedPass scope(*clock, currentPass);
-    lightList.upload(s, listed, info->viewFromWorld, info->clipFromView, targets->size);
+    // Each light's shadow in the atlas, if any, and what its technique binds for it.
+    std::vector<glm::vec4> shadows;
+    std::set<std::string> shadowed;
+    for (int i : listed) {
+        const std::string& name = s.lights[static_cast<std::size_t>(i)].shadow.technique;
+        shadows.push_back(technique(name).listedShadow(view(static_cast<std::size_t>(i))));
+        if (shadows.back().y > 0.0f) shadowed.insert(name);
+    }
+    lightList.upload(s, listed, shadows, info->viewFromWorld, info->clipFromView, targets->size);
     count("listed", static_cast<double>(listed.size()));
     count("tileEntries", static_cast<double>(lightList.tiles().entries));
     count("culled", static_cast<double>(lightList.tiles().culled));
@@ -112,9 +121,11 @@ void Renderer::Impl::lightListPass(const Scene& s, const std::vector<int>& liste
     litMode = LitMode::Shade;
     bindFrameTarget();
     lightList.bind();
+    for (const std::string& name : shadowed) technique(name).bindLightList(*this);
     ShaderVariant variant;
     variant.ambient = false;
     variant.lightList = true;
+    variant.lightListShadows = !shadowed.empty();
     gl::apply(litState());
     drawShaded(variant);
 }
@@ -184,7 +195,8 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
         if (screenVisibility || technique(s.lights[i].shadow.technique).sharesBasePass(s.lights[i])) baseLight = static_cast<int>(i);
     basePass(s, options, baseLight, screenVisibility);
 
-    // 3. The lights without shadows beyond the base pass's, two or more of
+    // 3. The lights without a shadow pass after the base pass (none, or a
+    // map in the shadow atlas) beyond the base pass's, two or more of
     // them, in one pass over a tiled list; every other light: its
     // technique's pass. Both on the base pass's depth.
     std::vector<int> listed;

@@ -20,6 +20,7 @@ std::string ShaderVariant::preamble() const {
     out += flag("AMBIENT", ambient);
     out += flag("LIGHT", light);
     out += flag("LIGHT_LIST", lightList && !light);
+    out += flag("LIGHT_LIST_SHADOWS", lightList && !light && lightListShadows);
     out += std::string("#define LIGHT_TYPE ") + (light ? lightDefine(lightType) : "SL_LIGHT_DIRECTIONAL") + "\n";
     out += flag("HAS_BASE_COLOR_TEXTURE", baseColorTexture);
     out += flag("ALPHA_TEST", alphaTest);

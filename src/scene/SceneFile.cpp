@@ -90,7 +90,7 @@ json parseDocument(ParseContext& ctx, const std::string& jsonText, const std::st
     return doc;
 }
 
-const std::vector<const char*> kTopLevelKeys{"name", "camera", "ambient", "background", "materials", "lights", "lightGrid", "nodes"};
+const std::vector<const char*> kTopLevelKeys{"name", "camera", "ambient", "background", "materials", "lights", "lightGrid", "shadowAtlas", "nodes"};
 
 // A scene's text parsed and overridden, and its top level checked.
 struct Document {
@@ -151,6 +151,7 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
     if (root.has("materials")) builder.readMaterials(root.child("materials"));
     readLights(root, scene, ctx, true);
     readGeneratedLights(root, scene);
+    if (root.has("shadowAtlas")) scene.shadowAtlas = scenefile::readShadowAtlas(root.child("shadowAtlas"));
     if (root.has("nodes")) builder.readNodes(root.child("nodes"), -1);
     builder.checkFinite();
     return scene;
@@ -191,7 +192,7 @@ std::string withValueSource(const std::string& message, const std::string& sourc
     const std::size_t colon = message.find(": ");
     if (colon == std::string::npos) return message;
     const std::string path = message.substr(0, colon);
-    static const char* const roots[] = {"lights[", "lightGrid", "nodes[", "camera", "materials", "ambient", "background"};
+    static const char* const roots[] = {"lights[", "lightGrid", "shadowAtlas", "nodes[", "camera", "materials", "ambient", "background"};
     const bool scenePath = path.find(' ') == std::string::npos;
     bool rooted = false;
     for (const char* r : roots) rooted = rooted || path.rfind(r, 0) == 0;

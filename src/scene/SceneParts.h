@@ -22,6 +22,8 @@ void readCamera(const Reader& r, Camera& cam);
 Light readLight(const Reader& r);
 /// The lights of `lightGrid` (LightGridFile.cpp), `lightsBefore` lights being in `lights`.
 std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore);
+/// The scene's `shadowAtlas` block (ShadowAtlasFile.cpp).
+ShadowAtlasSettings readShadowAtlas(const Reader& r);
 
 /// An image file named at `r`, as RGBA8 (MaterialFile.cpp).
 ImageRGBA8 loadTexture(const Reader& r, const std::filesystem::path& file);

@@ -131,9 +131,15 @@ public:
     virtual bool sharesBasePass(const Light&) const { return true; }
     /// Whether the light, when it is not the base pass's, may be shaded in
     /// the one pass over the tiled light list with the other such lights
-    /// (RenderOptions::groupLights): its visibility is 1 everywhere, with
-    /// nothing to bind ("none").
+    /// (RenderOptions::groupLights): its visibility is 1 everywhere ("none"),
+    /// or read from what bindLightList binds by shadows/atlas lookups
+    /// described by listedShadow ("map" with `atlas`: shadow_atlas.glsl).
     virtual bool joinsLightList(const Light&) const { return false; }
+    /// The light's ListedLight::shadow (shadowlab_shared.h): zero for no shadow.
+    virtual glm::vec4 listedShadow(const LightView&) const { return glm::vec4(0.0f); }
+    /// Binds what the light list's shadow lookups read (once per frame's
+    /// list pass, for each technique with listed lights).
+    virtual void bindLightList(TechniqueHost&) {}
     /// Whether the frame's camera needs its far plane at infinity (shadow
     /// volumes: far caps are never clipped). Any light asking for it turns
     /// it on for the whole frame; FrameInfo::clipFromView says which was used.

@@ -75,13 +75,15 @@ TEST(ShaderSource, IncludesExpandWithLineDirectivesPerFile) {
     // preamble, lighting.frag, shadowlab_shared.h, light_reach.h and the
     // shadowlab_shared.h it includes (its include guard leaves that copy
     // empty), alpha_test.h and its own copy of shadowlab_shared.h, then the
-    // "@shadow" slot's file.
-    ASSERT_EQ(s.files.size(), 8u);
+    // "@shadow" slot's file, then the light list's shadow_atlas.glsl (and
+    // its shadowlab_shared.h; both inside #if LIGHT_LIST_SHADOWS).
+    ASSERT_EQ(s.files.size(), 10u);
     EXPECT_EQ(s.files[1], "lighting.frag");
     EXPECT_EQ(s.files[2], "shadowlab_shared.h");
     EXPECT_EQ(s.files[3], "light_reach.h");
     EXPECT_EQ(s.files[5], "alpha_test.h");
     EXPECT_EQ(s.files[7], "shadow_none.glsl");
+    EXPECT_EQ(s.files[8], "shadow_atlas.glsl");
     EXPECT_NE(s.text.find("#line 1 2\n"), std::string::npos);
     EXPECT_EQ(s.text.find("#include \""), std::string::npos);  // quoted includes are all expanded
 }

@@ -10,6 +10,7 @@
 // This file is the Technique; map/Map.h lists the module's other files.
 #include "techniques/map/Map.h"
 
+#include "techniques/map/MapAtlas.h"
 #include "techniques/map/MapCache.h"
 #include "techniques/map/MapCameras.h"
 #include "techniques/map/MapDebugImages.h"
@@ -74,11 +75,17 @@ public:
         preparedFor_ = inputs;
         res_.software = gl::isSoftwareRasterizer(host.glInfo().renderer);
         res_.samplers.create();
-        // Lights with the same format and size share one texture array.
+        // Lights with the same format and size share one texture array;
+        // those with `atlas` share the shadow atlas instead.
         std::map<ArrayKey, int> layersWanted, firstLightOf;
+        bool atlas = false;
         for (int index : lights) {
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
             const MapOptions o = effectiveHere(host, frame, light);
+            if (o.atlas) {
+                atlas = true;
+                continue;
+            }
             const int limit = host.glInfo().maxTextureSize;
             if (o.size > limit)
                 throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
@@ -91,7 +98,8 @@ public:
         // Translucent casters (alphaMode blend) colour the light: each
         // array gets its transmittance layers (made once, kept with the array).
         res_.translucent = hasTranslucentCasters(frame);
-        res_.arrays.allocate(layersWanted, firstLightOf, host.glInfo(), lights.size(), res_.translucent);
+        res_.arrays.allocate(layersWanted, firstLightOf, host.glInfo(), lights.size(), res_.translucent,
+                             atlas ? MapAtlas::bytesFor(frame.scene.shadowAtlas) : 0.0);
         if (res_.translucent) res_.arrays.addTransmittance();
         std::map<std::size_t, int> nextLayer;
         std::map<int, MapLight> perLight;
@@ -100,10 +108,15 @@ public:
             MapLight p;
             p.options = effectiveHere(host, frame, light);
             p.cube = isCube(light);
+            p.spot = light.type == LightType::Spot;
+            if (p.options.atlas) {  // its tiles: placed below, with the other atlas lights
+                fitCameras(p, light, frame);
+                perLight.emplace(index, std::move(p));
+                continue;
+            }
             p.array = res_.arrays.indexOf(ArrayKey::of(p.options, p.cube));
             p.layer = nextLayer[p.array];
             nextLayer[p.array] += p.cube ? 1 : cascadeCount(light, p.options);
-            p.spot = light.type == LightType::Spot;
             checkSplitsInView(p.options, light, frame.scene.camera, index);
             fitCameras(p, light, frame);
             if (auto old = lights_.find(index); old != lights_.end()) {
@@ -115,6 +128,12 @@ public:
             perLight.emplace(index, std::move(p));
         }
         lights_ = std::move(perLight);
+        if (atlas) {
+            std::map<int, MapLight*> inAtlas;
+            for (auto& [index, p] : lights_)
+                if (p.options.atlas) inAtlas.emplace(index, &p);
+            atlas_.layout(host, frame, inAtlas);
+        }
     }
 
     bool hasShadowPass(const Light&) const override { return true; }
@@ -148,7 +167,9 @@ public:
                 fitCameras(p, light, frame, nullptr, &depths);
             }
         }
-        if (p.cube)
+        if (p.options.atlas)
+            atlas_.draw(host, frame, p);
+        else if (p.cube)
             renderCubePass(host, frame, view, res_, p);
         else
             renderMapPass(host, frame, view, res_, p);
@@ -163,8 +184,19 @@ public:
         return {{"@map_filter", LightPassVariant::of(light, res_.software, res_.translucent).kernelFile()}};
     }
 
+    bool joinsLightList(const Light& light) const override { return effective(light).atlas; }
+
+    glm::vec4 listedShadow(const LightView& view) const override { return MapAtlas::shadowOf(lights_.at(view.index)); }
+
+    void bindLightList(TechniqueHost&) override { atlas_.bind(); }
+
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
         const MapLight& p = lights_.at(view.index);
+        if (p.options.atlas) {
+            res_.block.uploadAtlas(p, view.light);
+            atlas_.bind();
+            return;
+        }
         const MapArray& g = res_.arrays[p.array];
         res_.block.upload(p, g, view.light, res_.translucent);
         map::bindLightPass(p, g, res_.samplers, res_.translucent, bilinearGrid(p.options, res_.software),
@@ -173,6 +205,14 @@ public:
 
     void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, const DebugImageKinds& kinds,
                      std::vector<DebugImage>& out) override {
+        if (lights_.at(view.index).options.atlas) {
+            // The atlas itself, once: with the first of its lights.
+            std::map<int, const MapLight*> inAtlas;
+            for (const auto& [index, p] : lights_)
+                if (p.options.atlas) inAtlas.emplace(index, &p);
+            if (kinds.wants(DebugImageKind::Atlas) && inAtlas.begin()->first == view.index) out.push_back(atlas_.debugImage(inAtlas));
+            return;
+        }
         map::debugImages(host, frame, view, res_, lights_.at(view.index), kinds, out);
     }
 
@@ -205,6 +245,7 @@ private:
     }
 
     MapResources res_;
+    MapAtlas atlas_;        ///< the lights with `atlas`
     SampleBounds samples_;  ///< fit "sdsm": the depth pre-pass and its reduction
     std::map<int, MapLight> lights_;
     std::optional<std::uint64_t> drawnFrom_;  ///< mapInputs of the frame the maps were drawn in

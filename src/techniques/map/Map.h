@@ -15,6 +15,9 @@
 //   MapTargets.cpp     the framebuffers on each light's layers
 //   MapPass2D.cpp      the shadow pass of a directional or spot light
 //   MapCubePass.cpp    the shadow pass of a point light's cube
+//   MapAtlas           the shadow atlas (option atlas): tiles sized from
+//                      the screen, placed, drawn and described for lookups
+//   MapCasterBatch     the opaque casters in world space, one draw per tile
 //   MapMoments         filterable moment maps: constants, clear, blur
 //   MapTranslucent     translucent casters' transmittance layers
 //   MapBlock           the uniform block (shaders/shadow_map_shared.h)

@@ -76,9 +76,9 @@ double arrayBytes(const ArrayKey& key, int layers, bool translucent) {
 // system memory and seconds per frame). The light named is the first of
 // the array that takes the most.
 void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<ArrayKey, int>& firstLightOf, const GlInfo& info,
-                 std::size_t lightCount, bool translucent) {
+                 std::size_t lightCount, bool translucent, double atlasBytes) {
     constexpr double kMapBudgetBytes = 1024.0 * 1024.0 * 1024.0;
-    double bytes = 0.0, largest = -1.0;
+    double bytes = atlasBytes, largest = -1.0;
     int largestLight = 0, largestLayers = 0;
     ArrayKey largestKey;
     for (const auto& wanted : layersWanted) {
@@ -98,14 +98,17 @@ void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<Arr
                         " map layers in one array (" + (perLight == 6 ? std::to_string(wanted.second) + " point light(s), six each" : "lights and cascades") +
                         "), past this GPU's limit of " + std::to_string(info.maxArrayLayers) + " layers");
     }
+    if (bytes > kMapBudgetBytes && largest < 0.0)
+        throw Error("shadowAtlas.size: the shadow atlas needs " + std::to_string(atlasBytes / kMapBudgetBytes).substr(0, 4) +
+                    " GiB, more than the maps' budget of 1 GiB (a side of at most 16384 texels, 8192 by default)");
     if (bytes > kMapBudgetBytes) {
         // Named at the map block of the light whose array takes the most, so
         // that the source named is whichever set its size, cascades or
         // format (a --set of cascades on a file's size, say).
         char text[400];
         std::snprintf(text, sizeof text,
-                      "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB (the largest array, from this light: %d layer(s) of %d^2, %.2f GiB; lower lights[i].shadow.map.size or cascades, or set technique \"none\" on lights that need no shadow)",
-                      lightCount, bytes / kMapBudgetBytes, largestLayers, largestKey.size, largest / kMapBudgetBytes);
+                      "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB%s (the largest array, from this light: %d layer(s) of %d^2, %.2f GiB; lower lights[i].shadow.map.size or cascades, or set technique \"none\" on lights that need no shadow)",
+                      lightCount, bytes / kMapBudgetBytes, atlasBytes > 0.0 ? " with the shadow atlas's" : "", largestLayers, largestKey.size, largest / kMapBudgetBytes);
         throw Error("lights[" + std::to_string(largestLight) + "].shadow.map: " + text);
     }
 }
@@ -145,8 +148,8 @@ MapArray makeArray(const ArrayKey& key, int layers, std::uint64_t generation) {
 } // namespace
 
 void MapArrays::allocate(const std::map<ArrayKey, int>& layersWanted, const std::map<ArrayKey, int>& firstLightOf, const GlInfo& info,
-                         std::size_t lightCount, bool translucent) {
-    checkLimits(layersWanted, firstLightOf, info, lightCount, translucent);
+                         std::size_t lightCount, bool translucent, double atlasBytes) {
+    checkLimits(layersWanted, firstLightOf, info, lightCount, translucent, atlasBytes);
     std::vector<MapArray> arrays;
     for (const auto& wanted : layersWanted) {
         const ArrayKey& key = wanted.first;  // not a structured binding: clang 14 cannot capture one

@@ -80,9 +80,10 @@ public:
     /// those that already fit; throws Error naming lights[firstLight] when
     /// they exceed the GPU's layers or the 1 GiB budget.
     /// `firstLightOf`: the first light of each array, named in errors;
-    /// `translucent`: the arrays will get transmittance layers (addTransmittance), counted in the budget.
+    /// `translucent`: the arrays will get transmittance layers (addTransmittance), counted in the budget;
+    /// `atlasBytes`: the shadow atlas's (MapAtlas), counted in it too.
     void allocate(const std::map<ArrayKey, int>& layersWanted, const std::map<ArrayKey, int>& firstLightOf, const GlInfo& info,
-                  std::size_t lightCount, bool translucent);
+                  std::size_t lightCount, bool translucent, double atlasBytes = 0.0);
     /// Gives every array its translucent casters' transmittance layers (made once, kept with the array).
     void addTransmittance();
     /// The array of `key` (allocate() made one).

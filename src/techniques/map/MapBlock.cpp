@@ -115,6 +115,18 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     block_.write(u);
 }
 
+void MapBlock::uploadAtlas(const MapLight& p, const Light& light) {
+    shared::MapUniforms u{};
+    u.layer = static_cast<float>(p.atlasFirst);
+    u.atlasTiles = static_cast<float>(p.atlasTiles);
+    u.atlasBilinear = p.options.filter == MapFilter::Hardware ? 1.0f : 0.0f;
+    u.normalBiasTexels = p.options.normalBias;
+    u.lightPosition = light.position;
+    u.shadowedLight = p.options.shadowedLight;
+    uniforms_ = u;
+    block_.write(u);
+}
+
 void MapBlock::setLightClip(const glm::mat4& lightClipFromWorld) {
     block_.writePart(0, sizeof lightClipFromWorld, &lightClipFromWorld);
 }

@@ -15,6 +15,8 @@ class MapBlock {
 public:
     /// The block for light `p` (in array `g`), written and bound.
     void upload(const MapLight& p, const MapArray& g, const Light& light, bool translucent);
+    /// The block for light `p` whose map is in the shadow atlas (MapAtlas): its tiles and bias, written and bound.
+    void uploadAtlas(const MapLight& p, const Light& light);
     /// Only the shadow pass's camera (the block's first member).
     void setLightClip(const glm::mat4& lightClipFromWorld);
     /// The moments' passes: radius (texels), axis (unused: the variant says it) and the depth layer they are made from.

@@ -60,6 +60,15 @@ struct MapLight {
     /// kept while the depths seen stay within it (0, 0: none yet).
     glm::vec2 sampledDepths{0.0f};
     std::vector<gl::Framebuffer> cascadeFbos;
+    /// atlas: its tiles in the shadow atlas (MapAtlas): the first's index
+    /// among the atlas's tiles, how many (0 when culled: its reach is out
+    /// of view), their side in texels, each one's lower-left texel and
+    /// whether casters were drawn into it.
+    int atlasFirst = 0;
+    int atlasTiles = 0;
+    int atlasSide = 0;
+    std::array<glm::ivec2, 6> atlasOrigins{};
+    std::array<bool, 6> atlasUsed{};
     /// The cameras its 2D map layers were drawn from: the cascades, or the one camera.
     std::span<const LightCamera> cameras() const { return cascades.empty() ? std::span<const LightCamera>(&camera, 1) : std::span<const LightCamera>(cascades); }
     /// The cube faces item i is drawn into: those its bounds touch, or all

@@ -83,6 +83,8 @@ const OptionTable& mapOptionTable() {
                     "point lights, filters grid, pcf20 and poisson: the filter's radius at the fragment")
             .number(&MapOptions::diskGrowth, "diskGrowth", 0.0, 100.0, "per viewer distance / far",
                     "point lights: the radius times 1 + diskGrowth x (viewer distance / far)")
+            .boolean(&MapOptions::atlas, "atlas",
+                     "spot and point lights: the map is a tile of the scene's shared shadow atlas (a point light's faces, six tiles), sized each frame from the light's reach on screen (the scene's shadowAtlas), and the light is shaded with the other such lights in one pass over the tiled light list; format depth32f, filter none or hardware (docs/techniques.md)")
             .build();
     return table;
 }
@@ -99,6 +101,16 @@ std::string unsupported(const Light& light) {
             return std::string("map: representation \"vsm\", \"evsm2\", \"evsm4\" and \"msm\" are for 2D maps (directional and spot lights), not a point light's cube");
     } else if (o.filter == MapFilter::Pcf20 && o.preset == MapPreset::Default) {
         return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
+    }
+    if (o.atlas) {
+        if (light.type == LightType::Directional)
+            return std::string("map: atlas is for spot and point lights; a directional light's map (or cascades) is its own");
+        if (o.preset != MapPreset::Default) return std::string("map: preset: the presets keep their own maps, not a tile of the atlas; use preset \"default\" with atlas");
+        if (o.format != MapFormat::Depth32F) return std::string("map: format: the atlas is depth32f; use format \"depth32f\" (the default) with atlas");
+        if (o.filter != MapFilter::None && o.filter != MapFilter::Hardware)
+            return "map: filter \"" + std::string(filterInfo(o.filter).name) + "\": an atlas tile is looked up with one tap; use filter \"none\" or \"hardware\" with atlas";
+        if (o.representation != MapRepresentation::Depth) return std::string("map: representation: the atlas holds depth; use representation \"depth\" with atlas");
+        if (o.mipmaps) return std::string("map: mipmaps: atlas tiles have none; use mipmaps false with atlas");
     }
     const FilterInfo& filter = filterInfo(o.filter);
     if (isCube(light) && !filter.forCube)

@@ -73,6 +73,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.pcssNearest = softwareRasterizer && o.filter == MapFilter::Pcss;
     v.earlyOut = map::earlyOut(o, v.cube, softwareRasterizer);
     v.warped = !v.cube && o.warp == MapWarp::Lispsm;
+    v.atlas = o.atlas;
     return v;
 }
 
@@ -92,10 +93,12 @@ std::string LightPassVariant::defines() const {
         .set("MAP_EARLY_OUT", earlyOut)
         .set("MAP_WARP", warped)
         .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))
+        .set("MAP_ATLAS", atlas)
         .str();
 }
 
 std::string LightPassVariant::kernelFile() const {
+    if (atlas) return "shadow_map_atlas.glsl";
     return representation != MapRepresentation::Depth ? std::string("shadow_map_moments.glsl") : map::kernelFile(filter);
 }
 

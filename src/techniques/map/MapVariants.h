@@ -38,6 +38,8 @@ struct LightPassVariant {
     /// warp lispsm: the offsets take the warped texel's size per point (a
     /// define, so that unwarped maps do not pay for it on llvmpipe)
     bool warped = false;
+    /// atlas: the light's tiles of the shadow atlas (shadow_map_atlas.glsl), not a map of its own
+    bool atlas = false;
     /// The variant of `light` (its effective options); `softwareRasterizer`
     /// picks the grid's taps; `translucentCasters`, whether the frame has any.
     static LightPassVariant of(const Light& light, bool softwareRasterizer, bool translucentCasters);

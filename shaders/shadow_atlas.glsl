@@ -1,0 +1,55 @@
+// The shadow atlas's lookup (technique map with `atlas`): a light's map is
+// a tile of one depth texture, a point light's cube six tiles, one per
+// face (src/techniques/map/MapAtlas.cpp places and draws them). Shared by
+// the light list's loop (lighting.frag, LIGHT_LIST_SHADOWS) and the map
+// technique's own pass for one such light (shadow_map_atlas.glsl).
+#ifndef SHADOW_ATLAS_GLSL
+#define SHADOW_ATLAS_GLSL
+
+#include "shadowlab_shared.h"
+
+layout(std430, binding = SL_STORAGE_ATLAS_TILES) readonly buffer AtlasTiles { AtlasTile atlasTiles[]; };
+layout(binding = SL_UNIT_ATLAS) uniform sampler2D atlasDepth;
+layout(binding = SL_UNIT_ATLAS_COMPARE) uniform sampler2DShadow atlasCompare;
+
+// The cube face direction d falls in, as a cube map picks it: the axis of
+// its largest component, + or - (0..5: +X, -X, +Y, -Y, +Z, -Z).
+uint atlasFace(vec3 d) {
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) return d.x > 0.0 ? 0u : 1u;
+    if (a.y >= a.z) return d.y > 0.0 ? 2u : 3u;
+    return d.z > 0.0 ? 4u : 5u;
+}
+
+// Visibility (1 lit, 0 shadowed) of point p with normal n for a light at
+// `lightPosition` whose N.L there is NdotL, with `shadow` as
+// ListedLight.shadow. The point is moved along its normal by the normal
+// offset (shadow.z texels of the tile, their world size where p is, times
+// 1 - N.L) and towards the light by SL_ATLAS_CONSTANT_TEXELS texels: the
+// position interpolated over a large receiver (a 50 m floor in two
+// triangles) is a millimetre or so off on llvmpipe, more than a polygon
+// offset's depth steps cover where the surface faces the light (the
+// light's own maps interpolate light-space coordinates per vertex
+// instead, exact on a flat triangle; a pass over many lights cannot). The
+// tile's polygon offset adds its slope term when it is drawn. Lookups stay
+// inside the tile (its outermost texels' centres).
+float atlasVisibility(vec4 shadow, vec3 lightPosition, vec3 p, vec3 n, float NdotL) {
+    uint count = uint(shadow.y);
+    if (count == 0u) return 1.0;
+    uint t = uint(shadow.x);
+    if (count == 6u) t += atlasFace(p - lightPosition);
+    if (atlasTiles[t].params.y == 0.0) return 1.0;  // no caster in this tile
+    mat4 m = atlasTiles[t].atlasFromWorld;
+    float texel = atlasTiles[t].params.x * max((m * vec4(p, 1.0)).w, 0.0);
+    vec3 L = normalize(lightPosition - p);
+    vec3 q = p + n * (shadow.z * texel * (1.0 - NdotL)) + L * (SL_ATLAS_CONSTANT_TEXELS * texel);
+    vec4 c = m * vec4(q, 1.0);
+    if (!(c.w > 0.0)) return 1.0;  // behind a spot's camera: outside its cone
+    vec3 s = c.xyz / c.w;
+    vec4 box = atlasTiles[t].uvClamp;
+    vec2 uv = clamp(s.xy, box.xy, box.zw);
+    if (shadow.w > 0.5) return texture(atlasCompare, vec3(uv, s.z));
+    return s.z <= texelFetch(atlasDepth, ivec2(uv * vec2(textureSize(atlasDepth, 0))), 0).r ? 1.0 : 0.0;
+}
+
+#endif

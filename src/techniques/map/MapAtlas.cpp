@@ -1,0 +1,251 @@
+// Technique "map": the shadow atlas (MapAtlas.h).
+#include "techniques/map/MapAtlas.h"
+
+#include "core/AtlasLayout.h"
+#include "core/LightTiles.h"
+#include "techniques/map/MapCameras.h"
+#include "techniques/map/MapVariants.h"
+
+#include <shadowlab/Error.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace shadowlab::map {
+
+namespace {
+
+// How many pixels across the light's reach covers on screen (0: out of view).
+float screenExtent(const Light& light, const FrameInfo& frame) {
+    const auto ndc = screenRectOf(reachOf(light), frame.viewFromWorld, frame.clipFromView);
+    if (!ndc) return 0.0f;
+    const glm::vec2 pixels = (glm::vec2(ndc->z, ndc->w) - glm::vec2(ndc->x, ndc->y)) * 0.5f * glm::vec2(frame.viewport);
+    return std::max(pixels.x, pixels.y);
+}
+
+// A tile's record: its camera's clip space moved into its square of the
+// atlas (xy to its uv, z to 0..1), its outermost texels' centres, and the
+// world size of a texel per unit of distance along the camera's axis
+// (2 / (side P[1][1]): a cube face's P[1][1] is 1).
+shared::AtlasTile tileOf(const glm::mat4& clipFromWorld, float projectionY, glm::ivec2 origin, int side, int atlas, bool used) {
+    const float s = static_cast<float>(atlas);
+    const glm::vec2 lo = glm::vec2(origin) / s, extent = glm::vec2(static_cast<float>(side) / s);
+    const glm::mat4 toTile = glm::translate(glm::mat4(1.0f), glm::vec3(lo + 0.5f * extent, 0.5f)) *
+                             glm::scale(glm::mat4(1.0f), glm::vec3(0.5f * extent, 0.5f));
+    shared::AtlasTile t{};
+    t.atlasFromWorld = toTile * clipFromWorld;
+    const float half = 0.5f / s;
+    t.uvClamp = glm::vec4(lo + half, lo + extent - half);
+    t.params = glm::vec4(2.0f / (static_cast<float>(side) * projectionY), used ? 1.0f : 0.0f, 0.0f, 0.0f);
+    return t;
+}
+
+gl::Sampler makeSampler(bool compare) {
+    gl::Sampler s;
+    const GLenum filter = compare ? GL_LINEAR : GL_NEAREST;
+    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, filter);
+    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, filter);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (compare) {
+        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    }
+    return s;
+}
+
+} // namespace
+
+void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int, MapLight*>& lights) {
+    const ShadowAtlasSettings& settings = frame.scene.shadowAtlas;
+    const int limit = host.glInfo().maxTextureSize;
+    if (settings.size > limit)
+        throw Error("shadowAtlas.size: " + std::to_string(settings.size) + " texels is past this GPU's limit of " + std::to_string(limit));
+    if (size_ != settings.size) {
+        depth_ = gl::Texture(GL_TEXTURE_2D);
+        glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, settings.size, settings.size);
+        fbo_ = gl::Framebuffer();
+        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+        glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
+        glNamedFramebufferReadBuffer(fbo_.id(), GL_NONE);
+        gl::checkFramebuffer(fbo_, "shadow atlas");
+        size_ = settings.size;
+    }
+    if (!nearest_) {
+        nearest_ = makeSampler(false);
+        compare_ = makeSampler(true);
+    }
+    // Each light's request: its tiles at the side its reach on screen asks for.
+    std::vector<AtlasRequest> requests;
+    std::vector<int> order;
+    for (auto& [index, p] : lights) {
+        const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+        const float extent = screenExtent(light, frame);
+        const int maxSide = std::min(settings.maxTile, p->options.size);
+        const int minSide = std::min(settings.minTile, maxSide);
+        requests.push_back({extent > 0.0f ? (p->cube ? 6 : 1) : 0, tileSideFor(extent, settings.texelsPerPixel, minSide, maxSide)});
+        order.push_back(index);
+    }
+    const AtlasLayout layout = packAtlas(requests, settings.size, settings.minTile);
+    if (!layout.fits) {
+        std::size_t tiles = 0;
+        for (const AtlasRequest& r : requests) tiles += static_cast<std::size_t>(r.tiles);
+        throw Error("shadowAtlas.size: " + std::to_string(tiles) + " tiles of at least " + std::to_string(settings.minTile) + "^2 texels (shadowAtlas.minTile) do not fit in " +
+                    std::to_string(settings.size) + "^2; raise shadowAtlas.size or lower shadowAtlas.minTile");
+    }
+    tiles_.clear();
+    std::string shrunk;
+    int shrunkCount = 0;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        MapLight& p = *lights.at(order[k]);
+        const AtlasPlacement& place = layout.placed[k];
+        p.atlasFirst = static_cast<int>(tiles_.size());
+        p.atlasTiles = requests[k].tiles;
+        p.atlasSide = place.side;
+        p.atlasUsed.fill(false);
+        for (int t = 0; t < p.atlasTiles; ++t) {
+            const auto f = static_cast<std::size_t>(t);
+            p.atlasOrigins[f] = place.origins[f];
+            if (p.cube) {
+                for (std::size_t i = 0; i < frame.items.size() && !p.atlasUsed[f]; ++i)
+                    p.atlasUsed[f] = frame.items[i].castsShadows && (p.faceMask(i) & (1u << t)) != 0;
+                tiles_.push_back(tileOf(p.cubeCamera.faceClipFromWorld[f], 1.0f, place.origins[f], place.side, size_, p.atlasUsed[f]));
+            } else {
+                for (std::size_t i = 0; i < frame.items.size() && !p.atlasUsed[f]; ++i)
+                    p.atlasUsed[f] = frame.items[i].castsShadows && castsInto(p.camera, frame, i, false);
+                tiles_.push_back(tileOf(p.camera.clipFromWorld(), p.camera.clipFromView[1][1], place.origins[f], place.side, size_, p.atlasUsed[f]));
+            }
+        }
+        if (place.shrunk() && p.atlasTiles > 0) {
+            if (++shrunkCount <= 8)
+                shrunk += (shrunk.empty() ? "" : ", ") + std::string("lights[") + std::to_string(order[k]) + "] " + std::to_string(place.shrunkFrom) + " -> " +
+                          std::to_string(place.side);
+        }
+    }
+    if (shrunkCount > 0)
+        host.note("shadowAtlas: " + std::to_string(shrunkCount) + " light(s) got smaller tiles than their size on screen asks for, to fit " +
+                  std::to_string(size_) + "^2 texels (" + shrunk + (shrunkCount > 8 ? ", and " + std::to_string(shrunkCount - 8) + " more" : "") +
+                  "); raise shadowAtlas.size or lower shadowAtlas.texelsPerPixel");
+    gl::reserveBuffer(tileBuffer_, tileBytes_, std::max<std::size_t>(tiles_.size(), 1) * sizeof(shared::AtlasTile));
+    if (!tiles_.empty())
+        glNamedBufferSubData(tileBuffer_.id(), 0, static_cast<GLsizeiptr>(tiles_.size() * sizeof(shared::AtlasTile)), tiles_.data());
+    texelsUsed_ = layout.texelsUsed;
+}
+
+void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight& p) {
+    // The opaque casters in one batch, one call per tile; those with holes one by one.
+    const gl::Program& batched = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_batch.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
+    const gl::Program& single = host.program(
+        {{{GL_VERTEX_SHADER, "shadow_atlas_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{MapFormat::Depth32F}.defines()});
+    batch_.update(frame);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    gl::RenderState state;
+    state.noColor();
+    state.polygonOffset = !p.options.cullFront && (p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f);
+    state.offsetFactor = p.options.slopeBias;
+    state.offsetUnits = p.options.offsetUnits;
+    state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
+    state.clipDistances = 4;  // each tile's sides (shadow_atlas_depth.vert)
+    // The clears: depth 1 written everywhere in the tile, whatever was there.
+    gl::RenderState clearing;
+    clearing.noColor();
+    clearing.depthFunc = GL_ALWAYS;
+    const gl::Program& clear = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_clear.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
+    std::size_t drawn = 0;
+    for (int t = 0; t < p.atlasTiles; ++t) {
+        const auto f = static_cast<std::size_t>(t);
+        const glm::ivec2 o = p.atlasOrigins[f];
+        glViewport(o.x, o.y, p.atlasSide, p.atlasSide);
+        host.apply(clearing);
+        clear.use();
+        host.drawFullscreenTriangle();
+        if (!p.atlasUsed[f]) continue;
+        host.apply(state);
+        const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
+        // The casters this tile's camera can see: a cube face's by its mask, a spot's by its frustum.
+        wanted_.clear();
+        bool singles = false;
+        for (std::size_t i = 0; i < frame.items.size(); ++i) {
+            if (!frame.items[i].castsShadows) continue;
+            if (!(p.cube ? (p.faceMask(i) & (1u << t)) != 0 : castsInto(p.camera, frame, i, false))) continue;
+            wanted_.push_back(i);
+            singles = singles || !batch_.holds(i);
+        }
+        glProgramUniformMatrix4fv(batched.id(), 0, 1, GL_FALSE, &clip[0][0]);
+        drawn += batch_.draw(batched, wanted_);
+        if (!singles) continue;
+        glProgramUniformMatrix4fv(single.id(), 0, 1, GL_FALSE, &clip[0][0]);
+        host.drawItems(ItemFilter::Casters, single, [&](std::size_t i) {
+            const bool draw = !batch_.holds(i) && std::binary_search(wanted_.begin(), wanted_.end(), i);
+            if (draw) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+            return draw;
+        });
+    }
+    host.count("triangles", static_cast<double>(drawn));
+    host.count("atlasTiles", static_cast<double>(p.atlasTiles));
+    host.count("tileSide", static_cast<double>(p.atlasSide));
+    if (p.atlasFirst == 0) host.count("atlasTexels", texelsUsed_);  // the whole atlas's, once a frame: with its first tile
+}
+
+void MapAtlas::bind() const {
+    glBindTextureUnit(SL_UNIT_ATLAS, depth_.id());
+    glBindSampler(SL_UNIT_ATLAS, nearest_.id());
+    glBindTextureUnit(SL_UNIT_ATLAS_COMPARE, depth_.id());
+    glBindSampler(SL_UNIT_ATLAS_COMPARE, compare_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_ATLAS_TILES, tileBuffer_.id());
+}
+
+DebugImage MapAtlas::debugImage(const std::map<int, const MapLight*>& lights, int maxSide) const {
+    // The used part: the tiles' bounding square (Z-order keeps them near the origin).
+    int used = 1;
+    for (const auto& [index, p] : lights)
+        for (int t = 0; t < p->atlasTiles; ++t) used = std::max({used, p->atlasOrigins[static_cast<std::size_t>(t)].x + p->atlasSide,
+                                                                 p->atlasOrigins[static_cast<std::size_t>(t)].y + p->atlasSide});
+    used = std::min(used, size_);
+    DebugImage out;
+    out.name = "atlas";
+    out.kind = DebugImageKind::Atlas;
+    out.values.resize(static_cast<std::size_t>(used) * static_cast<std::size_t>(used));
+    if (size_ > 0)
+        glGetTextureSubImage(depth_.id(), 0, 0, 0, 0, used, used, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(out.values.size() * sizeof(float)),
+                             out.values.data());
+    const int step = std::max(1, (used + maxSide - 1) / maxSide);
+    const int side = (used + step - 1) / step;
+    out.image.width = out.image.height = side;
+    out.image.pixels.assign(static_cast<std::size_t>(side) * static_cast<std::size_t>(side) * 4, 0);
+    const auto at = [&](int x, int y) { return out.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(used) + static_cast<std::size_t>(x)]; };
+    const auto put = [&](int x, int y, glm::vec3 c) {  // image rows top first; GL's bottom row first
+        const std::size_t i = (static_cast<std::size_t>(side - 1 - y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)) * 4;
+        for (int k = 0; k < 3; ++k) out.image.pixels[i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(std::clamp(c[k], 0.0f, 1.0f) * 255.0f + 0.5f);
+        out.image.pixels[i + 3] = 255;
+    };
+    int hue = 0;
+    for (const auto& [index, p] : lights) {
+        const float h = std::fmod(0.618034f * static_cast<float>(hue++), 1.0f);
+        const glm::vec3 colour = glm::clamp(glm::abs(glm::fract(glm::vec3(h) + glm::vec3(1.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 6.0f - 3.0f) - 1.0f, 0.0f, 1.0f);
+        for (int t = 0; t < p->atlasTiles; ++t) {
+            const glm::ivec2 o = p->atlasOrigins[static_cast<std::size_t>(t)];
+            float lo = 1.0f;
+            for (int y = o.y; y < o.y + p->atlasSide; y += step)
+                for (int x = o.x; x < o.x + p->atlasSide; x += step) lo = std::min(lo, at(x, y));
+            const int x0 = (o.x + step - 1) / step, y0 = (o.y + step - 1) / step, x1 = (o.x + p->atlasSide) / step, y1 = (o.y + p->atlasSide) / step;
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    const bool edge = x == x0 || y == y0 || x == x1 - 1 || y == y1 - 1;
+                    const float d = at(x * step, y * step);
+                    const float grey = d >= 1.0f ? 1.0f : lo < 1.0f ? 0.15f + 0.8f * (d - lo) / (1.0f - lo) : 1.0f;
+                    put(x, y, edge ? colour : glm::vec3(grey));
+                }
+        }
+    }
+    return out;
+}
+
+glm::vec4 MapAtlas::shadowOf(const MapLight& p) {
+    return {static_cast<float>(p.atlasFirst), static_cast<float>(p.atlasTiles), p.options.normalBias, p.options.filter == MapFilter::Hardware ? 1.0f : 0.0f};
+}
+
+} // namespace shadowlab::map

@@ -1,0 +1,58 @@
+#pragma once
+// Technique "map": the shadow atlas that the lights with `atlas` share
+// (Scene::shadowAtlas). Each frame every such light's tiles are sized
+// from how large its reach is on screen (core/AtlasLayout: a far or small
+// light gets few texels, a near one many, all shrunk together to fit),
+// placed, and described for the lookups (shared::AtlasTile, one per spot
+// map or cube face, in a shader storage buffer); each light's shadow pass
+// draws its casters into its own tiles, culled per tile.
+#include "techniques/Technique.h"
+#include "techniques/map/MapCasterBatch.h"
+#include "techniques/map/MapLight.h"
+
+#include "shadowlab_shared.h"
+
+#include <map>
+#include <vector>
+
+namespace shadowlab::map {
+
+class MapAtlas {
+public:
+    /// Bytes the atlas of `settings` takes (depth32f).
+    static double bytesFor(const ShadowAtlasSettings& settings) { return 4.0 * settings.size * static_cast<double>(settings.size); }
+    /// Sizes and places the tiles of `lights` (index -> state, cameras
+    /// already fitted), fills each one's atlas fields, notes the lights
+    /// that were shrunk, makes the texture at its size and uploads the tiles.
+    void layout(TechniqueHost& host, const FrameInfo& frame, std::map<int, MapLight*>& lights);
+    /// Clears light `p`'s tiles and draws its casters into them.
+    void draw(TechniqueHost& host, const FrameInfo& frame, const MapLight& p);
+    /// Binds the atlas and its tiles where shadow_atlas.glsl reads them.
+    void bind() const;
+    /// ListedLight::shadow for light `p` (shadowlab_shared.h).
+    static glm::vec4 shadowOf(const MapLight& p);
+    /// The atlas as an image (DebugImageKind::Atlas): the part its tiles
+    /// use, at most `maxSide` pixels a side (every k-th texel), each tile's
+    /// depths stretched over their own range, near dark, and each light's
+    /// tiles (`lights`: index -> state) outlined in a hue of its own.
+    DebugImage debugImage(const std::map<int, const MapLight*>& lights, int maxSide = 1024) const;
+    /// The atlas's texture (debug views), its side in texels (0: none yet).
+    const gl::Texture& texture() const { return depth_; }
+    int size() const { return size_; }
+    /// The last layout's tiles (one per spot, six per point light).
+    const std::vector<shared::AtlasTile>& tiles() const { return tiles_; }
+
+private:
+    gl::Texture depth_{gl::NoCreate};
+    gl::Framebuffer fbo_{gl::NoCreate};
+    gl::Buffer tileBuffer_{gl::NoCreate};
+    std::size_t tileBytes_ = 0;
+    gl::Sampler nearest_{gl::NoCreate}, compare_{gl::NoCreate};
+    int size_ = 0;
+    double texelsUsed_ = 0.0;  ///< the last layout's tiles' area
+    MapCasterBatch batch_;     ///< the opaque casters, world space, drawn in one call per tile
+    std::vector<std::size_t> wanted_;  ///< scratch: the items a tile draws
+    std::vector<shared::AtlasTile> tiles_;
+};
+
+} // namespace shadowlab::map

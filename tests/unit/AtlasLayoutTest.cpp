@@ -1,0 +1,121 @@
+// The shadow atlas's packing (core/AtlasLayout.h): every tile inside the
+// atlas, no two overlapping, the sizes asked for when they fit, and when
+// they do not, the largest halved first and nothing below the least side.
+#include "core/AtlasLayout.h"
+
+#include "SceneErrorCase.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace shadowlab;
+
+namespace {
+
+// Texels covered by more than one tile, or outside the atlas: both must be 0.
+struct Coverage {
+    std::size_t overlapping = 0, outside = 0;
+};
+
+Coverage coverage(const AtlasLayout& layout, const std::vector<AtlasRequest>& requests, int size) {
+    std::vector<std::uint8_t> used(static_cast<std::size_t>(size) * size, 0);
+    Coverage c;
+    for (std::size_t i = 0; i < requests.size(); ++i)
+        for (const glm::ivec2& o : layout.placed[i].origins)
+            for (int y = o.y; y < o.y + layout.placed[i].side; ++y)
+                for (int x = o.x; x < o.x + layout.placed[i].side; ++x) {
+                    if (x < 0 || y < 0 || x >= size || y >= size) {
+                        ++c.outside;
+                        continue;
+                    }
+                    if (used[static_cast<std::size_t>(y) * size + x]++) ++c.overlapping;
+                }
+    return c;
+}
+
+} // namespace
+
+TEST(AtlasLayout, RandomRequestsNeitherOverlapNorLeave) {
+    std::mt19937 rng(7);
+    for (int round = 0; round < 40; ++round) {
+        std::vector<AtlasRequest> requests;
+        const int lights = 1 + static_cast<int>(rng() % 60);
+        for (int i = 0; i < lights; ++i) requests.push_back({rng() % 2 ? 6 : 1, 8 << (rng() % 7)});
+        const int size = 1024;
+        const AtlasLayout layout = packAtlas(requests, size, 8);
+        ASSERT_TRUE(layout.fits);
+        const Coverage c = coverage(layout, requests, size);
+        EXPECT_EQ(c.overlapping, 0u) << "round " << round;
+        EXPECT_EQ(c.outside, 0u) << "round " << round;
+        double area = 0.0;
+        for (std::size_t i = 0; i < requests.size(); ++i) area += requests[i].tiles * double(layout.placed[i].side) * layout.placed[i].side;
+        EXPECT_LE(area, double(size) * size);
+        EXPECT_EQ(area, layout.texelsUsed);
+    }
+}
+
+TEST(AtlasLayout, KeepsTheSizesAskedForWhenTheyFit) {
+    const std::vector<AtlasRequest> requests{{6, 256}, {1, 512}, {1, 64}, {6, 128}};
+    const AtlasLayout layout = packAtlas(requests, 1024, 16);
+    for (std::size_t i = 0; i < requests.size(); ++i) {
+        EXPECT_EQ(layout.placed[i].side, requests[i].side);
+        EXPECT_FALSE(layout.placed[i].shrunk());
+    }
+}
+
+TEST(AtlasLayout, ShrinksTheLargestFirstAndStopsAtTheLeast) {
+    // 2 x 512^2 + 4 x 128^2 = 589824 > 512^2 = 262144: the 512s halve to
+    // 256 (196608 in all, fits); the 128s keep their size.
+    const std::vector<AtlasRequest> requests{{1, 512}, {1, 512}, {4, 128}};
+    const AtlasLayout layout = packAtlas(requests, 512, 32);
+    ASSERT_TRUE(layout.fits);
+    EXPECT_EQ(layout.placed[0].side, 256);
+    EXPECT_TRUE(layout.placed[0].shrunk());
+    EXPECT_EQ(layout.placed[2].side, 128);
+    EXPECT_FALSE(layout.placed[2].shrunk());
+    // 300 tiles of at least 32^2 cannot fit 256^2 (64 such tiles).
+    const AtlasLayout full = packAtlas({{300, 64}}, 256, 32);
+    EXPECT_FALSE(full.fits);
+}
+
+TEST(AtlasLayout, TileSideFollowsTheScreen) {
+    EXPECT_EQ(tileSideFor(100.0f, 1.0f, 32, 1024), 128);
+    EXPECT_EQ(tileSideFor(128.0f, 1.0f, 32, 1024), 128);
+    EXPECT_EQ(tileSideFor(3.0f, 1.0f, 32, 1024), 32);
+    EXPECT_EQ(tileSideFor(5000.0f, 1.0f, 32, 1024), 1024);
+    EXPECT_EQ(tileSideFor(100.0f, 0.25f, 8, 1024), 32);
+}
+
+// The scene file's `shadowAtlas` and the map's `atlas` option: each bad
+// value a one-line error naming the file (or the --set flag) and the path.
+namespace {
+std::string withAtlas(const std::string& atlas, const std::string& light = R"({"type": "spot", "position": [0, 2, 0]})") {
+    return R"({"lights": [)" + light + R"(], "shadowAtlas": )" + atlas + "}";
+}
+const std::string kAtlasSpot = R"({"type": "spot", "position": [0, 2, 0], "shadow": {"technique": "map", "map": {"atlas": true}}})";
+} // namespace
+
+class ShadowAtlasErrors : public ::testing::TestWithParam<SceneErrorCase> {};
+
+TEST_P(ShadowAtlasErrors, NameFilePathAndExpectation) { expectSceneError(GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(
+    All, ShadowAtlasErrors,
+    ::testing::Values(
+        SceneErrorCase{"NotAnObject", withAtlas("4096"), {}, "scene.json: shadowAtlas: expected an object, got a number"},
+        SceneErrorCase{"UnknownKey", withAtlas(R"({"sise": 4096})"), {}, "shadowAtlas.sise: unknown key"},
+        SceneErrorCase{"SizeNotPowerOfTwo", withAtlas(R"({"size": 3000})"), {}, "shadowAtlas.size: expected a power of two, got 3000"},
+        SceneErrorCase{"SizeTooLarge", withAtlas(R"({"size": 32768})"), {}, "shadowAtlas.size: expected an integer in 256..16384, got 32768"},
+        SceneErrorCase{"SizeSet", withAtlas("{}"), {"shadowAtlas.size=100"}, "--set shadowAtlas.size=100: shadowAtlas.size: expected an integer in 256..16384"},
+        SceneErrorCase{"TexelsPerPixel", withAtlas(R"({"texelsPerPixel": 0})"), {}, "shadowAtlas.texelsPerPixel: expected 0.0625..16, got 0"},
+        SceneErrorCase{"MaxTileOverSize", withAtlas(R"({"size": 512, "maxTile": 1024})"), {}, "shadowAtlas.maxTile: expected an integer in 8..512, got 1024"},
+        SceneErrorCase{"MinTileOverMax", withAtlas(R"({"minTile": 2048})"), {}, "shadowAtlas.minTile: expected an integer in 8..1024, got 2048"},
+        SceneErrorCase{"MinTileNotPowerOfTwo", withAtlas(R"({"minTile": 48})"), {}, "shadowAtlas.minTile: expected a power of two, got 48"},
+        SceneErrorCase{"AtlasOnADirectionalLight", withAtlas("{}", R"({"type": "directional", "shadow": {"technique": "map", "map": {"atlas": true}}})"), {},
+                       "scene.json: lights[0].shadow.map.atlas: map: atlas is for spot and point lights"},
+        SceneErrorCase{"AtlasWithPcf", withAtlas("{}", kAtlasSpot), {"lights[0].shadow.map.filter=grid"},
+                       "--set lights[0].shadow.map.filter=grid: lights[0].shadow.map.filter: map: filter \"grid\": an atlas tile is looked up with one tap; use filter \"none\" or \"hardware\" with atlas"},
+        SceneErrorCase{"AtlasWithRgba8", withAtlas("{}", kAtlasSpot), {"lights[0].shadow.map.format=rgba8"}, "lights[0].shadow.map.format: map: format: the atlas is depth32f"},
+        SceneErrorCase{"AtlasWithMoments", withAtlas("{}", kAtlasSpot), {"lights[0].shadow.map.representation=vsm"}, "lights[0].shadow.map.representation: map: representation: the atlas holds depth"}),
+    sceneErrorCaseName);
