@@ -32,7 +32,9 @@ uint atlasFace(vec3 d) {
 // light's own maps interpolate light-space coordinates per vertex
 // instead, exact on a flat triangle; a pass over many lights cannot). The
 // tile's polygon offset adds its slope term when it is drawn. Lookups stay
-// inside the tile (its outermost texels' centres).
+// inside the tile (its outermost texels' centres); outside the rectangle
+// its casters may cover (AtlasTile.casters) the point is lit without a
+// fetch (the texels there were neither cleared nor drawn this frame).
 float atlasVisibility(vec4 shadow, vec3 lightPosition, vec3 p, vec3 n, float NdotL) {
     uint count = uint(shadow.y);
     if (count == 0u) return 1.0;
@@ -48,6 +50,9 @@ float atlasVisibility(vec4 shadow, vec3 lightPosition, vec3 p, vec3 n, float Ndo
     vec3 s = c.xyz / c.w;
     vec4 box = atlasTiles[t].uvClamp;
     vec2 uv = clamp(s.xy, box.xy, box.zw);
+    // Only the texels casters may cover were cleared and drawn: lit elsewhere.
+    vec4 drawn = atlasTiles[t].casters;
+    if (any(lessThan(uv, drawn.xy)) || any(greaterThan(uv, drawn.zw))) return 1.0;
     if (shadow.w > 0.5) return texture(atlasCompare, vec3(uv, s.z));
     return s.z <= texelFetch(atlasDepth, ivec2(uv * vec2(textureSize(atlasDepth, 0))), 0).r ? 1.0 : 0.0;
 }

@@ -84,6 +84,7 @@ struct ListedLight {
 struct AtlasTile {
     SL_MAT4 atlasFromWorld; // the tile's camera, then into its place: atlas uv in xy, window depth (0..1) in z, after /w; w the distance along the camera's axis
     SL_VEC4 uvClamp;        // the centres of the tile's outermost texels, atlas uv: min in xy, max in zw
+    SL_VEC4 casters;        // where casters may have been drawn, atlas uv (min xy, max zw), a texel inside what was cleared: lit outside
     SL_VEC4 params;         // x a texel's world size per unit of w, y 1 when casters were drawn into it (0: lit everywhere), zw unused
 };
 

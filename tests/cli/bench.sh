@@ -184,4 +184,13 @@ mkdir -p "stale.partial-$dead" "stale.partial-$$"
 [[ -d "stale.partial-$$" ]] || fail "a running bench's stale.partial-$$ was removed"
 [[ -s stale/results.json ]] || fail "bench -o stale wrote no results.json"
 passed=$((passed + 1))
+# A run over the light count (lightGrid.count) gets the plot of frame time
+# against the count in report.html, a line per other setting, with a row
+# per point and its ratio to the point at half the count.
+"$tool" bench "$src/scenes/many-lights.json" --vary lightGrid.light.shadow.technique=none,map --vary lightGrid.count=2,4 \
+  --frames 1 --warmup 0 --width 96 --height 54 -o counts >/dev/null 2>&1 || fail "bench over lightGrid.count failed"
+grep -q 'id="lightcount"' counts/report.html || fail "report.html has no light-count plot"
+[[ $(grep -o '<g class="series">' counts/report.html | wc -l) -eq 2 ]] || fail "expected two series (none, map) in the light-count plot"
+grep -q 'lightGrid.light.shadow.technique=map</td><td>4</td>' counts/report.html || fail "no row for 4 lights with map"
+passed=$((passed + 1))
 echo "$passed passed, 0 failed"

@@ -32,7 +32,8 @@ inline Comparison compareScene(const Scene& scene, int width = 960, int height =
 
 // The scene files in scenes/, sorted: the scenes of one light each that
 // the accuracy and performance bars name. many-lights.json (64 lights from
-// a lightGrid, unshadowed as shipped) has its own tests (LightListGLTest).
+// a lightGrid, their maps in the shadow atlas) has its own tests
+// (LightListGLTest, ShadowAtlasGLTest).
 inline std::vector<std::filesystem::path> bundledScenes() {
     std::vector<std::filesystem::path> out;
     for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes"))

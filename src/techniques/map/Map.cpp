@@ -210,7 +210,10 @@ public:
             std::map<int, const MapLight*> inAtlas;
             for (const auto& [index, p] : lights_)
                 if (p.options.atlas) inAtlas.emplace(index, &p);
-            if (kinds.wants(DebugImageKind::Atlas) && inAtlas.begin()->first == view.index) out.push_back(atlas_.debugImage(inAtlas));
+            if (!kinds.wants(DebugImageKind::Atlas)) return;
+            if (inAtlas.begin()->first == view.index) out.push_back(atlas_.debugImage(inAtlas));
+            DebugImage tiles = atlas_.lightTiles(lights_.at(view.index));
+            if (!tiles.image.pixels.empty()) out.push_back(std::move(tiles));
             return;
         }
         map::debugImages(host, frame, view, res_, lights_.at(view.index), kinds, out);

@@ -27,10 +27,14 @@ float screenExtent(const Light& light, const FrameInfo& frame) {
 }
 
 // A tile's record: its camera's clip space moved into its square of the
-// atlas (xy to its uv, z to 0..1), its outermost texels' centres, and the
-// world size of a texel per unit of distance along the camera's axis
-// (2 / (side P[1][1]): a cube face's P[1][1] is 1).
-shared::AtlasTile tileOf(const glm::mat4& clipFromWorld, float projectionY, glm::ivec2 origin, int side, int atlas, bool used) {
+// atlas (xy to its uv, z to 0..1), its outermost texels' centres, the
+// centres of the outermost texels its casters may cover (projectedRect's
+// margin keeps the casters a texel inside them, and a bilinear lookup
+// between those centres reads only cleared texels; at the tile's edge they
+// are the tile's own outermost centres), and the world size of a texel
+// per unit of distance along the camera's axis (2 / (side P[1][1]): a cube
+// face's P[1][1] is 1).
+shared::AtlasTile tileOf(const glm::mat4& clipFromWorld, float projectionY, glm::ivec2 origin, int side, int atlas, const TexelRect& covered) {
     const float s = static_cast<float>(atlas);
     const glm::vec2 lo = glm::vec2(origin) / s, extent = glm::vec2(static_cast<float>(side) / s);
     const glm::mat4 toTile = glm::translate(glm::mat4(1.0f), glm::vec3(lo + 0.5f * extent, 0.5f)) *
@@ -39,8 +43,19 @@ shared::AtlasTile tileOf(const glm::mat4& clipFromWorld, float projectionY, glm:
     t.atlasFromWorld = toTile * clipFromWorld;
     const float half = 0.5f / s;
     t.uvClamp = glm::vec4(lo + half, lo + extent - half);
-    t.params = glm::vec4(2.0f / (static_cast<float>(side) * projectionY), used ? 1.0f : 0.0f, 0.0f, 0.0f);
+    const glm::vec2 o(origin);
+    t.casters = covered.empty() ? glm::vec4(2.0f, 2.0f, -2.0f, -2.0f)
+                                : glm::vec4((o + glm::vec2(covered.x0, covered.y0) + 0.5f) / s, (o + glm::vec2(covered.x1, covered.y1) - 0.5f) / s);
+    t.params = glm::vec4(2.0f / (static_cast<float>(side) * projectionY), covered.empty() ? 0.0f : 1.0f, 0.0f, 0.0f);
     return t;
+}
+
+// Whether item i is drawn into tile t of light p: a caster its camera can
+// see (a cube face's by its face mask, a spot's by its frustum: the same
+// culling as the light's own map).
+bool castsIntoTile(const FrameInfo& frame, const MapLight& p, int t, std::size_t i) {
+    if (!frame.items[i].castsShadows) return false;
+    return p.cube ? (p.faceMask(i) & (1u << t)) != 0 : castsInto(p.camera, frame, i, false);
 }
 
 gl::Sampler makeSampler(bool compare) {
@@ -105,19 +120,16 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
         p.atlasFirst = static_cast<int>(tiles_.size());
         p.atlasTiles = requests[k].tiles;
         p.atlasSide = place.side;
-        p.atlasUsed.fill(false);
         for (int t = 0; t < p.atlasTiles; ++t) {
             const auto f = static_cast<std::size_t>(t);
             p.atlasOrigins[f] = place.origins[f];
-            if (p.cube) {
-                for (std::size_t i = 0; i < frame.items.size() && !p.atlasUsed[f]; ++i)
-                    p.atlasUsed[f] = frame.items[i].castsShadows && (p.faceMask(i) & (1u << t)) != 0;
-                tiles_.push_back(tileOf(p.cubeCamera.faceClipFromWorld[f], 1.0f, place.origins[f], place.side, size_, p.atlasUsed[f]));
-            } else {
-                for (std::size_t i = 0; i < frame.items.size() && !p.atlasUsed[f]; ++i)
-                    p.atlasUsed[f] = frame.items[i].castsShadows && castsInto(p.camera, frame, i, false);
-                tiles_.push_back(tileOf(p.camera.clipFromWorld(), p.camera.clipFromView[1][1], place.origins[f], place.side, size_, p.atlasUsed[f]));
-            }
+            // The texels its casters may cover: only those are cleared and drawn.
+            const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
+            TexelRect covered{};
+            for (std::size_t i = 0; i < frame.items.size(); ++i)
+                if (castsIntoTile(frame, p, t, i)) covered = covered.united(projectedRect(clip, frame.itemBounds[i], place.side));
+            p.atlasCovered[f] = covered;
+            tiles_.push_back(tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[f], place.side, size_, covered));
         }
         if (place.shrunk() && p.atlasTiles > 0) {
             if (++shrunkCount <= 8)
@@ -155,22 +167,25 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     clearing.depthFunc = GL_ALWAYS;
     const gl::Program& clear = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_clear.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
     std::size_t drawn = 0;
+    double cleared = 0.0;
     for (int t = 0; t < p.atlasTiles; ++t) {
         const auto f = static_cast<std::size_t>(t);
+        const TexelRect& c = p.atlasCovered[f];
+        if (c.empty()) continue;  // no caster: the lookup reads no texel of it
         const glm::ivec2 o = p.atlasOrigins[f];
-        glViewport(o.x, o.y, p.atlasSide, p.atlasSide);
+        glViewport(o.x + c.x0, o.y + c.y0, c.x1 - c.x0, c.y1 - c.y0);
         host.apply(clearing);
         clear.use();
         host.drawFullscreenTriangle();
-        if (!p.atlasUsed[f]) continue;
+        cleared += static_cast<double>(c.x1 - c.x0) * static_cast<double>(c.y1 - c.y0);
+        glViewport(o.x, o.y, p.atlasSide, p.atlasSide);
         host.apply(state);
         const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
         // The casters this tile's camera can see: a cube face's by its mask, a spot's by its frustum.
         wanted_.clear();
         bool singles = false;
         for (std::size_t i = 0; i < frame.items.size(); ++i) {
-            if (!frame.items[i].castsShadows) continue;
-            if (!(p.cube ? (p.faceMask(i) & (1u << t)) != 0 : castsInto(p.camera, frame, i, false))) continue;
+            if (!castsIntoTile(frame, p, t, i)) continue;
             wanted_.push_back(i);
             singles = singles || !batch_.holds(i);
         }
@@ -187,6 +202,7 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     host.count("triangles", static_cast<double>(drawn));
     host.count("atlasTiles", static_cast<double>(p.atlasTiles));
     host.count("tileSide", static_cast<double>(p.atlasSide));
+    host.count("clearedTexels", cleared);
     if (p.atlasFirst == 0) host.count("atlasTexels", texelsUsed_);  // the whole atlas's, once a frame: with its first tile
 }
 
@@ -215,7 +231,7 @@ DebugImage MapAtlas::debugImage(const std::map<int, const MapLight*>& lights, in
     const int step = std::max(1, (used + maxSide - 1) / maxSide);
     const int side = (used + step - 1) / step;
     out.image.width = out.image.height = side;
-    out.image.pixels.assign(static_cast<std::size_t>(side) * static_cast<std::size_t>(side) * 4, 0);
+    out.image.pixels.assign(static_cast<std::size_t>(side) * static_cast<std::size_t>(side) * 4, 255);  // white where no tile is
     const auto at = [&](int x, int y) { return out.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(used) + static_cast<std::size_t>(x)]; };
     const auto put = [&](int x, int y, glm::vec3 c) {  // image rows top first; GL's bottom row first
         const std::size_t i = (static_cast<std::size_t>(side - 1 - y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)) * 4;
@@ -229,17 +245,60 @@ DebugImage MapAtlas::debugImage(const std::map<int, const MapLight*>& lights, in
         for (int t = 0; t < p->atlasTiles; ++t) {
             const glm::ivec2 o = p->atlasOrigins[static_cast<std::size_t>(t)];
             float lo = 1.0f;
-            for (int y = o.y; y < o.y + p->atlasSide; y += step)
-                for (int x = o.x; x < o.x + p->atlasSide; x += step) lo = std::min(lo, at(x, y));
+            const TexelRect& cover = p->atlasCovered[static_cast<std::size_t>(t)];
+            for (int y = o.y + cover.y0; y < o.y + cover.y1; y += step)
+                for (int x = o.x + cover.x0; x < o.x + cover.x1; x += step) lo = std::min(lo, at(x, y));
             const int x0 = (o.x + step - 1) / step, y0 = (o.y + step - 1) / step, x1 = (o.x + p->atlasSide) / step, y1 = (o.y + p->atlasSide) / step;
+            const TexelRect& c = p->atlasCovered[static_cast<std::size_t>(t)];
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
                     const bool edge = x == x0 || y == y0 || x == x1 - 1 || y == y1 - 1;
-                    const float d = at(x * step, y * step);
+                    const int tx = x * step - o.x, ty = y * step - o.y;  // tile-local: outside what was cleared and drawn, nothing (white)
+                    const bool drawn = tx >= c.x0 && tx < c.x1 && ty >= c.y0 && ty < c.y1;
+                    const float d = drawn ? at(x * step, y * step) : 1.0f;
                     const float grey = d >= 1.0f ? 1.0f : lo < 1.0f ? 0.15f + 0.8f * (d - lo) / (1.0f - lo) : 1.0f;
                     put(x, y, edge ? colour : glm::vec3(grey));
                 }
         }
+    }
+    return out;
+}
+
+DebugImage MapAtlas::lightTiles(const MapLight& p) const {
+    DebugImage out;
+    out.name = "atlas-tiles";
+    out.kind = DebugImageKind::Atlas;
+    const int side = p.atlasSide, tiles = p.atlasTiles;
+    if (tiles == 0 || side == 0 || size_ == 0) return out;
+    const std::size_t area = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+    out.values.resize(area * static_cast<std::size_t>(tiles));
+    for (int t = 0; t < tiles; ++t) {
+        const glm::ivec2 o = p.atlasOrigins[static_cast<std::size_t>(t)];
+        glGetTextureSubImage(depth_.id(), 0, o.x, o.y, 0, side, side, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(area * sizeof(float)),
+                             out.values.data() + area * static_cast<std::size_t>(t));
+    }
+    const int gap = 2;
+    out.image.width = tiles * side + (tiles - 1) * gap;
+    out.image.height = side;
+    out.image.pixels.assign(static_cast<std::size_t>(out.image.width) * static_cast<std::size_t>(side) * 4, 255);
+    for (int t = 0; t < tiles; ++t) {
+        float* d = out.values.data() + area * static_cast<std::size_t>(t);
+        // Outside what was cleared and drawn this frame: the far plane (nothing there).
+        const TexelRect& c = p.atlasCovered[static_cast<std::size_t>(t)];
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x)
+                if (x < c.x0 || x >= c.x1 || y < c.y0 || y >= c.y1) d[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = 1.0f;
+        float lo = 1.0f;
+        for (std::size_t i = 0; i < area; ++i) lo = std::min(lo, d[i]);
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                const float v = d[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)];
+                const float grey = v >= 1.0f || lo >= 1.0f ? 1.0f : 0.15f + 0.8f * (v - lo) / (1.0f - lo);
+                const std::size_t i = (static_cast<std::size_t>(side - 1 - y) * static_cast<std::size_t>(out.image.width) +
+                                       static_cast<std::size_t>(t * (side + gap) + x)) * 4;
+                const auto g = static_cast<std::uint8_t>(std::clamp(grey, 0.0f, 1.0f) * 255.0f + 0.5f);
+                out.image.pixels[i] = out.image.pixels[i + 1] = out.image.pixels[i + 2] = g;
+            }
     }
     return out;
 }

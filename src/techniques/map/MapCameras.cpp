@@ -154,4 +154,19 @@ bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i,
     return !camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
 }
 
+TexelRect projectedRect(const glm::mat4& clipFromWorld, const Bounds& box, int size) {
+    float lo[2] = {1.0f, 1.0f}, hi[2] = {-1.0f, -1.0f};
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z);
+        const glm::vec4 clip = clipFromWorld * glm::vec4(corner, 1.0f);
+        if (!(clip.w > 1e-6f)) return TexelRect::whole().clamped(size);
+        for (int a = 0; a < 2; ++a) {
+            lo[a] = std::min(lo[a], clip[a] / clip.w);
+            hi[a] = std::max(hi[a], clip[a] / clip.w);
+        }
+    }
+    auto texel = [&](float ndc) { return static_cast<int>(std::floor((ndc * 0.5f + 0.5f) * static_cast<float>(size))); };
+    return TexelRect{texel(lo[0]) - 1, texel(lo[1]) - 1, texel(hi[0]) + 2, texel(hi[1]) + 2}.clamped(size);
+}
+
 } // namespace shadowlab::map

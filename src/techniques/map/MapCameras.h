@@ -31,4 +31,9 @@ glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame);
 /// plane and light the receiver under it.
 bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i, bool moments);
 
+/// The texels of a `size`-texel map that `box` may cover through the
+/// perspective `clipFromWorld` (a texel of margin; the whole map when a
+/// corner is behind the camera): a cube face's, an atlas tile's.
+TexelRect projectedRect(const glm::mat4& clipFromWorld, const Bounds& box, int size);
+
 } // namespace shadowlab::map

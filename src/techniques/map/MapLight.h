@@ -62,13 +62,14 @@ struct MapLight {
     std::vector<gl::Framebuffer> cascadeFbos;
     /// atlas: its tiles in the shadow atlas (MapAtlas): the first's index
     /// among the atlas's tiles, how many (0 when culled: its reach is out
-    /// of view), their side in texels, each one's lower-left texel and
-    /// whether casters were drawn into it.
+    /// of view), their side in texels, each one's lower-left texel and the
+    /// texels of each that its casters may cover (tile-local, with a texel
+    /// of margin: what is cleared and drawn; empty: no caster).
     int atlasFirst = 0;
     int atlasTiles = 0;
     int atlasSide = 0;
     std::array<glm::ivec2, 6> atlasOrigins{};
-    std::array<bool, 6> atlasUsed{};
+    std::array<TexelRect, 6> atlasCovered{};
     /// The cameras its 2D map layers were drawn from: the cascades, or the one camera.
     std::span<const LightCamera> cameras() const { return cascades.empty() ? std::span<const LightCamera>(&camera, 1) : std::span<const LightCamera>(cascades); }
     /// The cube faces item i is drawn into: those its bounds touch, or all
