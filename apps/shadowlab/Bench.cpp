@@ -11,6 +11,7 @@
 #include <shadowlab/Text.h>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <cerrno>
@@ -109,7 +110,13 @@ json runBench(Context& context, const BenchArgs& args) {
         try {
             Renderer renderer(context);
             renderer.upload(scene);
-            const TimedFrames timed = timeFrames(renderer, scene, run.loaded, args);
+            // A shadow atlas with an update budget: its frames in sequence on a renderer of their own.
+            std::optional<Renderer> budgeted;
+            if (scene.shadowAtlas.updateBudget > 0) {
+                budgeted.emplace(context);
+                budgeted->upload(scene);
+            }
+            const TimedFrames timed = timeFrames(renderer, scene, run.loaded, args, budgeted ? &*budgeted : nullptr);
             const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args);
             throwIfInterrupted();  // an interrupt during the reference's trace
             // What the techniques noticed (no planar receiver, no disc): said here and kept in the row.

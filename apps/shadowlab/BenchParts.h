@@ -54,6 +54,10 @@ struct TimedFrames {
     /// The frame again right after a plain one, RenderOptions::cacheShadowMaps
     /// on: the maps whose inputs did not change are kept, not drawn.
     std::vector<double> cachedTimes;
+    /// Scenes with a shadow atlas update budget (shadowAtlas.updateBudget):
+    /// the frames in sequence on a renderer of their own, cacheShadowMaps
+    /// on, so that at most that many changed tiles are drawn each frame.
+    std::vector<double> budgetedTimes;
     /// The same scene with every light at its technique's baseline
     /// (shadowBaseline); timed only where some light differs from it.
     std::vector<double> baselineTimes;
@@ -67,7 +71,8 @@ struct TimedFrames {
 /// args.timeSeconds + i / args.fps, each a plain frame, an unshadowed one, the
 /// baseline's where timed and one with the pass clock. Leaves `scene` (a copy
 /// of `loaded` at args.timeSeconds, uploaded to `renderer`) at the last step.
-TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args);
+/// `budgeted`: a second renderer (the scene uploaded) for budgetedTimes, or null.
+TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args, Renderer* budgeted = nullptr);
 
 /// Temporal stability (--flips), per light over consecutive frames: the share
 /// of receiver pixels whose shadow changed although the truth there did not.

@@ -141,6 +141,7 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
             {"notes", accuracy.comparison.techniqueFrame.notes},
             {"techniqueImage", "images/" + stem + "-technique.png"},
             {"referenceImage", "images/" + stem + "-reference.png"}};
+    if (!timed.budgetedTimes.empty()) record["budgetedFrameMs"] = stats(timed.budgetedTimes);
     record.update(extra);
     return record;
 }

@@ -29,7 +29,7 @@ void addClocked(TimedFrames& timed, const FrameStats& frame) {
 
 } // namespace
 
-TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args) {
+TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args, Renderer* budgeted) {
     TimedFrames timed;
     // Interleaved: a frame as users get it (no per-pass clock) for
     // the frame time, then a frame with the pass clock for where the
@@ -60,6 +60,11 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
     timed.timedPerLight = unshadowed.lights.size() >= 3;
     for (int i = 0; i < args.warmup; ++i) {
         renderer.render(scene, plain);
+        if (budgeted) {
+            RenderOptions cached = plain;
+            cached.cacheShadowMaps = true;
+            budgeted->render(scene, cached);
+        }
         renderer.render(unshadowed, plain);
         if (timed.timedPerLight) renderer.render(unshadowed, perLight);
         if (timed.timedBaseline) renderer.render(baseline, plain);
@@ -77,6 +82,7 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
         RenderOptions cached = plain;
         cached.cacheShadowMaps = true;
         timed.cachedTimes.push_back(renderer.render(scene, cached).cpuMs);
+        if (budgeted) timed.budgetedTimes.push_back(budgeted->render(scene, cached).cpuMs);
         timed.unshadowedTimes.push_back(renderer.render(unshadowed, plain).cpuMs);
         if (timed.timedPerLight) {
             perLight.timeSeconds = t;

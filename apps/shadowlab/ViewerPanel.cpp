@@ -40,7 +40,19 @@ void ViewerSession::drawPanel(int height, bool& screenshotKey) {
         std::vector<float> values(frameTimes.begin(), frameTimes.end());
         ImGui::PlotLines("##frames", values.data(), static_cast<int>(values.size()), 0, "frame ms", 0.0f, 60.0f, ImVec2(kPanelWidth - 20.0f, 50.0f));
     }
-    for (const PassTiming& p : stats.passes) ImGui::Text("  %-22s %6.2f ms", p.name.c_str(), p.ms);
+    // The passes, a light's shadow passes summed into one line past a dozen
+    // (a scene of many lights would push the rest off the panel).
+    std::size_t shadowPasses = 0;
+    double shadowMs = 0.0;
+    for (const PassTiming& p : stats.passes)
+        if (p.name.rfind("shadow[", 0) == 0) {
+            ++shadowPasses;
+            shadowMs += p.ms;
+        }
+    const bool summed = shadowPasses > 12;
+    if (summed) ImGui::Text("  %-22s %6.2f ms", ("shadow[*] (" + std::to_string(shadowPasses) + " passes)").c_str(), shadowMs);
+    for (const PassTiming& p : stats.passes)
+        if (!summed || p.name.rfind("shadow[", 0) != 0) ImGui::Text("  %-22s %6.2f ms", p.name.c_str(), p.ms);
     if (ImGui::Button("reset camera (R)")) {
         orbit.from(scene.camera);
         cameraMoved = false;
@@ -57,6 +69,17 @@ void ViewerSession::drawPanel(int height, bool& screenshotKey) {
     ImGui::SameLine();
     if (ImGui::Button("compare (C)") && !tracing) referenceAsked = true;
     drawComparison();
+    // The shadow atlas (technique map, atlas), which its lights share: shown
+    // here once, each light's own tiles under the light.
+    if (showDebug)
+        for (std::size_t d = 0; d < debugImages.size() && d < debugTextures.size(); ++d)
+            if (debugImages[d].kind == DebugImageKind::Atlas && debugImages[d].name.find("-atlas-tiles") == std::string::npos &&
+                ImGui::CollapsingHeader("shadow atlas", ImGuiTreeNodeFlags_DefaultOpen)) {
+                const float w = kPanelWidth - 30.0f;
+                const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
+                ImGui::TextUnformatted("each light's tiles outlined in a colour of its own");
+                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(debugTextures[d].id())), ImVec2(w, h));
+            }
     ImGui::Text("GL objects: %ld", liveGlObjects());
     if (fromFile) {
         ImGui::SameLine();
@@ -117,7 +140,8 @@ void ViewerSession::drawLight(std::size_t l, const std::vector<TechniqueInfo>& a
         // Its debug images (a map, a cube's cross), refreshed every few frames.
         if (showDebug)
             for (std::size_t d = 0; d < debugImages.size() && d < debugTextures.size(); ++d)
-                if (debugImages[d].light == static_cast<int>(l)) {
+                if (debugImages[d].light == static_cast<int>(l) &&
+                    !(debugImages[d].kind == DebugImageKind::Atlas && debugImages[d].name.find("-atlas-tiles") == std::string::npos)) {
                     const float w = kPanelWidth - 30.0f;
                     const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
                     ImGui::TextUnformatted(debugImages[d].name.c_str());

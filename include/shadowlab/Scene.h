@@ -229,6 +229,11 @@ struct ShadowAtlasSettings {
     float texelsPerPixel = 1.0f;  ///< a tile's side: the light's reach's extent on screen, pixels, times this, rounded up to a power of two; 0.0625..16, default 1
     int minTile = 32;             ///< the least tile side, texels (a power of two, 8..maxTile); default 32
     int maxTile = 1024;           ///< the largest tile side, texels (a power of two, minTile..size); default 1024
+    /// With RenderOptions::cacheShadowMaps: at most this many tiles whose
+    /// light or casters changed are drawn again per frame, the longest
+    /// undrawn first (the rest keep their last map); tiles new to their
+    /// place in the atlas are always drawn. 0: every changed tile; default 0
+    int updateBudget = 0;
 };
 
 struct SHADOWLAB_API Scene {

@@ -55,7 +55,10 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
     if (r.has("light")) {
         const Reader l = r.child("light");
         l.requireObject();
-        l.checkKeys({"name", "color", "intensity", "range", "innerCone", "outerCone", "direction", "size", "shadow"});
+        l.checkKeys({"name", "color", "intensity", "range", "innerCone", "outerCone", "direction", "size", "shadow", "path"});
+        // A sine path moves each light about its own place; keyframes would take them all to the same places.
+        if (l.has("path") && l.child("path").value().is_object() && l.child("path").value().value("type", std::string()) != "sine")
+            l.child("path").fail("expected a path of type \"sine\" (each light moves about its own place; keyframes would take every light to the same points)");
         base = l.value();
     }
     if (!base.contains("range")) base["range"] = 4.0;

@@ -19,7 +19,7 @@ int powerOfTwoAt(const Reader& r, const char* key, int def, int minimum, int max
 
 ShadowAtlasSettings readShadowAtlas(const Reader& r) {
     r.requireObject();
-    r.checkKeys({"size", "texelsPerPixel", "minTile", "maxTile"});
+    r.checkKeys({"size", "texelsPerPixel", "minTile", "maxTile", "updateBudget"});
     ShadowAtlasSettings s;
     s.size = powerOfTwoAt(r, "size", s.size, 256, 16384);
     s.texelsPerPixel = r.number("texelsPerPixel", s.texelsPerPixel);
@@ -27,6 +27,7 @@ ShadowAtlasSettings readShadowAtlas(const Reader& r) {
         r.child("texelsPerPixel").fail("expected 0.0625..16, got " + Reader::fmt(s.texelsPerPixel));
     s.maxTile = powerOfTwoAt(r, "maxTile", std::min(s.maxTile, s.size), 8, s.size);
     s.minTile = powerOfTwoAt(r, "minTile", std::min(s.minTile, s.maxTile), 8, s.maxTile);
+    s.updateBudget = r.integer("updateBudget", s.updateBudget, 0, 65536);
     return s;
 }
 

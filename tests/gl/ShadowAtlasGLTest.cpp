@@ -126,3 +126,63 @@ TEST_F(ShadowAtlasGLTest, TilesThatCannotFitAreAnError) {
         EXPECT_EQ(std::string(e.what()).rfind("shadowAtlas.size: ", 0), 0u) << e.what();
     }
 }
+
+namespace {
+
+// The sum over the frame's shadow passes of counter `name` (e.g. "tilesDrawn").
+double summed(const FrameStats& stats, const std::string& name) {
+    double sum = 0.0;
+    for (const auto& [key, value] : stats.counters)
+        if (key.rfind("shadow[", 0) == 0 && key.size() > name.size() && key.compare(key.size() - name.size() - 1, std::string::npos, "." + name) == 0) sum += value;
+    return sum;
+}
+
+} // namespace
+
+// RenderOptions::cacheShadowMaps (the caching the other maps have): a
+// frame whose lights and casters did not change draws no tile; when one
+// light moves, only its tiles are drawn again, and the frame is the frame
+// drawn from scratch (pixel for pixel: the same maps). With
+// shadowAtlas.updateBudget, when every light moves, at most that many
+// tiles are drawn a frame, the longest undrawn first, so that every tile
+// is drawn again within a few frames.
+TEST_F(ShadowAtlasGLTest, KeptTilesAndTheUpdateBudget) {
+    Scene scene = hall({"lightGrid.count=16", "shadowAtlas.updateBudget=20"});
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options;
+    options.width = 400;
+    options.height = 300;
+    options.cacheShadowMaps = true;
+    const FrameStats first = renderer.render(scene, options);
+    const double tiles = summed(first, "tilesDrawn");
+    EXPECT_GT(tiles, 16.0);
+    EXPECT_EQ(summed(first, "tilesKept"), 0.0);
+
+    // One light moved a little (the same size on screen: its tiles stay in place).
+    scene.lights[3].position.x += 0.05f;
+    const FrameStats moved = renderer.render(scene, options);
+    const double lightTiles = scene.lights[3].type == LightType::Point ? 6.0 : 1.0;
+    EXPECT_EQ(summed(moved, "tilesDrawn"), lightTiles);
+    EXPECT_EQ(summed(moved, "tilesKept"), tiles - lightTiles);
+    const ImageRGBA8 cached = renderer.readColor();
+    Renderer fresh(test::glContext());
+    fresh.upload(scene);
+    RenderOptions plain = options;
+    plain.cacheShadowMaps = false;
+    fresh.render(scene, plain);
+    EXPECT_EQ(cached.pixels, fresh.readColor().pixels);
+
+    // Every light moved: at most 20 tiles a frame, until all are drawn again.
+    for (Light& light : scene.lights) light.position.z += 0.05f;
+    double redrawn = 0.0;
+    for (int frame = 0; frame < 8 && redrawn < tiles; ++frame) {
+        const FrameStats s = renderer.render(scene, options);
+        EXPECT_LE(summed(s, "tilesDrawn"), 20.0) << "frame " << frame;
+        redrawn += summed(s, "tilesDrawn");
+    }
+    EXPECT_GE(redrawn, tiles) << "every tile drawn again within 8 frames of 20";
+    EXPECT_EQ(summed(renderer.render(scene, options), "tilesDrawn"), 0.0);
+    fresh.render(scene, plain);
+    EXPECT_EQ(renderer.readColor().pixels, fresh.readColor().pixels);
+}

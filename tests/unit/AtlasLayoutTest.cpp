@@ -112,6 +112,7 @@ INSTANTIATE_TEST_SUITE_P(
         SceneErrorCase{"MaxTileOverSize", withAtlas(R"({"size": 512, "maxTile": 1024})"), {}, "shadowAtlas.maxTile: expected an integer in 8..512, got 1024"},
         SceneErrorCase{"MinTileOverMax", withAtlas(R"({"minTile": 2048})"), {}, "shadowAtlas.minTile: expected an integer in 8..1024, got 2048"},
         SceneErrorCase{"MinTileNotPowerOfTwo", withAtlas(R"({"minTile": 48})"), {}, "shadowAtlas.minTile: expected a power of two, got 48"},
+        SceneErrorCase{"UpdateBudget", withAtlas(R"({"updateBudget": -1})"), {}, "shadowAtlas.updateBudget: expected an integer in 0..65536, got -1"},
         SceneErrorCase{"AtlasOnADirectionalLight", withAtlas("{}", R"({"type": "directional", "shadow": {"technique": "map", "map": {"atlas": true}}})"), {},
                        "scene.json: lights[0].shadow.map.atlas: map: atlas is for spot and point lights"},
         SceneErrorCase{"AtlasWithPcf", withAtlas("{}", kAtlasSpot), {"lights[0].shadow.map.filter=grid"},

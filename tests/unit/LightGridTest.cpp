@@ -103,6 +103,8 @@ INSTANTIATE_TEST_SUITE_P(
         SceneErrorCase{"TemplateRange", withGrid(R"({"light": {"range": -2}})"), {}, "lightGrid.light.range: expected a number >= 0, got -2"},
         SceneErrorCase{"TemplateShadow", withGrid(R"({"light": {"shadow": {"technique": "maps"}}})"), {},
                        "lightGrid.light.shadow.technique: unknown technique 'maps'"},
+        SceneErrorCase{"TemplateKeyframes", withGrid(R"({"light": {"path": {"type": "keyframes", "times": [0], "positions": [[0, 1, 0]]}}})"), {},
+                       "lightGrid.light.path: expected a path of type \"sine\""},
         SceneErrorCase{"TemplateShadowSet", withGrid(R"({"count": 2})"), {"lightGrid.light.shadow.map.size=7"},
                        "--set lightGrid.light.shadow.map.size=7: lightGrid.light.shadow.map.size: expected"}),
     sceneErrorCaseName);

@@ -168,12 +168,13 @@ public:
             }
         }
         if (p.options.atlas)
-            atlas_.draw(host, frame, p);
+            atlas_.draw(host, frame, p, view.index);
         else if (p.cube)
             renderCubePass(host, frame, view, res_, p);
         else
             renderMapPass(host, frame, view, res_, p);
-        drawnFrom_ = preparedFor_;
+        // The maps hold this frame's inputs, unless the atlas's update budget left some behind.
+        drawnFrom_ = atlas_.behind() ? std::optional<std::uint64_t>() : std::optional<std::uint64_t>(preparedFor_);
     }
 
     std::string lightPassDefines(const Light& light) const override {

@@ -50,6 +50,17 @@ shared::AtlasTile tileOf(const glm::mat4& clipFromWorld, float projectionY, glm:
     return t;
 }
 
+// FNV-1a over the bytes of what a tile's map follows from.
+struct Hash {
+    std::uint64_t value = 1469598103934665603ull;
+    template <class T>
+    Hash& add(const T& v) {
+        const auto* b = reinterpret_cast<const unsigned char*>(&v);
+        for (std::size_t i = 0; i < sizeof v; ++i) value = (value ^ b[i]) * 1099511628211ull;
+        return *this;
+    }
+};
+
 // Whether item i is drawn into tile t of light p: a caster its camera can
 // see (a cube face's by its face mask, a spot's by its frustum: the same
 // culling as the light's own map).
@@ -88,6 +99,8 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
         glNamedFramebufferReadBuffer(fbo_.id(), GL_NONE);
         gl::checkFramebuffer(fbo_, "shadow atlas");
         size_ = settings.size;
+        drawn_.clear();  // a new texture holds no maps
+        lastRequests_.clear();
     }
     if (!nearest_) {
         nearest_ = makeSampler(false);
@@ -104,7 +117,18 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
         requests.push_back({extent > 0.0f ? (p->cube ? 6 : 1) : 0, tileSideFor(extent, settings.texelsPerPixel, minSide, maxSide)});
         order.push_back(index);
     }
-    const AtlasLayout layout = packAtlas(requests, settings.size, settings.minTile);
+    // The same lights asking for the same tiles: the same places, so that
+    // kept maps stay where their records say.
+    std::vector<std::pair<int, AtlasRequest>> asked;
+    for (std::size_t k = 0; k < order.size(); ++k) asked.emplace_back(order[k], requests[k]);
+    const bool samePlaces = asked.size() == lastRequests_.size() &&
+                            std::equal(asked.begin(), asked.end(), lastRequests_.begin(), [](const auto& a, const auto& b) {
+                                return a.first == b.first && a.second.tiles == b.second.tiles && a.second.side == b.second.side;
+                            });
+    const AtlasLayout layout = samePlaces ? lastLayout_ : packAtlas(requests, settings.size, settings.minTile);
+    if (!samePlaces) drawn_.clear();  // the tiles moved: nothing is where it was
+    lastRequests_ = asked;
+    lastLayout_ = layout;
     if (!layout.fits) {
         std::size_t tiles = 0;
         for (const AtlasRequest& r : requests) tiles += static_cast<std::size_t>(r.tiles);
@@ -112,8 +136,17 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
                     std::to_string(settings.size) + "^2; raise shadowAtlas.size or lower shadowAtlas.minTile");
     }
     tiles_.clear();
+    pending_.clear();
     std::string shrunk;
     int shrunkCount = 0;
+    const std::uint64_t casters = casterInputs(frame);
+    struct Changed {
+        MapLight* p;
+        int index, tile;
+        std::uint64_t since;
+    };
+    std::vector<Changed> changed;  // kept tiles whose inputs changed: drawn again within the budget
+    int mustDraw = 0;
     for (std::size_t k = 0; k < order.size(); ++k) {
         MapLight& p = *lights.at(order[k]);
         const AtlasPlacement& place = layout.placed[k];
@@ -126,16 +159,57 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
             // The texels its casters may cover: only those are cleared and drawn.
             const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
             TexelRect covered{};
+            Hash key;
+            key.add(clip).add(casters).add(p.options.slopeBias).add(p.options.offsetUnits).add(p.options.cullFront).add(place.side).add(place.origins[f]);
             for (std::size_t i = 0; i < frame.items.size(); ++i)
-                if (castsIntoTile(frame, p, t, i)) covered = covered.united(projectedRect(clip, frame.itemBounds[i], place.side));
+                if (castsIntoTile(frame, p, t, i)) {
+                    covered = covered.united(projectedRect(clip, frame.itemBounds[i], place.side));
+                    key.add(i);
+                }
             p.atlasCovered[f] = covered;
-            tiles_.push_back(tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[f], place.side, size_, covered));
+            p.atlasKey[f] = key.value;
+            const shared::AtlasTile record = tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[f], place.side, size_, covered);
+            pending_.push_back(record);
+            tiles_.push_back(record);
+            // Kept, drawn again, or drawn again if the budget allows.
+            const Drawn& before = drawn_[order[k]][f];
+            p.atlasDraw[f] = true;
+            if (!frame.cacheShadowMaps || !before.valid) {
+                ++mustDraw;
+            } else if (before.key == key.value) {
+                p.atlasDraw[f] = false;
+            } else {
+                changed.push_back({&p, order[k], t, before.frame});
+            }
         }
         if (place.shrunk() && p.atlasTiles > 0) {
             if (++shrunkCount <= 8)
                 shrunk += (shrunk.empty() ? "" : ", ") + std::string("lights[") + std::to_string(order[k]) + "] " + std::to_string(place.shrunkFrom) + " -> " +
                           std::to_string(place.side);
         }
+    }
+    // The budget: the changed tiles undrawn longest first, the rest keep
+    // their map and the record it was drawn with.
+    const int budget = frame.scene.shadowAtlas.updateBudget;
+    behind_ = false;
+    if (budget > 0 && frame.cacheShadowMaps) {
+        std::stable_sort(changed.begin(), changed.end(), [](const Changed& a, const Changed& b) { return a.since < b.since; });
+        int room = std::max(budget - mustDraw, 0);
+        for (const Changed& c : changed) {
+            if (room > 0) {
+                --room;
+                continue;
+            }
+            const auto f = static_cast<std::size_t>(c.tile);
+            const Drawn& before = drawn_[c.index][f];
+            c.p->atlasDraw[f] = false;
+            behind_ = true;
+            c.p->atlasCovered[f] = before.covered;
+            tiles_[static_cast<std::size_t>(c.p->atlasFirst + c.tile)] = before.record;
+        }
+        if (mustDraw > budget)
+            host.note("shadowAtlas.updateBudget: " + std::to_string(mustDraw) + " tiles were new to their place in the atlas and drawn, more than the budget of " +
+                      std::to_string(budget) + " a frame (a tile's place changes when a light's size on screen does)");
     }
     if (shrunkCount > 0)
         host.note("shadowAtlas: " + std::to_string(shrunkCount) + " light(s) got smaller tiles than their size on screen asks for, to fit " +
@@ -147,7 +221,7 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
     texelsUsed_ = layout.texelsUsed;
 }
 
-void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight& p) {
+void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight& p, int index) {
     // The opaque casters in one batch, one call per tile; those with holes one by one.
     const gl::Program& batched = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_batch.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
     const gl::Program& single = host.program(
@@ -168,8 +242,15 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     const gl::Program& clear = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_clear.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
     std::size_t drawn = 0;
     double cleared = 0.0;
+    int kept = 0, redrawn = 0;
     for (int t = 0; t < p.atlasTiles; ++t) {
         const auto f = static_cast<std::size_t>(t);
+        if (!p.atlasDraw[f]) {
+            ++kept;  // its map from an earlier frame (cacheShadowMaps)
+            continue;
+        }
+        drawn_[index][f] = {true, p.atlasKey[f], frame.frameIndex, pending_[static_cast<std::size_t>(p.atlasFirst + t)], p.atlasCovered[f]};
+        ++redrawn;
         const TexelRect& c = p.atlasCovered[f];
         if (c.empty()) continue;  // no caster: the lookup reads no texel of it
         const glm::ivec2 o = p.atlasOrigins[f];
@@ -203,6 +284,8 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     host.count("atlasTiles", static_cast<double>(p.atlasTiles));
     host.count("tileSide", static_cast<double>(p.atlasSide));
     host.count("clearedTexels", cleared);
+    host.count("tilesDrawn", redrawn);
+    host.count("tilesKept", kept);
     if (p.atlasFirst == 0) host.count("atlasTexels", texelsUsed_);  // the whole atlas's, once a frame: with its first tile
 }
 
@@ -215,26 +298,27 @@ void MapAtlas::bind() const {
 }
 
 DebugImage MapAtlas::debugImage(const std::map<int, const MapLight*>& lights, int maxSide) const {
-    // The used part: the tiles' bounding square (Z-order keeps them near the origin).
-    int used = 1;
+    // The used part: the tiles' bounding rectangle (Z-order keeps them near the origin).
+    glm::ivec2 used(1);
     for (const auto& [index, p] : lights)
-        for (int t = 0; t < p->atlasTiles; ++t) used = std::max({used, p->atlasOrigins[static_cast<std::size_t>(t)].x + p->atlasSide,
-                                                                 p->atlasOrigins[static_cast<std::size_t>(t)].y + p->atlasSide});
-    used = std::min(used, size_);
+        for (int t = 0; t < p->atlasTiles; ++t) used = glm::max(used, p->atlasOrigins[static_cast<std::size_t>(t)] + glm::ivec2(p->atlasSide));
+    used = glm::min(used, glm::ivec2(std::max(size_, 1)));
     DebugImage out;
     out.name = "atlas";
     out.kind = DebugImageKind::Atlas;
-    out.values.resize(static_cast<std::size_t>(used) * static_cast<std::size_t>(used));
+    out.values.resize(static_cast<std::size_t>(used.x) * static_cast<std::size_t>(used.y));
     if (size_ > 0)
-        glGetTextureSubImage(depth_.id(), 0, 0, 0, 0, used, used, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(out.values.size() * sizeof(float)),
+        glGetTextureSubImage(depth_.id(), 0, 0, 0, 0, used.x, used.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(out.values.size() * sizeof(float)),
                              out.values.data());
-    const int step = std::max(1, (used + maxSide - 1) / maxSide);
-    const int side = (used + step - 1) / step;
-    out.image.width = out.image.height = side;
-    out.image.pixels.assign(static_cast<std::size_t>(side) * static_cast<std::size_t>(side) * 4, 255);  // white where no tile is
-    const auto at = [&](int x, int y) { return out.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(used) + static_cast<std::size_t>(x)]; };
+    const int step = std::max(1, (std::max(used.x, used.y) + maxSide - 1) / maxSide);
+    const int width = (used.x + step - 1) / step, height = (used.y + step - 1) / step;
+    out.image.width = width;
+    out.image.height = height;
+    out.image.pixels.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 255);  // white where no tile is
+    const auto at = [&](int x, int y) { return out.values[static_cast<std::size_t>(y) * static_cast<std::size_t>(used.x) + static_cast<std::size_t>(x)]; };
     const auto put = [&](int x, int y, glm::vec3 c) {  // image rows top first; GL's bottom row first
-        const std::size_t i = (static_cast<std::size_t>(side - 1 - y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)) * 4;
+        if (x >= width || y >= height) return;
+        const std::size_t i = (static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4;
         for (int k = 0; k < 3; ++k) out.image.pixels[i + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(std::clamp(c[k], 0.0f, 1.0f) * 255.0f + 0.5f);
         out.image.pixels[i + 3] = 255;
     };

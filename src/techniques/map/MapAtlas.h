@@ -7,6 +7,7 @@
 // map or cube face, in a shader storage buffer); each light's shadow pass
 // draws its casters into its own tiles, culled per tile.
 #include "techniques/Technique.h"
+#include "core/AtlasLayout.h"
 #include "techniques/map/MapCasterBatch.h"
 #include "techniques/map/MapLight.h"
 
@@ -24,9 +25,18 @@ public:
     /// Sizes and places the tiles of `lights` (index -> state, cameras
     /// already fitted), fills each one's atlas fields, notes the lights
     /// that were shrunk, makes the texture at its size and uploads the tiles.
+    /// With FrameInfo::cacheShadowMaps, a tile at the same place as last
+    /// frame whose camera, casters and bias are unchanged keeps its map;
+    /// of those that changed, at most shadowAtlas.updateBudget are drawn
+    /// again, the longest undrawn first, and the rest keep their last map
+    /// and the camera it was drawn from (the placement is kept while every
+    /// light asks for the same tiles, so that there are maps to keep).
     void layout(TechniqueHost& host, const FrameInfo& frame, std::map<int, MapLight*>& lights);
-    /// Clears light `p`'s tiles and draws its casters into them.
-    void draw(TechniqueHost& host, const FrameInfo& frame, const MapLight& p);
+    /// Clears light `p` (scene light `index`)'s tiles that this frame draws and draws its casters into them.
+    void draw(TechniqueHost& host, const FrameInfo& frame, const MapLight& p, int index);
+    /// Whether the last layout left changed tiles undrawn (past the update
+    /// budget): the maps do not hold that frame's inputs yet.
+    bool behind() const { return behind_; }
     /// Binds the atlas and its tiles where shadow_atlas.glsl reads them.
     void bind() const;
     /// ListedLight::shadow for light `p` (shadowlab_shared.h).
@@ -55,6 +65,20 @@ private:
     int size_ = 0;
     double texelsUsed_ = 0.0;  ///< the last layout's tiles' area
     MapCasterBatch batch_;     ///< the opaque casters, world space, drawn in one call per tile
+    /// What each light's tiles hold (RenderOptions::cacheShadowMaps): the
+    /// inputs a tile was drawn from, when, and its record and covered texels then.
+    struct Drawn {
+        bool valid = false;
+        std::uint64_t key = 0;
+        std::uint64_t frame = 0;
+        shared::AtlasTile record{};
+        TexelRect covered{};
+    };
+    std::map<int, std::array<Drawn, 6>> drawn_;
+    std::vector<std::pair<int, AtlasRequest>> lastRequests_;  ///< the last layout's lights and requests
+    AtlasLayout lastLayout_;
+    bool behind_ = false;
+    std::vector<shared::AtlasTile> pending_;  ///< this frame's records of the tiles it draws (tiles_ holds a kept tile's old one)
     std::vector<std::size_t> wanted_;  ///< scratch: the items a tile draws
     std::vector<shared::AtlasTile> tiles_;
 };

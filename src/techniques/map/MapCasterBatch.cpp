@@ -7,9 +7,14 @@ namespace shadowlab::map {
 
 namespace {
 
-// What the batch was built from: the upload and every item's mesh, caster
-// flag and transform (FNV-1a over their bytes).
-std::uint64_t inputsOf(const FrameInfo& frame) {
+bool opaque(const Scene& scene, const DrawItem& item) {
+    return item.material < 0 || !scene.materials[static_cast<std::size_t>(item.material)].alphaTested();
+}
+
+} // namespace
+
+// FNV-1a over their bytes.
+std::uint64_t casterInputs(const FrameInfo& frame) {
     std::uint64_t h = 1469598103934665603ull;
     const auto mix = [&](const void* data, std::size_t n) {
         const auto* b = static_cast<const unsigned char*>(data);
@@ -26,14 +31,8 @@ std::uint64_t inputsOf(const FrameInfo& frame) {
     return h;
 }
 
-bool opaque(const Scene& scene, const DrawItem& item) {
-    return item.material < 0 || !scene.materials[static_cast<std::size_t>(item.material)].alphaTested();
-}
-
-} // namespace
-
 void MapCasterBatch::update(const FrameInfo& frame) {
-    const std::uint64_t inputs = inputsOf(frame);
+    const std::uint64_t inputs = casterInputs(frame);
     if (built_ && inputs == builtFor_) return;
     std::vector<glm::vec3> positions;
     std::vector<std::uint32_t> indices;

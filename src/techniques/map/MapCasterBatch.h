@@ -14,6 +14,10 @@
 
 namespace shadowlab::map {
 
+/// What the casters' world geometry follows from: the upload and every
+/// item's mesh, material, caster flag and transform (a hash).
+std::uint64_t casterInputs(const FrameInfo& frame);
+
 class MapCasterBatch {
 public:
     /// Makes the buffers for `frame`'s items unless they hold them already.

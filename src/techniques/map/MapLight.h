@@ -70,6 +70,12 @@ struct MapLight {
     int atlasSide = 0;
     std::array<glm::ivec2, 6> atlasOrigins{};
     std::array<TexelRect, 6> atlasCovered{};
+    /// Whether this frame's shadow pass draws each tile (RenderOptions::
+    /// cacheShadowMaps keeps the others: their light and casters unchanged,
+    /// or past shadowAtlas.updateBudget), and what a drawn one's map
+    /// follows from (MapAtlas keeps it once drawn).
+    std::array<bool, 6> atlasDraw{};
+    std::array<std::uint64_t, 6> atlasKey{};
     /// The cameras its 2D map layers were drawn from: the cascades, or the one camera.
     std::span<const LightCamera> cameras() const { return cascades.empty() ? std::span<const LightCamera>(&camera, 1) : std::span<const LightCamera>(cascades); }
     /// The cube faces item i is drawn into: those its bounds touch, or all
