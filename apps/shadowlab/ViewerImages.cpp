@@ -69,7 +69,9 @@ void ViewerSession::finishComparison() {
             if (!run->directory.empty()) {
                 const std::string file = (fs::path(run->directory) / ("error-" + std::to_string(l) + ".png")).string();
                 try {
-                    writePng(file, lc.errorImage);
+                    // Put in place with the script's screenshots when it ends well (a failing later line leaves none).
+                    if (std::error_code ec; fs::is_directory(file, ec)) throw Error(file + ": cannot write (a directory of that name is in the way)");
+                    scriptOutputs.write(file, lc.errorImage);
                 } catch (const Error& e) {
                     throw Error(run->label.empty() ? std::string(e.what()) : run->label + ": " + e.what());
                 }

@@ -128,6 +128,15 @@ if "$tool" view --width 96 --height 64 --script cmpdir.txt >/dev/null 2>err.txt;
 printf 'wait 1\nscreenshot early.png\nscreenshot /proc/b.png\nquit\n' > later.txt
 if "$tool" view --script later.txt >/dev/null 2>err.txt; then echo "a failing script exited 0"; exit 1; fi
 [[ ! -e early.png && -z $(ls -A | grep pending) ]] || { echo "a failing script left $(ls -A | grep -E 'early|pending')"; exit 1; }
+# Nor its compare's error images.
+mkdir -p latecmp
+printf 'compare latecmp
+wait 1
+screenshot /proc/c.png
+quit
+' > latecmp.txt
+if "$tool" view "$src/scenes/two-boxes-sun.json" --width 160 --height 90 --script latecmp.txt >/dev/null 2>err.txt; then echo "a failing script after compare exited 0"; exit 1; fi
+[[ -z $(ls -A latecmp) ]] || { echo "a failing script left its compare's images: $(ls -A latecmp)"; exit 1; }
 # "save" into a directory's name, or into a directory that is not there:
 # refused before the first frame, in one line, nothing written.
 for target in . nowhere/x.json; do
