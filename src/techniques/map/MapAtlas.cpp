@@ -243,6 +243,11 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     std::size_t drawn = 0;
     double cleared = 0.0;
     int kept = 0, redrawn = 0;
+    // First every tile's clear, then every tile's casters: two render
+    // states a light, not two a tile (llvmpipe checks its whole state again
+    // at the first draw after a change).
+    host.apply(clearing);
+    clear.use();
     for (int t = 0; t < p.atlasTiles; ++t) {
         const auto f = static_cast<std::size_t>(t);
         if (!p.atlasDraw[f]) {
@@ -255,12 +260,15 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         if (c.empty()) continue;  // no caster: the lookup reads no texel of it
         const glm::ivec2 o = p.atlasOrigins[f];
         glViewport(o.x + c.x0, o.y + c.y0, c.x1 - c.x0, c.y1 - c.y0);
-        host.apply(clearing);
-        clear.use();
         host.drawFullscreenTriangle();
         cleared += static_cast<double>(c.x1 - c.x0) * static_cast<double>(c.y1 - c.y0);
+    }
+    host.apply(state);
+    for (int t = 0; t < p.atlasTiles; ++t) {
+        const auto f = static_cast<std::size_t>(t);
+        if (!p.atlasDraw[f] || p.atlasCovered[f].empty()) continue;
+        const glm::ivec2 o = p.atlasOrigins[f];
         glViewport(o.x, o.y, p.atlasSide, p.atlasSide);
-        host.apply(state);
         const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
         // The casters this tile's camera can see: a cube face's by its mask, a spot's by its frustum.
         wanted_.clear();
