@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages shadowlab needs to build, test and render
-# (clang and its libFuzzer runtime build the fuzz targets, scripts/fuzz.sh).
+# (clang and its libFuzzer runtime build the fuzz targets, scripts/fuzz.sh;
+# pybind11 and Python 3's headers, numpy, pytest and matplotlib the Python
+# module and its tests).
 # Skips packages that are already installed; uses sudo when not root.
 # Usage: scripts/install-deps.sh [--no-browser]
 #   --no-browser  skip Chromium (only the report screenshot test needs it)
@@ -15,6 +17,7 @@ packages=(
   googletest libgtest-dev
   clang libclang-rt-14-dev
   glmark2-data xvfb xauth
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
 )
 if [[ "${1:-}" != "--no-browser" ]]; then
   packages+=(chromium)

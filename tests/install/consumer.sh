@@ -12,4 +12,12 @@ cmake -S "$consumer" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/n
 cmake --build "$work/build" >/dev/null
 LD_LIBRARY_PATH="$work/prefix/lib:$work/prefix/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}" "$work/build/consumer" "$work/consumer.png"
 [[ -s "$work/consumer.png" ]]
-echo "1 passed, 0 failed"
+passed=1
+# The Python module, when built, installs beside the library and imports
+# from there (it finds the library through its RPATH).
+module=$(find "$work/prefix" -name 'shadowlab.cpython-*.so' | head -1)
+if [[ -n "$module" ]]; then
+  PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c 'import shadowlab; a = shadowlab.render(shadowlab.default_scene(), 32, 24); assert a.shape == (24, 32, 4)'
+  passed=2
+fi
+echo "$passed passed, 0 failed"

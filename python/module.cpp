@@ -1,0 +1,209 @@
+// The Python module `shadowlab` (pybind11): scenes from files with the same
+// override paths as `--set`, renders as numpy arrays, and the techniques'
+// options tables, over the library's public API (docs/python.md).
+//
+// One headless GL context per process, made on first use; every call that
+// draws takes it on the calling thread, one call at a time, with the GIL
+// released while it draws. Bad input raises ValueError with the one-line
+// message the CLI prints (the overrides' key named where `--set` would
+// be); GL and system errors raise RuntimeError.
+#include <shadowlab/Context.h>
+#include <shadowlab/Error.h>
+#include <shadowlab/Renderer.h>
+#include <shadowlab/SceneFile.h>
+#include <shadowlab/Techniques.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+using namespace shadowlab;
+
+namespace {
+
+// The process's context and the lock every drawing call holds.
+struct Gl {
+    std::mutex lock;
+    std::optional<Context> context;
+};
+Gl& gl() {
+    static Gl g;
+    return g;
+}
+
+// The context, made on first use (RuntimeError when there is no OpenGL 4.5).
+Context& contextLocked() {
+    Gl& g = gl();
+    if (!g.context) {
+        try {
+            g.context.emplace(Context::createHeadless());
+        } catch (const Error& e) {
+            throw std::runtime_error(e.what());
+        }
+    }
+    g.context->makeCurrent();
+    return *g.context;
+}
+
+// `overrides` as `--set` lines: each value as JSON (Python's json.dumps),
+// so a str is a JSON string and numbers, bools and lists are themselves.
+std::vector<std::string> overrideLines(const py::dict& overrides) {
+    const py::object dumps = py::module_::import("json").attr("dumps");
+    std::vector<std::string> lines;
+    for (const auto& [key, value] : overrides) {
+        if (!py::isinstance<py::str>(key)) throw py::value_error("overrides: keys are scene paths as strings, e.g. \"lights[0].shadow.map.size\"");
+        lines.push_back(key.cast<std::string>() + "=" + dumps(value).cast<std::string>());
+    }
+    return lines;
+}
+
+// An Error from the scene parser as ValueError, the `--set K=V` the CLI
+// would name said as the overrides' key.
+[[noreturn]] void raiseInput(const Error& e) {
+    std::string message = e.what();
+    if (message.rfind("--set ", 0) == 0) message = "overrides[" + message.substr(6, message.find('=') - 6) + "]" + message.substr(message.find(':'));
+    throw py::value_error(message);
+}
+
+// A loaded scene and what it was loaded from, read-only from Python.
+struct PyScene {
+    std::shared_ptr<const Scene> scene;
+    std::string path;                    ///< the scene file ("" for the built-in default scene)
+    std::vector<std::string> overrides;  ///< as `--set` lines
+};
+
+PyScene load(const std::string& path, std::vector<std::string> lines) {
+    try {
+        Scene s = path.empty() ? defaultScene(lines) : loadSceneFile(path, lines);
+        return {std::make_shared<const Scene>(std::move(s)), path, std::move(lines)};
+    } catch (const Error& e) {
+        raiseInput(e);
+    }
+}
+
+py::list vec3(const glm::vec3& v) { return py::cast(std::vector<float>{v.x, v.y, v.z}); }
+
+py::dict lightDict(const Light& l) {
+    py::dict d;
+    d["name"] = l.name;
+    d["type"] = toString(l.type);
+    d["color"] = vec3(l.color);
+    d["intensity"] = l.intensity;
+    if (l.type != LightType::Directional) d["position"] = vec3(l.position);
+    if (l.type != LightType::Point) d["direction"] = vec3(l.direction);
+    d["range"] = l.range;
+    d["size"] = l.size;
+    d["technique"] = l.shadow.technique;
+    return d;
+}
+
+// The frame as the CLI writes it: RGBA bytes, top row first.
+py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double time) {
+    if (width < 1 || height < 1) throw py::value_error("render: width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
+    ImageRGBA8 image;
+    {
+        py::gil_scoped_release unlocked;
+        std::lock_guard hold(gl().lock);
+        Context& context = contextLocked();
+        try {
+            const Scene at = sceneAtTime(*s.scene, time);
+            Renderer renderer(context);
+            renderer.upload(at);
+            RenderOptions options;
+            options.width = width;
+            options.height = height;
+            options.timeSeconds = time;
+            renderer.render(at, options);
+            image = renderer.readColor();
+        } catch (const Error& e) {
+            // A size past the GPU's limit is the caller's; the rest is GL's.
+            const std::string m = e.what();
+            if (m.rfind("render size", 0) == 0) {
+                py::gil_scoped_acquire again;
+                throw py::value_error(m);
+            }
+            throw std::runtime_error(m);
+        }
+    }
+    py::array_t<std::uint8_t> out({image.height, image.width, 4});
+    std::memcpy(out.mutable_data(), image.pixels.data(), image.pixels.size());
+    return out;
+}
+
+// Every technique's options table: {name: {"summary", "options": {key: {...}}}}.
+py::dict techniqueTables() {
+    py::dict out;
+    for (const TechniqueInfo& t : techniques()) {
+        py::dict options;
+        if (t.options)
+            for (const OptionField& f : t.options->fields) {
+                py::dict o;
+                o["unit"] = f.unit;
+                o["range"] = OptionTable::rangeText(f);
+                o["default"] = t.options->defaultText(f);
+                o["doc"] = f.doc;
+                if (!f.choices.empty() && f.kind == OptionKind::Choice) o["choices"] = f.choices;
+                options[py::str(f.key)] = o;
+            }
+        py::dict entry;
+        entry["summary"] = t.summary;
+        entry["options"] = options;
+        out[py::str(t.name)] = entry;
+    }
+    return out;
+}
+
+} // namespace
+
+PYBIND11_MODULE(shadowlab, m) {
+    m.doc() = "shadowlab: real-time shadow techniques on OpenGL 4.5, measured against exact ray-traced shadows";
+
+    py::class_<PyScene>(m, "Scene", "A loaded scene, read-only; with_overrides() makes a changed copy")
+        .def_property_readonly("name", [](const PyScene& s) { return s.scene->name; })
+        .def_property_readonly("path", [](const PyScene& s) { return s.path; })
+        .def_property_readonly("lights", [](const PyScene& s) {
+            py::list out;
+            for (const Light& l : s.scene->lights) out.append(lightDict(l));
+            return out;
+        })
+        .def_property_readonly("camera", [](const PyScene& s) {
+            py::dict d;
+            d["position"] = vec3(s.scene->camera.position);
+            d["target"] = vec3(s.scene->camera.target);
+            d["fovY"] = s.scene->camera.fovYDeg;
+            d["near"] = s.scene->camera.nearPlane;
+            d["far"] = s.scene->camera.farPlane;
+            return d;
+        })
+        .def_property_readonly("nodes", [](const PyScene& s) {
+            py::list out;
+            for (const Node& n : s.scene->nodes) out.append(n.name);
+            return out;
+        })
+        .def("with_overrides", [](const PyScene& s, const py::dict& overrides) {
+            std::vector<std::string> lines = s.overrides;
+            for (std::string& l : overrideLines(overrides)) lines.push_back(std::move(l));
+            return load(s.path, std::move(lines));
+        }, py::arg("overrides"), "A new scene: this one's file and overrides, then these (the same paths as --set)")
+        .def("__repr__", [](const PyScene& s) { return "<shadowlab.Scene '" + s.scene->name + "', " + std::to_string(s.scene->lights.size()) + " lights>"; });
+
+    m.def("load_scene", [](const std::string& path, const py::dict& overrides) {
+        if (path.empty()) throw py::value_error("load_scene: path is empty (default_scene() gives the built-in scene)");
+        return load(path, overrideLines(overrides));
+    }, py::arg("path"), py::arg("overrides") = py::dict(),
+          "A scene file (JSON) with overrides {path: value} as --set takes them, e.g. {\"lights[0].shadow.map.size\": 1024}");
+    m.def("default_scene", [](const py::dict& overrides) { return load("", overrideLines(overrides)); }, py::arg("overrides") = py::dict(),
+          "The built-in default scene (what `shadowlab render` draws without a scene file)");
+    m.def("render", &render, py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("time") = 0.0,
+          "The frame as a numpy uint8 array of height x width x 4 (RGBA, top row first): the pixels `shadowlab render` writes");
+    m.def("techniques", &techniqueTables, "Every technique's options: {name: {\"summary\", \"options\": {key: {unit, range, default, doc[, choices]}}}}");
+}

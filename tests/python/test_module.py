@@ -1,0 +1,68 @@
+"""The Python module (python/module.cpp), imported from the build tree.
+
+Run by ctest as `python3 -m pytest tests/python` with PYTHONPATH at the
+build's python/ directory and SHADOWLAB_TOOL naming the CLI, whose PNG the
+module's array must match pixel for pixel.
+"""
+import os
+import subprocess
+
+import matplotlib.image
+import numpy as np
+import pytest
+
+import shadowlab
+
+SOURCE = os.path.join(os.path.dirname(__file__), "..", "..")
+SCENE = os.path.join(SOURCE, "scenes", "torus-floating.json")
+
+
+def test_render_is_the_cli_frame(tmp_path):
+    scene = shadowlab.load_scene(SCENE, {"lights[0].shadow.map.size": 512})
+    image = shadowlab.render(scene, 160, 90)
+    assert image.shape == (90, 160, 4) and image.dtype == np.uint8
+    png = tmp_path / "cli.png"
+    subprocess.run([os.environ["SHADOWLAB_TOOL"], "render", SCENE, "--width", "160", "--height", "90",
+                    "--set", "lights[0].shadow.map.size=512", "-o", str(png)], check=True, capture_output=True)
+    cli = np.rint(matplotlib.image.imread(str(png)) * 255.0).astype(np.uint8)  # float 0..1, top row first
+    assert np.array_equal(image, cli)
+
+
+def test_overrides_and_with_overrides():
+    scene = shadowlab.load_scene(SCENE)
+    assert scene.lights[0]["technique"] == "map"
+    unshadowed = scene.with_overrides({"lights[0].shadow.technique": "none"})
+    assert unshadowed.lights[0]["technique"] == "none"
+    assert scene.lights[0]["technique"] == "map"  # the original is unchanged
+    lit = shadowlab.render(unshadowed, 96, 54)
+    shadowed = shadowlab.render(scene, 96, 54)
+    # Shadows darken some pixels and brighten none.
+    assert (lit.astype(int) - shadowed.astype(int)).min() >= 0
+    assert (lit.astype(int) - shadowed.astype(int)).max() > 30
+
+
+def test_arrays_own_their_memory():
+    scene = shadowlab.default_scene()
+    first = shadowlab.render(scene, 64, 48)
+    copy = first.copy()
+    shadowlab.render(scene.with_overrides({"lights[0].intensity": 0.1}), 64, 48)
+    assert np.array_equal(first, copy)
+
+
+def test_bad_input_is_a_value_error_naming_the_key():
+    with pytest.raises(ValueError, match=r"^overrides\[lights\[0\]\.shadow\.map\.size\]: lights\[0\]\.shadow\.map\.size: expected an integer in 16\.\.16384, got 7$"):
+        shadowlab.load_scene(SCENE, {"lights[0].shadow.map.size": 7})
+    with pytest.raises(ValueError, match="file not found"):
+        shadowlab.load_scene(os.path.join(SOURCE, "scenes", "no-such-scene.json"))
+    with pytest.raises(ValueError, match="width and height must be at least 1"):
+        shadowlab.render(shadowlab.default_scene(), 0, 10)
+    with pytest.raises(ValueError, match=r"render size 100000x10: expected 1\.\.\d+ pixels per side"):
+        shadowlab.render(shadowlab.default_scene(), 100000, 10)
+
+
+def test_techniques_table():
+    tables = shadowlab.techniques()
+    assert list(tables)[:2] == ["none", "map"]
+    size = tables["map"]["options"]["size"]
+    assert size["default"] == "1024" and size["unit"] == "texels" and size["range"] == "16..16384"
+    assert '"hardware"' in tables["map"]["options"]["filter"]["range"]
