@@ -16,7 +16,8 @@
 //   MapPass2D.cpp      the shadow pass of a directional or spot light
 //   MapCubePass.cpp    the shadow pass of a point light's cube
 //   MapAtlas           the shadow atlas (option atlas): tiles sized from
-//                      the screen, placed, drawn and described for lookups
+//                      the screen, placed, kept or drawn, described for lookups
+//   MapAtlasImages.cpp the atlas and each light's tiles as debug images
 //   MapCasterBatch     the opaque casters in world space, one draw per tile
 //   MapMoments         filterable moment maps: constants, clear, blur
 //   MapTranslucent     translucent casters' transmittance layers
