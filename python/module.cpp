@@ -7,6 +7,7 @@
 // released while it draws. Bad input raises ValueError with the one-line
 // message the CLI prints (the overrides' key named where `--set` would
 // be); GL and system errors raise RuntimeError.
+#include <shadowlab/Compare.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/Renderer.h>
@@ -106,6 +107,8 @@ py::dict lightDict(const Light& l) {
     return d;
 }
 
+py::array_t<std::uint8_t> rgba(const ImageRGBA8& image);
+
 // The frame as the CLI writes it: RGBA bytes, top row first.
 py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double time) {
     if (width < 1 || height < 1) throw py::value_error("render: width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
@@ -134,8 +137,85 @@ py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double
             throw std::runtime_error(m);
         }
     }
+    return rgba(image);
+}
+
+py::array_t<std::uint8_t> rgba(const ImageRGBA8& image) {
     py::array_t<std::uint8_t> out({image.height, image.width, 4});
     std::memcpy(out.mutable_data(), image.pixels.data(), image.pixels.size());
+    return out;
+}
+
+// A 16-bit visibility image as float32 in 0..1.
+py::array_t<float> unit(const ImageGray16& image) {
+    py::array_t<float> out({image.height, image.width});
+    float* d = out.mutable_data();
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) d[i] = static_cast<float>(image.pixels[i]) / 65535.0f;
+    return out;
+}
+
+py::array_t<bool> mask(const ImageGray8& image) {
+    py::array_t<bool> out({image.height, image.width});
+    bool* d = out.mutable_data();
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) d[i] = image.pixels[i] != 0;
+    return out;
+}
+
+// compare's metrics.json as a dict, its image files as arrays under "images"
+// (the frame's and the reference's) and each light's "images" (error,
+// visibility and techniqueVisibility in 0..1, reach as a mask).
+py::dict compare(const PyScene& s, int width, int height, int softSamples, double time) {
+    if (width < 1 || height < 1) throw py::value_error("compare: width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
+    if (softSamples < 1) throw py::value_error("compare: soft_samples must be at least 1, got " + std::to_string(softSamples));
+    Comparison c;
+    std::vector<std::string> records;
+    {
+        py::gil_scoped_release unlocked;
+        std::lock_guard hold(gl().lock);
+        Context& context = contextLocked();
+        try {
+            const Scene at = sceneAtTime(*s.scene, time);
+            Renderer renderer(context);
+            renderer.upload(at);
+            CompareOptions options;
+            options.width = width;
+            options.height = height;
+            options.softSamples = softSamples;
+            options.timeSeconds = time;
+            c = compareWithReference(renderer, at, options);
+            for (std::size_t i = 0; i < c.lights.size(); ++i) records.push_back(lightMetricsJson(at.lights[i], c.lights[i]));
+        } catch (const Error& e) {
+            const std::string m = e.what();
+            py::gil_scoped_acquire again;
+            if (m.rfind("render size", 0) == 0) throw py::value_error(m);
+            throw std::runtime_error(m);
+        }
+    }
+    const py::object loads = py::module_::import("json").attr("loads");
+    py::list lights;
+    for (std::size_t i = 0; i < c.lights.size(); ++i) {
+        py::dict record = loads(records[i]);
+        py::dict images;
+        images["error"] = rgba(c.lights[i].errorImage);
+        images["visibility"] = unit(c.lights[i].referenceVisibility);
+        images["techniqueVisibility"] = unit(c.lights[i].techniqueVisibility);
+        images["reach"] = mask(c.lights[i].reach);
+        record["images"] = images;
+        lights.append(record);
+    }
+    py::dict out;
+    out["scene"] = s.scene->name;
+    out["sceneFile"] = s.path.empty() ? std::string("<default>") : s.path;
+    out["width"] = width;
+    out["height"] = height;
+    out["softSamples"] = softSamples;
+    out["time"] = time;
+    out["referenceMs"] = c.referenceMs;
+    out["lights"] = lights;
+    py::dict images;
+    images["technique"] = rgba(c.technique);
+    images["reference"] = rgba(c.reference);
+    out["images"] = images;
     return out;
 }
 
@@ -205,5 +285,7 @@ PYBIND11_MODULE(shadowlab, m) {
           "The built-in default scene (what `shadowlab render` draws without a scene file)");
     m.def("render", &render, py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("time") = 0.0,
           "The frame as a numpy uint8 array of height x width x 4 (RGBA, top row first): the pixels `shadowlab render` writes");
+    m.def("compare", &compare, py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("soft_samples") = 256, py::arg("time") = 0.0,
+          "The scene against the ray-traced reference: compare's metrics.json as a dict (per light its record), with the images as arrays under \"images\"");
     m.def("techniques", &techniqueTables, "Every technique's options: {name: {\"summary\", \"options\": {key: {unit, range, default, doc[, choices]}}}}");
 }

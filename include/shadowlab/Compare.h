@@ -99,6 +99,15 @@ struct Comparison {
 /// three steps in a row.
 SHADOWLAB_API Comparison compareWithReference(Renderer& renderer, const Scene& scene, const CompareOptions& options = {});
 
+/// Light `light`'s comparison `c` as the JSON object compare's metrics.json
+/// and bench's results.json write per light (without their image paths):
+/// name, type, technique, soft, receiverPixels, referenceShadowedPixels,
+/// edgePixels, falseShadow, falseLit, falseShadowAwayFromEdges,
+/// falseLitAwayFromEdges, meanAbsError, rmse, umbraPixels, leakedInUmbra,
+/// the penumbra counts and ratio, coloured, rmseRgb and, for a light with
+/// a map, texelFootprintP50/P95/Max (docs/metrics.md).
+SHADOWLAB_API std::string lightMetricsJson(const Light& light, const LightComparison& c);
+
 /// compareWithReference in three steps, so that a window stays responsive
 /// while the reference is traced:
 ///  1. the constructor renders the technique's frame and reads back what it

@@ -66,3 +66,26 @@ def test_techniques_table():
     size = tables["map"]["options"]["size"]
     assert size["default"] == "1024" and size["unit"] == "texels" and size["range"] == "16..16384"
     assert '"hardware"' in tables["map"]["options"]["filter"]["range"]
+
+
+def test_compare_is_the_cli_metrics(tmp_path):
+    scene = shadowlab.load_scene(SCENE, {"lights[0].shadow.map.size": 256})
+    result = shadowlab.compare(scene, 160, 90)
+    subprocess.run([os.environ["SHADOWLAB_TOOL"], "compare", SCENE, "--width", "160", "--height", "90",
+                    "--set", "lights[0].shadow.map.size=256", "-o", str(tmp_path / "cmp")], check=True, capture_output=True)
+    import json
+    cli = json.load(open(tmp_path / "cmp" / "metrics.json"))
+    # The same fields but the image files (arrays here) and the trace's time.
+    for key in ("scene", "width", "height", "softSamples", "time"):
+        assert result[key] == cli[key], key
+    assert len(result["lights"]) == len(cli["lights"]) == 1
+    ours, theirs = result["lights"][0], cli["lights"][0]
+    assert set(ours) - {"images"} == set(theirs) - {"errorImage", "visibilityImage", "techniqueVisibilityImage", "reachImage"}
+    for key in ours:
+        if key != "images":
+            assert ours[key] == theirs[key], key
+    assert ours["receiverPixels"] > 1000 and ours["referenceShadowedPixels"] > 100  # it measured a shadow
+    images = ours["images"]
+    assert images["visibility"].shape == (90, 160) and images["visibility"].dtype == np.float32
+    assert images["reach"].sum() == ours["receiverPixels"]
+    assert result["images"]["reference"].shape == (90, 160, 4)
