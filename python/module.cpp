@@ -219,6 +219,64 @@ py::dict compare(const PyScene& s, int width, int height, int softSamples, doubl
     return out;
 }
 
+// Light `light`'s visibility as its technique computes it in the frame
+// (1 lit, 0 shadowed, 0 on the background), HxW float32, or HxWx3 with
+// `coloured` (transmittance through translucent casters); and the
+// techniques' debug images as {name: HxWx4 uint8}.
+struct Frame {
+    std::vector<glm::vec3> visibility;
+    std::vector<DebugImage> images;
+};
+
+Frame frameOf(const PyScene& s, int width, int height, double time, int light, bool images) {
+    if (width < 1 || height < 1) throw py::value_error("width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
+    if (light >= 0 && static_cast<std::size_t>(light) >= s.scene->lights.size())
+        throw py::value_error("light " + std::to_string(light) + ": the scene has " + std::to_string(s.scene->lights.size()) + " light(s)");
+    Frame f;
+    py::gil_scoped_release unlocked;
+    std::lock_guard hold(gl().lock);
+    Context& context = contextLocked();
+    try {
+        const Scene at = sceneAtTime(*s.scene, time);
+        Renderer renderer(context);
+        renderer.upload(at);
+        RenderOptions options;
+        options.width = width;
+        options.height = height;
+        options.timeSeconds = time;
+        renderer.render(at, options);
+        if (light >= 0) f.visibility = renderer.readVisibilityRgb(at, static_cast<std::size_t>(light));
+        if (images) f.images = renderer.debugImages(at);
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        py::gil_scoped_acquire again;
+        if (m.rfind("render size", 0) == 0) throw py::value_error(m);
+        throw std::runtime_error(m);
+    }
+    return f;
+}
+
+py::array_t<float> visibility(const PyScene& s, int light, int width, int height, bool coloured, double time) {
+    if (light < 0) throw py::value_error("light " + std::to_string(light) + ": expected an index from 0");
+    const Frame f = frameOf(s, width, height, time, light, false);
+    if (coloured) {
+        py::array_t<float> out({height, width, 3});
+        std::memcpy(out.mutable_data(), f.visibility.data(), f.visibility.size() * sizeof(glm::vec3));
+        return out;
+    }
+    py::array_t<float> out({height, width});
+    float* d = out.mutable_data();
+    for (std::size_t i = 0; i < f.visibility.size(); ++i) d[i] = (f.visibility[i].r + f.visibility[i].g + f.visibility[i].b) / 3.0f;
+    return out;
+}
+
+py::dict debugImages(const PyScene& s, int width, int height, double time) {
+    const Frame f = frameOf(s, width, height, time, -1, true);
+    py::dict out;
+    for (const DebugImage& d : f.images) out[py::str(d.name)] = rgba(d.image);
+    return out;
+}
+
 // Every technique's options table: {name: {"summary", "options": {key: {...}}}}.
 py::dict techniqueTables() {
     py::dict out;
@@ -285,6 +343,11 @@ PYBIND11_MODULE(shadowlab, m) {
           "The built-in default scene (what `shadowlab render` draws without a scene file)");
     m.def("render", &render, py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("time") = 0.0,
           "The frame as a numpy uint8 array of height x width x 4 (RGBA, top row first): the pixels `shadowlab render` writes");
+    m.def("visibility", &visibility, py::arg("scene"), py::arg("light"), py::arg("width"), py::arg("height"), py::arg("coloured") = false,
+          py::arg("time") = 0.0,
+          "Light `light`'s visibility as its technique computes it (1 lit, 0 shadowed, 0 on the background): float32 HxW, or HxWx3 with coloured=True");
+    m.def("debug_images", &debugImages, py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("time") = 0.0,
+          "The techniques' debug images of the frame (maps, cube crosses, texel density, the shadow atlas): {name: HxWx4 uint8}");
     m.def("compare", &compare, py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("soft_samples") = 256, py::arg("time") = 0.0,
           "The scene against the ray-traced reference: compare's metrics.json as a dict (per light its record), with the images as arrays under \"images\"");
     m.def("techniques", &techniqueTables, "Every technique's options: {name: {\"summary\", \"options\": {key: {unit, range, default, doc[, choices]}}}}");

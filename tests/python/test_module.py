@@ -89,3 +89,20 @@ def test_compare_is_the_cli_metrics(tmp_path):
     assert images["visibility"].shape == (90, 160) and images["visibility"].dtype == np.float32
     assert images["reach"].sum() == ours["receiverPixels"]
     assert result["images"]["reference"].shape == (90, 160, 4)
+
+
+def test_visibility_and_debug_images():
+    scene = shadowlab.load_scene(SCENE, {"lights[0].shadow.map.size": 256})
+    v = shadowlab.visibility(scene, 0, 160, 90)
+    assert v.shape == (90, 160) and v.dtype == np.float32
+    assert v.min() == 0.0 and v.max() == 1.0  # background and shadow at 0, lit receivers at 1
+    rgb = shadowlab.visibility(scene, 0, 160, 90, coloured=True)
+    assert rgb.shape == (90, 160, 3) and np.allclose(rgb.mean(axis=2), v)
+    # compare's technique visibility is the same term, stored in 16 bits.
+    technique = shadowlab.compare(scene, 160, 90)["lights"][0]["images"]["techniqueVisibility"]
+    assert np.abs(technique - v).max() <= 1.0 / 65535.0 + 1e-6
+    images = shadowlab.debug_images(scene, 160, 90)
+    assert "light0-depth" in images or any(name.startswith("light0-") for name in images), list(images)
+    assert all(a.dtype == np.uint8 and a.ndim == 3 and a.shape[2] == 4 for a in images.values())
+    with pytest.raises(ValueError, match="light 3: the scene has 1 light"):
+        shadowlab.visibility(scene, 3, 16, 16)
