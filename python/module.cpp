@@ -55,6 +55,14 @@ Context& contextLocked() {
     return *g.context;
 }
 
+// Lets go of the context on this thread at the end of a call, so that the
+// next call may take it on another (after the call's Renderer is gone).
+struct Released {
+    ~Released() {
+        if (gl().context) gl().context->releaseCurrent();
+    }
+};
+
 // `overrides` as `--set` lines: each value as JSON (Python's json.dumps),
 // so a str is a JSON string and numbers, bools and lists are themselves.
 std::vector<std::string> overrideLines(const py::dict& overrides) {
@@ -78,18 +86,31 @@ std::vector<std::string> overrideLines(const py::dict& overrides) {
 // A loaded scene and what it was loaded from, read-only from Python.
 struct PyScene {
     std::shared_ptr<const Scene> scene;
-    std::string path;                    ///< the scene file ("" for the built-in default scene)
+    std::string path;                    ///< the scene file ("" for the built-in default scene or JSON text)
     std::vector<std::string> overrides;  ///< as `--set` lines
+    std::optional<std::string> text;     ///< load_scene_json: the JSON text
+    std::string baseDir;                 ///< load_scene_json: where its relative paths start
 };
 
 PyScene load(const std::string& path, std::vector<std::string> lines) {
     try {
         Scene s = path.empty() ? defaultScene(lines) : loadSceneFile(path, lines);
-        return {std::make_shared<const Scene>(std::move(s)), path, std::move(lines)};
+        return {std::make_shared<const Scene>(std::move(s)), path, std::move(lines), std::nullopt, {}};
     } catch (const Error& e) {
         raiseInput(e);
     }
 }
+
+PyScene loadJson(const std::string& text, const std::string& baseDir, std::vector<std::string> lines) {
+    try {
+        Scene s = parseScene(text, "<json>", baseDir, lines);
+        return {std::make_shared<const Scene>(std::move(s)), "", std::move(lines), text, baseDir};
+    } catch (const Error& e) {
+        raiseInput(e);
+    }
+}
+
+PyScene reload(const PyScene& s, std::vector<std::string> lines) { return s.text ? loadJson(*s.text, s.baseDir, std::move(lines)) : load(s.path, std::move(lines)); }
 
 py::list vec3(const glm::vec3& v) { return py::cast(std::vector<float>{v.x, v.y, v.z}); }
 
@@ -116,6 +137,7 @@ py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double
     {
         py::gil_scoped_release unlocked;
         std::lock_guard hold(gl().lock);
+        const Released release;
         Context& context = contextLocked();
         try {
             const Scene at = sceneAtTime(*s.scene, time);
@@ -172,6 +194,7 @@ py::dict compare(const PyScene& s, int width, int height, int softSamples, doubl
     {
         py::gil_scoped_release unlocked;
         std::lock_guard hold(gl().lock);
+        const Released release;
         Context& context = contextLocked();
         try {
             const Scene at = sceneAtTime(*s.scene, time);
@@ -235,6 +258,7 @@ Frame frameOf(const PyScene& s, int width, int height, double time, int light, b
     Frame f;
     py::gil_scoped_release unlocked;
     std::lock_guard hold(gl().lock);
+    const Released release;
     Context& context = contextLocked();
     try {
         const Scene at = sceneAtTime(*s.scene, time);
@@ -330,7 +354,7 @@ PYBIND11_MODULE(shadowlab, m) {
         .def("with_overrides", [](const PyScene& s, const py::dict& overrides) {
             std::vector<std::string> lines = s.overrides;
             for (std::string& l : overrideLines(overrides)) lines.push_back(std::move(l));
-            return load(s.path, std::move(lines));
+            return reload(s, std::move(lines));
         }, py::arg("overrides"), "A new scene: this one's file and overrides, then these (the same paths as --set)")
         .def("__repr__", [](const PyScene& s) { return "<shadowlab.Scene '" + s.scene->name + "', " + std::to_string(s.scene->lights.size()) + " lights>"; });
 
@@ -339,6 +363,10 @@ PYBIND11_MODULE(shadowlab, m) {
         return load(path, overrideLines(overrides));
     }, py::arg("path"), py::arg("overrides") = py::dict(),
           "A scene file (JSON) with overrides {path: value} as --set takes them, e.g. {\"lights[0].shadow.map.size\": 1024}");
+    m.def("load_scene_json", [](const std::string& text, const std::string& baseDir, const py::dict& overrides) {
+        return loadJson(text, baseDir, overrideLines(overrides));
+    }, py::arg("text"), py::arg("base_dir") = ".", py::arg("overrides") = py::dict(),
+          "A scene from JSON text (errors name it \"<json>\"), its relative paths (meshes, textures) from base_dir");
     m.def("default_scene", [](const py::dict& overrides) { return load("", overrideLines(overrides)); }, py::arg("overrides") = py::dict(),
           "The built-in default scene (what `shadowlab render` draws without a scene file)");
     m.def("render", &render, py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("time") = 0.0,

@@ -61,6 +61,10 @@ public:
 
     const GlInfo& info() const;
     void makeCurrent();
+    /// Makes no context current on this thread, so that another thread
+    /// may make this one current (a context is current on one thread at a
+    /// time); drop everything made with it (Renderer) first.
+    void releaseCurrent();
     /// GL errors reported through KHR_debug since creation or the last reset.
     std::size_t debugErrorCount() const;
     /// The most recent KHR_debug error message, empty if none.

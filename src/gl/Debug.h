@@ -31,6 +31,7 @@ struct Context::Impl {
     void releaseGlObjects() { programs.reset(); }
     virtual ~Impl() = default;
     virtual void makeCurrent() = 0;
+    virtual void releaseCurrent() = 0;
     virtual GLFWwindow* window() const { return nullptr; }
 };
 } // namespace shadowlab

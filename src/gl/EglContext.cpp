@@ -31,6 +31,7 @@ struct EglImpl final : Context::Impl {
         if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
             throw Error("eglMakeCurrent failed (" + eglErrorText() + ")");
     }
+    void releaseCurrent() override { eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
     ~EglImpl() override {
         if (display != EGL_NO_DISPLAY && context != EGL_NO_CONTEXT &&
             eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
@@ -148,6 +149,7 @@ Context::~Context() = default;
 
 const GlInfo& Context::info() const { return impl_->info; }
 void Context::makeCurrent() { impl_->makeCurrent(); }
+void Context::releaseCurrent() { impl_->releaseCurrent(); }
 GLFWwindow* Context::window() const { return impl_->window(); }
 std::size_t Context::debugErrorCount() const { return impl_->debug.errors.load(); }
 std::string Context::lastDebugError() const {

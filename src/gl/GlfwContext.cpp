@@ -24,6 +24,7 @@ std::string glfwErrorText() {
 struct GlfwImpl final : Context::Impl {
     GLFWwindow* handle = nullptr;
     void makeCurrent() override { glfwMakeContextCurrent(handle); }
+    void releaseCurrent() override { glfwMakeContextCurrent(nullptr); }
     GLFWwindow* window() const override { return handle; }
     ~GlfwImpl() override {
         if (handle) {

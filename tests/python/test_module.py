@@ -106,3 +106,27 @@ def test_visibility_and_debug_images():
     assert all(a.dtype == np.uint8 and a.ndim == 3 and a.shape[2] == 4 for a in images.values())
     with pytest.raises(ValueError, match="light 3: the scene has 1 light"):
         shadowlab.visibility(scene, 3, 16, 16)
+
+
+def test_load_scene_json_and_threads():
+    text = open(SCENE).read()
+    from_text = shadowlab.load_scene_json(text, base_dir=os.path.dirname(SCENE), overrides={"lights[0].shadow.map.size": 256})
+    from_file = shadowlab.load_scene(SCENE, {"lights[0].shadow.map.size": 256})
+    assert np.array_equal(shadowlab.render(from_text, 96, 54), shadowlab.render(from_file, 96, 54))
+    assert from_text.with_overrides({"lights[0].shadow.technique": "none"}).lights[0]["technique"] == "none"
+    with pytest.raises(ValueError, match=r"^<json>: "):
+        shadowlab.load_scene_json("{\"lights\": 3}")
+    # Calls from two threads at once are serialised on the one context: the same frames.
+    import threading
+    results = {}
+
+    def work(key):
+        results[key] = shadowlab.render(from_file, 96, 54)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert np.array_equal(results[0], results[1])
+    assert np.array_equal(results[0], shadowlab.render(from_file, 96, 54))
