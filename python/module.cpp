@@ -130,10 +130,16 @@ py::dict lightDict(const Light& l) {
 
 py::array_t<std::uint8_t> rgba(const ImageRGBA8& image);
 
-// The frame as the CLI writes it: RGBA bytes, top row first.
-py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double time) {
-    if (width < 1 || height < 1) throw py::value_error("render: width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
-    ImageRGBA8 image;
+// The scaffolding of every drawing call: the size checked, the GIL let go,
+// the context taken on this thread (one call at a time) and let go after,
+// the scene at `time` uploaded to a renderer of its own, `use` run with
+// both; the library's errors as ValueError (a size past the GPU's limit:
+// the caller's) or RuntimeError (GL's).
+template <class Use>
+void drawn(const PyScene& s, int width, int height, double time, const Use& use) {
+    if (width < 1 || height < 1)
+        throw py::value_error("width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
+    std::string failure;
     {
         py::gil_scoped_release unlocked;
         std::lock_guard hold(gl().lock);
@@ -143,22 +149,30 @@ py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double
             const Scene at = sceneAtTime(*s.scene, time);
             Renderer renderer(context);
             renderer.upload(at);
-            RenderOptions options;
-            options.width = width;
-            options.height = height;
-            options.timeSeconds = time;
-            renderer.render(at, options);
-            image = renderer.readColor();
+            use(renderer, at);
         } catch (const Error& e) {
-            // A size past the GPU's limit is the caller's; the rest is GL's.
-            const std::string m = e.what();
-            if (m.rfind("render size", 0) == 0) {
-                py::gil_scoped_acquire again;
-                throw py::value_error(m);
-            }
-            throw std::runtime_error(m);
+            failure = e.what();
         }
     }
+    if (failure.rfind("render size", 0) == 0) throw py::value_error(failure);
+    if (!failure.empty()) throw std::runtime_error(failure);
+}
+
+RenderOptions frameOptions(int width, int height, double time) {
+    RenderOptions options;
+    options.width = width;
+    options.height = height;
+    options.timeSeconds = time;
+    return options;
+}
+
+// The frame as the CLI writes it: RGBA bytes, top row first.
+py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double time) {
+    ImageRGBA8 image;
+    drawn(s, width, height, time, [&](Renderer& renderer, const Scene& at) {
+        renderer.render(at, frameOptions(width, height, time));
+        image = renderer.readColor();
+    });
     return rgba(image);
 }
 
@@ -187,33 +201,18 @@ py::array_t<bool> mask(const ImageGray8& image) {
 // (the frame's and the reference's) and each light's "images" (error,
 // visibility and techniqueVisibility in 0..1, reach as a mask).
 py::dict compare(const PyScene& s, int width, int height, int softSamples, double time) {
-    if (width < 1 || height < 1) throw py::value_error("compare: width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
     if (softSamples < 1) throw py::value_error("compare: soft_samples must be at least 1, got " + std::to_string(softSamples));
     Comparison c;
     std::vector<std::string> records;
-    {
-        py::gil_scoped_release unlocked;
-        std::lock_guard hold(gl().lock);
-        const Released release;
-        Context& context = contextLocked();
-        try {
-            const Scene at = sceneAtTime(*s.scene, time);
-            Renderer renderer(context);
-            renderer.upload(at);
-            CompareOptions options;
-            options.width = width;
-            options.height = height;
-            options.softSamples = softSamples;
-            options.timeSeconds = time;
-            c = compareWithReference(renderer, at, options);
-            for (std::size_t i = 0; i < c.lights.size(); ++i) records.push_back(lightMetricsJson(at.lights[i], c.lights[i]));
-        } catch (const Error& e) {
-            const std::string m = e.what();
-            py::gil_scoped_acquire again;
-            if (m.rfind("render size", 0) == 0) throw py::value_error(m);
-            throw std::runtime_error(m);
-        }
-    }
+    drawn(s, width, height, time, [&](Renderer& renderer, const Scene& at) {
+        CompareOptions options;
+        options.width = width;
+        options.height = height;
+        options.softSamples = softSamples;
+        options.timeSeconds = time;
+        c = compareWithReference(renderer, at, options);
+        for (std::size_t i = 0; i < c.lights.size(); ++i) records.push_back(lightMetricsJson(at.lights[i], c.lights[i]));
+    });
     const py::object loads = py::module_::import("json").attr("loads");
     py::list lights;
     for (std::size_t i = 0; i < c.lights.size(); ++i) {
@@ -252,31 +251,14 @@ struct Frame {
 };
 
 Frame frameOf(const PyScene& s, int width, int height, double time, int light, bool images) {
-    if (width < 1 || height < 1) throw py::value_error("width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
     if (light >= 0 && static_cast<std::size_t>(light) >= s.scene->lights.size())
         throw py::value_error("light " + std::to_string(light) + ": the scene has " + std::to_string(s.scene->lights.size()) + " light(s)");
     Frame f;
-    py::gil_scoped_release unlocked;
-    std::lock_guard hold(gl().lock);
-    const Released release;
-    Context& context = contextLocked();
-    try {
-        const Scene at = sceneAtTime(*s.scene, time);
-        Renderer renderer(context);
-        renderer.upload(at);
-        RenderOptions options;
-        options.width = width;
-        options.height = height;
-        options.timeSeconds = time;
-        renderer.render(at, options);
+    drawn(s, width, height, time, [&](Renderer& renderer, const Scene& at) {
+        renderer.render(at, frameOptions(width, height, time));
         if (light >= 0) f.visibility = renderer.readVisibilityRgb(at, static_cast<std::size_t>(light));
         if (images) f.images = renderer.debugImages(at);
-    } catch (const Error& e) {
-        const std::string m = e.what();
-        py::gil_scoped_acquire again;
-        if (m.rfind("render size", 0) == 0) throw py::value_error(m);
-        throw std::runtime_error(m);
-    }
+    });
     return f;
 }
 

@@ -73,7 +73,7 @@ void ViewerSession::drawPanel(int height, bool& screenshotKey) {
     // here once, each light's own tiles under the light.
     if (showDebug)
         for (std::size_t d = 0; d < debugImages.size() && d < debugTextures.size(); ++d)
-            if (debugImages[d].kind == DebugImageKind::Atlas && debugImages[d].name.find("-atlas-tiles") == std::string::npos &&
+            if (debugImages[d].kind == DebugImageKind::Atlas &&
                 ImGui::CollapsingHeader("shadow atlas", ImGuiTreeNodeFlags_DefaultOpen)) {
                 const float w = kPanelWidth - 30.0f;
                 const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
@@ -141,7 +141,7 @@ void ViewerSession::drawLight(std::size_t l, const std::vector<TechniqueInfo>& a
         if (showDebug)
             for (std::size_t d = 0; d < debugImages.size() && d < debugTextures.size(); ++d)
                 if (debugImages[d].light == static_cast<int>(l) &&
-                    !(debugImages[d].kind == DebugImageKind::Atlas && debugImages[d].name.find("-atlas-tiles") == std::string::npos)) {
+                    debugImages[d].kind != DebugImageKind::Atlas) {
                     const float w = kPanelWidth - 30.0f;
                     const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
                     ImGui::TextUnformatted(debugImages[d].name.c_str());

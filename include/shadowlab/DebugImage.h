@@ -14,11 +14,11 @@ namespace shadowlab {
 /// images by kind (`shadowlab render --debug shadow-maps`), never by name.
 enum class DebugImageKind {
     Other,        ///< anything else (the default)
-    ShadowMap,    ///< a 2D shadow map's stored depth (one per cascade)
+    ShadowMap,    ///< a 2D shadow map's stored depth (one per cascade; a light in the shadow atlas: its tiles side by side)
     CubeCross,    ///< a cube map's six faces as a cross (a point light's map)
     TexelDensity, ///< the frame coloured by the texel footprint (screen pixels a shadow-map texel covers); values: the footprint per pixel, rows as GL stores them, -1 where not measured
     Cascades,     ///< the frame coloured by the cascade each point falls in
-    Atlas,        ///< the shadow atlas: every tile's stored depth (each stretched over its own range, near dark), each light's tiles outlined in a colour of its own; values: the atlas's depths over the part its tiles use, rows as GL stores them
+    Atlas,        ///< the shadow atlas (one image, with its first light): every tile's stored depth (each stretched over its own range, near dark), each light's tiles outlined in a colour of its own; values: the atlas's depths over the part its tiles use, rows as GL stores them
 };
 
 /// The kinds of debug image a caller asks for: reading a map back to draw

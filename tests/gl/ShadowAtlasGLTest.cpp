@@ -85,6 +85,8 @@ TEST_F(ShadowAtlasGLTest, TheListMatchesAPassPerLight) {
     const ImageRGBA8 none = plain.readColor();
     std::size_t darker = 0;
     for (std::size_t i = 0; i < none.pixels.size(); i += 4) darker += int(grouped.pixels[i]) + 20 < int(none.pixels[i]) ? 1 : 0;
+    // Measured: 9240 of the 120000 pixels; 2000 leaves room for rounding
+    // and still fails if the list's lookups dropped most lights' shadows.
     EXPECT_GT(darker, 2000u) << "pixels at least 20 levels darker in red with the shadows";
 }
 

@@ -207,12 +207,13 @@ public:
     void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, const DebugImageKinds& kinds,
                      std::vector<DebugImage>& out) override {
         if (lights_.at(view.index).options.atlas) {
-            // The atlas itself, once: with the first of its lights.
+            // The atlas itself, once: with the first of its lights; the
+            // light's own tiles are its shadow map.
             std::map<int, const MapLight*> inAtlas;
             for (const auto& [index, p] : lights_)
                 if (p.options.atlas) inAtlas.emplace(index, &p);
-            if (!kinds.wants(DebugImageKind::Atlas)) return;
-            if (inAtlas.begin()->first == view.index) out.push_back(atlas_.debugImage(inAtlas));
+            if (kinds.wants(DebugImageKind::Atlas) && inAtlas.begin()->first == view.index) out.push_back(atlas_.debugImage(inAtlas));
+            if (!kinds.wants(DebugImageKind::ShadowMap)) return;
             DebugImage tiles = atlas_.lightTiles(lights_.at(view.index));
             if (!tiles.image.pixels.empty()) out.push_back(std::move(tiles));
             return;

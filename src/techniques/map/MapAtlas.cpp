@@ -3,6 +3,7 @@
 
 #include "core/AtlasLayout.h"
 #include "core/LightTiles.h"
+#include "techniques/map/MapCache.h"
 #include "techniques/map/MapCameras.h"
 #include "techniques/map/MapVariants.h"
 
@@ -49,17 +50,6 @@ shared::AtlasTile tileOf(const glm::mat4& clipFromWorld, float projectionY, glm:
     t.params = glm::vec4(2.0f / (static_cast<float>(side) * projectionY), covered.empty() ? 0.0f : 1.0f, 0.0f, 0.0f);
     return t;
 }
-
-// FNV-1a over the bytes of what a tile's map follows from.
-struct Hash {
-    std::uint64_t value = 1469598103934665603ull;
-    template <class T>
-    Hash& add(const T& v) {
-        const auto* b = reinterpret_cast<const unsigned char*>(&v);
-        for (std::size_t i = 0; i < sizeof v; ++i) value = (value ^ b[i]) * 1099511628211ull;
-        return *this;
-    }
-};
 
 // Whether item i is drawn into tile t of light p: a caster its camera can
 // see (a cube face's by its face mask, a spot's by its frustum: the same
@@ -160,14 +150,14 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
             const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
             TexelRect covered{};
             Hash key;
-            key.add(clip).add(casters).add(p.options.slopeBias).add(p.options.offsetUnits).add(p.options.cullFront).add(place.side).add(place.origins[f]);
+            key.value(clip).value(casters).value(p.options.slopeBias).value(p.options.offsetUnits).value(p.options.cullFront).value(place.side).value(place.origins[f]);
             for (std::size_t i = 0; i < frame.items.size(); ++i)
                 if (castsIntoTile(frame, p, t, i)) {
                     covered = covered.united(projectedRect(clip, frame.itemBounds[i], place.side));
-                    key.add(i);
+                    key.value(i);
                 }
             p.atlasCovered[f] = covered;
-            p.atlasKey[f] = key.value;
+            p.atlasKey[f] = key.h;
             const shared::AtlasTile record = tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[f], place.side, size_, covered);
             pending_.push_back(record);
             tiles_.push_back(record);
@@ -176,7 +166,7 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
             p.atlasDraw[f] = true;
             if (!frame.cacheShadowMaps || !before.valid) {
                 ++mustDraw;
-            } else if (before.key == key.value) {
+            } else if (before.key == key.h) {
                 p.atlasDraw[f] = false;
             } else {
                 changed.push_back({&p, order[k], t, before.frame});

@@ -46,7 +46,7 @@ public:
     /// depths stretched over their own range, near dark, and each light's
     /// tiles (`lights`: index -> state) outlined in a hue of its own.
     DebugImage debugImage(const std::map<int, const MapLight*>& lights, int maxSide = 1024) const;
-    /// One light's own tiles side by side (a spot's one, a cube's six in
+    /// One light's own tiles (DebugImageKind::ShadowMap: its map) side by side (a spot's one, a cube's six in
     /// face order +X..-Z), each stretched over its own depths, near dark;
     /// values: their depths, tile after tile, rows as GL stores them.
     DebugImage lightTiles(const MapLight& p) const;

@@ -62,7 +62,7 @@ DebugImage MapAtlas::debugImage(const std::map<int, const MapLight*>& lights, in
 DebugImage MapAtlas::lightTiles(const MapLight& p) const {
     DebugImage out;
     out.name = "atlas-tiles";
-    out.kind = DebugImageKind::Atlas;
+    out.kind = DebugImageKind::ShadowMap;  // the light's map: its tiles
     const int side = p.atlasSide, tiles = p.atlasTiles;
     if (tiles == 0 || side == 0 || size_ == 0) return out;
     const std::size_t area = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);

@@ -13,21 +13,6 @@ namespace shadowlab::map {
 
 namespace {
 
-// FNV-1a, 64 bits.
-struct Hash {
-    std::uint64_t h = 1469598103934665603ull;
-    void bytes(const void* data, std::size_t n) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
-    }
-    template <class T>
-    void value(const T& v) { bytes(&v, sizeof v); }
-    void text(const std::string& s) {
-        value(s.size());
-        bytes(s.data(), s.size());
-    }
-};
-
 void addLight(Hash& h, const Light& light) {
     h.value(static_cast<int>(light.type));
     h.value(light.position);

@@ -5,9 +5,29 @@
 #include "techniques/Technique.h"
 
 #include <cstdint>
+#include <string>
 #include <span>
 
 namespace shadowlab::map {
+
+/// FNV-1a, 64 bits: what the module's caches key on (mapInputs, the
+/// atlas's tiles, the caster batch).
+struct Hash {
+    std::uint64_t h = 1469598103934665603ull;
+    void bytes(const void* data, std::size_t n) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
+    }
+    template <class T>
+    Hash& value(const T& v) {
+        bytes(&v, sizeof v);
+        return *this;
+    }
+    void text(const std::string& s) {
+        value(s.size());
+        bytes(s.data(), s.size());
+    }
+};
 
 /// A hash of everything the maps of `lights` depend on: each light's type,
 /// position, direction, cone, range and effective map options; every item's

@@ -1,6 +1,8 @@
 // Technique "map": the opaque casters in one batch (MapCasterBatch.h).
 #include "techniques/map/MapCasterBatch.h"
 
+#include "techniques/map/MapCache.h"
+
 #include <cstring>
 
 namespace shadowlab::map {
@@ -13,22 +15,14 @@ bool opaque(const Scene& scene, const DrawItem& item) {
 
 } // namespace
 
-// FNV-1a over their bytes.
 std::uint64_t casterInputs(const FrameInfo& frame) {
-    std::uint64_t h = 1469598103934665603ull;
-    const auto mix = [&](const void* data, std::size_t n) {
-        const auto* b = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
-    };
-    mix(&frame.sceneUpload, sizeof frame.sceneUpload);
+    Hash h;
+    h.value(frame.sceneUpload);
     for (const DrawItem& item : frame.items) {
-        mix(&item.mesh, sizeof item.mesh);
-        mix(&item.material, sizeof item.material);
-        const std::uint8_t casts = item.castsShadows ? 1 : 0;
-        mix(&casts, 1);
-        mix(&item.worldFromObject, sizeof item.worldFromObject);
+        h.value(item.mesh).value(item.material).value(static_cast<std::uint8_t>(item.castsShadows ? 1 : 0));
+        h.value(item.worldFromObject);
     }
-    return h;
+    return h.h;
 }
 
 void MapCasterBatch::update(const FrameInfo& frame) {
