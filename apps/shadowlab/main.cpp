@@ -10,7 +10,6 @@
 #if SHADOWLAB_VIEWER
 #include "Viewer.h"
 #endif
-#include "Metrics.h"
 #include "Limits.h"
 #include "Interrupt.h"
 #include "OutputFiles.h"
@@ -239,7 +238,6 @@ int runCompare(const CompareArgs& args) {
     tool::PendingFiles pending;
     pending.write(dir / "technique.png", c.technique);
     pending.write(dir / "reference.png", c.reference);
-    nlohmann::json lights = nlohmann::json::array();
     std::cout << "scene " << scene.name << ", " << args.width << "x" << args.height << ", reference traced in "
               << static_cast<long>(c.referenceMs) << " ms\n";
     for (std::size_t i = 0; i < c.lights.size(); ++i) {
@@ -267,22 +265,9 @@ int runCompare(const CompareArgs& args) {
         pending.write(dir / ("visibility-" + index + ".png"), l.referenceVisibility);
         pending.write(dir / ("technique-visibility-" + index + ".png"), l.techniqueVisibility);
         pending.write(dir / ("reach-" + index + ".png"), l.reach);
-        lights.push_back(tool::lightRecord(light, l, {{"errorImage", "error-" + index + ".png"},
-                                                      {"visibilityImage", "visibility-" + index + ".png"},
-                                                      {"techniqueVisibilityImage", "technique-visibility-" + index + ".png"},
-                                                      {"reachImage", "reach-" + index + ".png"}}));
     }
-    const nlohmann::json metrics{{"scene", scene.name},
-                                 {"sceneFile", args.scene.empty() ? "<default>" : args.scene},
-                                 {"width", args.width},
-                                 {"height", args.height},
-                                 {"softSamples", args.softSamples},
-                                 {"time", args.timeSeconds},
-                                 {"referenceMs", c.referenceMs},
-                                 {"techniqueImage", "technique.png"},
-                                 {"referenceImage", "reference.png"},
-                                 {"lights", lights}};
-    pending.write(dir / "metrics.json", [&](const fs::path& p) { tool::writeJsonAtomically(p, metrics); });
+    const std::string metrics = comparisonMetricsJson(scene, args.scene, options, c, true);
+    pending.write(dir / "metrics.json", [&](const fs::path& p) { writeFileAtomically(p, metrics); });
     const std::vector<fs::path> written = pending.commit();
     made.keep();
     std::cout << "wrote";
@@ -313,11 +298,8 @@ int runBenchCommand(const tool::BenchArgs& args) {
     tool::BenchArgs staged = args;
     staged.output = staging.path();
     try {
-        const nlohmann::json results = tool::runBench(context, staged);
-        tool::throwIfInterrupted();
+        tool::runBenchInto(context, staged);
         requireNoGlErrors(context);
-        writeFileAtomically(staged.output / "results.json", results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
-        tool::writeReport(results, staged.output);
     } catch (const Error& e) {  // a file named where it goes, not in the staging directory
         throw Error(tool::naming(e.what(), staged.output.string(), args.output.string()));
     }

@@ -108,6 +108,17 @@ SHADOWLAB_API Comparison compareWithReference(Renderer& renderer, const Scene& s
 /// a map, texelFootprintP50/P95/Max (docs/metrics.md).
 SHADOWLAB_API std::string lightMetricsJson(const Light& light, const LightComparison& c);
 
+/// compare's metrics.json for comparison `c` of `scene` (as compared, at
+/// options.timeSeconds), as JSON text: scene, sceneFile (`sceneFile`, or
+/// "<default>" when empty), width, height, softSamples, time, referenceMs
+/// and per light lightMetricsJson's record. With `fileNames`, the records
+/// also name the files `shadowlab compare -o DIR` writes beside it:
+/// techniqueImage (technique.png), referenceImage (reference.png) and per
+/// light N errorImage (error-N.png), visibilityImage (visibility-N.png),
+/// techniqueVisibilityImage (technique-visibility-N.png) and reachImage (reach-N.png).
+SHADOWLAB_API std::string comparisonMetricsJson(const Scene& scene, const std::string& sceneFile, const CompareOptions& options,
+                                                const Comparison& c, bool fileNames);
+
 /// compareWithReference in three steps, so that a window stays responsive
 /// while the reference is traced:
 ///  1. the constructor renders the technique's frame and reads back what it

@@ -1,16 +1,13 @@
-// shadowlab bench: the record a run leaves in results.json (BenchParts.h),
-// its medians and ratios, and its technique, reference and error images.
+// bench: the record a run leaves in results.json (BenchParts.h), its
+// medians and ratios, and the names its technique, reference and error
+// images get from BenchHooks::images.
 #include "BenchParts.h"
-#include "Metrics.h"
-
-#include <shadowlab/Image.h>
 
 #include <algorithm>
 #include <cctype>
 
-namespace shadowlab::tool {
+namespace shadowlab::bench {
 
-namespace fs = std::filesystem;
 using nlohmann::json;
 
 double median(std::vector<double> values) {
@@ -74,15 +71,13 @@ void addPassNumbers(json& record, const TimedFrames& timed, std::size_t l) {
     if (json r = reportedUnder("light[" + std::to_string(l) + "].", ""); !r.empty()) record["lightCounters"] = std::move(r);
 }
 
-// Every light's record, its error image written as images/<stem>-error-<l>.png.
-json lightRecords(const Scene& scene, const TimedFrames& timed, const Accuracy& accuracy, const std::string& stem,
-                  const BenchArgs& args) {
+// Every light's record, with its error image's name where `names` gives one.
+json lightRecords(const Scene& scene, const TimedFrames& timed, const Accuracy& accuracy, const BenchImageNames& names,
+                  const BenchOptions& args) {
     json lights = json::array();
     for (std::size_t l = 0; l < accuracy.comparison.lights.size(); ++l) {
-        const LightComparison& c = accuracy.comparison.lights[l];
-        const std::string errorName = stem + "-error-" + std::to_string(l) + ".png";
-        writePng(args.output / "images" / errorName, c.errorImage);
-        json record = lightRecord(scene.lights[l], c, {{"errorImage", "images/" + errorName}});
+        json record = json::parse(lightMetricsJson(scene.lights[l], accuracy.comparison.lights[l]));  // compare's fields, in one place
+        if (l < names.errors.size() && !names.errors[l].empty()) record["errorImage"] = names.errors[l];
         addPassNumbers(record, timed, l);
         if (args.flips) accuracy.flips.addTo(record, l);
         lights.push_back(std::move(record));
@@ -93,12 +88,9 @@ json lightRecords(const Scene& scene, const TimedFrames& timed, const Accuracy& 
 } // namespace
 
 json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed, const Accuracy& accuracy, std::size_t index,
-               const std::string& label, const BenchArgs& args) {
-    const std::string stem = std::to_string(index) + "-" + slug(label);
-    const fs::path images = args.output / "images";
-    writePng(images / (stem + "-technique.png"), accuracy.comparison.technique);
-    writePng(images / (stem + "-reference.png"), accuracy.comparison.reference);
-    json lights = lightRecords(scene, timed, accuracy, stem, args);
+               const std::string& label, const BenchOptions& args, const BenchHooks& hooks) {
+    const BenchImageNames names = hooks.images ? hooks.images(index, std::to_string(index) + "-" + slug(label), accuracy.comparison) : BenchImageNames{};
+    json lights = lightRecords(scene, timed, accuracy, names, args);
     json passes = json::object();
     for (const auto& [name, times] : timed.passTimes) passes[name] = stats(times);
     json settings = json::object();
@@ -138,12 +130,12 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
             {"frameOverHardMap", timed.timedBaseline ? frame / std::max(median(timed.baselineTimes), 1e-9) : 1.0},
             {"referenceMs", accuracy.comparison.referenceMs},
             {"lights", lights},
-            {"notes", accuracy.comparison.techniqueFrame.notes},
-            {"techniqueImage", "images/" + stem + "-technique.png"},
-            {"referenceImage", "images/" + stem + "-reference.png"}};
+            {"notes", accuracy.comparison.techniqueFrame.notes}};
+    if (!names.technique.empty()) record["techniqueImage"] = names.technique;
+    if (!names.reference.empty()) record["referenceImage"] = names.reference;
     if (!timed.budgetedTimes.empty()) record["budgetedFrameMs"] = stats(timed.budgetedTimes);
     record.update(extra);
     return record;
 }
 
-} // namespace shadowlab::tool
+} // namespace shadowlab::bench

@@ -1,12 +1,11 @@
 #pragma once
-// shadowlab bench's parts, one responsibility a file, which runBench
+// bench's parts (include/shadowlab/Bench.h), one responsibility a file, which runBench
 // (Bench.cpp) calls in order: the runs its arguments expand into, each scene
 // and combination parsed once (BenchRuns.cpp); a run's timed frames
 // (BenchTiming.cpp); its accuracy against the reference and its temporal
 // stability (BenchAccuracy.cpp); the record it leaves in results.json, with
 // its images (BenchRecord.cpp).
-#include "Bench.h"
-
+#include <shadowlab/Bench.h>
 #include <shadowlab/Compare.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/Scene.h>
@@ -18,7 +17,22 @@
 #include <string>
 #include <vector>
 
-namespace shadowlab::tool {
+namespace shadowlab::bench {
+
+/// One --vary: a JSON path and its values (JSON text, split at top-level commas).
+struct Variation {
+    std::string key;
+    std::vector<std::string> values;
+};
+
+/// Parses `key=v1,v2` (commas inside [] {} "" do not split). Throws Error naming the flag.
+Variation parseVariation(const std::string& text);
+/// Every combination of the variations' values as `key=value` overrides (cartesian product).
+std::vector<std::vector<std::string>> combinations(const std::vector<Variation>& variations);
+/// Number of runs `sceneCount` scenes and `variations` make (the product of
+/// the value counts), computed without building them; throws Error naming
+/// --vary and the limit when it exceeds kMaxBenchRuns (without overflowing).
+std::size_t countRuns(std::size_t sceneCount, const std::vector<Variation>& variations);
 
 /// One scene with one combination of the varied values.
 struct BenchRun {
@@ -30,7 +44,7 @@ struct BenchRun {
 /// Every scene with every combination of args.vary, scene by scene, each
 /// parsed once, before anything is rendered: a bad value throws Error, one
 /// that --vary gave naming that flag.
-std::vector<BenchRun> loadRuns(const BenchArgs& args);
+std::vector<BenchRun> loadRuns(const BenchOptions& args);
 
 /// `scene`, a copy of `loaded` (its techniques may have been changed), with
 /// its lights and camera where their paths are at `seconds`; the meshes are
@@ -71,8 +85,10 @@ struct TimedFrames {
 /// args.timeSeconds + i / args.fps, each a plain frame, an unshadowed one, the
 /// baseline's where timed and one with the pass clock. Leaves `scene` (a copy
 /// of `loaded` at args.timeSeconds, uploaded to `renderer`) at the last step.
-/// `budgeted`: a second renderer (the scene uploaded) for budgetedTimes, or null.
-TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args, Renderer* budgeted = nullptr);
+/// `budgeted`: a second renderer (the scene uploaded) for budgetedTimes, or
+/// null. Calls hooks.checkpoint before each step.
+TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchOptions& args, const BenchHooks& hooks,
+                       Renderer* budgeted = nullptr);
 
 /// Temporal stability (--flips), per light over consecutive frames: the share
 /// of receiver pixels whose shadow changed although the truth there did not.
@@ -125,16 +141,16 @@ struct Accuracy {
 /// Compares `scene` (as timeFrames left it) with the reference at
 /// args.timeSeconds, and with --flips at every timed frame's time too (the
 /// first of them is the one at args.timeSeconds); leaves `scene` at
-/// args.timeSeconds.
-Accuracy measureAccuracy(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args);
+/// args.timeSeconds. The references are traced by hooks.trace.
+Accuracy measureAccuracy(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchOptions& args, const BenchHooks& hooks);
 
 /// The median of `values`; 0 when there are none.
 double median(std::vector<double> values);
 
-/// Run `index`'s record for results.json (`scene` at args.timeSeconds, named
-/// `label` in its image files), its technique, reference and error images
-/// written into args.output / "images".
+/// Run `index`'s record for results.json (`scene` at args.timeSeconds,
+/// named `label`), its technique, reference and error images handed to
+/// hooks.images with a file-name stem from `label`, under the names it gives.
 nlohmann::json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed, const Accuracy& accuracy,
-                         std::size_t index, const std::string& label, const BenchArgs& args);
+                         std::size_t index, const std::string& label, const BenchOptions& args, const BenchHooks& hooks);
 
-} // namespace shadowlab::tool
+} // namespace shadowlab::bench

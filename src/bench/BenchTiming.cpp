@@ -1,11 +1,10 @@
-// shadowlab bench: a run's timed frames (BenchParts.h): the scene, the same
+// bench: a run's timed frames (BenchParts.h): the scene, the same
 // unshadowed and at its techniques' baseline, frame by frame through time.
 #include "BenchParts.h"
-#include "Interrupt.h"
 
 #include <shadowlab/Techniques.h>
 
-namespace shadowlab::tool {
+namespace shadowlab::bench {
 
 void moveToTime(Scene& scene, const Scene& loaded, double seconds) {
     for (std::size_t l = 0; l < scene.lights.size(); ++l) scene.lights[l].position = lightAtTime(loaded.lights[l], seconds).position;
@@ -29,7 +28,7 @@ void addClocked(TimedFrames& timed, const FrameStats& frame) {
 
 } // namespace
 
-TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args, Renderer* budgeted) {
+TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchOptions& args, const BenchHooks& hooks, Renderer* budgeted) {
     TimedFrames timed;
     // Interleaved: a frame as users get it (no per-pass clock) for
     // the frame time, then a frame with the pass clock for where the
@@ -73,7 +72,7 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
     // lights and the camera are moved (outside the timed render())
     // and the three frames of a step see them at the same place.
     for (int i = 0; i < args.frames; ++i) {
-        throwIfInterrupted();
+        if (hooks.checkpoint) hooks.checkpoint();
         const double t = args.timeSeconds + i / args.fps;
         moveToTime(scene, loaded, t);
         moveToTime(unshadowed, loaded, t);
@@ -100,4 +99,4 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
     return timed;
 }
 
-} // namespace shadowlab::tool
+} // namespace shadowlab::bench

@@ -1,4 +1,4 @@
-// shadowlab bench: the runs its arguments expand into (BenchParts.h): --vary
+// bench: the runs its arguments expand into (BenchParts.h): --vary
 // parsed, every combination of the varied values, and every scene with each
 // combination, parsed once.
 #include "BenchParts.h"
@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace shadowlab::tool {
+namespace shadowlab::bench {
 
 Variation parseVariation(const std::string& text) {
     const std::string flag = "--vary " + text;
@@ -74,7 +74,7 @@ nlohmann::json asJson(const std::string& value) {
 
 } // namespace
 
-std::vector<BenchRun> loadRuns(const BenchArgs& args) {
+std::vector<BenchRun> loadRuns(const BenchOptions& args) {
     std::vector<Variation> variations;
     for (std::size_t i = 0; i < args.vary.size(); ++i) {
         variations.push_back(parseVariation(args.vary[i]));
@@ -123,4 +123,4 @@ std::vector<BenchRun> loadRuns(const BenchArgs& args) {
     return runs;
 }
 
-} // namespace shadowlab::tool
+} // namespace shadowlab::bench

@@ -1,11 +1,10 @@
-// shadowlab bench: a run's accuracy (BenchParts.h): its comparison with the
+// bench: a run's accuracy (BenchParts.h): its comparison with the
 // ray-traced reference, and the temporal stability of its shadows (--flips).
 #include "BenchParts.h"
-#include "Interrupt.h"
 
 #include <algorithm>
 
-namespace shadowlab::tool {
+namespace shadowlab::bench {
 
 using nlohmann::json;
 
@@ -77,7 +76,7 @@ bool FlipCounter::Classes::interior(std::size_t i) const {
     return true;
 }
 
-Accuracy measureAccuracy(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchArgs& args) {
+Accuracy measureAccuracy(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchOptions& args, const BenchHooks& hooks) {
     // The accuracy numbers at --time, as `compare --time` gives them;
     // with --flips, a comparison at every timed frame's time too
     // (the first of them is the one at --time).
@@ -112,7 +111,10 @@ Accuracy measureAccuracy(Renderer& renderer, Scene& scene, const Scene& loaded, 
         std::vector<std::vector<float>> techniqueVisibility;
         if (args.flips)
             for (std::size_t l = 0; l < scene.lights.size(); ++l) techniqueVisibility.push_back(renderer.readVisibility(scene, l));
-        traceInterruptibly(job);
+        if (hooks.trace)
+            hooks.trace(job);
+        else
+            job.trace();
         Comparison c = job.finish(renderer);
         if (args.flips) out.flips.add(c, techniqueVisibility, throughPreviousMaps, lightStayed);
         if (i == 0) out.comparison = std::move(c);
@@ -122,4 +124,4 @@ Accuracy measureAccuracy(Renderer& renderer, Scene& scene, const Scene& loaded, 
     return out;
 }
 
-} // namespace shadowlab::tool
+} // namespace shadowlab::bench

@@ -1,7 +1,6 @@
 // report.html: one self-contained page (images inlined as data URIs, plot as
 // inline SVG, no scripts from elsewhere) that opens from disk.
-#include "Bench.h"
-
+#include <shadowlab/Bench.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/FileWrite.h>
 
@@ -9,9 +8,10 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
-namespace shadowlab::tool {
+namespace shadowlab::bench {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -395,8 +395,6 @@ void imageSections(std::ostream& h, const json& records, const fs::path& directo
     }
 }
 
-} // namespace
-
 void writeReport(const json& results, const fs::path& directory) {
     const json& records = results["results"];
     std::ostringstream h;
@@ -423,4 +421,17 @@ window.addEventListener('load', () => {
     writeFileAtomically(directory / "report.html", h.str());
 }
 
-} // namespace shadowlab::tool
+} // namespace
+
+} // namespace shadowlab::bench
+
+namespace shadowlab {
+
+void writeBenchReport(const std::string& resultsJson, const std::filesystem::path& directory) {
+    const nlohmann::json results = nlohmann::json::parse(resultsJson, nullptr, false);
+    if (results.is_discarded() || !results.is_object() || !results.contains("results") || !results["results"].is_array())
+        throw Error("writeBenchReport: not bench's results (a JSON object with a \"results\" array)");
+    bench::writeReport(results, directory);
+}
+
+} // namespace shadowlab

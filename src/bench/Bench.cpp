@@ -1,0 +1,108 @@
+// bench (include/shadowlab/Bench.h): runBench, which checks its options
+// and runs bench's parts (BenchParts.h) over every scene and combination.
+#include "BenchParts.h"
+
+#include <shadowlab/Error.h>
+#include <shadowlab/SceneFile.h>
+
+#include <cmath>
+#include <optional>
+
+namespace shadowlab::bench {
+
+using nlohmann::json;
+
+namespace {
+
+void checkArgs(const BenchOptions& args) {
+    if (args.width < 1 || args.height < 1)
+        throw Error("--width, --height: expected at least 1 pixel, got " + std::to_string(args.width) + "x" + std::to_string(args.height));
+    if (args.softSamples < 1) throw Error("--samples " + std::to_string(args.softSamples) + ": expected at least 1");
+    if (args.frames < 1) throw Error("--frames " + std::to_string(args.frames) + ": expected at least 1");
+    if (args.warmup < 0) throw Error("--warmup " + std::to_string(args.warmup) + ": expected 0 or more");
+    if (!std::isfinite(args.timeSeconds)) throw Error("--time: expected a finite number of seconds");
+    if (!std::isfinite(args.fps) || !(args.fps > 0.0)) throw Error("--fps: expected a finite number of frames per second > 0");
+    if (!std::isfinite(args.timeSeconds + (args.frames - 1) / args.fps))
+        throw Error("--time, --fps: the last timed frame's time is not a finite number of seconds");
+    if (args.flips && args.frames < 2)
+        throw Error("--flips: needs at least 2 timed frames to compare (got --frames " + std::to_string(args.frames) + ")");
+}
+
+json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
+    checkArgs(args);
+    std::vector<BenchRun> runs = loadRuns(args);  // every scene and combination checked before the long run starts
+    auto progress = [&](std::size_t done, const std::string& label) {
+        if (hooks.progress) hooks.progress(done, runs.size(), label);
+    };
+    json records = json::array();
+    for (BenchRun& run : runs) {
+        // The scene at --time: the warm-up frames and the comparison.
+        Scene scene = sceneAtTime(run.loaded, args.timeSeconds);
+        std::string label = scene.name;
+        for (const std::string& c : run.combo) label += " " + c;
+        progress(records.size(), label);
+        try {
+            Renderer renderer(context);
+            renderer.upload(scene);
+            // A shadow atlas with an update budget: its frames in sequence on a renderer of their own.
+            std::optional<Renderer> budgeted;
+            if (scene.shadowAtlas.updateBudget > 0) {
+                budgeted.emplace(context);
+                budgeted->upload(scene);
+            }
+            const TimedFrames timed = timeFrames(renderer, scene, run.loaded, args, hooks, budgeted ? &*budgeted : nullptr);
+            const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args, hooks);
+            if (hooks.checkpoint) hooks.checkpoint();  // a stop asked for during the reference's trace
+            // What the techniques noticed (no planar receiver, no disc): said here and kept in the row.
+            if (hooks.note)
+                for (const std::string& note : accuracy.comparison.techniqueFrame.notes)
+                    hooks.note("bench run " + std::to_string(records.size() + 1) + "/" + std::to_string(runs.size()) + " (" + label + "): " + note);
+            records.push_back(runRecord(run, scene, timed, accuracy, records.size(), label, args, hooks));
+        } catch (const Error& e) {
+            // Name the run that failed: its scene and the combination of --vary values.
+            std::string where = run.file.empty() ? std::string("the default scene") : run.file;
+            for (const std::string& c : run.combo) where += ", --vary " + c;
+            // A value's source, as render names it: the --set or --vary value
+            // applied last to it (from the scene file: the prefix names it).
+            std::vector<std::string> applied = args.overrides, labels;
+            for (const std::string& o : args.overrides) labels.push_back("--set " + o);
+            for (const std::string& c : run.combo) {
+                applied.push_back(c);
+                labels.push_back("--vary " + c);
+            }
+            const std::string message = withValueSource(e.what(), "", applied, labels);
+            throw Error("bench run " + std::to_string(records.size() + 1) + "/" + std::to_string(runs.size()) + " (" + where +
+                        "): " + message);
+        }
+        progress(records.size(), label);
+        run.loaded = Scene{};  // its meshes and textures are not needed again
+    }
+    const GlInfo& info = context.info();
+    return json{{"tool", "shadowlab bench"},
+                {"renderer", info.renderer},
+                {"glVersion", info.version},
+                {"width", args.width},
+                {"height", args.height},
+                {"frames", args.frames},
+                {"warmup", args.warmup},
+                {"time", args.timeSeconds},
+                {"fps", args.fps},
+                {"flips", args.flips},
+                {"softSamples", args.softSamples},
+                {"overrides", args.overrides},
+                {"vary", args.vary},
+                {"results", records}};
+}
+
+} // namespace
+
+} // namespace shadowlab::bench
+
+namespace shadowlab {
+
+std::string runBench(Context& context, const BenchOptions& options, const BenchHooks& hooks) {
+    // Invalid UTF-8 in a scene's name or a value is replaced, not an exception (results.json is UTF-8).
+    return bench::run(context, options, hooks).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+} // namespace shadowlab
