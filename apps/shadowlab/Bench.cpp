@@ -16,40 +16,6 @@ namespace shadowlab::tool {
 
 namespace fs = std::filesystem;
 
-StagingDirectory::StagingDirectory(fs::path target) : target_(std::move(target)) {
-    removeStaleTemporaries(target_, "partial");  // OUT.partial-PID of benches that were killed
-    staging_ = target_;
-    staging_ += ".partial-" + std::to_string(getpid());
-    std::error_code ec;
-    fs::remove_all(staging_, ec);
-    fs::create_directories(staging_, ec);
-    removeOnForcedEnd(staging_, OnForcedEnd::Everything);  // if a second interrupt ends the run at once
-    if (ec) throw Error("-o " + target_.string() + ": cannot create the directory (" + ec.message() + ")");
-}
-
-StagingDirectory::~StagingDirectory() {
-    if (committed_) return;
-    std::error_code ec;
-    fs::remove_all(staging_, ec);
-}
-
-void StagingDirectory::commit() {
-    std::error_code ec;
-    if (!fs::exists(target_, ec)) {
-        fs::rename(staging_, target_, ec);
-        if (ec) throw Error(target_.string() + ": cannot move the results into place (" + ec.message() + ")");
-    } else {
-        for (const fs::directory_entry& entry : fs::directory_iterator(staging_, ec)) {
-            const fs::path destination = target_ / entry.path().filename();
-            fs::remove_all(destination, ec);
-            fs::rename(entry.path(), destination, ec);
-            if (ec) throw Error(destination.string() + ": cannot move into place (" + ec.message() + ")");
-        }
-        fs::remove_all(staging_, ec);
-    }
-    committed_ = true;
-}
-
 namespace {
 
 // One line per step when stderr is not a terminal, an updating bar when it is.

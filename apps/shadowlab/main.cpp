@@ -294,7 +294,8 @@ int runBenchCommand(const tool::BenchArgs& args) {
     // Everything is written into a staging directory beside the output and
     // moved into place only when the whole run succeeded: a failure half way
     // (a texture past the GPU limit in the third scene) leaves nothing behind.
-    tool::StagingDirectory staging(args.output);
+    StagingDirectory staging(args.output, "-o");
+    tool::removeOnForcedEnd(staging.path(), tool::OnForcedEnd::Everything);  // if a second interrupt ends the run at once
     tool::BenchArgs staged = args;
     staged.output = staging.path();
     try {

@@ -5,6 +5,7 @@
 #include <shadowlab/Export.h>
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace shadowlab {
@@ -23,5 +24,27 @@ SHADOWLAB_API void removeStaleTemporaries(const std::filesystem::path& target, s
 /// The same for every name in `dir`: `NAME.TAG-PID` of dead processes, one
 /// listing for all the files a run writes there.
 SHADOWLAB_API void removeStaleTemporariesIn(const std::filesystem::path& dir, std::string_view tag);
+
+/// A directory of results written whole or not at all: the files go into
+/// `TARGET.partial-PID` beside `target`, and commit() moves its content
+/// into `target` (created if missing, same-named entries replaced).
+/// Destroyed without commit(), it is removed with its content. What killed
+/// runs left (`TARGET.partial-PID` of dead processes) is removed first.
+class SHADOWLAB_API StagingDirectory {
+public:
+    /// Throws Error "LABEL TARGET: cannot create the directory (...)";
+    /// `label` names where the target came from ("-o", "out").
+    StagingDirectory(std::filesystem::path target, const std::string& label);
+    ~StagingDirectory();
+    StagingDirectory(const StagingDirectory&) = delete;
+    StagingDirectory& operator=(const StagingDirectory&) = delete;
+    const std::filesystem::path& path() const { return staging_; }
+    /// Moves the content into place; throws Error naming the entry that cannot move.
+    void commit();
+
+private:
+    std::filesystem::path target_, staging_;
+    bool committed_ = false;
+};
 
 } // namespace shadowlab

@@ -82,4 +82,37 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes) {
     }
 }
 
+StagingDirectory::StagingDirectory(fs::path target, const std::string& label) : target_(std::move(target)) {
+    removeStaleTemporaries(target_, "partial");  // OUT.partial-PID of runs that were killed
+    staging_ = target_;
+    staging_ += ".partial-" + std::to_string(getpid());
+    std::error_code ec;
+    fs::remove_all(staging_, ec);
+    fs::create_directories(staging_, ec);
+    if (ec) throw Error(label + " " + target_.string() + ": cannot create the directory (" + ec.message() + ")");
+}
+
+StagingDirectory::~StagingDirectory() {
+    if (committed_) return;
+    std::error_code ec;
+    fs::remove_all(staging_, ec);
+}
+
+void StagingDirectory::commit() {
+    std::error_code ec;
+    if (!fs::exists(target_, ec)) {
+        fs::rename(staging_, target_, ec);
+        if (ec) throw Error(target_.string() + ": cannot move the results into place (" + ec.message() + ")");
+    } else {
+        for (const fs::directory_entry& entry : fs::directory_iterator(staging_, ec)) {
+            const fs::path destination = target_ / entry.path().filename();
+            fs::remove_all(destination, ec);
+            fs::rename(entry.path(), destination, ec);
+            if (ec) throw Error(destination.string() + ": cannot move into place (" + ec.message() + ")");
+        }
+        fs::remove_all(staging_, ec);
+    }
+    committed_ = true;
+}
+
 } // namespace shadowlab

@@ -1,0 +1,172 @@
+// The Python module's bench (Module.h): the library's runBench, the one
+// `shadowlab bench` runs, with results.json's rows as dicts and their
+// images as arrays; files only when `out` names a directory.
+#include "Module.h"
+
+#include <shadowlab/Bench.h>
+#include <shadowlab/FileWrite.h>
+
+#include <filesystem>
+#include <optional>
+
+namespace shadowlab::python {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A scene argument as a file path: a str or os.PathLike, or a Scene loaded
+// from a file without overrides (bench's overrides apply to every scene).
+std::string scenePath(const py::handle& scene) {
+    if (py::isinstance<PyScene>(scene)) {
+        const PyScene& s = scene.cast<const PyScene&>();
+        if (s.text || s.path.empty() || !s.overrides.empty())
+            throw py::value_error("scenes: bench takes scene files; a Scene from load_scene_json, default_scene or with overrides is not one "
+                                  "(give the file, and the overrides as bench's overrides=)");
+        return s.path;
+    }
+    const py::object fspath = py::module_::import("os").attr("fspath");
+    try {
+        return fspath(scene).cast<std::string>();
+    } catch (const py::error_already_set&) {
+        throw py::value_error("scenes: expected file paths (str or os.PathLike) or Scenes loaded from files, got " +
+                              py::str(py::type::of(scene)).cast<std::string>());
+    }
+}
+
+std::vector<std::string> scenePaths(const py::object& scenes) {
+    std::vector<std::string> paths;
+    if (scenes.is_none()) return paths;  // the built-in default scene
+    if (py::isinstance<py::str>(scenes) || py::isinstance<PyScene>(scenes) || py::hasattr(scenes, "__fspath__")) return {scenePath(scenes)};
+    for (const py::handle& s : scenes) paths.push_back(scenePath(s));
+    return paths;
+}
+
+// `vary` ({key: [values]} or [(key, [values]), ...]) as --vary lines, each
+// value as JSON.
+std::vector<std::string> varyLines(const py::object& vary) {
+    std::vector<std::string> lines;
+    if (vary.is_none()) return lines;
+    const py::object dumps = py::module_::import("json").attr("dumps");
+    const py::object pairs = py::isinstance<py::dict>(vary) ? py::object(vary.attr("items")()) : vary;
+    for (const py::handle& pair : pairs) {
+        const py::tuple kv = py::reinterpret_borrow<py::object>(pair).cast<py::tuple>();
+        if (kv.size() != 2 || !py::isinstance<py::str>(kv[0]))
+            throw py::value_error("vary: expected {key: [values]} or [(key, [values]), ...] with keys as scene paths");
+        const std::string key = kv[0].cast<std::string>();
+        std::string line = key + "=";
+        std::size_t count = 0;
+        for (const py::handle& value : kv[1]) {
+            if (count++ > 0) line += ',';
+            line += dumps(value).cast<std::string>();
+        }
+        if (count == 0) throw py::value_error("vary[" + key + "]: no values");
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+// What a run's images are, kept for the rows.
+struct RunImages {
+    ImageRGBA8 technique, reference;
+    std::vector<ImageRGBA8> errors;
+};
+
+} // namespace
+
+py::list bench(const py::object& scenes, int width, int height, const py::object& vary, const py::dict& overrides, int frames, int warmup,
+               double time, double fps, bool flips, int softSamples, const py::object& out) {
+    BenchOptions options;
+    options.scenes = scenePaths(scenes);
+    options.overrides = overrideLines(overrides);
+    options.vary = varyLines(vary);
+    options.frames = frames;
+    options.warmup = warmup;
+    options.timeSeconds = time;
+    options.fps = fps;
+    options.flips = flips;
+    options.width = width;
+    options.height = height;
+    options.softSamples = softSamples;
+    const std::string outPath = out.is_none() ? std::string() : scenePath(out);
+
+    std::vector<RunImages> kept;
+    std::string results, failure;
+    bool interrupted = false, input = false;
+    {
+        py::gil_scoped_release unlocked;
+        std::lock_guard hold(glLock());
+        const Released release;
+        Context& context = contextLocked();
+        try {
+            // Written into OUT.partial-PID and moved into place at the end: a failure leaves nothing.
+            std::optional<StagingDirectory> staging;
+            if (!outPath.empty()) {
+                staging.emplace(outPath, "out");
+                std::error_code ec;
+                if (!fs::create_directories(staging->path() / "images", ec) && ec)
+                    throw Error("out " + outPath + ": cannot create its images directory (" + ec.message() + ")");
+            }
+            BenchHooks hooks;
+            // Ctrl-C (KeyboardInterrupt) stops the bench between frames.
+            hooks.checkpoint = [&] {
+                {
+                    py::gil_scoped_acquire locked;
+                    interrupted = interrupted || PyErr_CheckSignals() != 0;
+                }
+                if (interrupted) throw Error("interrupted");
+            };
+            hooks.images = [&](std::size_t, const std::string& stem, const Comparison& c) {
+                RunImages images{c.technique, c.reference, {}};
+                for (const LightComparison& l : c.lights) images.errors.push_back(l.errorImage);
+                BenchImageNames names;
+                if (staging) {  // as the CLI names them
+                    names = {"images/" + stem + "-technique.png", "images/" + stem + "-reference.png", {}};
+                    writePng(staging->path() / names.technique, c.technique);
+                    writePng(staging->path() / names.reference, c.reference);
+                    for (std::size_t l = 0; l < c.lights.size(); ++l) {
+                        names.errors.push_back("images/" + stem + "-error-" + std::to_string(l) + ".png");
+                        writePng(staging->path() / names.errors.back(), c.lights[l].errorImage);
+                    }
+                }
+                kept.push_back(std::move(images));
+                return names;
+            };
+            results = runBench(context, options, hooks);
+            if (staging) {
+                writeFileAtomically(staging->path() / "results.json", results);
+                writeBenchReport(results, staging->path());
+                staging->commit();
+            }
+        } catch (const Error& e) {
+            failure = e.what();
+            input = failure.rfind("bench run ", 0) != 0;  // before the first run: the arguments' or a scene's
+        }
+    }
+    if (interrupted) {
+        if (PyErr_Occurred()) throw py::error_already_set();
+        throw std::runtime_error("bench: interrupted");
+    }
+    if (!failure.empty()) {
+        if (input) throw py::value_error(pythonNames(failure));
+        throw std::runtime_error(pythonNames(failure));
+    }
+    py::dict all = py::module_::import("json").attr("loads")(results);
+    py::list rows = all["results"];
+    for (std::size_t r = 0; r < kept.size() && r < rows.size(); ++r) {
+        py::dict row = rows[r];
+        py::dict images;
+        images["technique"] = rgba(kept[r].technique);
+        images["reference"] = rgba(kept[r].reference);
+        row["images"] = images;
+        py::list lights = row["lights"];
+        for (std::size_t l = 0; l < kept[r].errors.size() && l < lights.size(); ++l) {
+            py::dict light = lights[l], lightImages;
+            lightImages["error"] = rgba(kept[r].errors[l]);
+            light["images"] = lightImages;
+        }
+    }
+    return rows;
+}
+
+} // namespace shadowlab::python
