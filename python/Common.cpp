@@ -13,6 +13,9 @@ namespace {
 struct Gl {
     std::mutex lock;
     std::optional<Context> context;
+    // Declared after the context: destroyed before it.
+    std::shared_ptr<const Scene> keptScene;
+    std::unique_ptr<Renderer> kept;
 };
 Gl& gl() {
     static Gl g;
@@ -34,6 +37,32 @@ Context& contextLocked() {
     }
     g.context->makeCurrent();
     return *g.context;
+}
+
+Renderer& rendererFor(Context& context, const std::shared_ptr<const Scene>& scene) {
+    Gl& g = gl();
+    if (g.kept && g.keptScene == scene) return *g.kept;
+    g.kept.reset();  // the old one's GL objects gone before the new one's are made
+    g.keptScene.reset();
+    auto renderer = std::make_unique<Renderer>(context);
+    renderer->upload(*scene);
+    g.kept = std::move(renderer);
+    g.keptScene = scene;
+    return *g.kept;
+}
+
+void forgetRenderer() {
+    gl().kept.reset();
+    gl().keptScene.reset();
+}
+
+void forgetRendererAtExit() {
+    Gl& g = gl();
+    std::lock_guard hold(g.lock);
+    if (!g.kept || !g.context) return;
+    g.context->makeCurrent();  // its GL objects are deleted in the context they belong to
+    forgetRenderer();
+    g.context->releaseCurrent();
 }
 
 Released::~Released() {
@@ -81,6 +110,13 @@ std::string pythonNames(std::string message) {
 }
 
 void raiseInput(const Error& e) { throw py::value_error(pythonNames(e.what())); }
+
+py::array_t<std::uint8_t> rgba(ImageRGBA8&& image) {
+    // The array takes the pixels over (a capsule frees them with it): no copy.
+    auto* owned = new std::vector<std::uint8_t>(std::move(image.pixels));
+    const py::capsule free(owned, [](void* p) { delete static_cast<std::vector<std::uint8_t>*>(p); });
+    return py::array_t<std::uint8_t>({image.height, image.width, 4}, owned->data(), free);
+}
 
 py::array_t<std::uint8_t> rgba(const ImageRGBA8& image) {
     py::array_t<std::uint8_t> out({image.height, image.width, 4});

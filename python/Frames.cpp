@@ -13,7 +13,7 @@ py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double
         renderer.render(at, frameOptions(width, height, time));
         image = renderer.readColor();
     });
-    return rgba(image);
+    return rgba(std::move(image));
 }
 
 namespace {

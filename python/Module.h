@@ -34,10 +34,20 @@ std::mutex& glLock();
 /// OpenGL 4.5), made current on this thread. Call with glLock() held.
 Context& contextLocked();
 /// Lets go of the context on this thread at the end of a call, so that the
-/// next call may take it on another (after the call's Renderer is gone).
+/// next call may take it on another.
 struct Released {
     ~Released();
 };
+/// A renderer with `scene` uploaded: the one the previous call used when it
+/// drew the same scene (a Scene object is immutable: its meshes are those
+/// uploaded; the lights and the camera are read at each frame), else a new
+/// one, which replaces it. Call with glLock() held and the context current.
+Renderer& rendererFor(Context& context, const std::shared_ptr<const Scene>& scene);
+/// Drops the kept renderer (after a failure: its state is not known).
+void forgetRenderer();
+/// The same, taking the lock and the context (Python's atexit calls it,
+/// while the context is still there).
+void forgetRendererAtExit();
 
 // ---- scenes ---------------------------------------------------------------
 
@@ -65,7 +75,8 @@ void bindScenes(py::module_& m);
 
 // ---- images ---------------------------------------------------------------
 
-py::array_t<std::uint8_t> rgba(const ImageRGBA8& image);  ///< HxWx4 uint8
+py::array_t<std::uint8_t> rgba(const ImageRGBA8& image);  ///< HxWx4 uint8, a copy
+py::array_t<std::uint8_t> rgba(ImageRGBA8&& image);       ///< the same, the pixels moved into the array
 py::array_t<float> unit(const ImageGray16& image);        ///< HxW float32 in 0..1
 py::array_t<bool> mask(const ImageGray8& image);          ///< HxW bool, true where not 0
 
@@ -75,9 +86,10 @@ RenderOptions frameOptions(int width, int height, double time);
 
 /// The scaffolding of every drawing call: the size checked, the GIL let go,
 /// the context taken on this thread (one call at a time) and let go after,
-/// the scene at `time` uploaded to a renderer of its own, `use` run with
-/// both; the library's errors as ValueError (a size past the GPU's limit:
-/// the caller's) or RuntimeError (GL's).
+/// a renderer with the scene uploaded (rendererFor: kept from the previous
+/// call with the same scene), `use` run with it and the scene at `time`;
+/// the library's errors as ValueError (a size past the GPU's limit: the
+/// caller's) or RuntimeError (GL's).
 template <class Use>
 void drawn(const PyScene& s, int width, int height, double time, const Use& use) {
     if (width < 1 || height < 1)
@@ -90,11 +102,10 @@ void drawn(const PyScene& s, int width, int height, double time, const Use& use)
         Context& context = contextLocked();
         try {
             const Scene at = sceneAtTime(*s.scene, time);
-            Renderer renderer(context);
-            renderer.upload(at);
-            use(renderer, at);
+            use(rendererFor(context, s.scene), at);
         } catch (const Error& e) {
             failure = e.what();
+            forgetRenderer();
         }
     }
     if (failure.rfind("render size", 0) == 0) throw py::value_error(failure);

@@ -48,6 +48,11 @@ py::dict techniqueTables() {
 PYBIND11_MODULE(shadowlab, m) {
     m.doc() = "shadowlab: real-time shadow techniques on OpenGL 4.5, measured against exact ray-traced shadows";
     bindScenes(m);
+    // The kept renderer goes before the interpreter and the context do.
+    py::module_::import("atexit").attr("register")(py::cpp_function([] {
+        py::gil_scoped_release unlocked;
+        forgetRendererAtExit();
+    }));
     m.def("render", &render, py::arg("scene"), py::arg("width"), py::arg("height"), py::arg("time") = 0.0,
           "The frame as a numpy uint8 array of height x width x 4 (RGBA, top row first): the pixels `shadowlab render` writes");
     m.def("visibility", &visibility, py::arg("scene"), py::arg("light"), py::arg("width"), py::arg("height"), py::arg("coloured") = false,

@@ -244,3 +244,29 @@ def test_many_renders_leak_nothing():
     assert shadowlab.live_gl_objects() == live_after_ten
     assert shadowlab.live_gl_objects() - before <= 2  # what the context keeps from its first call on, not per call
     assert rss() <= after_ten * 1.05
+
+
+def test_a_kept_renderer_draws_what_a_new_one_does():
+    # Calls that draw the same Scene object keep its renderer (uploaded once);
+    # a frame from it must be the frame a new renderer draws: nothing of the
+    # previous frame (another time, another size) may carry over. Scenes with
+    # moving lights and camera, cascades, a cube map, the shadow atlas and volumes.
+    other = shadowlab.default_scene()
+    cases = [("cascades-field.json", {}), ("room-point.json", {}), ("learnopengl-point-shadows.json", {}),
+             ("many-lights.json", {"lightGrid.count": 8}), ("two-boxes-sun.json", {"lights[0].shadow.technique": "volume"}),
+             ("long-view.json", {"lights[0].shadow.map.fit": "sdsm"})]
+    for name, overrides in cases:
+        scene = shadowlab.load_scene(os.path.join(SOURCE, "scenes", name), overrides)
+
+        def fresh(time, width=96, height=54):
+            shadowlab.render(other, 8, 8)  # another scene drawn in between: a new renderer next
+            return shadowlab.render(scene, width, height, time)
+
+        first = fresh(0.0)
+        assert np.array_equal(shadowlab.render(scene, 96, 54, 0.0), first), name
+        later = shadowlab.render(scene, 96, 54, 1.5)
+        if name in ("cascades-field.json", "room-point.json", "learnopengl-point-shadows.json"):
+            assert not np.array_equal(later, first), name  # their camera or light moves: the frames differ
+        shadowlab.render(scene, 160, 90, 0.0)
+        assert np.array_equal(shadowlab.render(scene, 96, 54, 0.0), first), name
+        assert np.array_equal(later, fresh(1.5)), name
