@@ -43,10 +43,41 @@ py::dict techniqueTables() {
     return out;
 }
 
+// A handle on the process's one context (Context() makes it on first use,
+// later calls return handles on the same one): what it runs on.
+struct ContextHandle {
+    GlInfo info;
+};
+
+ContextHandle processContext() {
+    ContextHandle c;
+    {
+        py::gil_scoped_release unlocked;
+        std::lock_guard hold(glLock());
+        const Released release;
+        c.info = contextLocked().info();
+    }
+    return c;
+}
+
 } // namespace
 
 PYBIND11_MODULE(shadowlab, m) {
     m.doc() = "shadowlab: real-time shadow techniques on OpenGL 4.5, measured against exact ray-traced shadows";
+    py::class_<ContextHandle>(m, "Context",
+                          "The process's one headless OpenGL 4.5 context (EGL): Context() makes it on first use, as the first drawing call "
+                          "does, and raises RuntimeError when there is none; every Context() is the same context")
+        .def(py::init(&processContext))
+        .def_property_readonly("renderer", [](const ContextHandle& c) { return c.info.renderer; })
+        .def_property_readonly("vendor", [](const ContextHandle& c) { return c.info.vendor; })
+        .def_property_readonly("version", [](const ContextHandle& c) { return c.info.version; })
+        .def_property_readonly("glsl_version", [](const ContextHandle& c) { return c.info.glslVersion; })
+        .def_property_readonly("platform", [](const ContextHandle& c) { return c.info.platform; })
+        .def_property_readonly("max_texture_size", [](const ContextHandle& c) { return c.info.maxTextureSize; })
+        .def_property_readonly("max_cube_map_size", [](const ContextHandle& c) { return c.info.maxCubeMapSize; })
+        .def_property_readonly("device_memory_bytes", [](const ContextHandle& c) { return c.info.deviceMemoryBytes; },
+                               "free device memory the driver reported when the context was made; 0 when it reports none (llvmpipe)")
+        .def("__repr__", [](const ContextHandle& c) { return "<shadowlab.Context " + c.info.platform + ": " + c.info.renderer + ", " + c.info.version + ">"; });
     bindScenes(m);
     // The kept renderer goes before the interpreter and the context do.
     py::module_::import("atexit").attr("register")(py::cpp_function([] {

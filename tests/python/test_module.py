@@ -60,6 +60,13 @@ def test_bad_input_is_a_value_error_naming_the_key():
         shadowlab.render(shadowlab.default_scene(), 100000, 10)
 
 
+def test_context_is_the_process_one():
+    first, second = shadowlab.Context(), shadowlab.Context()
+    assert first.version.startswith("4.") and int(first.version[2]) >= 5, first.version  # OpenGL 4.5 core or later
+    assert first.platform in ("egl-surfaceless", "egl-device") and first.renderer == second.renderer
+    assert first.max_texture_size >= 1024  # GL 4.5's minimum is 16384; llvmpipe gives 16384
+
+
 def test_techniques_table():
     tables = shadowlab.techniques()
     assert list(tables)[:2] == ["none", "map"]
