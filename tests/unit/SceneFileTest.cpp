@@ -104,6 +104,14 @@ TEST(SceneFile, OverridesSetValuesByJsonPath) {
     EXPECT_FALSE(s.drawItems()[0].castsShadows);   // default true
 }
 
+TEST(SceneFile, OfTwoOverridesOfOnePathTheLaterWins) {
+    // Documented (docs/scene-format.md): flags apply in order, the earlier
+    // value is replaced before the scene is checked, so even a bad one is
+    // not reported; with_overrides in the Python module relies on it.
+    EXPECT_FLOAT_EQ(parseScene(kMinimal, "scene.json", ".", {"lights[1].intensity=bright", "lights[1].intensity=2.5"}).lights[1].intensity, 2.5f);
+    EXPECT_FLOAT_EQ(parseScene(kMinimal, "scene.json", ".", {"lights[1].intensity=3", "lights[1].intensity=2.5"}).lights[1].intensity, 2.5f);
+}
+
 TEST(SceneFile, DefaultSceneHasATorusAPlaneAndALight) {
     const Scene s = defaultScene();
     EXPECT_EQ(s.drawItems().size(), 2u);
