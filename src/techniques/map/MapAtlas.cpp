@@ -151,10 +151,13 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
             TexelRect covered{};
             Hash key;
             key.value(clip).value(casters).value(p.options.slopeBias).value(p.options.offsetUnits).value(p.options.cullFront).value(place.side).value(place.origins[f]);
+            std::vector<std::size_t>& seen = p.atlasCasters[f];
+            seen.clear();
             for (std::size_t i = 0; i < frame.items.size(); ++i)
                 if (castsIntoTile(frame, p, t, i)) {
                     covered = covered.united(projectedRect(clip, frame.itemBounds[i], place.side));
                     key.value(i);
+                    seen.push_back(i);
                 }
             p.atlasCovered[f] = covered;
             p.atlasKey[f] = key.h;
@@ -260,20 +263,15 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         const glm::ivec2 o = p.atlasOrigins[f];
         glViewport(o.x, o.y, p.atlasSide, p.atlasSide);
         const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
-        // The casters this tile's camera can see: a cube face's by its mask, a spot's by its frustum.
-        wanted_.clear();
-        bool singles = false;
-        for (std::size_t i = 0; i < frame.items.size(); ++i) {
-            if (!castsIntoTile(frame, p, t, i)) continue;
-            wanted_.push_back(i);
-            singles = singles || !batch_.holds(i);
-        }
+        // The casters this tile's camera can see (layout found them).
+        const std::vector<std::size_t>& wanted = p.atlasCasters[f];
+        const bool singles = std::any_of(wanted.begin(), wanted.end(), [&](std::size_t i) { return !batch_.holds(i); });
         glProgramUniformMatrix4fv(batched.id(), 0, 1, GL_FALSE, &clip[0][0]);
-        drawn += batch_.draw(batched, wanted_);
+        drawn += batch_.draw(batched, wanted);
         if (!singles) continue;
         glProgramUniformMatrix4fv(single.id(), 0, 1, GL_FALSE, &clip[0][0]);
         host.drawItems(ItemFilter::Casters, single, [&](std::size_t i) {
-            const bool draw = !batch_.holds(i) && std::binary_search(wanted_.begin(), wanted_.end(), i);
+            const bool draw = !batch_.holds(i) && std::binary_search(wanted.begin(), wanted.end(), i);
             if (draw) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
             return draw;
         });

@@ -79,7 +79,6 @@ private:
     AtlasLayout lastLayout_;
     bool behind_ = false;
     std::vector<shared::AtlasTile> pending_;  ///< this frame's records of the tiles it draws (tiles_ holds a kept tile's old one)
-    std::vector<std::size_t> wanted_;  ///< scratch: the items a tile draws
     std::vector<shared::AtlasTile> tiles_;
 };
 

@@ -76,6 +76,9 @@ struct MapLight {
     /// follows from (MapAtlas keeps it once drawn).
     std::array<bool, 6> atlasDraw{};
     std::array<std::uint64_t, 6> atlasKey{};
+    /// Each tile's casters, the items its camera can see, in item order
+    /// (found once by MapAtlas::layout, drawn by MapAtlas::draw).
+    std::array<std::vector<std::size_t>, 6> atlasCasters;
     /// The cameras its 2D map layers were drawn from: the cascades, or the one camera.
     std::span<const LightCamera> cameras() const { return cascades.empty() ? std::span<const LightCamera>(&camera, 1) : std::span<const LightCamera>(cascades); }
     /// The cube faces item i is drawn into: those its bounds touch, or all
