@@ -439,12 +439,15 @@ expect_interrupted compare-interrupted-in-trace 3 USR1 "interrupted (SIGUSR1)" 5
 # once (killed by the signal, exit 128+15), removing this run's frames'
 # temporaries first. To hold the run between the two without racing its
 # checks: the first comes just after frame 0's temporary appears (frame 1's
-# render has begun: 3000x3000, a fraction of a second, with no check in
-# it), the process is then stopped for 1.2 s, and the second is delivered
-# as it continues.
+# render has begun, with no check in it: penumbra-step at 3000x3000 with
+# 64 + 64 PCSS taps, about 2 s a frame here, so that a loaded machine's
+# delays in this script's sleeps and kills cannot let it reach its next
+# check; a 0.5 s frame once did), the process is then stopped for 1.2 s,
+# and the second is delivered as it continues.
 forced="$work/forced-end"
 mkdir -p "$forced"
-(cd "$forced" && exec "$tool" render -o 'z%03d.png' --frames 5 --width 3000 --height 3000) 2>"$forced.err" >/dev/null &
+(cd "$forced" && exec "$tool" render "$src/scenes/penumbra-step.json" -o 'z%03d.png' --frames 5 --width 3000 --height 3000 \
+   --set lights[0].shadow.map.samples=64 --set lights[0].shadow.map.blockerSamples=64 --set lights[0].shadow.map.earlyOut=false) 2>"$forced.err" >/dev/null &
 pid=$!
 for _ in $(seq 3000); do compgen -G "$forced/z000.png.pending-$pid" >/dev/null && break; sleep 0.01; done
 kill -TERM "$pid"; sleep 0.01; kill -STOP "$pid"; sleep 1.2; kill -TERM "$pid"; kill -CONT "$pid"
