@@ -8,9 +8,9 @@
 // Here: the window and the loop that draws it, one step of ViewerSession
 // (ViewerSession.h) after another, and the scene read again or saved with
 // the settings made.
-#include "Limits.h"
 #include "ViewerSession.h"
 
+#include <shadowlab/Limits.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/FileWrite.h>
 #include <shadowlab/SceneFile.h>
@@ -40,7 +40,7 @@ namespace {
 // A window of the size asked for, with Dear ImGui on it, ready for the renderer.
 Context openWindow(const ViewArgs& args, const std::string& title) {
     Context context = Context::createWindow(args.width, args.height, title);
-    tool::checkSize(args.width, args.height, context.info());  // GL's limits and the device's memory, as render's
+    checkSize(args.width, args.height, context.info());  // GL's limits and the device's memory, as render's
     GLFWwindow* window = context.window();
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();

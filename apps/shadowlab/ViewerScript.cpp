@@ -2,10 +2,10 @@
 // the window opens, then run one action a frame.
 #include "ViewerScript.h"
 
-#include "Limits.h"
 #include "OutputFiles.h"
 #include "ViewerSession.h"
 
+#include <shadowlab/Limits.h>
 #include <shadowlab/Error.h>
 
 #define GLFW_INCLUDE_NONE
@@ -74,7 +74,7 @@ std::vector<Action> readScript(const std::string& path) {
             if (!(size >> w >> h) || (size >> rest) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw Error(where + "resize: expected a width and a height, 64..16384, got '" + a.argument + "'");
             try {
-                tool::checkMemory(w, h);  // the window's targets, as --width and --height's (GL's limits: when it runs)
+                checkMemory(w, h);  // the window's targets, as --width and --height's (GL's limits: when it runs)
             } catch (const Error& e) {
                 throw Error(where + "resize " + a.argument + ": " + e.what());
             }
@@ -121,7 +121,7 @@ void ViewerSession::runScript() {
             int w = 0, h = 0;
             size >> w >> h;
             try {
-                tool::checkSize(w, h, context.info());  // GL's limits and the device's memory
+                checkSize(w, h, context.info());  // GL's limits and the device's memory
             } catch (const Error& e) {
                 throw Error(args.script + ":" + std::to_string(a.line) + ": resize " + a.argument + ": " + e.what());
             }

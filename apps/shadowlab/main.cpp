@@ -10,10 +10,10 @@
 #if SHADOWLAB_VIEWER
 #include "Viewer.h"
 #endif
-#include "Limits.h"
 #include "Interrupt.h"
 #include "OutputFiles.h"
 
+#include <shadowlab/Limits.h>
 #include <shadowlab/Compare.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
@@ -141,9 +141,9 @@ int runRender(const RenderArgs& args) {
         Scene first = sceneAtTime(loaded, times[0]);
         applyViewFromLight(first, args.viewFromLight);
     }
-    tool::checkMemory(args.width, args.height);
+    checkMemory(args.width, args.height);
     Context context = Context::createHeadless();
-    tool::checkSize(args.width, args.height, context.info());
+    checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(loaded);
     tool::MadeDirectories made;  // --debug-images DIR, if this run makes it (before the files in it)
@@ -206,10 +206,10 @@ int runCompare(const CompareArgs& args) {
     // Both sides, technique and reference, see the lights and the camera at --time.
     const Scene scene = sceneAtTime(loadScene(args.scene, args.overrides), args.timeSeconds);
     const fs::path dir = tool::checkOutputDirectory(args.output);
-    tool::checkMemory(args.width, args.height);
-    tool::checkReferenceRays(args.width, args.height, args.softSamples);
+    checkMemory(args.width, args.height);
+    checkReferenceRays(args.width, args.height, args.softSamples);
     Context context = Context::createHeadless();
-    tool::checkSize(args.width, args.height, context.info());
+    checkSize(args.width, args.height, context.info());
     Renderer renderer(context);
     renderer.upload(scene);
     CompareOptions options;
@@ -287,10 +287,10 @@ int runBenchCommand(const tool::BenchArgs& args) {
         if (!fs::is_regular_file(status)) throw Error(file + ": not a regular file (expected a scene file)");
     }
     tool::checkOutputDirectory(args.output.string());
-    tool::checkMemory(args.width, args.height);
-    tool::checkReferenceRays(args.width, args.height, args.softSamples);
+    checkMemory(args.width, args.height);
+    checkReferenceRays(args.width, args.height, args.softSamples);
     Context context = Context::createHeadless();
-    tool::checkSize(args.width, args.height, context.info());
+    checkSize(args.width, args.height, context.info());
     // Everything is written into a staging directory beside the output and
     // moved into place only when the whole run succeeded: a failure half way
     // (a texture past the GPU limit in the third scene) leaves nothing behind.
@@ -389,7 +389,7 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& args) {
     compare->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     compare->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     compare->add_option("--samples", args.softSamples, "Reference rays per pixel for lights with a size")
-        ->check(CLI::Range(1, 65536))->capture_default_str();
+        ->check(CLI::Range(1, kMaxSoftSamples))->capture_default_str();
     compare->add_option("--set", args.overrides, "Override a scene value by JSON path")->take_all();
     compare->add_option("--time", args.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are")
         ->capture_default_str();
@@ -415,7 +415,7 @@ CLI::App* addBench(CLI::App& app, tool::BenchArgs& args, std::string& output) {
     bench->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     bench->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     bench->add_option("--samples", args.softSamples, "Reference rays per pixel for lights with a size")
-        ->check(CLI::Range(1, 65536))->capture_default_str();
+        ->check(CLI::Range(1, kMaxSoftSamples))->capture_default_str();
     bench->add_option("-o,--output", output, "Output directory")->capture_default_str();
     const std::map<std::string, TimingClock> clocks{{"auto", TimingClock::Auto},
                                                     {"cpu-finish", TimingClock::CpuFinish},
@@ -522,7 +522,7 @@ int main(int argc, char** argv) {
         if (*view) {
             if (!viewArgs.screenshot.empty() && viewArgs.frames == 0) throw Error("--screenshot: needs --frames N (the frame to take)");
             if (!viewArgs.screenshot.empty()) tool::checkOutput(viewArgs.screenshot, "--screenshot");
-            tool::checkMemory(viewArgs.width, viewArgs.height);  // the window's targets, as render's
+            checkMemory(viewArgs.width, viewArgs.height);  // the window's targets, as render's
             return runView(viewArgs);
         }
 #endif

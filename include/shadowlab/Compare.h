@@ -15,10 +15,13 @@
 
 namespace shadowlab {
 
+/// The most reference rays a pixel a soft light may take (CompareOptions::softSamples).
+constexpr int kMaxSoftSamples = 65536;
+
 struct CompareOptions {
     int width = 960;          ///< pixels, default 960
     int height = 540;         ///< pixels, default 540
-    int softSamples = 256;    ///< reference rays per pixel for lights with size > 0, >= 1; default 256
+    int softSamples = 256;    ///< reference rays per pixel for lights with size > 0, 1..kMaxSoftSamples; default 256
     unsigned seed = 1;        ///< the reference's stratified jitter; default 1
     /// Visibility at or above this counts as lit when pixels are classified
     /// (both sides). Default 0.5.

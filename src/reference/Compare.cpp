@@ -272,7 +272,8 @@ void ComparisonJob::cancel() {}
 Comparison ComparisonJob::finish(Renderer&) { return {}; }
 #else
 ComparisonJob::ComparisonJob(Renderer& renderer, const Scene& scene, const CompareOptions& options) : impl_(std::make_unique<Impl>()) {
-    if (options.softSamples < 1) throw Error("compare: softSamples must be >= 1, got " + std::to_string(options.softSamples));
+    if (options.softSamples < 1 || options.softSamples > kMaxSoftSamples)
+        throw Error("compare: softSamples must be in 1.." + std::to_string(kMaxSoftSamples) + ", got " + std::to_string(options.softSamples));
     if (!(options.litThreshold > 0.0f && options.litThreshold <= 1.0f))
         throw Error("compare: litThreshold must be in (0, 1]");
     Impl& d = *impl_;

@@ -198,7 +198,7 @@ struct Trace {
         }
         Pcg32 rng(options.seed, i);
         glm::vec3 unoccluded(0.0f);  // the rays' transmittance summed
-        for (int k0 = 0; k0 < n; k0 += kPacket) {
+        for (int k0 = 0; k0 < n; k0 += std::min(kPacket, n - k0)) {  // never past n: n near INT_MAX must not overflow
             packet.clear();
             const int count = std::min(kPacket, n - k0);
             for (int lane = 0; lane < count; ++lane) {

@@ -1,5 +1,5 @@
-// The frame-size limits (Limits.h).
-#include "Limits.h"
+// The frame-size limits (include/shadowlab/Limits.h).
+#include <shadowlab/Limits.h>
 
 #include <shadowlab/Error.h>
 #include <shadowlab/Text.h>
@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace shadowlab::tool {
+namespace shadowlab {
 
 namespace {
 
@@ -83,4 +83,4 @@ void checkSize(int width, int height, const GlInfo& info) {
         refuse(width, height, frameBytes(width, height), device, "the device's free memory, as " + info.deviceMemorySource + " reports it");
 }
 
-} // namespace shadowlab::tool
+} // namespace shadowlab
