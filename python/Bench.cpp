@@ -5,6 +5,7 @@
 
 #include <shadowlab/Bench.h>
 #include <shadowlab/FileWrite.h>
+#include <shadowlab/Text.h>
 
 #include <filesystem>
 #include <optional>
@@ -25,45 +26,31 @@ std::string scenePath(const py::handle& scene) {
                                   "(give the file, and the overrides as bench's overrides=)");
         return s.path;
     }
-    const py::object fspath = py::module_::import("os").attr("fspath");
-    try {
-        return fspath(scene).cast<std::string>();
-    } catch (const py::error_already_set&) {
-        throw py::value_error("scenes: expected file paths (str or os.PathLike) or Scenes loaded from files, got " +
-                              py::str(py::type::of(scene)).cast<std::string>());
-    }
+    return pathArgument(scene, "scenes");
 }
 
+// `scenes`: None (the built-in default scene), one scene or a list of them.
 std::vector<std::string> scenePaths(const py::object& scenes) {
+    if (scenes.is_none()) return {};
+    if (!(py::isinstance<py::list>(scenes) || py::isinstance<py::tuple>(scenes))) return {scenePath(scenes)};
     std::vector<std::string> paths;
-    if (scenes.is_none()) return paths;  // the built-in default scene
-    if (py::isinstance<py::str>(scenes) || py::isinstance<PyScene>(scenes) || py::hasattr(scenes, "__fspath__")) return {scenePath(scenes)};
     for (const py::handle& s : scenes) paths.push_back(scenePath(s));
+    if (paths.empty()) throw py::value_error("scenes: an empty list (None benches the built-in default scene)");
     return paths;
 }
 
-// `vary` ({key: [values]} or [(key, [values]), ...]) as --vary lines, each
-// value as JSON.
-std::vector<std::string> varyLines(const py::object& vary) {
-    std::vector<std::string> lines;
-    if (vary.is_none()) return lines;
-    const py::object dumps = py::module_::import("json").attr("dumps");
-    const py::object pairs = py::isinstance<py::dict>(vary) ? py::object(vary.attr("items")()) : vary;
-    for (const py::handle& pair : pairs) {
-        const py::tuple kv = py::reinterpret_borrow<py::object>(pair).cast<py::tuple>();
-        if (kv.size() != 2 || !py::isinstance<py::str>(kv[0]))
-            throw py::value_error("vary: expected {key: [values]} or [(key, [values]), ...] with keys as scene paths");
-        const std::string key = kv[0].cast<std::string>();
-        std::string line = key + "=";
-        std::size_t count = 0;
-        for (const py::handle& value : kv[1]) {
-            if (count++ > 0) line += ',';
-            line += dumps(value).cast<std::string>();
-        }
-        if (count == 0) throw py::value_error("vary[" + key + "]: no values");
-        lines.push_back(line);
-    }
-    return lines;
+// `out` checked before the run, as the CLI checks -o: not an existing
+// file, its parent directory there.
+std::string outPath(const py::object& out) {
+    if (out.is_none()) return {};
+    const std::string path = pathArgument(out, "out");
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (fs::exists(status) && !fs::is_directory(status)) throw py::value_error("out " + text::escapeControl(path) + ": exists and is not a directory");
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        throw py::value_error("out " + text::escapeControl(path) + ": directory " + text::escapeControl(parent.string()) + " does not exist");
+    return path;
 }
 
 // What a run's images are, kept for the rows.
@@ -76,6 +63,8 @@ struct RunImages {
 
 py::list bench(const py::object& scenes, int width, int height, const py::object& vary, const py::dict& overrides, int frames, int warmup,
                double time, double fps, bool flips, int softSamples, const py::object& out) {
+    checkFrame(width, height, time);
+    checkSoftSamples(softSamples, width, height);
     BenchOptions options;
     options.scenes = scenePaths(scenes);
     options.overrides = overrideLines(overrides);
@@ -88,7 +77,7 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
     options.width = width;
     options.height = height;
     options.softSamples = softSamples;
-    const std::string outPath = out.is_none() ? std::string() : scenePath(out);
+    const std::string outDir = outPath(out);
 
     std::vector<RunImages> kept;
     std::string results, failure;
@@ -100,12 +89,13 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
         Context& context = contextLocked();
         try {
             // Written into OUT.partial-PID and moved into place at the end: a failure leaves nothing.
+            checkSize(width, height, context.info());  // GL's limits, before the first run
             std::optional<StagingDirectory> staging;
-            if (!outPath.empty()) {
-                staging.emplace(outPath, "out");
+            if (!outDir.empty()) {
+                staging.emplace(outDir, "out");
                 std::error_code ec;
                 if (!fs::create_directories(staging->path() / "images", ec) && ec)
-                    throw Error("out " + outPath + ": cannot create its images directory (" + ec.message() + ")");
+                    throw Error("out " + outDir + ": cannot create its images directory (" + ec.message() + ")");
             }
             BenchHooks hooks;
             // Ctrl-C (KeyboardInterrupt) stops the bench between frames.
@@ -140,7 +130,7 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
             }
         } catch (const Error& e) {
             failure = e.what();
-            input = failure.rfind("bench run ", 0) != 0;  // before the first run: the arguments' or a scene's
+            input = failure.rfind("bench run ", 0) != 0;  // before the first run: the arguments', a scene's or the size's
         }
     }
     if (interrupted) {
@@ -148,8 +138,8 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
         throw std::runtime_error("bench: interrupted");
     }
     if (!failure.empty()) {
-        if (input) throw py::value_error(pythonNames(failure));
-        throw std::runtime_error(pythonNames(failure));
+        if (input) throw py::value_error(pythonNames(failure, options.overrides));
+        throw std::runtime_error(pythonNames(failure, options.overrides));
     }
     py::dict all = py::module_::import("json").attr("loads")(results);
     py::list rows = all["results"];

@@ -1,10 +1,8 @@
-// The Python module's shared parts (Module.h): the context, errors named
-// as Python names things, images as arrays.
+// The Python module's shared parts (Module.h): the context and the renderer
+// it keeps, images as arrays.
 #include "Module.h"
 
-#include <cctype>
 #include <cstring>
-#include <string_view>
 
 namespace shadowlab::python {
 
@@ -68,48 +66,6 @@ void forgetRendererAtExit() {
 Released::~Released() {
     if (gl().context) gl().context->releaseCurrent();
 }
-
-namespace {
-
-// Every `FLAG KEY=` in `message` as `NAME[KEY]=`.
-std::string keyed(std::string message, const std::string& flag, const std::string& name) {
-    for (std::size_t at = message.find(flag); at != std::string::npos; at = message.find(flag, at)) {
-        const std::size_t key = at + flag.size(), eq = message.find('=', key);
-        if (eq == std::string::npos) break;
-        const std::string replacement = name + "[" + message.substr(key, eq - key) + "]";
-        message.replace(at, eq - at, replacement);
-        at += replacement.size();
-    }
-    return message;
-}
-
-} // namespace
-
-std::string pythonNames(std::string message) {
-    message = keyed(keyed(std::move(message), "--set ", "overrides"), "--vary ", "vary");
-    // `overrides[K]=V: ...` said first: the key alone, as load_scene names it.
-    if (message.rfind("overrides[", 0) == 0) {
-        const std::size_t close = message.find("]=");
-        const std::size_t colon = close == std::string::npos ? close : message.find(": ", close);
-        if (colon != std::string::npos) message = message.substr(0, close + 1) + message.substr(colon);
-    }
-    // bench's flags as the keyword arguments.
-    static const std::pair<std::string_view, std::string_view> flags[] = {
-        {"--frames", "frames"}, {"--warmup", "warmup"},        {"--time", "time"},    {"--fps", "fps"},
-        {"--flips", "flips"},   {"--samples", "soft_samples"}, {"--width", "width"}, {"--height", "height"}};
-    for (const auto& [flag, name] : flags)
-        for (std::size_t at = message.find(flag); at != std::string::npos; at = message.find(flag, at + name.size())) {
-            const std::size_t end = at + flag.size();
-            if (end < message.size() && (std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '-')) {
-                at = end - name.size();  // a longer flag (--frames-x): not this one
-                continue;
-            }
-            message.replace(at, flag.size(), name);
-        }
-    return message;
-}
-
-void raiseInput(const Error& e) { throw py::value_error(pythonNames(e.what())); }
 
 py::array_t<std::uint8_t> rgba(ImageRGBA8&& image) {
     // The array takes the pixels over (a capsule frees them with it): no copy.

@@ -8,6 +8,7 @@
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/Image.h>
+#include <shadowlab/Limits.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/Scene.h>
 #include <shadowlab/SceneFile.h>
@@ -60,15 +61,35 @@ struct PyScene {
     std::string baseDir;                 ///< load_scene_json: where its relative paths start
 };
 
-/// `overrides` as `--set` lines: each value as JSON (Python's json.dumps),
-/// so a str is a JSON string and numbers, bools and lists are themselves.
+// ---- arguments (Arguments.cpp) --------------------------------------------
+
+/// `overrides` as `--set` lines: each key a scene path (text without '='
+/// or NUL), each value as JSON (json.dumps, no NaN: a str is a JSON
+/// string); ValueError naming `overrides[KEY]` otherwise.
 std::vector<std::string> overrideLines(const py::dict& overrides);
-/// A message of the library's as Python names things: `--set K=V` as
-/// `overrides[K]=V`, `--vary K=...` as `vary[K]=...`, a leading flag
-/// (`--frames`, `--samples`, ...) as the keyword argument.
-std::string pythonNames(std::string message);
+/// bench's `vary` ({key: [values]} or [(key, [values]), ...]) as `--vary`
+/// lines, each value as JSON; ValueError naming `vary[KEY]` otherwise.
+std::vector<std::string> varyLines(const py::object& vary);
+/// A path argument (str or os.PathLike) as UTF-8 text; ValueError naming
+/// `name` when it is none, empty, not UTF-8 or holds a NUL.
+std::string pathArgument(const py::handle& value, const std::string& name);
+/// A message of the library's as Python names things, one line: the
+/// call's `overrides` lines' `--set K=V` as `overrides[K]`, other `--set
+/// K=V` as `overrides[K]=V`, `--vary K=V` as `vary[K]=V`, the flags
+/// (`--frames`, `--samples`, `--width`, ...) as the keyword arguments;
+/// control characters escaped, a huge message clipped in its middle.
+std::string pythonNames(std::string message, const std::vector<std::string>& overrides = {});
 /// An Error for bad input as ValueError, named as pythonNames says.
-[[noreturn]] void raiseInput(const Error& e);
+[[noreturn]] void raiseInput(const Error& e, const std::vector<std::string>& overrides = {});
+/// A frame's size (at least 1 pixel; within the host's memory: the
+/// library's checkMemory) and time (finite); ValueError otherwise.
+void checkFrame(int width, int height, double time);
+/// soft_samples within 1..kMaxSoftSamples and the reference's rays for the
+/// frame within the library's limit (checkReferenceRays); ValueError otherwise.
+void checkSoftSamples(int softSamples, int width, int height);
+
+// ---- scenes (Scenes.cpp) --------------------------------------------------
+
 PyScene load(const std::string& path, std::vector<std::string> lines);
 PyScene loadJson(const std::string& text, const std::string& baseDir, std::vector<std::string> lines);
 void bindScenes(py::module_& m);
@@ -84,32 +105,39 @@ py::array_t<bool> mask(const ImageGray8& image);          ///< HxW bool, true wh
 
 RenderOptions frameOptions(int width, int height, double time);
 
-/// The scaffolding of every drawing call: the size checked, the GIL let go,
-/// the context taken on this thread (one call at a time) and let go after,
-/// a renderer with the scene uploaded (rendererFor: kept from the previous
+/// The scaffolding of every drawing call: the frame checked (checkFrame;
+/// GL's size limits once the context is there), the GIL let go, the
+/// context taken on this thread (one call at a time) and let go after, a
+/// renderer with the scene uploaded (rendererFor: kept from the previous
 /// call with the same scene), `use` run with it and the scene at `time`;
 /// the library's errors as ValueError (a size past the GPU's limit: the
-/// caller's) or RuntimeError (GL's).
+/// caller's) or RuntimeError (GL's), named as pythonNames says.
 template <class Use>
 void drawn(const PyScene& s, int width, int height, double time, const Use& use) {
-    if (width < 1 || height < 1)
-        throw py::value_error("width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
+    checkFrame(width, height, time);
     std::string failure;
+    bool input = false;
     {
         py::gil_scoped_release unlocked;
         std::lock_guard hold(glLock());
         const Released release;
         Context& context = contextLocked();
         try {
-            const Scene at = sceneAtTime(*s.scene, time);
-            use(rendererFor(context, s.scene), at);
+            checkSize(width, height, context.info());
         } catch (const Error& e) {
             failure = e.what();
-            forgetRenderer();
+            input = true;
         }
+        if (!input) try {
+                const Scene at = sceneAtTime(*s.scene, time);
+                use(rendererFor(context, s.scene), at);
+            } catch (const Error& e) {
+                failure = e.what();
+                forgetRenderer();
+            }
     }
-    if (failure.rfind("render size", 0) == 0) throw py::value_error(failure);
-    if (!failure.empty()) throw std::runtime_error(failure);
+    if (input) throw py::value_error(pythonNames(failure, s.overrides));
+    if (!failure.empty()) throw std::runtime_error(pythonNames(failure, s.overrides));
 }
 
 py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double time);

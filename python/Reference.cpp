@@ -10,7 +10,7 @@ namespace shadowlab::python {
 namespace {
 
 CompareOptions compareOptions(int width, int height, int softSamples, double time) {
-    if (softSamples < 1) throw py::value_error("soft_samples must be at least 1, got " + std::to_string(softSamples));
+    checkSoftSamples(softSamples, width, height);
     CompareOptions options;
     options.width = width;
     options.height = height;

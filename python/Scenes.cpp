@@ -6,22 +6,12 @@
 
 namespace shadowlab::python {
 
-std::vector<std::string> overrideLines(const py::dict& overrides) {
-    const py::object dumps = py::module_::import("json").attr("dumps");
-    std::vector<std::string> lines;
-    for (const auto& [key, value] : overrides) {
-        if (!py::isinstance<py::str>(key)) throw py::value_error("overrides: keys are scene paths as strings, e.g. \"lights[0].shadow.map.size\"");
-        lines.push_back(key.cast<std::string>() + "=" + dumps(value).cast<std::string>());
-    }
-    return lines;
-}
-
 PyScene load(const std::string& path, std::vector<std::string> lines) {
     try {
         Scene s = path.empty() ? defaultScene(lines) : loadSceneFile(path, lines);
         return {std::make_shared<const Scene>(std::move(s)), path, std::move(lines), std::nullopt, {}};
     } catch (const Error& e) {
-        raiseInput(e);
+        raiseInput(e, lines);
     }
 }
 
@@ -30,7 +20,7 @@ PyScene loadJson(const std::string& text, const std::string& baseDir, std::vecto
         Scene s = parseScene(text, "<json>", baseDir, lines);
         return {std::make_shared<const Scene>(std::move(s)), "", std::move(lines), text, baseDir};
     } catch (const Error& e) {
-        raiseInput(e);
+        raiseInput(e, lines);
     }
 }
 
@@ -82,19 +72,30 @@ void bindScenes(py::module_& m) {
             return out;
         })
         .def("with_overrides", [](const PyScene& s, const py::dict& overrides) {
+            // A key the scene was loaded with takes its new value (its earlier line goes).
             std::vector<std::string> lines = s.overrides;
-            for (std::string& l : overrideLines(overrides)) lines.push_back(std::move(l));
+            for (std::string& l : overrideLines(overrides)) {
+                const std::string key = l.substr(0, l.find('='));
+                std::erase_if(lines, [&](const std::string& old) { return overridePathsEqual(old.substr(0, old.find('=')), key); });
+                lines.push_back(std::move(l));
+            }
             return reload(s, std::move(lines));
-        }, py::arg("overrides"), "A new scene: this one's file and overrides, then these (the same paths as --set)")
+        }, py::arg("overrides"), "A new scene: this one's file and overrides, with these set (a key it had takes the new value; the same paths as --set)")
         .def("__repr__", [](const PyScene& s) { return "<shadowlab.Scene '" + s.scene->name + "', " + std::to_string(s.scene->lights.size()) + " lights>"; });
 
-    m.def("load_scene", [](const std::string& path, const py::dict& overrides) {
-        if (path.empty()) throw py::value_error("load_scene: path is empty (default_scene() gives the built-in scene)");
-        return load(path, overrideLines(overrides));
+    m.def("load_scene", [](const py::object& path, const py::dict& overrides) {
+        return load(pathArgument(path, "path"), overrideLines(overrides));
     }, py::arg("path"), py::arg("overrides") = py::dict(),
-          "A scene file (JSON) with overrides {path: value} as --set takes them, e.g. {\"lights[0].shadow.map.size\": 1024}");
-    m.def("load_scene_json", [](const std::string& text, const std::string& baseDir, const py::dict& overrides) {
-        return loadJson(text, baseDir, overrideLines(overrides));
+          "A scene file (JSON; a str or os.PathLike) with overrides {path: value} as --set takes them, e.g. {\"lights[0].shadow.map.size\": 1024}");
+    m.def("load_scene_json", [](const py::object& text, const py::object& baseDir, const py::dict& overrides) {
+        if (!py::isinstance<py::str>(text)) throw py::value_error("text: expected the scene's JSON as a str");
+        std::string json;
+        try {
+            json = text.cast<std::string>();
+        } catch (const std::exception&) {
+            throw py::value_error("text: not valid UTF-8 text");
+        }
+        return loadJson(json, pathArgument(baseDir, "base_dir"), overrideLines(overrides));
     }, py::arg("text"), py::arg("base_dir") = ".", py::arg("overrides") = py::dict(),
           "A scene from JSON text (errors name it \"<json>\"), its relative paths (meshes, textures) from base_dir");
     m.def("default_scene", [](const py::dict& overrides) { return load("", overrideLines(overrides)); }, py::arg("overrides") = py::dict(),

@@ -326,6 +326,18 @@ int runTechniques(bool markdown) {
     return 0;
 }
 
+// Two --set of one path: the later would replace the earlier unchecked, so
+// a bad earlier value would pass without a word; refused, as bench refuses
+// a --vary of a path a --set sets.
+void requireDistinctSets(const std::vector<std::string>& overrides) {
+    for (std::size_t i = 0; i < overrides.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j) {
+            const std::string a = overrides[j].substr(0, overrides[j].find('=')), b = overrides[i].substr(0, overrides[i].find('='));
+            if (overridePathsEqual(a, b))
+                throw Error("--set " + overrides[i] + ": " + b + " is already set by --set " + overrides[j] + " (give each path once)");
+        }
+}
+
 // An empty path given on purpose is an error, not "use the default".
 void requireNonEmpty(const CLI::App* command, const char* option, const std::string& value, const std::string& what) {
     if (command->get_option(option)->count() > 0 && value.empty()) throw Error(what + ": empty path");
@@ -508,6 +520,10 @@ int main(int argc, char** argv) {
         requireNonEmpty(compare, "scene", compareArgs.scene, "compare: scene");
         requireNonEmpty(compare, "--output", compareArgs.output, "-o");
         requireNonEmpty(bench, "--output", benchOutput, "-o");
+        for (const std::vector<std::string>* sets : {&renderArgs.overrides, &compareArgs.overrides, &benchArgs.overrides}) requireDistinctSets(*sets);
+#if SHADOWLAB_VIEWER
+        requireDistinctSets(viewArgs.overrides);
+#endif
         if (*render || *compare || *bench) tool::installInterruptHandlers();
         if (*render) return runRender(renderArgs);
         if (*compare) return runCompare(compareArgs);

@@ -17,7 +17,8 @@ namespace {
 void checkArgs(const BenchOptions& args) {
     if (args.width < 1 || args.height < 1)
         throw Error("--width, --height: expected at least 1 pixel, got " + std::to_string(args.width) + "x" + std::to_string(args.height));
-    if (args.softSamples < 1) throw Error("--samples " + std::to_string(args.softSamples) + ": expected at least 1");
+    if (args.softSamples < 1 || args.softSamples > kMaxSoftSamples)
+        throw Error("--samples " + std::to_string(args.softSamples) + ": expected 1.." + std::to_string(kMaxSoftSamples));
     if (args.frames < 1) throw Error("--frames " + std::to_string(args.frames) + ": expected at least 1");
     if (args.warmup < 0) throw Error("--warmup " + std::to_string(args.warmup) + ": expected 0 or more");
     if (!std::isfinite(args.timeSeconds)) throw Error("--time: expected a finite number of seconds");

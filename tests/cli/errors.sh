@@ -65,6 +65,9 @@ expect_error missing-scene "nope.json: file not found" render nope.json -o out.p
 expect_error set-bad-path "--set lights[3].intensity=2: index 3 out of range" render -o out.png --set 'lights[3].intensity=2'
 expect_error set-bad-value "--set lights[0].intensity=bright: lights[0].intensity: expected a number, got a string" render -o out.png --set 'lights[0].intensity=bright'
 expect_error set-unknown-key "--set camera.fov=30: camera.fov: unknown key" render -o out.png --set camera.fov=30
+# Two --set of one path: the earlier (here a bad) value would be replaced unchecked.
+expect_error set-twice "--set lights[0].intensity=2: lights[0].intensity is already set by --set lights[0].intensity=-1 (give each path once)" render -o out.png --set 'lights[0].intensity=-1' --set 'lights[0].intensity=2'
+expect_error set-twice-written-apart "--set lights[00].intensity=2: lights[00].intensity is already set by --set lights[0].intensity=1" bench -o b --set 'lights[0].intensity=1' --set 'lights[00].intensity=2'
 expect_error set-no-value "--set camera: expected key=value" render -o out.png --set camera
 expect_error map-past-budget "lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB, more than the budget of 1 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set 'lights[0].shadow.map.format="rgba8"'
 expect_error map-size-range "--set lights[0].shadow.map.size=16385: lights[0].shadow.map.size: expected an integer in 16..16384, got 16385" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16385

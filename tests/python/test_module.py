@@ -56,7 +56,7 @@ def test_bad_input_is_a_value_error_naming_the_key():
         shadowlab.load_scene(os.path.join(SOURCE, "scenes", "no-such-scene.json"))
     with pytest.raises(ValueError, match="width and height must be at least 1"):
         shadowlab.render(shadowlab.default_scene(), 0, 10)
-    with pytest.raises(ValueError, match=r"render size 100000x10: expected 1\.\.\d+ pixels per side"):
+    with pytest.raises(ValueError, match=r"^width 100000: exceeds this GPU's limit of \d+ pixels$"):
         shadowlab.render(shadowlab.default_scene(), 100000, 10)
 
 
@@ -153,7 +153,7 @@ def test_reference_is_compares_visibility():
         assert 0.0 < truth.mean() < 1.0  # lit and shadowed pixels both
     with pytest.raises(ValueError, match=r"light 9: the scene has \d+ light"):
         shadowlab.reference(scene, 9, 16, 16)
-    with pytest.raises(ValueError, match="soft_samples must be at least 1, got 0"):
+    with pytest.raises(ValueError, match=r"^soft_samples 0: expected 1\.\.65536$"):
         shadowlab.reference(scene, 0, 16, 16, soft_samples=0)
 
 
@@ -208,10 +208,10 @@ def test_bench_errors_name_the_argument(tmp_path):
         (dict(frames=0), ValueError, r"^frames 0: expected at least 1$"),
         (dict(flips=True, frames=1), ValueError, r"^flips: needs at least 2 timed frames to compare \(got frames 1\)$"),
         (dict(fps=0.0), ValueError, r"^fps: "),
-        (dict(soft_samples=0), ValueError, r"^soft_samples 0: expected at least 1$"),
-        (dict(width=0), ValueError, r"^width, height: expected at least 1 pixel, got 0x54$"),
+        (dict(soft_samples=0), ValueError, r"^soft_samples 0: expected 1\.\.65536$"),
+        (dict(width=0), ValueError, r"^width and height must be at least 1 pixel, got 0x54$"),
         (dict(scenes=[os.path.join(SOURCE, "scenes", "no-such.json")]), ValueError, r"no-such\.json: file not found"),
-        (dict(scenes=[3]), ValueError, r"^scenes: expected file paths"),
+        (dict(scenes=[3]), ValueError, r"^scenes: expected a path \(str or os\.PathLike\), got int$"),
         (dict(scenes=[shadowlab.default_scene()]), ValueError, r"^scenes: bench takes scene files"),
         (dict(vary=[(BENCH_VARY,)]), ValueError, r"^vary: expected"),
     ]

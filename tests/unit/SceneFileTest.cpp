@@ -105,9 +105,10 @@ TEST(SceneFile, OverridesSetValuesByJsonPath) {
 }
 
 TEST(SceneFile, OfTwoOverridesOfOnePathTheLaterWins) {
-    // Documented (docs/scene-format.md): flags apply in order, the earlier
-    // value is replaced before the scene is checked, so even a bad one is
-    // not reported; with_overrides in the Python module relies on it.
+    // The library applies overrides in order, the earlier value replaced
+    // before the scene is checked (the CLI refuses two --set of one path,
+    // cli/errors.sh set-twice; the Python module's with_overrides replaces
+    // a key's earlier line).
     EXPECT_FLOAT_EQ(parseScene(kMinimal, "scene.json", ".", {"lights[1].intensity=bright", "lights[1].intensity=2.5"}).lights[1].intensity, 2.5f);
     EXPECT_FLOAT_EQ(parseScene(kMinimal, "scene.json", ".", {"lights[1].intensity=3", "lights[1].intensity=2.5"}).lights[1].intensity, 2.5f);
 }

@@ -1,0 +1,91 @@
+"""Bad input to the Python module: a ValueError whose one-line message names
+the argument or override key, before anything is drawn or written; never a
+crash, a hang or another exception. The cases come from a hostile run over
+the module (issue 24's battery), one per cause it found."""
+import math
+import os
+import pathlib
+
+import pytest
+
+import shadowlab as sl
+
+SOURCE = os.path.join(os.path.dirname(__file__), "..", "..")
+SCENE = os.path.join(SOURCE, "scenes", "torus-floating.json")
+
+
+def D(overrides=None):
+    return sl.default_scene(overrides or {})
+
+
+CASES = [
+    # Sizes: at least a pixel, within the GPU's limits and the host's memory; a finite time.
+    ("render-size-0", lambda: sl.render(D(), 0, 10), r"^width and height must be at least 1 pixel, got 0x10$"),
+    ("render-past-gpu", lambda: sl.render(D(), 100000, 24), r"^width 100000: exceeds this GPU's limit of \d+ pixels$"),
+    ("render-past-memory", lambda: sl.render(D(), 1 << 20, 1 << 20), r"^width 1048576 height 1048576: the frame needs about .* more than the budget"),
+    ("visibility-past-gpu", lambda: sl.visibility(D(), 0, 24, 100000), r"^height 100000: exceeds this GPU's limit"),
+    ("render-time-nan", lambda: sl.render(D(), 32, 24, time=math.nan), r"^time nan: expected a finite number of seconds$"),
+    ("compare-time-inf", lambda: sl.compare(D(), 32, 24, time=math.inf), r"^time inf: expected a finite number of seconds$"),
+    ("debug-time-minus-inf", lambda: sl.debug_images(D(), 32, 24, time=-math.inf), r"^time -inf: expected a finite"),
+    # soft_samples: the CLI's range, and the reference's rays within 2^31.
+    ("reference-samples-huge", lambda: sl.reference(sl.load_scene(SCENE), 0, 1, 1, soft_samples=2**31 - 1), r"^soft_samples 2147483647: expected 1\.\.65536$"),
+    ("compare-rays-past-limit", lambda: sl.compare(D(), 320, 180, soft_samples=65536),
+     r"^soft_samples 65536 at 320x180: .* rays for each soft light's reference, more than the limit of 2\^31 \(lower soft_samples, width or height\)$"),
+    ("bench-samples-huge", lambda: sl.bench(SCENE, 32, 24, soft_samples=10**6), r"^soft_samples 1000000: expected 1\.\.65536$"),
+    ("bench-past-gpu", lambda: sl.bench(None, 100000, 24, frames=1, warmup=0), r"^width 100000: exceeds this GPU's limit"),
+    # Overrides: keys are paths without '=' or NUL, values JSON; messages name the key, not a JSON value's colons.
+    ("override-object-value", lambda: D({"lights[0].shadow.map": {"size": 7}}),
+     r"^overrides\[lights\[0\]\.shadow\.map\]: lights\[0\]\.shadow\.map\.size: expected an integer in 16\.\.16384, got 7$"),
+    ("override-list-value", lambda: D({"lights[0].color": [1, {"a": 2}, 3]}), r"^overrides\[lights\[0\]\.color\]: lights\[0\]\.color\[1\]: expected a number"),
+    ("override-key-with-equals", lambda: D({"lights[0].intensity=5": 1}), r"^overrides\[lights\[0\]\.intensity=5\]: a key may not contain '=' or NUL$"),
+    ("override-key-not-str", lambda: D({3: 1}), r"^overrides: keys are scene paths as strings"),
+    ("override-key-surrogate", lambda: D({"lights[0].\udc80": 1}), r"^overrides key: not valid UTF-8 text$"),
+    ("override-nan", lambda: D({"lights[0].intensity": math.nan}), r"^overrides\[lights\[0\]\.intensity\]: not a JSON value"),
+    ("override-bytes", lambda: D({"lights[0].intensity": b"x"}), r"^overrides\[lights\[0\]\.intensity\]: not a JSON value \(TypeError"),
+    ("override-deep", lambda: D({"lights[0].intensity": __import__("functools").reduce(lambda a, _: [a], range(100000), 1)}),
+     r"^overrides\[lights\[0\]\.intensity\]: not a JSON value"),
+    # Paths: str or os.PathLike, not empty, no NUL; messages stay one line.
+    ("load-nul", lambda: sl.load_scene(SCENE + "\x00junk"), r"^path .*torus-floating\.json\\x00junk: a path may not contain NUL$"),
+    ("load-newline", lambda: sl.load_scene("no\nsuch\nscene.json"), r"^no\\nsuch\\nscene\.json: file not found$"),
+    ("load-int", lambda: sl.load_scene(3), r"^path: expected a path \(str or os\.PathLike\), got int$"),
+    ("load-empty", lambda: sl.load_scene(""), r"^path: empty path$"),
+    ("json-not-str", lambda: sl.load_scene_json(b"{}"), r"^text: expected the scene's JSON as a str$"),
+    ("json-base-dir-nul", lambda: sl.load_scene_json("{}", base_dir="a\x00b"), r"^base_dir a\\x00b: a path may not contain NUL$"),
+    # bench's scenes, vary and out.
+    ("bench-scene-empty", lambda: sl.bench("", 32, 24), r"^scenes: empty path$"),
+    ("bench-scenes-empty-list", lambda: sl.bench([], 32, 24), r"^scenes: an empty list"),
+    ("bench-scene-int", lambda: sl.bench(3, 32, 24), r"^scenes: expected a path \(str or os\.PathLike\), got int$"),
+    ("bench-scene-nul", lambda: sl.bench(SCENE + "\x00", 32, 24), r"^scenes .*: a path may not contain NUL$"),
+    ("bench-vary-not-list", lambda: sl.bench(SCENE, 32, 24, vary={"lights[0].intensity": 512}), r"^vary\[lights\[0\]\.intensity\]: expected a list of values, got int$"),
+    ("bench-vary-set", lambda: sl.bench(SCENE, 32, 24, vary={"lights[0].intensity": {1, 2}}), r"^vary\[lights\[0\]\.intensity\]: expected a list of values, got set$"),
+    ("bench-vary-not-json", lambda: sl.bench(SCENE, 32, 24, vary={"lights[0].intensity": [1, b"x"]}), r"^vary\[lights\[0\]\.intensity\]: not a JSON value"),
+    ("bench-vary-int", lambda: sl.bench(SCENE, 32, 24, vary=3), r"^vary: expected \{key: \[values\]\}"),
+    ("bench-vary-and-override", lambda: sl.bench(SCENE, 32, 24, overrides={"lights[0].intensity": 2}, vary={"lights[0].intensity": [1, 3]}),
+     r"^vary\[lights\[0\]\.intensity\]=1,3: lights\[0\]\.intensity is also set by overrides\[lights\[0\]\.intensity\] \(a varied key takes its values from vary alone\)$"),
+    ("bench-out-empty", lambda: sl.bench(SCENE, 32, 24, out=""), r"^out: empty path$"),
+    ("bench-out-int", lambda: sl.bench(SCENE, 32, 24, out=3), r"^out: expected a path"),
+    ("bench-out-file", lambda: sl.bench(SCENE, 32, 24, out=SCENE), r"^out .*torus-floating\.json: exists and is not a directory$"),
+    ("bench-out-no-parent", lambda: sl.bench(SCENE, 32, 24, out="no/such/b"), r"^out no/such/b: directory no/such does not exist$"),
+]
+
+
+@pytest.mark.parametrize("name,call,message", CASES, ids=[c[0] for c in CASES])
+def test_bad_input(name, call, message, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # a bench that wrongly ran would write here
+    with pytest.raises(ValueError, match=message) as raised:
+        call()
+    assert "\n" not in str(raised.value)
+    assert os.listdir(tmp_path) == [], name  # nothing written
+
+
+def test_paths_may_be_pathlike_and_calls_work_after_errors():
+    scene = sl.load_scene(pathlib.Path(SCENE))
+    with pytest.raises(ValueError):
+        sl.render(scene, 0, 0)
+    assert sl.render(scene, 32, 24).shape == (24, 32, 4)
+
+
+def test_with_overrides_replaces_a_key():
+    scene = sl.load_scene(SCENE, {"lights[0].intensity": 2})
+    assert scene.with_overrides({"lights[0].intensity": 3}).lights[0]["intensity"] == 3
+    assert scene.with_overrides({"lights[00].intensity": 4}).lights[0]["intensity"] == 4  # the same path written another way
