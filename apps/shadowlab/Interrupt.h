@@ -15,9 +15,8 @@ class ComparisonJob;
 
 namespace shadowlab::tool {
 
-/// Installs the interrupt handlers (render, compare and bench: the runs
-/// that write files as they go; the viewer keeps the default, which ends
-/// it at once).
+/// Installs the interrupt handlers (render, compare, bench and the
+/// viewer, whose window loop checks once a frame).
 void installInterruptHandlers();
 /// A file past the size limit fails its write (every command).
 void ignoreFileSizeSignal();

@@ -8,6 +8,7 @@
 // Here: the window and the loop that draws it, one step of ViewerSession
 // (ViewerSession.h) after another, and the scene read again or saved with
 // the settings made.
+#include "Interrupt.h"
 #include "ViewerSession.h"
 
 #include <shadowlab/Limits.h>
@@ -157,6 +158,7 @@ void ViewerSession::apply(const std::string& key, const std::string& value) {
 int ViewerSession::run() {
     lastFrame = std::chrono::steady_clock::now();
     while (!glfwWindowShouldClose(window) && !quit) {
+        tool::throwIfInterrupted();  // SIGINT, SIGTERM ...: one line and a non-zero exit, the script's images not kept
         glfwPollEvents();
         int width = 0, height = 0;
         glfwGetFramebufferSize(window, &width, &height);

@@ -525,6 +525,9 @@ int main(int argc, char** argv) {
         requireDistinctSets(viewArgs.overrides);
 #endif
         if (*render || *compare || *bench) tool::installInterruptHandlers();
+#if SHADOWLAB_VIEWER
+        if (*view) tool::installInterruptHandlers();  // the window loop stops at its next frame, as an error
+#endif
         if (*render) return runRender(renderArgs);
         if (*compare) return runCompare(compareArgs);
         if (*bench) {

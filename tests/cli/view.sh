@@ -75,15 +75,19 @@ printf '{"lights":[{"type":"directional","shadow":{"technique":"map","map":{"siz
 printf 'set lights[0].shadow.map.cascades=8\nwait 2\nquit\n' > budget.txt
 if "$tool" view fits.json --width 320 --height 180 --script budget.txt >/dev/null 2>err.txt; then echo "a script's set past the budget accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "budget.txt:1: set lights\[0\].shadow.map.cascades=8: lights\[0\].shadow.map: the shadow maps" err.txt || { echo "the script's set not named: $(cat err.txt)"; exit 1; }
-# SIGTERM ends the viewer at once (it keeps the default action: it writes nothing as it goes).
-printf 'wait 100000\n' > long.txt
-timeout 30 "$tool" view --width 320 --height 180 --script long.txt >/dev/null 2>&1 &
-viewer=$!
-sleep 2
-pkill -TERM -P "$viewer" shadowlab 2>/dev/null || pkill -TERM -f "view --width 320 --height 180 --script long.txt"
-wait "$viewer"
-code=$?
-(( code != 124 )) || { echo "the viewer ignored SIGTERM"; exit 1; }
+# SIGTERM and SIGINT stop the viewer at its next frame: one line naming
+# the signal, exit 1, and the script's screenshot taken before it not kept.
+printf 'screenshot early.png\nwait 100000\n' > long.txt
+for sig in TERM INT; do
+  timeout 30 "$tool" view --width 320 --height 180 --script long.txt >/dev/null 2>err.txt &
+  viewer=$!
+  for _ in $(seq 300); do [[ -n "$(pgrep -P "$viewer" shadowlab)" ]] && [[ -n "$(compgen -G 'early.png.pending-*')" ]] && break; sleep 0.1; done
+  pkill -"$sig" -P "$viewer" shadowlab
+  wait "$viewer"
+  code=$?
+  (( code == 1 )) && [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "interrupted (SIG$sig)" err.txt || { echo "the viewer on SIG$sig: exit $code, $(cat err.txt)"; exit 1; }
+  [[ ! -e early.png && -z "$(compgen -G 'early.png.pending-*')" ]] || { echo "the viewer on SIG$sig left its screenshot"; exit 1; }
+done
 # A bad script is a one-line error before any window.
 printf 'jump 3\n' > bad.txt
 if "$tool" view --script bad.txt 2>err.txt; then echo "bad script accepted"; exit 1; fi
