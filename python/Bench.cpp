@@ -26,7 +26,14 @@ std::string scenePath(const py::handle& scene) {
                                   "(give the file, and the overrides as bench's overrides=)");
         return s.path;
     }
-    return pathArgument(scene, "scenes");
+    // A file that is not there, named as the argument it came in (as the CLI's bench checks them first).
+    const std::string path = pathArgument(scene, "scenes");
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) throw py::value_error("scenes " + text::escapeControl(text::clipMiddle(path, 200)) + ": file not found");
+    if (!fs::is_regular_file(status))
+        throw py::value_error("scenes " + text::escapeControl(text::clipMiddle(path, 200)) + ": not a regular file (expected a scene file)");
+    return path;
 }
 
 // `scenes`: None (the built-in default scene), one scene or a list of them.
