@@ -95,15 +95,10 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
         const Released release;
         Context& context = contextLocked();
         try {
-            // Written into OUT.partial-PID and moved into place at the end: a failure leaves nothing.
             checkSize(width, height, context.info());  // GL's limits, before the first run
+            // Written into OUT.partial-PID and moved into place at the end: a failure leaves nothing.
             std::optional<StagingDirectory> staging;
-            if (!outDir.empty()) {
-                staging.emplace(outDir, "out");
-                std::error_code ec;
-                if (!fs::create_directories(staging->path() / "images", ec) && ec)
-                    throw Error("out " + outDir + ": cannot create its images directory (" + ec.message() + ")");
-            }
+            if (!outDir.empty()) staging.emplace(outDir, "out");
             BenchHooks hooks;
             // Ctrl-C (KeyboardInterrupt) stops the bench between frames.
             hooks.checkpoint = [&] {
@@ -116,18 +111,8 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
             hooks.images = [&](std::size_t, const std::string& stem, const Comparison& c) {
                 RunImages images{c.technique, c.reference, {}};
                 for (const LightComparison& l : c.lights) images.errors.push_back(l.errorImage);
-                BenchImageNames names;
-                if (staging) {  // as the CLI names them
-                    names = {"images/" + stem + "-technique.png", "images/" + stem + "-reference.png", {}};
-                    writePng(staging->path() / names.technique, c.technique);
-                    writePng(staging->path() / names.reference, c.reference);
-                    for (std::size_t l = 0; l < c.lights.size(); ++l) {
-                        names.errors.push_back("images/" + stem + "-error-" + std::to_string(l) + ".png");
-                        writePng(staging->path() / names.errors.back(), c.lights[l].errorImage);
-                    }
-                }
                 kept.push_back(std::move(images));
-                return names;
+                return staging ? writeBenchImages(staging->path(), stem, c) : BenchImageNames{};  // files as the CLI names them
             };
             results = runBench(context, options, hooks);
             if (staging) {

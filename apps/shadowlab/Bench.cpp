@@ -45,26 +45,13 @@ private:
 } // namespace
 
 void runBenchInto(Context& context, const BenchArgs& args) {
-    const fs::path images = args.output / "images";
-    if (std::error_code ec; !fs::create_directories(images, ec) && ec)
-        throw Error(images.string() + ": cannot create directory (" + ec.message() + ")");
     Progress progress;
     BenchHooks hooks;
     hooks.progress = [&](std::size_t done, std::size_t total, const std::string& label) { progress.step(done, total, label); };
     hooks.checkpoint = throwIfInterrupted;
     hooks.trace = traceInterruptibly;
     hooks.note = [](const std::string& note) { std::fprintf(stderr, "shadowlab: note: %s\n", note.c_str()); };
-    // Each run's images as images/<stem>-technique.png, -reference.png and -error-<light>.png.
-    hooks.images = [&](std::size_t, const std::string& stem, const Comparison& c) {
-        BenchImageNames names{"images/" + stem + "-technique.png", "images/" + stem + "-reference.png", {}};
-        writePng(args.output / names.technique, c.technique);
-        writePng(args.output / names.reference, c.reference);
-        for (std::size_t l = 0; l < c.lights.size(); ++l) {
-            names.errors.push_back("images/" + stem + "-error-" + std::to_string(l) + ".png");
-            writePng(args.output / names.errors.back(), c.lights[l].errorImage);
-        }
-        return names;
-    };
+    hooks.images = [&](std::size_t, const std::string& stem, const Comparison& c) { return writeBenchImages(args.output, stem, c); };
     const std::string results = runBench(context, args, hooks);
     throwIfInterrupted();
     writeFileAtomically(args.output / "results.json", results);

@@ -87,6 +87,13 @@ struct BenchHooks {
 /// later throws Error naming the run ("bench run 2/4 (scene, --vary k=v): ...").
 SHADOWLAB_API std::string runBench(Context& context, const BenchOptions& options, const BenchHooks& hooks = {});
 
+/// Writes a run's images where `shadowlab bench -o DIR` puts them:
+/// DIR/images/STEM-technique.png, -reference.png and -error-LIGHT.png
+/// (`directory`/images made if missing); returns their names relative to
+/// `directory`, for BenchHooks::images to return. Throws Error naming a
+/// file that cannot be written.
+SHADOWLAB_API BenchImageNames writeBenchImages(const std::filesystem::path& directory, const std::string& stem, const Comparison& comparison);
+
 /// Writes report.html into `directory` from results.json's content, with
 /// the images the rows name (relative to `directory`) embedded: a plot of
 /// error against frame time, the frame against lightGrid.count where

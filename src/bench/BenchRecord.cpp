@@ -3,6 +3,9 @@
 // images get from BenchHooks::images.
 #include "BenchParts.h"
 
+#include <shadowlab/Error.h>
+#include <shadowlab/FileWrite.h>
+
 #include <algorithm>
 #include <cctype>
 
@@ -139,3 +142,21 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
 }
 
 } // namespace shadowlab::bench
+
+namespace shadowlab {
+
+BenchImageNames writeBenchImages(const std::filesystem::path& directory, const std::string& stem, const Comparison& c) {
+    std::error_code ec;
+    if (!std::filesystem::create_directories(directory / "images", ec) && ec)
+        throw Error((directory / "images").string() + ": cannot create directory (" + ec.message() + ")");
+    BenchImageNames names{"images/" + stem + "-technique.png", "images/" + stem + "-reference.png", {}};
+    writePng(directory / names.technique, c.technique);
+    writePng(directory / names.reference, c.reference);
+    for (std::size_t l = 0; l < c.lights.size(); ++l) {
+        names.errors.push_back("images/" + stem + "-error-" + std::to_string(l) + ".png");
+        writePng(directory / names.errors.back(), c.lights[l].errorImage);
+    }
+    return names;
+}
+
+} // namespace shadowlab
