@@ -88,7 +88,7 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
 
     std::vector<RunImages> kept;
     std::string results, failure;
-    bool interrupted = false, input = false;
+    bool interrupted = false, input = false, ran = false;
     {
         py::gil_scoped_release unlocked;
         std::lock_guard hold(glLock());
@@ -115,6 +115,7 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
                 return staging ? writeBenchImages(staging->path(), stem, c) : BenchImageNames{};  // files as the CLI names them
             };
             results = runBench(context, options, hooks);
+            ran = true;  // what fails after this is writing the files: the system's, not the arguments'
             if (staging) {
                 writeFileAtomically(staging->path() / "results.json", results);
                 writeBenchReport(results, staging->path());
@@ -122,7 +123,8 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
             }
         } catch (const Error& e) {
             failure = e.what();
-            input = failure.rfind("bench run ", 0) != 0;  // before the first run: the arguments', a scene's or the size's
+            // Before the first run: the arguments', a scene's or the size's; a run's failure names the run.
+            input = !ran && failure.rfind("bench run ", 0) != 0;
         }
     }
     if (interrupted) {
@@ -138,13 +140,13 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
     for (std::size_t r = 0; r < kept.size() && r < rows.size(); ++r) {
         py::dict row = rows[r];
         py::dict images;
-        images["technique"] = rgba(kept[r].technique);
-        images["reference"] = rgba(kept[r].reference);
+        images["technique"] = rgba(std::move(kept[r].technique));
+        images["reference"] = rgba(std::move(kept[r].reference));
         row["images"] = images;
         py::list lights = row["lights"];
         for (std::size_t l = 0; l < kept[r].errors.size() && l < lights.size(); ++l) {
             py::dict light = lights[l], lightImages;
-            lightImages["error"] = rgba(kept[r].errors[l]);
+            lightImages["error"] = rgba(std::move(kept[r].errors[l]));
             light["images"] = lightImages;
         }
     }

@@ -57,7 +57,7 @@ py::dict compare(const PyScene& s, int width, int height, int softSamples, doubl
     py::list lights = out["lights"];
     for (std::size_t i = 0; i < c.lights.size(); ++i) {
         py::dict images;
-        images["error"] = rgba(c.lights[i].errorImage);
+        images["error"] = rgba(std::move(c.lights[i].errorImage));
         images["visibility"] = unit(c.lights[i].referenceVisibility);
         images["techniqueVisibility"] = unit(c.lights[i].techniqueVisibility);
         images["reach"] = mask(c.lights[i].reach);
@@ -65,8 +65,8 @@ py::dict compare(const PyScene& s, int width, int height, int softSamples, doubl
         record["images"] = images;
     }
     py::dict images;
-    images["technique"] = rgba(c.technique);
-    images["reference"] = rgba(c.reference);
+    images["technique"] = rgba(std::move(c.technique));
+    images["reference"] = rgba(std::move(c.reference));
     out["images"] = images;
     return out;
 }
