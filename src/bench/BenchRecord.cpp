@@ -47,14 +47,20 @@ void addPassNumbers(json& record, const TimedFrames& timed, std::size_t l) {
     const auto& passTimes = timed.passTimes;
     const auto& counters = timed.counters;
     const std::string pass = "shadow[" + std::to_string(l) + "]";
+    auto medianOf = [&](const std::string& name) { return passTimes.count(name) ? median(passTimes.at(name)) : 0.0; };
     if (passTimes.count(pass)) {
+        // The floors are drawn inside the pass's scope: the pass is the rest.
         const double whole = median(passTimes.at(pass));
-        const double floor = passTimes.count(pass + ".floor") ? median(passTimes.at(pass + ".floor")) : 0.0;
-        record["shadowPassMs"] = whole - floor;
+        const double floor = medianOf(pass + ".floor");
+        const double lookupFloors = medianOf(pass + ".lookupFloor");
+        record["shadowPassMs"] = whole - floor - lookupFloors;
         if (floor > 0.0) {
             record["shadowFloorMs"] = floor;
-            record["shadowPassOverFloor"] = (whole - floor) / floor;
+            record["shadowPassOverFloor"] = (whole - floor - lookupFloors) / floor;
         }
+        // The lookups' floor (2D maps): one nearest fetch a pixel, less the same draw without it.
+        if (passTimes.count(pass + ".lookupFloor.fetch") && passTimes.count(pass + ".lookupFloor.bare"))
+            record["lookupFloorMs"] = medianOf(pass + ".lookupFloor.fetch") - medianOf(pass + ".lookupFloor.bare");
     }
     if (counters.count(pass + ".triangles")) record["shadowTriangles"] = median(counters.at(pass + ".triangles"));
     // The lookup cost: the pass that lights with this light (the base pass

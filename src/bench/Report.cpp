@@ -258,7 +258,7 @@ figure { display: inline-block; margin: 4px; } figure img { width: 320px; displa
 figcaption { font-size: 12px; color: #555; }
 .legend span { display: inline-block; padding: 0 6px; margin-right: 6px; color: #fff; }
 .cost { display: flex; height: 12px; width: 160px; background: #f4f4f4; } .cost span { display: block; height: 12px; }
-.c-floor { background: #4c72b0; } .c-pass { background: #9ab3dd; } .c-lookup { background: #dd8452; } .c-rest { background: #bbb; }
+.c-floor { background: #4c72b0; } .c-pass { background: #9ab3dd; } .c-lfloor { background: #a0522d; } .c-lookup { background: #dd8452; } .c-rest { background: #bbb; }
 </style></head><body>
 <h1>shadowlab bench</h1>
 )";
@@ -288,6 +288,8 @@ struct PassSums {
 PassSums passSums(const json& r) {
     PassSums sums;
     for (const auto& [name, st] : r["passMs"].items()) {
+        const bool floorScope = name.size() > 6 && (name.ends_with("].floor") || name.ends_with("].lookupFloor"));
+        if (name.rfind("shadow", 0) == 0 && floorScope) sums.shadowMs -= st["median"].get<double>();  // bench's floors, drawn inside the pass
         if (name.find('.') != std::string::npos) continue;  // nested scopes are inside their pass
         if (name.rfind("shadow", 0) == 0) sums.shadowMs += st["median"].get<double>();
         if (name == "base") sums.baseMs += st["median"].get<double>();
@@ -298,18 +300,22 @@ PassSums passSums(const json& r) {
 
 // Where light `l`'s share of row `r`'s frame goes, as a bar `scale` px per
 // ms: the shadow pass's floor (a bare depth draw of the same casters), the
-// pass above it, the lookups (its pass minus the same pass unshadowed), and
-// the rest of the frame. The passes are clocked apart from the frame
+// pass above it, the lookups (its pass minus the same pass unshadowed),
+// split at their floor (one nearest fetch a pixel) where bench measured
+// one, and the rest of the frame. The passes are clocked apart from the frame
 // (cpu-finish adds a glFinish around each), so the parts may not add up
 // to it: the rest is what is left, at least 0.
 std::string costBar(const json& r, const json& l, double scale) {
     const double frame = r["frameMs"]["median"].get<double>();
     const double pass = l.value("shadowPassMs", 0.0), floor = std::min(l.value("shadowFloorMs", 0.0), pass);
     const double lookup = std::max(l.value("lookupMs", 0.0), 0.0), rest = std::max(frame - pass - lookup, 0.0);
+    const double lookupFloor = std::clamp(l.value("lookupFloorMs", 0.0), 0.0, lookup);
     std::ostringstream s;
     s << "<div class=\"cost\" title=\"shadow pass floor " << fixed(floor, 1) << " ms, pass above its floor " << fixed(pass - floor, 1)
-      << " ms, lookups " << fixed(lookup, 1) << " ms, rest of the frame " << fixed(rest, 1) << " ms\">";
-    const std::pair<const char*, double> parts[] = {{"c-floor", floor}, {"c-pass", pass - floor}, {"c-lookup", lookup}, {"c-rest", rest}};
+      << " ms, lookup floor " << fixed(lookupFloor, 1) << " ms, lookups above their floor " << fixed(lookup - lookupFloor, 1) << " ms, rest of the frame "
+      << fixed(rest, 1) << " ms\">";
+    const std::pair<const char*, double> parts[] = {{"c-floor", floor},         {"c-pass", pass - floor},           {"c-lfloor", lookupFloor},
+                                                    {"c-lookup", lookup - lookupFloor}, {"c-rest", rest}};
     for (const auto& [cls, ms] : parts) s << "<span class=\"" << cls << "\" style=\"width:" << fixed(ms * scale, 1) << "px\"></span>";
     s << "</div>";
     return s.str();
@@ -329,6 +335,7 @@ void lightRow(std::ostream& h, const json& records, int index, const json& l, do
       << (r.contains("frameOverUnshadowed") ? fixed(r["frameOverUnshadowed"], 2) : std::string("&ndash;")) << "</td><td>"
       << fixed(shadowMs, 1) << "</td><td>" << (l.contains("shadowFloorMs") ? fixed(l["shadowFloorMs"], 1) : std::string("&ndash;")) << "</td><td>"
       << (l.contains("lookupMs") ? fixed(l["lookupMs"], 1) : std::string("&ndash;")) << "</td><td>"
+      << (l.contains("lookupFloorMs") ? fixed(l["lookupFloorMs"], 1) : std::string("&ndash;")) << "</td><td>"
       << (l.contains("shadowCounters") && l["shadowCounters"].contains("mapBytes") ? fixed(l["shadowCounters"]["mapBytes"].get<double>() / 1048576.0, 1)
                                                                                    : std::string("&ndash;"))
       << "</td><td>" << costBar(r, l, scale) << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
@@ -361,9 +368,9 @@ void resultsTable(std::ostream& h, const json& records, bool flips) {
     const double scale = slowest > 0.0 ? 160.0 / slowest : 0.0;  // the slowest frame fills the bar
     h << "<h2>Time and error</h2>\n<p class=\"legend\">Where the time goes (bar: the slowest frame is 160 px): "
          "<span class=\"c-floor\">shadow pass floor</span><span class=\"c-pass\">pass above its floor</span>"
-         "<span class=\"c-lookup\">lookups</span><span class=\"c-rest\">rest of the frame</span></p>\n"
+         "<span class=\"c-lfloor\">lookup floor</span><span class=\"c-lookup\">lookups above their floor</span><span class=\"c-rest\">rest of the frame</span></p>\n"
          "<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
-         "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>lookup ms</th><th>map MiB</th><th>where the time goes</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
+         "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>lookup ms</th><th>lookup floor ms</th><th>map MiB</th><th>where the time goes</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
          "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
          "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>penumbra &times; truth</th><th>texel footprint px (median / p95)</th><th>&times; hard map</th><th>front</th>"
       << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";

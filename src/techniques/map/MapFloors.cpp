@@ -10,6 +10,13 @@ void MapFloors::ensureTarget(const MapArray& g) {
     if (!target_ || size_ != g.size() || format_ != g.format()) {
         target_ = gl::Texture(GL_TEXTURE_2D);
         glTextureStorage2D(target_.id(), 1, depthFormat(g.format()), g.size(), g.size());
+        // As drawLookup reads it: nearest, no comparison, depth 1 (lit) outside.
+        glTextureParameteri(target_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(target_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTextureParameteri(target_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+        glTextureParameteri(target_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+        const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        glTextureParameterfv(target_.id(), GL_TEXTURE_BORDER_COLOR, white);
         fbo_ = gl::Framebuffer();
         glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, target_.id(), 0);
         glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
@@ -39,13 +46,49 @@ void MapFloors::clear(TechniqueHost& host, bool depthClamp) {
 }
 
 void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p) {
-    const auto scope = host.timeScope("floor");
-    const gl::Program& bare = bind(host, g);
-    for (const LightCamera& camera : p.cameras()) {
-        clear(host, !camera.perspective);
-        block.setLightClip(camera.clipFromWorld());
-        host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i, g.hasMoments()); });
+    {
+        const auto scope = host.timeScope("floor");
+        const gl::Program& bare = bind(host, g);
+        for (const LightCamera& camera : p.cameras()) {
+            clear(host, !camera.perspective);
+            block.setLightClip(camera.clipFromWorld());
+            host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i, g.hasMoments()); });
+        }
     }
+    // The target holds the last camera's casters (a cascade's: the farthest).
+    if (!p.cameras().empty()) drawLookup(host, block, frame, p.cameras().back());
+}
+
+void MapFloors::drawLookup(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const LightCamera& camera) {
+    const auto scope = host.timeScope("lookupFloor");
+    if (!viewFbo_ || viewSize_ != frame.viewport) {
+        viewSize_ = frame.viewport;
+        viewColor_ = gl::Texture(GL_TEXTURE_2D);
+        glTextureStorage2D(viewColor_.id(), 1, GL_RGBA8, viewSize_.x, viewSize_.y);
+        viewDepth_ = gl::Texture(GL_TEXTURE_2D);
+        glTextureStorage2D(viewDepth_.id(), 1, GL_DEPTH_COMPONENT32F, viewSize_.x, viewSize_.y);
+        viewFbo_ = gl::Framebuffer();
+        glNamedFramebufferTexture(viewFbo_.id(), GL_COLOR_ATTACHMENT0, viewColor_.id(), 0);
+        glNamedFramebufferTexture(viewFbo_.id(), GL_DEPTH_ATTACHMENT, viewDepth_.id(), 0);
+        gl::checkFramebuffer(viewFbo_, "lookup floor framebuffer");
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, viewFbo_.id());
+    glViewport(0, 0, viewSize_.x, viewSize_.y);
+    block.setLightClip(camera.clipFromWorld());
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, target_.id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
+    for (const bool fetch : {false, true}) {
+        const auto part = host.timeScope(fetch ? "fetch" : "bare");
+        host.apply(gl::RenderState{});
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, one = 1.0f;
+        glClearNamedFramebufferfv(viewFbo_.id(), GL_COLOR, 0, zero);
+        glClearNamedFramebufferfv(viewFbo_.id(), GL_DEPTH, 0, &one);
+        const gl::Program& program = host.program(
+            {{{GL_VERTEX_SHADER, "shadow_map_lookup_floor.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_lookup_floor.frag"}},
+             LookupFloorVariant{fetch}.defines()});
+        host.drawItems(ItemFilter::Opaque, program);
+    }
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
 }
 
 void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const MapArray& g, const MapLight& p, const std::array<bool, 6>& used) {

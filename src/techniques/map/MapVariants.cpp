@@ -102,6 +102,8 @@ std::string LightPassVariant::kernelFile() const {
     return representation != MapRepresentation::Depth ? std::string("shadow_map_moments.glsl") : map::kernelFile(filter);
 }
 
+std::string LookupFloorVariant::defines() const { return Defines().set("LOOKUP_FETCH", fetch).str(); }
+
 std::string DepthPassVariant::defines() const { return Defines().packing(format).str(); }
 
 std::string CubePassVariant::defines() const {

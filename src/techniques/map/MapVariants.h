@@ -48,6 +48,13 @@ struct LightPassVariant {
     std::string kernelFile() const;
 };
 
+/// The floor of the light pass's lookups: shadow_map_lookup_floor.vert/.frag
+/// (MapFloors::drawLookup), with one nearest fetch a pixel or without it.
+struct LookupFloorVariant {
+    bool fetch = false;
+    std::string defines() const;
+};
+
 /// The 2D shadow pass: shadow_map_depth.vert/.frag (the floors' bare draw: the defaults).
 /// Moment maps are drawn as depth32f (their moments made after: BlurVariant).
 struct DepthPassVariant {
