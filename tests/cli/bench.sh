@@ -58,17 +58,14 @@ for rec in r["results"]:
     # A map's texel footprint (docs/metrics.md): ordered percentiles of pixels a texel.
     l = rec["lights"][0]
     assert 0 < l["texelFootprintP50"] <= l["texelFootprintP95"] <= l["texelFootprintMax"], l
-    # The lookups' floor (one nearest fetch a pixel) for a 2D map, none for a cube;
-    # its scopes are nested in the shadow pass, which is reported without them.
-    two_d = rec["scene"] == "torus-floating"
-    assert ("lookupFloorMs" in l) == two_d, (rec["scene"], sorted(l))
-    if two_d:
-        passes = rec["passMs"]
-        for scope in ("shadow[0].lookupFloor", "shadow[0].lookupFloor.bare", "shadow[0].lookupFloor.fetch"):
-            assert scope in passes, sorted(passes)
-        whole = passes["shadow[0]"]["median"]
-        assert abs(l["shadowPassMs"] - (whole - l["shadowFloorMs"] - passes["shadow[0].lookupFloor"]["median"])) < 1e-9, l
-        assert l["lookupFloorMs"] == passes["shadow[0].lookupFloor.fetch"]["median"] - passes["shadow[0].lookupFloor.bare"]["median"]
+    # The lookups' floor (one nearest fetch a pixel), for a 2D map and a cube
+    # alike; its scopes are nested in the shadow pass, which is reported without them.
+    passes = rec["passMs"]
+    for scope in ("shadow[0].lookupFloor", "shadow[0].lookupFloor.bare", "shadow[0].lookupFloor.fetch"):
+        assert scope in passes, (rec["scene"], sorted(passes))
+    whole = passes["shadow[0]"]["median"]
+    assert abs(l["shadowPassMs"] - (whole - l["shadowFloorMs"] - passes["shadow[0].lookupFloor"]["median"])) < 1e-9, l
+    assert l["lookupFloorMs"] == passes["shadow[0].lookupFloor.fetch"]["median"] - passes["shadow[0].lookupFloor.bare"]["median"]
 PY
 grep -q 'texel footprint px (median / p95)' bench/report.html || fail "the report has no texel footprint column"
 grep -q 'lookup floor ms' bench/report.html || fail "the report has no lookup floor column"

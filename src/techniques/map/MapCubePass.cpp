@@ -122,7 +122,7 @@ void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView
     host.count("mapBytes", 6.0 * texelBytes(g.key) * static_cast<double>(g.size()) * static_cast<double>(g.size()));
     for (std::size_t f = 0; f < 6; ++f) host.count(std::string("faceTriangles.") + faceNames[f], use.triangles[f]);
     if (res.translucent) drawCubeTranslucent(host, frame, g, p);
-    if (frame.measureFloors) res.floors.drawCube(host, res.block, g, p, use.used);
+    if (frame.measureFloors) res.floors.drawCube(host, res.block, frame, g, p, use.used);
 }
 
 } // namespace shadowlab::map

@@ -6,22 +6,42 @@
 
 namespace shadowlab::map {
 
+namespace {
+
+// As drawLookup reads a floor's map: nearest, no comparison, depth 1 (lit) outside.
+void nearestWithBorder(const gl::Texture& t) {
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glTextureParameterfv(t.id(), GL_TEXTURE_BORDER_COLOR, white);
+}
+
+} // namespace
+
 void MapFloors::ensureTarget(const MapArray& g) {
     if (!target_ || size_ != g.size() || format_ != g.format()) {
         target_ = gl::Texture(GL_TEXTURE_2D);
         glTextureStorage2D(target_.id(), 1, depthFormat(g.format()), g.size(), g.size());
-        // As drawLookup reads it: nearest, no comparison, depth 1 (lit) outside.
-        glTextureParameteri(target_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(target_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTextureParameteri(target_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-        glTextureParameteri(target_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-        const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-        glTextureParameterfv(target_.id(), GL_TEXTURE_BORDER_COLOR, white);
+        nearestWithBorder(target_);
         fbo_ = gl::Framebuffer();
         glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, target_.id(), 0);
         glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
         size_ = g.size();
         format_ = g.format();
+    }
+}
+
+void MapFloors::ensureCube(const MapArray& g) {
+    if (!cube_ || cubeSize_ != g.size() || cubeFormat_ != g.format()) {
+        cube_ = gl::Texture(GL_TEXTURE_CUBE_MAP);
+        glTextureStorage2D(cube_.id(), 1, depthFormat(g.format()), g.size(), g.size());
+        nearestWithBorder(cube_);
+        cubeFbo_ = gl::Framebuffer();
+        glNamedFramebufferDrawBuffer(cubeFbo_.id(), GL_NONE);
+        cubeSize_ = g.size();
+        cubeFormat_ = g.format();
     }
 }
 
@@ -55,11 +75,12 @@ void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
             host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i, g.hasMoments()); });
         }
     }
-    // The target holds the last camera's casters (a cascade's: the farthest).
-    if (!p.cameras().empty()) drawLookup(host, block, frame, p.cameras().back());
+    // The target holds the last camera's casters (a cascade's: the farthest),
+    // and the block its camera.
+    if (!p.cameras().empty()) drawLookup(host, frame, false);
 }
 
-void MapFloors::drawLookup(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const LightCamera& camera) {
+void MapFloors::drawLookup(TechniqueHost& host, const FrameInfo& frame, bool cube) {
     const auto scope = host.timeScope("lookupFloor");
     if (!viewFbo_ || viewSize_ != frame.viewport) {
         viewSize_ = frame.viewport;
@@ -74,8 +95,7 @@ void MapFloors::drawLookup(TechniqueHost& host, MapBlock& block, const FrameInfo
     }
     glBindFramebuffer(GL_FRAMEBUFFER, viewFbo_.id());
     glViewport(0, 0, viewSize_.x, viewSize_.y);
-    block.setLightClip(camera.clipFromWorld());
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, target_.id());
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, cube ? cube_.id() : target_.id());
     glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
     for (const bool fetch : {false, true}) {
         const auto part = host.timeScope(fetch ? "fetch" : "bare");
@@ -85,23 +105,41 @@ void MapFloors::drawLookup(TechniqueHost& host, MapBlock& block, const FrameInfo
         glClearNamedFramebufferfv(viewFbo_.id(), GL_DEPTH, 0, &one);
         const gl::Program& program = host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_lookup_floor.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_lookup_floor.frag"}},
-             LookupFloorVariant{fetch}.defines()});
+             LookupFloorVariant{fetch, cube}.defines()});
+        if (cube) glProgramUniform3fv(program.id(), 0, 1, &cubeLight_[0]);
         host.drawItems(ItemFilter::Opaque, program);
     }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
 }
 
-void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const MapArray& g, const MapLight& p, const std::array<bool, 6>& used) {
-    const auto scope = host.timeScope("floor");
-    const gl::Program& bare = bind(host, g);
-    for (int f = 0; f < 6; ++f) {
-        if (!used[static_cast<std::size_t>(f)]) continue;
-        clear(host, false);
-        // The bare vertex shader reads map.lightClipFromWorld: this face's camera.
-        block.writeWithLightClip(p.cubeCamera.faceClipFromWorld[static_cast<std::size_t>(f)]);
-        host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return (p.faceMask(i) & (1u << f)) != 0; });
+void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p,
+                         const std::array<bool, 6>& used) {
+    {
+        const auto scope = host.timeScope("floor");
+        ensureCube(g);
+        glBindFramebuffer(GL_FRAMEBUFFER, cubeFbo_.id());
+        glViewport(0, 0, g.size(), g.size());
+        const gl::Program& bare = host.program(
+            {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{}.defines()});
+        for (int f = 0; f < 6; ++f) {
+            // The faces the light's pass draws, as it does (the lookup floor
+            // reads what the others held: its cost is the same).
+            if (!used[static_cast<std::size_t>(f)]) continue;
+            glNamedFramebufferTextureLayer(cubeFbo_.id(), GL_DEPTH_ATTACHMENT, cube_.id(), 0, f);
+            gl::RenderState state;
+            host.apply(state);
+            const float one = 1.0f;
+            glClearNamedFramebufferfv(cubeFbo_.id(), GL_DEPTH, 0, &one);
+            state.noColor();
+            host.apply(state);
+            // The bare vertex shader reads map.lightClipFromWorld: this face's camera.
+            block.writeWithLightClip(p.cubeCamera.faceClipFromWorld[static_cast<std::size_t>(f)]);
+            host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return (p.faceMask(i) & (1u << f)) != 0; });
+        }
+        block.restore();
     }
-    block.restore();
+    cubeLight_ = p.cubeCamera.position;
+    drawLookup(host, frame, true);
 }
 
 } // namespace shadowlab::map

@@ -2,8 +2,8 @@
 // Technique "map": the floor of a shadow pass, what it costs at least: the
 // same casters, depth only, into a scratch target of the same size and
 // format, with no bias, culling or packing (FrameInfo::measureFloors; bench
-// times it as "shadow[i].floor"). And for 2D maps the floor of the light
-// pass's lookups, one nearest fetch a pixel (drawLookup).
+// times it as "shadow[i].floor"). And the floor of the light pass's
+// lookups, one nearest fetch a pixel from that map (drawLookup).
 #include "techniques/Technique.h"
 #include "techniques/map/MapArrays.h"
 #include "techniques/map/MapBlock.h"
@@ -17,25 +17,34 @@ class MapFloors {
 public:
     /// The floor of a 2D map's pass (each cascade's camera in turn).
     void draw(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p);
-    /// The floor of the lookups of a 2D map lit by `camera` (drawn into the
-    /// floor's target just before, by draw()): the frame's opaque items from
-    /// the camera into a scratch target of the frame's size, first with
-    /// their point in the light's clip space alone ("lookupFloor.bare"), then
-    /// with one nearest depth a pixel fetched from that map and compared
-    /// ("lookupFloor.fetch"); the difference is what one lookup a pixel costs
-    /// at the least, with the map as freshly drawn as the light's.
-    void drawLookup(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const LightCamera& camera);
-    /// A cube's floor: per face it uses, that face's casters.
-    void drawCube(TechniqueHost& host, MapBlock& block, const MapArray& g, const MapLight& p, const std::array<bool, 6>& used);
+    /// A cube's floor: per face it uses, that face's casters, into a cube
+    /// of the same size and format; then its lookups' floor (drawLookup).
+    void drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p,
+                  const std::array<bool, 6>& used);
 
 private:
+    /// The floor of the lookups of the map just drawn by draw() (a 2D map
+    /// seen by `camera`) or drawCube() (a cube around `lightPosition`): the
+    /// frame's opaque items from the camera into a scratch target of the
+    /// frame's size, first with their point in the light's space alone
+    /// ("lookupFloor.bare"), then with one nearest depth a pixel fetched
+    /// from that map and compared ("lookupFloor.fetch"); the difference is
+    /// what one lookup a pixel costs at the least, with the map as freshly
+    /// drawn as the light's.
+    void drawLookup(TechniqueHost& host, const FrameInfo& frame, bool cube);
     void ensureTarget(const MapArray& g);
+    void ensureCube(const MapArray& g);
     const gl::Program& bind(TechniqueHost& host, const MapArray& g);
     void clear(TechniqueHost& host, bool depthClamp);
 
     gl::Texture target_{gl::NoCreate};
     gl::Framebuffer fbo_{gl::NoCreate};
     int size_ = 0;
+    gl::Texture cube_{gl::NoCreate};  ///< drawCube's target
+    gl::Framebuffer cubeFbo_{gl::NoCreate};
+    int cubeSize_ = 0;
+    MapFormat cubeFormat_ = MapFormat::Depth32F;
+    glm::vec3 cubeLight_{0.0f};  ///< the cube's centre, for drawLookup
     gl::Texture viewColor_{gl::NoCreate}, viewDepth_{gl::NoCreate};  ///< drawLookup's target, the frame's size
     gl::Framebuffer viewFbo_{gl::NoCreate};
     glm::ivec2 viewSize_{0};

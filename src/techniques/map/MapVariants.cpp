@@ -102,7 +102,7 @@ std::string LightPassVariant::kernelFile() const {
     return representation != MapRepresentation::Depth ? std::string("shadow_map_moments.glsl") : map::kernelFile(filter);
 }
 
-std::string LookupFloorVariant::defines() const { return Defines().set("LOOKUP_FETCH", fetch).str(); }
+std::string LookupFloorVariant::defines() const { return Defines().set("LOOKUP_FETCH", fetch).set("LOOKUP_CUBE", cube).str(); }
 
 std::string DepthPassVariant::defines() const { return Defines().packing(format).str(); }
 

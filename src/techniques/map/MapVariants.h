@@ -49,9 +49,11 @@ struct LightPassVariant {
 };
 
 /// The floor of the light pass's lookups: shadow_map_lookup_floor.vert/.frag
-/// (MapFloors::drawLookup), with one nearest fetch a pixel or without it.
+/// (MapFloors::drawLookup), with one nearest fetch a pixel or without it,
+/// from a 2D map or a cube.
 struct LookupFloorVariant {
     bool fetch = false;
+    bool cube = false;
     std::string defines() const;
 };
 
