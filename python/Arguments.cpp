@@ -5,6 +5,7 @@
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/Limits.h>
+#include <shadowlab/SceneFile.h>
 #include <shadowlab/Text.h>
 
 #include <algorithm>
@@ -66,10 +67,22 @@ std::string jsonText(const py::handle& value, const std::string& where) {
 } // namespace
 
 std::vector<std::string> overrideLines(const py::dict& overrides) {
-    std::vector<std::string> lines;
+    std::vector<std::string> lines, keys;
     for (const auto& [key, value] : overrides) {
         const std::string k = sceneKey(key, "overrides");
         lines.push_back(k + "=" + jsonText(value, "overrides[" + k + "]"));
+        keys.push_back(k);
+    }
+    // One dict's keys are applied in order: one that drops what an earlier
+    // one set (the same path spelt two ways, or a path holding it) would
+    // leave that value unread, as two --set would.
+    if (const auto clash = overrideDiscarding(lines)) {
+        const std::string& later = keys[clash->first];
+        const std::string& earlier = keys[clash->second];
+        if (overridePathsEqual(later, earlier))
+            throw py::value_error("overrides[" + later + "]: " + later + " is already set by overrides[" + earlier + "] (give each path once)");
+        throw py::value_error("overrides[" + later + "]: replaces " + earlier + ", set by overrides[" + earlier +
+                              "] (give the inner path after the outer one, or within its value)");
     }
     return lines;
 }

@@ -72,11 +72,11 @@ void bindScenes(py::module_& m) {
             return out;
         })
         .def("with_overrides", [](const PyScene& s, const py::dict& overrides) {
-            // A key the scene was loaded with takes its new value (its earlier line goes).
+            // A key the scene was loaded with takes its new value: its earlier
+            // line goes, and so do those inside it (a block given whole).
             std::vector<std::string> lines = s.overrides;
             for (std::string& l : overrideLines(overrides)) {
-                const std::string key = l.substr(0, l.find('='));
-                std::erase_if(lines, [&](const std::string& old) { return overridePathsEqual(old.substr(0, old.find('=')), key); });
+                std::erase_if(lines, [&](const std::string& old) { return overrideDiscarding({old, l}).has_value(); });
                 lines.push_back(std::move(l));
             }
             return reload(s, std::move(lines));

@@ -330,12 +330,13 @@ int runTechniques(bool markdown) {
 // a bad earlier value would pass without a word; refused, as bench refuses
 // a --vary of a path a --set sets.
 void requireDistinctSets(const std::vector<std::string>& overrides) {
-    for (std::size_t i = 0; i < overrides.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j) {
-            const std::string a = overrides[j].substr(0, overrides[j].find('=')), b = overrides[i].substr(0, overrides[i].find('='));
-            if (overridePathsEqual(a, b))
-                throw Error("--set " + overrides[i] + ": " + b + " is already set by --set " + overrides[j] + " (give each path once)");
-        }
+    const auto clash = overrideDiscarding(overrides);
+    if (!clash) return;
+    const std::string& later = overrides[clash->first];
+    const std::string& earlier = overrides[clash->second];
+    const std::string a = earlier.substr(0, earlier.find('=')), b = later.substr(0, later.find('='));
+    if (overridePathsEqual(a, b)) throw Error("--set " + later + ": " + b + " is already set by --set " + earlier + " (give each path once)");
+    throw Error("--set " + later + ": replaces " + a + ", set by --set " + earlier + " before it (set the inner path after the outer one, or within it)");
 }
 
 // An empty path given on purpose is an error, not "use the default".

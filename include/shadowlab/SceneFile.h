@@ -4,8 +4,11 @@
 #include <shadowlab/Export.h>
 #include <shadowlab/Scene.h>
 
+#include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
@@ -62,6 +65,14 @@ SHADOWLAB_API std::string withValueSource(const std::string& message, const std:
 SHADOWLAB_API bool overridePathsOverlap(const std::string& a, const std::string& b);
 /// Whether two override keys name one value (`lights[00].size` is `lights[0].size`).
 SHADOWLAB_API bool overridePathsEqual(const std::string& a, const std::string& b);
+/// The first override (`path=value` lines, applied in order) that throws
+/// away a value an earlier one set: the same path again, or a path holding
+/// the earlier one's (`lights[0].shadow.map={...}` after
+/// `lights[0].shadow.map.size=7`), as {later, earlier} indices; nullopt
+/// when every line keeps what the ones before it set (a path inside an
+/// earlier one's refines it and is kept). A value given and then dropped
+/// unread is a mistake the user should hear of.
+SHADOWLAB_API std::optional<std::pair<std::size_t, std::size_t>> overrideDiscarding(const std::vector<std::string>& overrides);
 
 /// Scene JSON text with `overrides` written into it (the `--set` lines, or
 /// the viewer's settings), pretty-printed: it loads again as the scene those

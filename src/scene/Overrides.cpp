@@ -159,6 +159,8 @@ bool pathsOverlap(const std::string& a, const std::string& b) {
 
 bool pathsEqual(const std::string& a, const std::string& b) { return canonicalOrAsWritten(a) == canonicalOrAsWritten(b); }
 
+bool pathHolds(const std::string& outer, const std::string& inner) { return within(canonicalOrAsWritten(inner), canonicalOrAsWritten(outer)); }
+
 const Override* overrideAt(const std::vector<Override>& applied, const std::string& path) {
     for (auto it = applied.rbegin(); it != applied.rend(); ++it)
         if (within(path, it->path) || within(it->path, path)) return &*it;

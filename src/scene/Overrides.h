@@ -33,6 +33,9 @@ std::vector<Override> describeOverrides(const std::vector<std::string>& override
 bool pathsOverlap(const std::string& a, const std::string& b);
 /// Whether two paths are one (lights[00].size is lights[0].size).
 bool pathsEqual(const std::string& a, const std::string& b);
+/// Whether path `outer` is `inner` or holds it (lights[0].shadow holds
+/// lights[00].shadow.technique), compared as canonical paths.
+bool pathHolds(const std::string& outer, const std::string& inner);
 
 /// The override a value at `path` came from: the last one that set it, a
 /// part of it, or a block around it (setting camera.fovY.x turned fovY into

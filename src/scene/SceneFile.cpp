@@ -187,6 +187,14 @@ std::string withValueSource(const std::string& message, const std::string& sourc
 bool overridePathsOverlap(const std::string& a, const std::string& b) { return overrides::pathsOverlap(a, b); }
 bool overridePathsEqual(const std::string& a, const std::string& b) { return overrides::pathsEqual(a, b); }
 
+std::optional<std::pair<std::size_t, std::size_t>> overrideDiscarding(const std::vector<std::string>& overrides) {
+    auto key = [&](std::size_t i) { return overrides[i].substr(0, overrides[i].find('=')); };
+    for (std::size_t i = 1; i < overrides.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (overrides::pathHolds(key(i), key(j))) return std::pair{i, j};
+    return std::nullopt;
+}
+
 std::string withValueSource(const std::string& message, const std::string& sourceName, const std::vector<std::string>& overrides,
                             const std::vector<std::string>& labels) {
     const std::size_t colon = message.find(": ");

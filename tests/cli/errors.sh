@@ -68,6 +68,14 @@ expect_error set-unknown-key "--set camera.fov=30: camera.fov: unknown key" rend
 # Two --set of one path: the earlier (here a bad) value would be replaced unchecked.
 expect_error set-twice "--set lights[0].intensity=2: lights[0].intensity is already set by --set lights[0].intensity=-1 (give each path once)" render -o out.png --set 'lights[0].intensity=-1' --set 'lights[0].intensity=2'
 expect_error set-twice-written-apart "--set lights[00].intensity=2: lights[00].intensity is already set by --set lights[0].intensity=1" bench -o b --set 'lights[0].intensity=1' --set 'lights[00].intensity=2'
+# A block set after a path inside it would drop that path's value unread.
+expect_error set-block-after-inner "--set lights[0].shadow.map={\"filter\":\"none\"}: replaces lights[0].shadow.map.size, set by --set lights[0].shadow.map.size=7 before it" render -o out.png --set 'lights[0].shadow.map.size=7' --set 'lights[0].shadow.map={"filter":"none"}'
+expect_error set-light-after-intensity "--set lights[0]={\"type\":\"directional\"}: replaces lights[0].intensity, set by --set lights[0].intensity=-1 before it" compare -o c --set 'lights[0].intensity=-1' --set 'lights[0]={"type":"directional"}'
+# The other way round a path inside a block refines it: allowed, and it applies.
+(cd "$work" && "$tool" render -o refined.png --width 32 --height 24 --set 'lights[0].shadow.map={"filter":"none"}' --set 'lights[0].shadow.map.size=7' 2>refined.txt) \
+  && { echo "FAIL set-inner-after-block: the refined size 7 (under 16) was not checked"; failures=$((failures + 1)); } \
+  || { grep -q "lights\[0\]\.shadow\.map\.size=7" "$work/refined.txt" && passed=$((passed + 1)) \
+       || { echo "FAIL set-inner-after-block: $(cat "$work/refined.txt")"; failures=$((failures + 1)); }; }
 expect_error set-no-value "--set camera: expected key=value" render -o out.png --set camera
 expect_error map-past-budget "lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB, more than the budget of 1 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set 'lights[0].shadow.map.format="rgba8"'
 expect_error map-size-range "--set lights[0].shadow.map.size=16385: lights[0].shadow.map.size: expected an integer in 16..16384, got 16385" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16385

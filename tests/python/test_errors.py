@@ -65,6 +65,13 @@ CASES = [
     ("bench-vary-int", lambda: sl.bench(SCENE, 32, 24, vary=3), r"^vary: expected \{key: \[values\]\}"),
     ("bench-vary-and-override", lambda: sl.bench(SCENE, 32, 24, overrides={"lights[0].intensity": 2}, vary={"lights[0].intensity": [1, 3]}),
      r"^vary\[lights\[0\]\.intensity\]=1,3: lights\[0\]\.intensity is also set by overrides\[lights\[0\]\.intensity\] \(a varied key takes its values from vary alone\)$"),
+    # One dict's keys: the same path spelt two ways, or a block after a path inside it, would drop a value unread.
+    ("overrides-one-path-twice", lambda: sl.default_scene({"lights[0].intensity": -1, "lights[00].intensity": 2}),
+     r"^overrides\[lights\[00\]\.intensity\]: lights\[00\]\.intensity is already set by overrides\[lights\[0\]\.intensity\] \(give each path once\)$"),
+    ("overrides-block-after-inner", lambda: sl.default_scene({"lights[0].shadow.map.size": 7, "lights[0].shadow.map": {"filter": "none"}}),
+     r"^overrides\[lights\[0\]\.shadow\.map\]: replaces lights\[0\]\.shadow\.map\.size, set by overrides\[lights\[0\]\.shadow\.map\.size\]"),
+    ("bench-overrides-block-after-inner", lambda: sl.bench(SCENE, 32, 24, overrides={"lights[0].intensity": -1, "lights[0]": {"type": "directional"}}),
+     r"^overrides\[lights\[0\]\]: replaces lights\[0\]\.intensity"),
     ("bench-out-empty", lambda: sl.bench(SCENE, 32, 24, out=""), r"^out: empty path$"),
     ("bench-out-int", lambda: sl.bench(SCENE, 32, 24, out=3), r"^out: expected a path"),
     ("bench-out-file", lambda: sl.bench(SCENE, 32, 24, out=SCENE), r"^out .*torus-floating\.json: exists and is not a directory$"),
@@ -92,3 +99,9 @@ def test_with_overrides_replaces_a_key():
     scene = sl.load_scene(SCENE, {"lights[0].intensity": 2})
     assert scene.with_overrides({"lights[0].intensity": 3}).lights[0]["intensity"] == 3
     assert scene.with_overrides({"lights[00].intensity": 4}).lights[0]["intensity"] == 4  # the same path written another way
+    # A block given whole replaces the paths inside it that the scene was loaded with.
+    block = scene.with_overrides({"lights[0]": {"type": "directional", "direction": [0, -1, 0]}})
+    assert block.lights[0]["intensity"] == 1
+    # A path inside a block refines it, in one dict too: its value is applied (and checked).
+    with pytest.raises(ValueError, match=r"lights\[0\]\.shadow\.map\.size.*got 7"):
+        sl.default_scene({"lights[0].shadow.map": {"filter": "none"}, "lights[0].shadow.map.size": 7})
