@@ -48,7 +48,7 @@ void SceneBuilder::readNode(const Reader& r, int parent) {
     const int materialOverride = r.has("material") ? material(r.child("material")) : -1;
     node.material = materialOverride;
     if (r.has("shape")) {
-        Mesh mesh = readShape(r.child("shape"));
+        Mesh mesh = readShape(r.child("shape"), shapeTrianglesLeft_);
         mesh.name = node.name.empty() ? r.child("shape").child("type").string() : node.name;
         node.mesh = addMesh(std::move(mesh));
     }

@@ -8,6 +8,7 @@
 
 #include <shadowlab/Scene.h>
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -28,8 +29,15 @@ ShadowAtlasSettings readShadowAtlas(const Reader& r);
 /// An image file named at `r`, as RGBA8 (MaterialFile.cpp).
 ImageRGBA8 loadTexture(const Reader& r, const std::filesystem::path& file);
 
-/// A node's `shape`: a procedural mesh (ShapeFile.cpp).
-Mesh readShape(const Reader& r);
+/// Triangles the procedural shapes of one scene may make in all (2^24,
+/// about 2 GB with their GPU copy and the reference's BVH): a scene file
+/// of a few kB must not ask for 70 GB through 400 finely divided spheres.
+constexpr std::size_t kMaxShapeTriangles = std::size_t(1) << 24;
+
+/// A node's `shape`: a procedural mesh (ShapeFile.cpp). `trianglesLeft`:
+/// what the scene's shapes may still make (kMaxShapeTriangles at first),
+/// less this one's; a shape past it is refused before it is made.
+Mesh readShape(const Reader& r, std::size_t& trianglesLeft);
 
 /// Builds the scene's materials and nodes: materials first, as nodes name
 /// them. Materials are read in MaterialFile.cpp, nodes in NodeFile.cpp.
@@ -55,6 +63,7 @@ private:
     const ParseContext& ctx_;
     std::map<std::string, int> materialIndex_;
     std::vector<std::string> nodeSources_; ///< JSON path (and mesh file node) per scene_.nodes entry
+    std::size_t shapeTrianglesLeft_ = kMaxShapeTriangles;  ///< readShape's budget
 };
 
 } // namespace shadowlab::scenefile

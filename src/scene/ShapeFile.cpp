@@ -21,9 +21,7 @@ glm::vec2 sizeOf2(const Reader& r) {
     return s;
 }
 
-} // namespace
-
-Mesh readShape(const Reader& r) {
+Mesh makeShape(const Reader& r) {
     r.requireObject();
     if (!r.has("type")) r.fail("missing key 'type' (plane, box, sphere, torus, cylinder, cone or pyramid)");
     const std::string type = r.child("type").string();
@@ -84,6 +82,20 @@ Mesh readShape(const Reader& r) {
         return build([&] { return shapes::pyramid(width, height); });
     }
     r.child("type").fail("unknown shape '" + type + "' (expected plane, disc, box, sphere, torus, cylinder, cone or pyramid)");
+}
+
+} // namespace
+
+Mesh readShape(const Reader& r, std::size_t& trianglesLeft) {
+    // One shape is at most 2 x 1024 x 1024 triangles (kMaxSegments), about
+    // 100 MB made: the budget is of the scene's shapes together.
+    Mesh mesh = makeShape(r);
+    const std::size_t triangles = mesh.triangleCount();
+    if (triangles > trianglesLeft)
+        r.fail("this shape makes " + std::to_string(triangles) + " triangles, past what the scene's shapes may make in all (" +
+               std::to_string(kMaxShapeTriangles) + "; " + std::to_string(trianglesLeft) + " left): fewer segments, or a mesh file for geometry this large");
+    trianglesLeft -= triangles;
+    return mesh;
 }
 
 } // namespace shadowlab::scenefile

@@ -132,6 +132,18 @@ TEST(SceneFile, EveryShapeTypeParses) {
     }
 }
 
+// The shapes of one scene make at most 2^24 triangles in all: nine of the
+// finest spheres (2 x 1024 x 1023 triangles each) are one too many, and
+// the ninth is refused by its path (a few kB of JSON asked for 70 GB
+// through 400 of them): eight make 16,760,832 triangles.
+TEST(SceneFile, TheShapesOfASceneHaveATriangleBudget) {
+    std::string nodes;
+    for (int i = 0; i < 9; ++i) nodes += std::string(i ? "," : "") + R"({"shape": {"type": "sphere", "segments": 1024, "rings": 1024}})";
+    const std::string error = errorOf(R"({"nodes": [)" + nodes + "]}");
+    EXPECT_EQ(error, "scene.json: nodes[8].shape: this shape makes 2095104 triangles, past what the scene's shapes may make in all "
+                     "(16777216; 16384 left): fewer segments, or a mesh file for geometry this large");
+}
+
 // --- Errors: one line, file or flag, JSON path, what was expected ------------
 
 struct ErrorCase {
