@@ -4,7 +4,8 @@
 // images as numpy arrays, the library's errors as Python's. Each group of
 // calls has a file: Scenes.cpp (loading, Scene), Frames.cpp (render,
 // visibility, debug images), Reference.cpp (reference, compare), Bench.cpp
-// (bench); module.cpp binds them.
+// (bench); module.cpp binds them, Signatures.cpp explains arguments of the
+// wrong type.
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/Image.h>
@@ -145,6 +146,11 @@ py::array_t<float> visibility(const PyScene& s, int light, int width, int height
 py::dict debugImages(const PyScene& s, int width, int height, double time);
 py::array_t<float> reference(const PyScene& s, int light, int width, int height, int softSamples, double time);
 py::dict compare(const PyScene& s, int width, int height, int softSamples, double time);
+/// Every call's and Scene.with_overrides's arguments of the wrong type
+/// explained in one line naming the argument (Signatures.cpp); after the
+/// bindings.
+void explainArgumentErrors(py::module_& m);
+
 py::list bench(const py::object& scenes, int width, int height, const py::object& vary, const py::dict& overrides, int frames, int warmup,
                double time, double fps, bool flips, int softSamples, const py::object& out);
 

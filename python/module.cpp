@@ -103,4 +103,5 @@ PYBIND11_MODULE(shadowlab, m) {
           "results.json's rows as dicts with their images as arrays; with out=DIR also results.json, report.html and the images there");
     m.def("live_gl_objects", &liveGlObjects, "GL objects the library's handles own right now (0 between calls: each call's are gone at its end)");
     m.def("techniques", &techniqueTables, "Every technique's options: {name: {\"summary\", \"options\": {key: {unit, range, default, doc[, choices]}}}}");
+    explainArgumentErrors(m);
 }

@@ -88,6 +88,57 @@ def test_bad_input(name, call, message, tmp_path, monkeypatch):
     assert os.listdir(tmp_path) == [], name  # nothing written
 
 
+SCENE_OBJECT = None
+
+
+def scene_object():
+    global SCENE_OBJECT
+    if SCENE_OBJECT is None:
+        SCENE_OBJECT = sl.load_scene(SCENE)
+    return SCENE_OBJECT
+
+
+# Arguments of the wrong type: one line naming the argument (pybind11's own
+# error lists every signature over four lines); an int past C's int: ValueError.
+TYPE_CASES = [
+    ("render-width-str", lambda: sl.render(scene_object(), "a", 10), TypeError, r"^width: expected an int, got str$"),
+    ("render-width-float", lambda: sl.render(scene_object(), 10.5, 10), TypeError, r"^width: expected an int, got float$"),
+    ("render-width-huge", lambda: sl.render(scene_object(), 2**70, 10), ValueError,
+     r"^width 1180591620717411303424: expected an integer in -2147483648\.\.2147483647$"),
+    ("render-time-str", lambda: sl.render(scene_object(), 10, 10, time="x"), TypeError, r"^time: expected a number, got str$"),
+    ("render-scene-none", lambda: sl.render(None, 10, 10), TypeError, r"^scene: expected a shadowlab\.Scene .*, got NoneType$"),
+    ("render-scene-path", lambda: sl.render(SCENE, 10, 10), TypeError, r"^scene: expected a shadowlab\.Scene .*, got str$"),
+    ("render-unknown-keyword", lambda: sl.render(scene_object(), 10, 10, foo=1), TypeError, r"^render\(\): no argument named foo$"),
+    ("render-missing", lambda: sl.render(scene_object()), TypeError, r"^render\(\): missing argument width$"),
+    ("render-too-many", lambda: sl.render(scene_object(), 10, 10, 0.0, 5), TypeError, r"^render\(\) takes at most 4 arguments, got 5$"),
+    ("visibility-light-huge", lambda: sl.visibility(scene_object(), 2**40, 10, 10), ValueError, r"^light 1099511627776: expected an integer in"),
+    ("visibility-coloured-str", lambda: sl.visibility(scene_object(), 0, 10, 10, coloured="yes"), TypeError,
+     r"^coloured: expected True or False, got str$"),
+    ("compare-soft-samples-huge", lambda: sl.compare(scene_object(), 10, 10, soft_samples=2**31), ValueError, r"^soft_samples 2147483648: "),
+    ("bench-frames-str", lambda: sl.bench(SCENE, 32, 24, frames="3"), TypeError, r"^frames: expected an int, got str$"),
+    ("load-scene-overrides-str", lambda: sl.load_scene(SCENE, "x"), TypeError, r"^overrides: expected a dict \{path: value\}, got str$"),
+    ("with-overrides-int", lambda: scene_object().with_overrides(5), TypeError, r"^overrides: expected a dict \{path: value\}, got int$"),
+    ("techniques-argument", lambda: sl.techniques(5), TypeError, r"^techniques\(\) takes at most 0 arguments, got 1$"),
+]
+
+
+@pytest.mark.parametrize("name,call,kind,message", TYPE_CASES, ids=[c[0] for c in TYPE_CASES])
+def test_argument_of_the_wrong_type(name, call, kind, message, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(kind, match=message) as raised:
+        call()
+    assert type(raised.value) is kind and "\n" not in str(raised.value)
+    assert os.listdir(tmp_path) == [], name
+
+
+def test_good_calls_keep_their_conversions():
+    import numpy as np
+    scene = scene_object()
+    assert sl.render(scene, np.int64(16), 12, time=np.float32(0.0)).shape == (12, 16, 4)  # numpy numbers
+    assert sl.render(scene, 16, 12, 1).shape == (12, 16, 4)  # an int for the time
+    assert sl.visibility(scene, light=0, width=16, height=12, coloured=np.bool_(False)).shape == (12, 16)
+
+
 def test_paths_may_be_pathlike_and_calls_work_after_errors():
     scene = sl.load_scene(pathlib.Path(SCENE))
     with pytest.raises(ValueError):
