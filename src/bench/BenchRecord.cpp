@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 namespace shadowlab::bench {
 
@@ -80,6 +81,22 @@ void addPassNumbers(json& record, const TimedFrames& timed, std::size_t l) {
     if (json r = reportedUnder("light[" + std::to_string(l) + "].", ""); !r.empty()) record["lightCounters"] = std::move(r);
 }
 
+// The frame's floor (docs/metrics.md): the unshadowed frame plus each
+// light's pass floor and lookup floor, what the frame would cost were every
+// pass a bare depth draw and every lookup one nearest fetch a pixel; none
+// where a light with a shadow pass has no floors (the atlas, volumes).
+std::optional<double> floorFrame(const json& lights, double unshadowed) {
+    double sum = unshadowed;
+    bool any = false;
+    for (const json& l : lights) {
+        if (!l.contains("shadowPassMs")) continue;
+        if (!l.contains("shadowFloorMs") || !l.contains("lookupFloorMs")) return std::nullopt;
+        sum += l["shadowFloorMs"].get<double>() + std::max(l["lookupFloorMs"].get<double>(), 0.0);
+        any = true;
+    }
+    return any ? std::optional<double>(sum) : std::nullopt;
+}
+
 // Every light's record, with its error image's name where `names` gives one.
 json lightRecords(const Scene& scene, const TimedFrames& timed, const Accuracy& accuracy, const BenchImageNames& names,
                   const BenchOptions& args) {
@@ -143,6 +160,10 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
     if (!names.technique.empty()) record["techniqueImage"] = names.technique;
     if (!names.reference.empty()) record["referenceImage"] = names.reference;
     if (!timed.budgetedTimes.empty()) record["budgetedFrameMs"] = stats(timed.budgetedTimes);
+    if (const auto floor = floorFrame(record["lights"], median(timed.unshadowedTimes))) {
+        record["floorFrameMs"] = *floor;
+        record["floorFrameOverUnshadowed"] = *floor / std::max(median(timed.unshadowedTimes), 1e-9);
+    }
     record.update(extra);
     return record;
 }

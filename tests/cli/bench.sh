@@ -66,9 +66,14 @@ for rec in r["results"]:
     whole = passes["shadow[0]"]["median"]
     assert abs(l["shadowPassMs"] - (whole - l["shadowFloorMs"] - passes["shadow[0].lookupFloor"]["median"])) < 1e-9, l
     assert l["lookupFloorMs"] == passes["shadow[0].lookupFloor.fetch"]["median"] - passes["shadow[0].lookupFloor.bare"]["median"]
+    # The frame's floor: the unshadowed frame and the one light's two floors.
+    unshadowed = rec["unshadowedFrameMs"]["median"]
+    floor = unshadowed + l["shadowFloorMs"] + max(l["lookupFloorMs"], 0.0)
+    assert abs(rec["floorFrameMs"] - floor) < 1e-9 and abs(rec["floorFrameOverUnshadowed"] - floor / unshadowed) < 1e-9, rec
 PY
 grep -q 'texel footprint px (median / p95)' bench/report.html || fail "the report has no texel footprint column"
 grep -q 'lookup floor ms' bench/report.html || fail "the report has no lookup floor column"
+grep -q 'floor &times; unshadowed' bench/report.html || fail "the report has no floor frame column"
 passed=$((passed + 1))
 
 # --clock picks the per-pass clock; a bad one is a one-line error.
