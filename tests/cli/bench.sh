@@ -59,14 +59,16 @@ for rec in r["results"]:
     l = rec["lights"][0]
     assert 0 < l["texelFootprintP50"] <= l["texelFootprintP95"] <= l["texelFootprintMax"], l
     # The lookups' floor (one nearest fetch a pixel), for a 2D map and a cube
-    # alike; its scopes are nested in the shadow pass, which is reported without them.
+    # alike; its scopes are nested in the shadow pass, which is reported without them
+    # (1e-9: the same medians subtracted, equal but for rounding).
     passes = rec["passMs"]
     for scope in ("shadow[0].lookupFloor", "shadow[0].lookupFloor.bare", "shadow[0].lookupFloor.fetch"):
         assert scope in passes, (rec["scene"], sorted(passes))
     whole = passes["shadow[0]"]["median"]
     assert abs(l["shadowPassMs"] - (whole - l["shadowFloorMs"] - passes["shadow[0].lookupFloor"]["median"])) < 1e-9, l
     assert l["lookupFloorMs"] == passes["shadow[0].lookupFloor.fetch"]["median"] - passes["shadow[0].lookupFloor.bare"]["median"]
-    # The frame's floor: the unshadowed frame and the one light's two floors.
+    # The frame's floor: the unshadowed frame and the one light's two floors (1e-9: the same
+    # medians added in another order, equal but for rounding).
     unshadowed = rec["unshadowedFrameMs"]["median"]
     floor = unshadowed + l["shadowFloorMs"] + max(l["lookupFloorMs"], 0.0)
     assert abs(rec["floorFrameMs"] - floor) < 1e-9 and abs(rec["floorFrameOverUnshadowed"] - floor / unshadowed) < 1e-9, rec
@@ -167,7 +169,8 @@ grep -q '<svg id="scatter"' dom.html || fail "no scatter plot"
 points=$(grep -o '<circle' dom.html | wc -l)
 [[ $points -eq 4 ]] || fail "scatter plot has $points points, expected 4"
 # Each row's stacked bar of where its time goes: the pass's floor, the pass
-# above it, the lookups, the rest; the slowest frame's bar is the fullest.
+# above it, the lookups' floor, the lookups above it, the rest; the slowest
+# frame's bar is the fullest.
 bars=$(grep -o '<div class="cost"' dom.html | wc -l)
 [[ $bars -eq 4 ]] || fail "report has $bars cost bars, expected 4"
 python3 - dom.html <<'PY' || fail "cost bars"
@@ -175,8 +178,8 @@ import re, sys
 html = open(sys.argv[1]).read()
 widths = []
 for bar in re.findall(r'<div class="cost"[^>]*>(.*?)</div>', html):
-    parts = re.findall(r'class="c-(floor|pass|lookup|rest)" style="width:([0-9.]+)px"', bar)
-    assert [p[0] for p in parts] == ["floor", "pass", "lookup", "rest"], parts
+    parts = re.findall(r'class="c-(floor|pass|lfloor|lookup|rest)" style="width:([0-9.]+)px"', bar)
+    assert [p[0] for p in parts] == ["floor", "pass", "lfloor", "lookup", "rest"], parts
     widths.append(sum(float(p[1]) for p in parts))
 assert max(widths) >= 159.0 and all(0.0 < w <= 160.5 + 160.0 for w in widths), widths  # the slowest frame fills it at least
 PY
