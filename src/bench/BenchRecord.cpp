@@ -59,7 +59,7 @@ void addPassNumbers(json& record, const TimedFrames& timed, std::size_t l) {
             record["shadowFloorMs"] = floor;
             record["shadowPassOverFloor"] = (whole - floor - lookupFloors) / floor;
         }
-        // The lookups' floor (2D maps): one nearest fetch a pixel, less the same draw without it.
+        // The lookups' floor (2D maps and cubes): one nearest fetch a pixel, less the same draw without it.
         if (passTimes.count(pass + ".lookupFloor.fetch") && passTimes.count(pass + ".lookupFloor.bare"))
             record["lookupFloorMs"] = medianOf(pass + ".lookupFloor.fetch") - medianOf(pass + ".lookupFloor.bare");
     }

@@ -288,7 +288,7 @@ struct PassSums {
 PassSums passSums(const json& r) {
     PassSums sums;
     for (const auto& [name, st] : r["passMs"].items()) {
-        const bool floorScope = name.size() > 6 && (name.ends_with("].floor") || name.ends_with("].lookupFloor"));
+        const bool floorScope = name.ends_with("].floor") || name.ends_with("].lookupFloor");
         if (name.rfind("shadow", 0) == 0 && floorScope) sums.shadowMs -= st["median"].get<double>();  // bench's floors, drawn inside the pass
         if (name.find('.') != std::string::npos) continue;  // nested scopes are inside their pass
         if (name.rfind("shadow", 0) == 0) sums.shadowMs += st["median"].get<double>();

@@ -36,7 +36,8 @@ constexpr std::size_t kMaxShapeTriangles = std::size_t(1) << 24;
 
 /// A node's `shape`: a procedural mesh (ShapeFile.cpp). `trianglesLeft`:
 /// what the scene's shapes may still make (kMaxShapeTriangles at first),
-/// less this one's; a shape past it is refused before it is made.
+/// less this one's; a shape past it is refused (after it is made: one
+/// shape is at most 2 x 1024 x 1024 triangles).
 Mesh readShape(const Reader& r, std::size_t& trianglesLeft);
 
 /// Builds the scene's materials and nodes: materials first, as nodes name

@@ -54,12 +54,12 @@ const gl::Program& MapFloors::bind(TechniqueHost& host, const MapArray& g) {
         {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{}.defines()});
 }
 
-// Clears the floor's target (all writes on), then leaves depth-only writes.
-void MapFloors::clear(TechniqueHost& host, bool depthClamp) {
+// Clears a floor's target `fbo` (all writes on), then leaves depth-only writes.
+void MapFloors::clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp) {
     gl::RenderState state;
     host.apply(state);
     const float one = 1.0f;
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &one);
+    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
     state.noColor();
     state.depthClamp = depthClamp;
     host.apply(state);
@@ -70,17 +70,18 @@ void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
         const auto scope = host.timeScope("floor");
         const gl::Program& bare = bind(host, g);
         for (const LightCamera& camera : p.cameras()) {
-            clear(host, !camera.perspective);
+            clear(host, fbo_, !camera.perspective);
             block.setLightClip(camera.clipFromWorld());
             host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i, g.hasMoments()); });
         }
     }
     // The target holds the last camera's casters (a cascade's: the farthest),
     // and the block its camera.
-    if (!p.cameras().empty()) drawLookup(host, frame, false);
+    if (!p.cameras().empty()) drawLookup(host, frame, std::nullopt);
 }
 
-void MapFloors::drawLookup(TechniqueHost& host, const FrameInfo& frame, bool cube) {
+void MapFloors::drawLookup(TechniqueHost& host, const FrameInfo& frame, const std::optional<glm::vec3>& cubeCentre) {
+    const bool cube = cubeCentre.has_value();
     const auto scope = host.timeScope("lookupFloor");
     if (!viewFbo_ || viewSize_ != frame.viewport) {
         viewSize_ = frame.viewport;
@@ -106,7 +107,7 @@ void MapFloors::drawLookup(TechniqueHost& host, const FrameInfo& frame, bool cub
         const gl::Program& program = host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_lookup_floor.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_lookup_floor.frag"}},
              LookupFloorVariant{fetch, cube}.defines()});
-        if (cube) glProgramUniform3fv(program.id(), 0, 1, &cubeLight_[0]);
+        if (cube) glProgramUniform3fv(program.id(), 0, 1, &(*cubeCentre)[0]);
         host.drawItems(ItemFilter::Opaque, program);
     }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
@@ -126,20 +127,14 @@ void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& 
             // reads what the others held: its cost is the same).
             if (!used[static_cast<std::size_t>(f)]) continue;
             glNamedFramebufferTextureLayer(cubeFbo_.id(), GL_DEPTH_ATTACHMENT, cube_.id(), 0, f);
-            gl::RenderState state;
-            host.apply(state);
-            const float one = 1.0f;
-            glClearNamedFramebufferfv(cubeFbo_.id(), GL_DEPTH, 0, &one);
-            state.noColor();
-            host.apply(state);
+            clear(host, cubeFbo_, false);
             // The bare vertex shader reads map.lightClipFromWorld: this face's camera.
             block.writeWithLightClip(p.cubeCamera.faceClipFromWorld[static_cast<std::size_t>(f)]);
             host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return (p.faceMask(i) & (1u << f)) != 0; });
         }
         block.restore();
     }
-    cubeLight_ = p.cubeCamera.position;
-    drawLookup(host, frame, true);
+    drawLookup(host, frame, p.cubeCamera.position);
 }
 
 } // namespace shadowlab::map

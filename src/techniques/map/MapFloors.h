@@ -10,6 +10,7 @@
 #include "techniques/map/MapLight.h"
 
 #include <array>
+#include <optional>
 
 namespace shadowlab::map {
 
@@ -24,18 +25,19 @@ public:
 
 private:
     /// The floor of the lookups of the map just drawn by draw() (a 2D map
-    /// seen by `camera`) or drawCube() (a cube around `lightPosition`): the
+    /// seen by the block's light camera) or drawCube() (a cube around
+    /// `cubeCentre`, given for a cube only): the
     /// frame's opaque items from the camera into a scratch target of the
     /// frame's size, first with their point in the light's space alone
     /// ("lookupFloor.bare"), then with one nearest depth a pixel fetched
     /// from that map and compared ("lookupFloor.fetch"); the difference is
     /// what one lookup a pixel costs at the least, with the map as freshly
     /// drawn as the light's.
-    void drawLookup(TechniqueHost& host, const FrameInfo& frame, bool cube);
+    void drawLookup(TechniqueHost& host, const FrameInfo& frame, const std::optional<glm::vec3>& cubeCentre);
     void ensureTarget(const MapArray& g);
     void ensureCube(const MapArray& g);
     const gl::Program& bind(TechniqueHost& host, const MapArray& g);
-    void clear(TechniqueHost& host, bool depthClamp);
+    void clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp);
 
     gl::Texture target_{gl::NoCreate};
     gl::Framebuffer fbo_{gl::NoCreate};
@@ -44,7 +46,6 @@ private:
     gl::Framebuffer cubeFbo_{gl::NoCreate};
     int cubeSize_ = 0;
     MapFormat cubeFormat_ = MapFormat::Depth32F;
-    glm::vec3 cubeLight_{0.0f};  ///< the cube's centre, for drawLookup
     gl::Texture viewColor_{gl::NoCreate}, viewDepth_{gl::NoCreate};  ///< drawLookup's target, the frame's size
     gl::Framebuffer viewFbo_{gl::NoCreate};
     glm::ivec2 viewSize_{0};
