@@ -69,7 +69,7 @@ struct RunImages {
 } // namespace
 
 py::list bench(const py::object& scenes, int width, int height, const py::object& vary, const py::dict& overrides, int frames, int warmup,
-               double time, double fps, bool flips, int softSamples, const py::object& out) {
+               double time, double fps, bool flips, int softSamples, const py::object& out, int rounds) {
     checkFrame(width, height, time);
     checkSoftSamples(softSamples, width, height);
     BenchOptions options;
@@ -78,6 +78,7 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
     options.vary = varyLines(vary);
     options.frames = frames;
     options.warmup = warmup;
+    options.rounds = rounds;
     options.timeSeconds = time;
     options.fps = fps;
     options.flips = flips;

@@ -2,7 +2,7 @@
 //   render [SCENE.json] -o out.png [--width W --height H] [--set key=value ...]
 //          [--time T] [--frames N --fps F -o frame_%03d.png]
 //   compare [SCENE.json] [-o DIR] [--set ...] [--time T]  technique vs ray-traced reference
-//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [--time T --fps F] [--flips] [-o DIR]
+//   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [--rounds R] [--time T --fps F] [--flips] [-o DIR]
 //   info
 // Every failure prints one line `shadowlab: error: ...` and exits non-zero;
 // no output file is written unless the whole render succeeded.
@@ -425,6 +425,10 @@ CLI::App* addBench(CLI::App& app, tool::BenchArgs& args, std::string& output) {
                     "Temporal stability: compare every timed frame with the reference and report per light the share of receiver "
                     "pixels whose shadow changes between consecutive frames at the same world point while the truth there does not (needs --frames >= 2)");
     bench->add_option("--warmup", args.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
+    bench->add_option("--rounds", args.rounds,
+                      "Rounds of timing: each run timed once a round, the runs in turn, and each row keeps its fastest round "
+                      "(lowest median frame) whole; for ratios on a shared machine")
+        ->check(CLI::Range(1, kMaxBenchRounds))->capture_default_str();
     bench->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     bench->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     bench->add_option("--samples", args.softSamples, "Reference rays per pixel for lights with a size")

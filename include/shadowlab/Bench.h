@@ -38,6 +38,13 @@ struct BenchOptions {
     /// not (docs/metrics.md). Needs frames >= 2; default off.
     bool flips = false;
     int warmup = 2;                      ///< untimed frames first (shader compilation, caches), >= 0; default 2
+    /// Rounds of timing, 1..kMaxBenchRounds: every run is timed once per
+    /// round, the runs one after another within a round (interleaved, so a
+    /// spell of load on a shared machine falls on every run alike), and each
+    /// row keeps its fastest round (the lowest median frame), whole: its
+    /// frames, passes and ratios are that round's. The comparison with the
+    /// reference is made once, in the last round. Default 1.
+    int rounds = 1;
     int width = 960, height = 540;       ///< pixels; default 960 x 540
     int softSamples = 256;               ///< reference rays per pixel for lights with size > 0; default 256
     /// Per-pass clock: Auto = glFinish-bracketed CPU time on a software
@@ -49,6 +56,8 @@ struct BenchOptions {
 /// warm-up and timed frames and traces a reference, a second or more, so
 /// 10,000 runs is already hours; past it is surely a mistake in `vary`.
 constexpr std::size_t kMaxBenchRuns = 10000;
+/// At most this many rounds (BenchOptions::rounds).
+constexpr int kMaxBenchRounds = 100;
 
 /// The image files a run's row names (paths relative to results.json); an
 /// empty name leaves its key out of the row.

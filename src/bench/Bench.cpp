@@ -21,6 +21,8 @@ void checkArgs(const BenchOptions& args) {
         throw Error("--samples " + std::to_string(args.softSamples) + ": expected 1.." + std::to_string(kMaxSoftSamples));
     if (args.frames < 1) throw Error("--frames " + std::to_string(args.frames) + ": expected at least 1");
     if (args.warmup < 0) throw Error("--warmup " + std::to_string(args.warmup) + ": expected 0 or more");
+    if (args.rounds < 1 || args.rounds > kMaxBenchRounds)
+        throw Error("--rounds " + std::to_string(args.rounds) + ": expected 1.." + std::to_string(kMaxBenchRounds));
     if (!std::isfinite(args.timeSeconds)) throw Error("--time: expected a finite number of seconds");
     if (!std::isfinite(args.fps) || !(args.fps > 0.0)) throw Error("--fps: expected a finite number of frames per second > 0");
     if (!std::isfinite(args.timeSeconds + (args.frames - 1) / args.fps))
@@ -32,51 +34,73 @@ void checkArgs(const BenchOptions& args) {
 json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
     checkArgs(args);
     std::vector<BenchRun> runs = loadRuns(args);  // every scene and combination checked before the long run starts
-    auto progress = [&](std::size_t done, const std::string& label) {
-        if (hooks.progress) hooks.progress(done, runs.size(), label);
-    };
     json records = json::array();
-    for (BenchRun& run : runs) {
-        // The scene at --time: the warm-up frames and the comparison.
-        Scene scene = sceneAtTime(run.loaded, args.timeSeconds);
-        std::string label = scene.name;
-        for (const std::string& c : run.combo) label += " " + c;
-        progress(records.size(), label);
-        try {
-            Renderer renderer(context);
-            renderer.upload(scene);
-            // A shadow atlas with an update budget: its frames in sequence on a renderer of their own.
-            std::optional<Renderer> budgeted;
-            if (scene.shadowAtlas.updateBudget > 0) {
-                budgeted.emplace(context);
-                budgeted->upload(scene);
+    // Rounds (BenchOptions::rounds): every run timed once a round, the
+    // runs in turn; a run keeps its fastest round's frames whole.
+    const std::size_t total = runs.size() * static_cast<std::size_t>(args.rounds);
+    std::vector<TimedFrames> fastest(runs.size());
+    std::vector<std::vector<double>> roundMedians(runs.size());
+    std::vector<int> chosen(runs.size(), 0);
+    std::size_t done = 0;
+    for (int round = 0; round < args.rounds; ++round) {
+        const bool last = round + 1 == args.rounds;
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            BenchRun& run = runs[r];
+            // The scene at --time: the warm-up frames and the comparison.
+            Scene scene = sceneAtTime(run.loaded, args.timeSeconds);
+            std::string label = scene.name;
+            for (const std::string& c : run.combo) label += " " + c;
+            const std::string shown =
+                args.rounds > 1 ? label + " (round " + std::to_string(round + 1) + "/" + std::to_string(args.rounds) + ")" : label;
+            if (hooks.progress) hooks.progress(done, total, shown);
+            try {
+                Renderer renderer(context);
+                renderer.upload(scene);
+                // A shadow atlas with an update budget: its frames in sequence on a renderer of their own.
+                std::optional<Renderer> budgeted;
+                if (scene.shadowAtlas.updateBudget > 0) {
+                    budgeted.emplace(context);
+                    budgeted->upload(scene);
+                }
+                TimedFrames timed = timeFrames(renderer, scene, run.loaded, args, hooks, budgeted ? &*budgeted : nullptr);
+                roundMedians[r].push_back(median(timed.frameTimes));
+                if (round == 0 || roundMedians[r].back() < median(fastest[r].frameTimes)) {
+                    fastest[r] = std::move(timed);
+                    chosen[r] = round;
+                }
+                if (last) {
+                    const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args, hooks);
+                    if (hooks.checkpoint) hooks.checkpoint();  // a stop asked for during the reference's trace
+                    // What the techniques noticed (no planar receiver, no disc): said here and kept in the row.
+                    if (hooks.note)
+                        for (const std::string& note : accuracy.comparison.techniqueFrame.notes)
+                            hooks.note("bench run " + std::to_string(r + 1) + "/" + std::to_string(runs.size()) + " (" + label + "): " + note);
+                    json record = runRecord(run, scene, fastest[r], accuracy, r, label, args, hooks);
+                    if (args.rounds > 1) {
+                        record["round"] = chosen[r];
+                        record["frameMsByRound"] = roundMedians[r];
+                    }
+                    records.push_back(std::move(record));
+                }
+            } catch (const Error& e) {
+                // Name the run that failed: its scene and the combination of --vary values.
+                std::string where = run.file.empty() ? std::string("the default scene") : run.file;
+                for (const std::string& c : run.combo) where += ", --vary " + c;
+                // A value's source, as render names it: the --set or --vary value
+                // applied last to it (from the scene file: the prefix names it).
+                std::vector<std::string> applied = args.overrides, labels;
+                for (const std::string& o : args.overrides) labels.push_back("--set " + o);
+                for (const std::string& c : run.combo) {
+                    applied.push_back(c);
+                    labels.push_back("--vary " + c);
+                }
+                const std::string message = withValueSource(e.what(), "", applied, labels);
+                throw Error("bench run " + std::to_string(r + 1) + "/" + std::to_string(runs.size()) + " (" + where +
+                            "): " + message);
             }
-            const TimedFrames timed = timeFrames(renderer, scene, run.loaded, args, hooks, budgeted ? &*budgeted : nullptr);
-            const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args, hooks);
-            if (hooks.checkpoint) hooks.checkpoint();  // a stop asked for during the reference's trace
-            // What the techniques noticed (no planar receiver, no disc): said here and kept in the row.
-            if (hooks.note)
-                for (const std::string& note : accuracy.comparison.techniqueFrame.notes)
-                    hooks.note("bench run " + std::to_string(records.size() + 1) + "/" + std::to_string(runs.size()) + " (" + label + "): " + note);
-            records.push_back(runRecord(run, scene, timed, accuracy, records.size(), label, args, hooks));
-        } catch (const Error& e) {
-            // Name the run that failed: its scene and the combination of --vary values.
-            std::string where = run.file.empty() ? std::string("the default scene") : run.file;
-            for (const std::string& c : run.combo) where += ", --vary " + c;
-            // A value's source, as render names it: the --set or --vary value
-            // applied last to it (from the scene file: the prefix names it).
-            std::vector<std::string> applied = args.overrides, labels;
-            for (const std::string& o : args.overrides) labels.push_back("--set " + o);
-            for (const std::string& c : run.combo) {
-                applied.push_back(c);
-                labels.push_back("--vary " + c);
-            }
-            const std::string message = withValueSource(e.what(), "", applied, labels);
-            throw Error("bench run " + std::to_string(records.size() + 1) + "/" + std::to_string(runs.size()) + " (" + where +
-                        "): " + message);
+            if (hooks.progress) hooks.progress(++done, total, shown);
+            if (last) run.loaded = Scene{};  // its meshes and textures are not needed again
         }
-        progress(records.size(), label);
-        run.loaded = Scene{};  // its meshes and textures are not needed again
     }
     const GlInfo& info = context.info();
     return json{{"tool", "shadowlab bench"},
@@ -86,6 +110,7 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
                 {"height", args.height},
                 {"frames", args.frames},
                 {"warmup", args.warmup},
+                {"rounds", args.rounds},
                 {"time", args.timeSeconds},
                 {"fps", args.fps},
                 {"flips", args.flips},

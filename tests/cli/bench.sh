@@ -73,6 +73,27 @@ for rec in r["results"]:
     floor = unshadowed + l["shadowFloorMs"] + max(l["lookupFloorMs"], 0.0)
     assert abs(rec["floorFrameMs"] - floor) < 1e-9 and abs(rec["floorFrameOverUnshadowed"] - floor / unshadowed) < 1e-9, rec
 PY
+# --rounds: every run timed once a round, the runs in turn (the progress
+# counts runs x rounds); each row keeps its fastest round whole: its frame
+# median is the lowest of the round medians it lists, and the record names
+# that round. One round (the default) leaves the fields out.
+"$tool" bench "$src/scenes/torus-floating.json" --vary 'lights[0].intensity=0.5,1' --rounds 3 --frames 2 --warmup 0 \
+  --width 64 --height 36 -o rounds >/dev/null 2>rounds.txt || fail "bench --rounds 3 failed"
+grep -q '\[##############################\] 6/6' rounds.txt || fail "--rounds 3: no progress over 6 timings: $(cat rounds.txt)"
+python3 - rounds/results.json bench/results.json <<'PY' || fail "results.json rounds"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["rounds"] == 3 and len(r["results"]) == 2, r["rounds"]
+for rec in r["results"]:
+    by = rec["frameMsByRound"]
+    assert len(by) == 3 and rec["round"] in (0, 1, 2), rec
+    assert rec["frameMs"]["median"] == by[rec["round"]] == min(by), rec
+one = json.load(open(sys.argv[2]))
+assert one["rounds"] == 1 and all("round" not in rec and "frameMsByRound" not in rec for rec in one["results"])
+PY
+out=$("$tool" bench "$src/scenes/torus-floating.json" --rounds 101 -o bad-rounds 2>&1) && fail "--rounds 101 accepted"
+grep -q -- '--rounds' <<<"$out" || fail "--rounds 101: the error does not name --rounds: $out"
+[[ ! -e bad-rounds ]] || fail "--rounds 101 left bad-rounds behind"
 grep -q 'texel footprint px (median / p95)' bench/report.html || fail "the report has no texel footprint column"
 grep -q 'lookup floor ms' bench/report.html || fail "the report has no lookup floor column"
 grep -q 'floor &times; unshadowed' bench/report.html || fail "the report has no floor frame column"

@@ -198,6 +198,16 @@ def test_bench_rows_are_results_json(tmp_path):
     assert os.path.exists(tmp_path / "py" / "report.html")
 
 
+def test_bench_rounds_keep_each_rows_fastest_round():
+    # rounds=3: each run timed three times, the runs in turn; a row keeps its
+    # fastest round (lowest median frame) and says which.
+    rows = shadowlab.bench(SCENE, 64, 36, vary={BENCH_VARY: [128, 256]}, frames=2, warmup=0, rounds=3)
+    assert len(rows) == 2
+    for row in rows:
+        by = row["frameMsByRound"]
+        assert len(by) == 3 and row["frameMs"]["median"] == by[row["round"]] == min(by), row
+
+
 def test_bench_errors_name_the_argument(tmp_path):
     cases = [
         (dict(vary={BENCH_VARY: [7]}), ValueError, r"^vary\[lights\[0\]\.shadow\.map\.size\]=7: lights\[0\]\.shadow\.map\.size: expected an integer in 16\.\.16384, got 7"),
@@ -206,6 +216,8 @@ def test_bench_errors_name_the_argument(tmp_path):
         (dict(vary={BENCH_VARY: []}), ValueError, r"^vary\[lights\[0\]\.shadow\.map\.size\]: no values$"),
         (dict(vary={BENCH_VARY: [128, 128]}), ValueError, r"the value 128 is given twice"),
         (dict(frames=0), ValueError, r"^frames 0: expected at least 1$"),
+        (dict(rounds=0), ValueError, r"^rounds 0: expected 1\.\.100$"),
+        (dict(rounds=101), ValueError, r"^rounds 101: expected 1\.\.100$"),
         (dict(flips=True, frames=1), ValueError, r"^flips: needs at least 2 timed frames to compare \(got frames 1\)$"),
         (dict(fps=0.0), ValueError, r"^fps: "),
         (dict(soft_samples=0), ValueError, r"^soft_samples 0: expected 1\.\.65536$"),
