@@ -269,8 +269,10 @@ figcaption { font-size: 12px; color: #555; }
       << " s in the warm-up and the accuracy comparison. Frame: wall time of a finished frame as users get it; passes: "
       << escape(records.empty() ? std::string("-") : records[0]["clock"].get<std::string>())
       << " clock (cpu-finish: glFinish around each pass on a software rasteriser; gpu-timestamp: GL_TIMESTAMP queries); "
-         "medians, min&ndash;max in brackets. "
-      << "Accuracy against the Embree ray-traced reference at the same surface points; shares of receiver pixels "
+         "medians, min&ndash;max in brackets. ";
+    if (const int rounds = results.value("rounds", 1); rounds > 1)
+        h << "Timed in " << rounds << " interleaved rounds, the rows in turn in each; every row shows its fastest round (lowest median frame), whole. ";
+    h << "Accuracy against the Embree ray-traced reference at the same surface points; shares of receiver pixels "
          "(see docs/metrics.md).";
     const bool flips = results.value("flips", false);
     if (flips)

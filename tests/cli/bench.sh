@@ -91,6 +91,8 @@ for rec in r["results"]:
 one = json.load(open(sys.argv[2]))
 assert one["rounds"] == 1 and all("round" not in rec and "frameMsByRound" not in rec for rec in one["results"])
 PY
+grep -q 'Timed in 3 interleaved rounds' rounds/report.html || fail "the report does not say the rows are the fastest of 3 rounds"
+grep -q 'interleaved rounds' bench/report.html && fail "a one-round report speaks of rounds"
 out=$("$tool" bench "$src/scenes/torus-floating.json" --rounds 101 -o bad-rounds 2>&1) && fail "--rounds 101 accepted"
 grep -q -- '--rounds' <<<"$out" || fail "--rounds 101: the error does not name --rounds: $out"
 [[ ! -e bad-rounds ]] || fail "--rounds 101 left bad-rounds behind"
