@@ -139,7 +139,7 @@ std::string pythonNames(std::string message, const std::vector<std::string>& ove
     message = keyed(keyed(std::move(message), "--set ", "overrides"), "--vary ", "vary");
     // The flags as the keyword arguments.
     static const std::pair<std::string_view, std::string_view> flags[] = {
-        {"--frames", "frames"}, {"--warmup", "warmup"}, {"--rounds", "rounds"},        {"--time", "time"},    {"--fps", "fps"},     {"--flips", "flips"},
+        {"--frames", "frames"}, {"--warmup", "warmup"}, {"--rounds", "rounds"}, {"--time", "time"}, {"--fps", "fps"}, {"--flips", "flips"},
         {"--samples", "soft_samples"}, {"--width", "width"}, {"--height", "height"}, {"--vary", "vary"}, {"--set", "overrides"}};
     for (const auto& [flag, name] : flags)
         for (std::size_t at = message.find(flag); at != std::string::npos; at = message.find(flag, at + name.size())) {

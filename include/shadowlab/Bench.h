@@ -68,8 +68,9 @@ struct BenchImageNames {
 
 /// What runBench does around its runs; every member may be left empty.
 struct BenchHooks {
-    /// Before and after each run: runs done, runs in all, the run's label
-    /// (scene name and combination).
+    /// Before and after each run's timing in each round: timings done,
+    /// timings in all (runs x rounds), the run's label (scene name and
+    /// combination, and the round when there are several).
     std::function<void(std::size_t done, std::size_t total, const std::string& label)> progress;
     /// Between timed frames and runs; throw (an Error) to stop the bench.
     std::function<void()> checkpoint;

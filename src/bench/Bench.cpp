@@ -64,7 +64,7 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
                 }
                 TimedFrames timed = timeFrames(renderer, scene, run.loaded, args, hooks, budgeted ? &*budgeted : nullptr);
                 roundMedians[r].push_back(median(timed.frameTimes));
-                if (round == 0 || roundMedians[r].back() < median(fastest[r].frameTimes)) {
+                if (round == 0 || roundMedians[r].back() < roundMedians[r][static_cast<std::size_t>(chosen[r])]) {
                     fastest[r] = std::move(timed);
                     chosen[r] = round;
                 }
