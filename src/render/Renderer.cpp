@@ -97,7 +97,16 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
         glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_POSITION, &zero.x);
         glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_NORMAL, &zero.x);
     }
-    glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    if (depthPrepassed) {
+        // A technique drew this frame's depth first (beginDepthPrepass): kept.
+        count("depthPrepass", 1.0);
+        const GLint none = 0;
+        glClearNamedFramebufferiv(targets->frame.id(), GL_STENCIL, 0, &none);
+        state.depthFunc = GL_LEQUAL;
+        gl::apply(state);
+    } else {
+        glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    }
     drawShaded(variant);
     targets->drawBuffers(false);
 }
@@ -171,6 +180,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     litMode = LitMode::Shade;
     counters.clear();
     notes.clear();
+    depthPrepassed = false;
 
     // Techniques in use, each with its lights; they prepare their resources.
     std::map<std::string, std::vector<int>> lightsOf;
@@ -188,7 +198,8 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
         t.renderShadowPass(*this, *info, view(i));
     }
 
-    // 2. Base pass: depth, stencil cleared, ambient, and the first light
+    // 2. Base pass: depth (unless a shadow pass drew it first:
+    // beginDepthPrepass), stencil cleared, ambient, and the first light
     // whose technique needs no pass of its own after this one.
     int baseLight = -1;
     for (std::size_t i = 0; i < s.lights.size() && baseLight < 0; ++i)

@@ -52,6 +52,17 @@ void Renderer::Impl::drawItems(ItemFilter filter, const gl::Program& prog, const
     }
 }
 
+bool Renderer::Impl::beginDepthPrepass() {
+    if (depthPrepassed) return false;
+    glBindFramebuffer(GL_FRAMEBUFFER, targets->frame.id());
+    targets->drawBuffers(false);
+    glViewport(0, 0, targets->size.x, targets->size.y);
+    gl::apply(gl::RenderState{});  // depth writes on: the clear obeys the masks
+    glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    depthPrepassed = true;
+    return true;
+}
+
 gl::RenderState Renderer::Impl::litState() const {
     gl::RenderState s;
     s.depthFunc = GL_EQUAL;  // the base pass's visible surfaces, bit for bit (scene.vert: invariant)

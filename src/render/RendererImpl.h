@@ -55,6 +55,7 @@ struct Renderer::Impl final : TechniqueHost {
     std::optional<FrameInfo> info;
     std::optional<gl::PassClock> clock;
     LitMode litMode = LitMode::Shade;
+    bool depthPrepassed = false;  ///< this frame's depth drawn before the base pass (beginDepthPrepass)
     const Light* currentLight = nullptr;
     std::string currentPass;  // for count()
     std::vector<std::pair<std::string, double>> counters;
@@ -90,6 +91,9 @@ struct Renderer::Impl final : TechniqueHost {
     gl::RenderState litState() const override;
 
     void drawLit(const gl::RenderState& state) override;
+
+    bool beginDepthPrepass() override;
+    const gl::Texture& frameDepth() const override { return targets->depthStencil; }
 
     void bindFrameTarget() override {
         const bool visibility = litMode == LitMode::OutputVisibility;

@@ -101,6 +101,19 @@ public:
     virtual gl::RenderState litState() const = 0;
     /// Binds the frame's framebuffer (colour, depth+stencil) and viewport.
     virtual void bindFrameTarget() = 0;
+    /// A depth pre-pass of the frame, shared with the base pass: in a
+    /// shadow pass, for a technique that needs the view's depth before its
+    /// map (fit "sdsm"). Binds the frame's framebuffer and viewport and
+    /// clears its depth and stencil, once a frame: the base pass then keeps
+    /// that depth and tests LEQUAL against it, so it shades each pixel's
+    /// nearest surface only (at an exact tie between two surfaces, the one
+    /// drawn last, not first). Draw into it only surfaces the base pass
+    /// draws, opaque, through scene.vert (invariant: the same depth, bit for
+    /// bit), with colour writes off; any subset. Returns false, binding
+    /// nothing, when this frame's pre-pass is drawn already.
+    virtual bool beginDepthPrepass() = 0;
+    /// The frame's depth (DEPTH24_STENCIL8; sampled, depth in 0..1).
+    virtual const gl::Texture& frameDepth() const = 0;
     /// Index buffer with adjacency of Scene::meshes[mesh] (built on first use).
     virtual const gl::Buffer& adjacencyIndices(int mesh) = 0;
     /// Times a nested scope of the current pass: "shadow[2]" + "moments".

@@ -6,7 +6,10 @@
 #include "GLTestContext.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/Renderer.h>
 #include <shadowlab/SceneFile.h>
+
+#include <algorithm>
 
 #include <string>
 #include <vector>
@@ -106,6 +109,54 @@ TEST_F(SdsmGLTest, ALargeMeshLeftOutOfThePrePassStaysInsideTheFit) {
     EXPECT_LE(awayFromEdges(sdsm.lights[0]), 0.0005);
     EXPECT_LE(awayFromEdges(sdsm.lights[0]), awayFromEdges(tight.lights[0]) + 0.0001);
     EXPECT_LE(sdsm.lights[0].texelFootprintP95, tight.lights[0].texelFootprintP95);
+}
+
+// The pre-pass is the frame's own depth, kept by the base pass (a shared
+// z-pre-pass: TechniqueHost::beginDepthPrepass), so it must change no pixel
+// of the frame: the same frame drawn again through the same maps without
+// any shadow pass (RenderOptions::reuseShadowMaps: no pre-pass, the base
+// pass clears and draws its own depth) is the same image byte for byte.
+// The scene has what the pre-pass treats apart: a large mesh left out of
+// it (kBoxedTriangles), an alpha-tested surface drawn through its cut-out
+// shader, a translucent one (never in it) and a second light drawn after
+// the base pass on its depth (EQUAL). No two surfaces meet at one depth
+// (at such a tie the pre-pass keeps the surface drawn last, not first).
+TEST_F(SdsmGLTest, TheSharedDepthPrePassChangesNoPixel) {
+    const std::string json = R"({
+      "camera": { "position": [0, 1.7, 0], "target": [0, 0.9, -10], "fovY": 60, "near": 0.1, "far": 150 },
+      "materials": { "cutout": { "baseColor": [0.3, 0.7, 0.3], "alpha": 0.8, "alphaMode": "mask", "alphaCutoff": 0.5 },
+                     "glass": { "baseColor": [0.2, 0.3, 0.9], "alpha": 0.4, "alphaMode": "blend" } },
+      "lights": [ { "type": "directional", "direction": [0.5, -0.6, -0.4], "shadow": { "technique": "map", "map": { "fit": "sdsm" } } },
+                  { "type": "point", "position": [-2, 3, -5], "color": [0.6, 0.5, 0.4], "range": 20, "shadow": { "technique": "map" } } ],
+      "nodes": [
+        { "name": "ground", "shape": { "type": "plane", "size": [200, 200] }, "translation": [0, 0, -90] },
+        { "name": "wall", "shape": { "type": "box", "size": [60, 6, 0.5] }, "translation": [0, 3, -12] },
+        { "name": "ball", "shape": { "type": "sphere", "radius": 1.5, "segments": 128, "rings": 64 }, "translation": [0.5, 1.5, -7] },
+        { "name": "hedge", "shape": { "type": "box", "size": [1.5, 1, 0.4] }, "material": "cutout", "translation": [-2, 0.5, -5] },
+        { "name": "pane", "shape": { "type": "box", "size": [1, 1.2, 0.05] }, "material": "glass", "translation": [2, 0.6, -4] }
+      ]
+    })";
+    const Scene scene = sceneOf(json);
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options;
+    options.width = 320;
+    options.height = 240;
+    const auto prepassed = [](const FrameStats& stats) {
+        return std::any_of(stats.counters.begin(), stats.counters.end(), [](const auto& c) { return c.first == "base.depthPrepass"; });
+    };
+    const FrameStats shared = renderer.render(scene, options);
+    ASSERT_TRUE(prepassed(shared)) << "fit sdsm drew no depth pre-pass for the base pass";
+    const ImageRGBA8 withPrepass = renderer.readColor();
+    options.reuseShadowMaps = true;
+    const FrameStats own = renderer.render(scene, options);
+    ASSERT_FALSE(prepassed(own)) << "a frame without shadow passes kept a depth pre-pass";
+    const ImageRGBA8 withoutPrepass = renderer.readColor();
+    ASSERT_EQ(withPrepass.pixels.size(), withoutPrepass.pixels.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < withPrepass.pixels.size(); i += 4)
+        if (!std::equal(&withPrepass.pixels[i], &withPrepass.pixels[i] + 4, &withoutPrepass.pixels[i])) ++differ;
+    EXPECT_EQ(differ, 0u) << "pixels that differ with the shared pre-pass";
 }
 
 // Spot and point lights are refused in one line naming the option.

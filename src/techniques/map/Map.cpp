@@ -151,7 +151,7 @@ public:
             const auto scope = host.timeScope("sdsm");
             {
                 const auto pre = host.timeScope("prepass");
-                samples_.prepass(host, frame, frame.frameIndex);
+                samples_.prepass(host, frame);
             }
             const bool cascades = cascadeCount(light, p.options) > 1;
             Bounds seen;

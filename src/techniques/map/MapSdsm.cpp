@@ -13,27 +13,11 @@ namespace {
 
 } // namespace
 
-void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame, std::uint64_t frameNumber) {
-    if (drawnFor_ == frameNumber && drawnFrom_ == frame.clipFromWorld && size_ == frame.viewport) return;
-    if (!fbo_ || size_ != frame.viewport) {
-        size_ = frame.viewport;
-        depth_ = gl::Texture(GL_TEXTURE_2D);
-        glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size_.x, size_.y);
-        // The reduction gathers 2x2 texels: past the frame's edge, the edge.
-        glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(depth_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        fbo_ = gl::Framebuffer();
-        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-        glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
-        gl::checkFramebuffer(fbo_, "sdsm pre-pass framebuffer");
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, size_.x, size_.y);
-    host.apply(gl::RenderState{});
-    const float far = 1.0f;
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
+void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame) {
+    // The frame's own depth, drawn now and kept by the base pass (a shared
+    // z-pre-pass: the base pass then shades the nearest surface only).
+    if (!host.beginDepthPrepass()) return;  // drawn for another light this frame
+    size_ = frame.viewport;
     gl::RenderState depthOnly;
     depthOnly.noColor();
     host.apply(depthOnly);
@@ -59,8 +43,6 @@ void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame, std::uin
     });
     host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_sdsm.frag"}}, std::string()}),
                    [&](std::size_t i) { return masked(i) && seen(i); });
-    drawnFor_ = frameNumber;
-    drawnFrom_ = frame.clipFromWorld;
 }
 
 Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld) {
@@ -93,10 +75,19 @@ Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const g
     const glm::mat4 lightFromWindow = lightFromWorld * glm::inverse(frame.clipFromWorld) * clipFromWindow;
     glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, &lightFromWindow[0][0]);
     glProgramUniform2i(program.id(), 2, size_.x, size_.y);
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, depth_.id());
-    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
+    if (!sampler_) {
+        // Nearest; the reduction gathers 2x2 texels: past the frame's edge, the edge.
+        sampler_ = gl::Sampler();
+        glSamplerParameteri(sampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glSamplerParameteri(sampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glSamplerParameteri(sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glSamplerParameteri(sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, host.frameDepth().id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST, sampler_.id());
     host.drawFullscreenTriangle();
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
     // The blocks' corners, merged here (a few thousand).
     const std::size_t n = static_cast<std::size_t>(blocks.x) * static_cast<std::size_t>(blocks.y);
     std::vector<glm::vec4> lo(n), hi(n);

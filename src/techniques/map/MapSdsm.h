@@ -1,9 +1,11 @@
 #pragma once
 // Technique "map", fit "sdsm" (Lauritzen et al., "Sample Distribution Shadow
 // Maps", 2011): the points the camera sees, from a depth pre-pass of the
-// frame (once a frame, shared by the lights that ask), bounded in a light's
-// view (or, for cascades, the camera's) by a fragment reduction of 4x4-pixel
-// blocks (shaders/shadow_map_sdsm_reduce.frag) that the CPU merges. The tight
+// frame (once a frame, shared by the lights that ask, drawn into the
+// frame's own depth, which the base pass keeps: TechniqueHost::
+// beginDepthPrepass), bounded in a light's view (or, for cascades, the
+// camera's) by a fragment reduction of 8x8-pixel blocks
+// (shaders/shadow_map_sdsm_reduce.frag) that the CPU merges. The tight
 // fit then takes those bounds (FitInput::visibleSamples) instead of the boxes
 // of the receivers in view; cascades split the depths they span. The bounds
 // come back to the CPU, which fits the light camera: a read-back the frame
@@ -22,9 +24,9 @@ namespace shadowlab::map {
 
 class SampleBounds {
 public:
-    /// Draws the frame's depth pre-pass unless this frame (`frameNumber`)
-    /// already has it.
-    void prepass(TechniqueHost& host, const FrameInfo& frame, std::uint64_t frameNumber);
+    /// Draws the frame's depth pre-pass (TechniqueHost::beginDepthPrepass)
+    /// unless this frame already has it.
+    void prepass(TechniqueHost& host, const FrameInfo& frame);
     /// The pre-pass's receiver points in `lightFromWorld` space; empty when
     /// the camera sees no receiver.
     Bounds reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld);
@@ -38,15 +40,12 @@ public:
     static constexpr std::size_t kBoxedTriangles = 4096;
 
 private:
-    gl::Texture depth_{gl::NoCreate};
-    gl::Framebuffer fbo_{gl::NoCreate};
+    gl::Sampler sampler_{gl::NoCreate};  ///< the frame's depth, nearest, clamped
     static constexpr int kBlock = 8;  ///< pixels per side of a block (shadow_map_sdsm_reduce.frag)
     gl::Texture lo_{gl::NoCreate}, hi_{gl::NoCreate};
     gl::Framebuffer reduceFbo_{gl::NoCreate};
     glm::ivec2 blocks_{0};
     glm::ivec2 size_{0};
-    std::uint64_t drawnFor_ = ~std::uint64_t(0);
-    glm::mat4 drawnFrom_{0.0f};  ///< the camera of the pre-pass drawn
     std::vector<std::size_t> boxed_;  ///< items in view left out of the pre-pass (kBoxedTriangles)
 };
 
