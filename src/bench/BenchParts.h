@@ -68,6 +68,11 @@ struct TimedFrames {
     /// The frame again right after a plain one, RenderOptions::cacheShadowMaps
     /// on: the maps whose inputs did not change are kept, not drawn.
     std::vector<double> cachedTimes;
+    /// Where a clocked frame drew a depth pre-pass (fit "sdsm"), its base
+    /// pass again in a clocked frame drawn at once with cacheShadowMaps,
+    /// which keeps the maps and so draws no pre-pass: the base pass as it
+    /// costs without the pre-pass's depth (its lookups against the same maps).
+    std::vector<double> unprepassedBaseTimes;
     /// Scenes with a shadow atlas update budget (shadowAtlas.updateBudget):
     /// the frames in sequence on a renderer of their own, cacheShadowMaps
     /// on, so that at most that many changed tiles are drawn each frame.

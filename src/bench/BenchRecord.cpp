@@ -69,8 +69,12 @@ void addPassNumbers(json& record, const TimedFrames& timed, std::size_t l) {
     // light is in the same pass there.
     const std::string lit = static_cast<int>(l) == timed.baseLight ? std::string("base") : "light[" + std::to_string(l) + "]";
     const bool samePass = (lit == "base") == (static_cast<int>(l) == timed.unshadowedBaseLight);
+    // A base pass that kept a depth pre-pass (fit "sdsm") shades each pixel
+    // once; the unshadowed one does not: the lookups are its time without it.
+    const bool prepassed = lit == "base" && !timed.unprepassedBaseTimes.empty();
     if (samePass && passTimes.count(lit) && timed.unshadowedPassTimes.count(lit))
-        record["lookupMs"] = median(passTimes.at(lit)) - median(timed.unshadowedPassTimes.at(lit));
+        record["lookupMs"] = (prepassed ? median(timed.unprepassedBaseTimes) : median(passTimes.at(lit))) -
+                             median(timed.unshadowedPassTimes.at(lit));
     auto reportedUnder = [&](const std::string& prefix, const std::string& skip) {
         json out = json::object();
         for (const auto& [name, values] : counters)
@@ -95,6 +99,32 @@ std::optional<double> floorFrame(const json& lights, double unshadowed) {
         any = true;
     }
     return any ? std::optional<double>(sum) : std::nullopt;
+}
+
+// Fit "sdsm"'s cost in the frame (docs/metrics.md): its depth pre-pass and
+// reductions, and what the base pass saves by keeping the pre-pass's depth
+// (the same frame's base pass drawn without it, TimedFrames::
+// unprepassedBaseTimes); none where no frame drew a pre-pass.
+std::optional<json> sdsmCost(const Scene& scene, const TimedFrames& timed, double frame) {
+    if (timed.unprepassedBaseTimes.empty() || !timed.passTimes.count("base")) return std::nullopt;
+    auto summed = [&](const std::string& part) {
+        double sum = 0.0;
+        for (std::size_t l = 0; l < scene.lights.size(); ++l)
+            if (const auto t = timed.passTimes.find("shadow[" + std::to_string(l) + "].sdsm." + part); t != timed.passTimes.end())
+                sum += median(t->second);
+        return sum;
+    };
+    const double prepass = summed("prepass"), reduce = summed("reduce");
+    const double base = median(timed.passTimes.at("base")), without = median(timed.unprepassedBaseTimes);
+    const double net = prepass + reduce - (without - base);
+    return json{{"prepassMs", prepass},
+                {"reduceMs", reduce},
+                {"overFrame", (prepass + reduce) / std::max(frame, 1e-9)},
+                {"baseMs", base},
+                {"baseWithoutPrepassMs", without},
+                {"baseSavedMs", without - base},
+                {"netMs", net},
+                {"netOverFrame", net / std::max(frame, 1e-9)}};
 }
 
 // Every light's record, with its error image's name where `names` gives one.
@@ -164,6 +194,7 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
         record["floorFrameMs"] = *floor;
         record["floorFrameOverUnshadowed"] = *floor / std::max(median(timed.unshadowedTimes), 1e-9);
     }
+    if (auto sdsm = sdsmCost(scene, timed, frame)) record["sdsmCost"] = std::move(*sdsm);
     record.update(extra);
     return record;
 }

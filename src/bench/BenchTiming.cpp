@@ -4,6 +4,8 @@
 
 #include <shadowlab/Techniques.h>
 
+#include <algorithm>
+
 namespace shadowlab::bench {
 
 void moveToTime(Scene& scene, const Scene& loaded, double seconds) {
@@ -24,6 +26,12 @@ void addClocked(TimedFrames& timed, const FrameStats& frame) {
     timed.passTotal.push_back(sum);
     timed.clock = frame.clock;
     timed.baseLight = frame.baseLight;
+}
+
+// Whether the frame's base pass kept a depth pre-pass drawn before it
+// (TechniqueHost::beginDepthPrepass; the renderer counts it).
+bool drewDepthPrepass(const FrameStats& frame) {
+    return std::any_of(frame.counters.begin(), frame.counters.end(), [](const auto& c) { return c.first == "base.depthPrepass"; });
 }
 
 } // namespace
@@ -91,7 +99,18 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
             moveToTime(baseline, loaded, t);
             timed.baselineTimes.push_back(renderer.render(baseline, plain).cpuMs);
         }
-        addClocked(timed, renderer.render(scene, clocked));
+        const FrameStats clockedFrame = renderer.render(scene, clocked);
+        addClocked(timed, clockedFrame);
+        if (drewDepthPrepass(clockedFrame)) {
+            // The same frame with its maps kept: no shadow pass, so no
+            // pre-pass; counted only when it did keep them.
+            RenderOptions kept = clocked;
+            kept.cacheShadowMaps = true;
+            kept.measureFloors = false;
+            const FrameStats again = renderer.render(scene, kept);
+            const auto base = std::find_if(again.passes.begin(), again.passes.end(), [](const PassTiming& p) { return p.name == "base"; });
+            if (!drewDepthPrepass(again) && base != again.passes.end()) timed.unprepassedBaseTimes.push_back(base->ms);
+        }
         const FrameStats plainClocked = renderer.render(unshadowed, clocked);
         for (const PassTiming& p : plainClocked.passes) timed.unshadowedPassTimes[p.name].push_back(p.ms);
         timed.unshadowedBaseLight = plainClocked.baseLight;

@@ -101,6 +101,27 @@ grep -q 'lookup floor ms' bench/report.html || fail "the report has no lookup fl
 grep -q 'floor &times; unshadowed' bench/report.html || fail "the report has no floor frame column"
 passed=$((passed + 1))
 
+# Fit sdsm's cost in the frame (docs/metrics.md): its pre-pass and
+# reduction, and what the base pass saves by keeping the pre-pass's depth,
+# from the same frame's base pass drawn without it; only for a frame that
+# drew a pre-pass (1e-9: the same medians added in another order).
+"$tool" bench "$src/scenes/torus-floating.json" --set 'lights[0].shadow.map.fit=sdsm' --frames 2 --warmup 1 \
+  --width 160 --height 90 -o sdsm >/dev/null 2>&1 || fail "bench with fit sdsm failed"
+python3 - sdsm/results.json bench/results.json <<'PY' || fail "results.json sdsmCost"
+import json, sys
+rec = json.load(open(sys.argv[1]))["results"][0]
+c, passes = rec["sdsmCost"], rec["passMs"]
+assert c["prepassMs"] == passes["shadow[0].sdsm.prepass"]["median"] > 0, c
+assert c["reduceMs"] == passes["shadow[0].sdsm.reduce"]["median"] > 0, c
+assert c["baseMs"] == passes["base"]["median"] and c["baseWithoutPrepassMs"] > 0, c
+assert abs(c["baseSavedMs"] - (c["baseWithoutPrepassMs"] - c["baseMs"])) < 1e-9, c
+assert abs(c["netMs"] - (c["prepassMs"] + c["reduceMs"] - c["baseSavedMs"])) < 1e-9, c
+assert abs(c["overFrame"] - (c["prepassMs"] + c["reduceMs"]) / rec["frameMs"]["median"]) < 1e-9, c
+assert abs(c["netOverFrame"] - c["netMs"] / rec["frameMs"]["median"]) < 1e-9, c
+assert all("sdsmCost" not in r for r in json.load(open(sys.argv[2]))["results"])  # no pre-pass drawn
+PY
+passed=$((passed + 1))
+
 # --clock picks the per-pass clock; a bad one is a one-line error.
 "$tool" bench "$src/scenes/torus-floating.json" --clock cpu-finish --frames 1 --warmup 0 --width 64 --height 36 -o clk >/dev/null 2>&1 \
   || fail "bench --clock cpu-finish failed"
