@@ -29,9 +29,9 @@ print(f"flips, mean share per pair: stabilised {100 * stable['mean']:.5f} %, tig
 assert tight["mean"] > 0.0001, tight["mean"]  # the tight fit's edges crawl: at least 0.01 % of the receivers a pair
 assert tight["mean"] >= 5 * stable["mean"], (tight["mean"], stable["mean"])
 PY
-# Fit sdsm with stabilised cascades: the slices split the view depths the
-# camera sees, kept while the walk stays within them (MapCameras:
-# sampledRange), so it flips no more than today's stabilised cascades (the
+# Fit sdsm with stabilised cascades: the first slice starts at the nearest
+# depth the camera sees and the last ends at the farthest, both kept while
+# the walk stays within them (MapCameras: sampledRange), so it flips no more than today's stabilised cascades (the
 # issue's bar), within one receiver pixel a pair of frames on average (a
 # split that moved each time the nearest depth crossed a step flipped
 # 0.014 % a pair, 0.39 % at a jump).

@@ -68,27 +68,36 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
     // Stabilised slices must not move with the camera: they end at a reach
     // that changes by steps (stableReach); tight ones at the farthest
     // receiver it sees; sdsm's over the depths the camera sees.
-    float near = camera.nearPlane;
+    const float near = camera.nearPlane;
     float far = p.options.stabilize ? stableReach(camera, in) : viewReach(camera, in);
+    // Fit "sdsm": the slices end at the farthest depth seen (never past the
+    // tight fit's end) and the first starts at the nearest one, but the
+    // splits are placed from the camera's near plane, as the tight fit's:
+    // placed from the nearest depth seen, the logarithmic scheme's splits
+    // (near^(1 - i/N) far^(i/N)) all move out with it, and the near slices,
+    // where a texel covers the most pixels, got fewer texels a metre than
+    // the tight fit's (docs/techniques.md).
+    float first = near;
     if (seenDepths) {
         p.sampledDepths = sampledRange(camera, *seenDepths, p.options.stabilize, p.sampledDepths);
-        near = p.sampledDepths.x;
-        far = p.sampledDepths.y;
+        far = std::max(std::min(far, p.sampledDepths.y), near * 1.01f);
+        first = p.sampledDepths.x;
     }
     std::string problem;  // checked when the scene was read (the registry's unsupported())
     const std::vector<float> given = parseSplits(p.options, problem);
     p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
+    if (!(first < p.cascadeFar.front())) first = near;  // nothing seen before the first split: the slice as the tight fit's
     p.cascades.clear();
     // A slice's lookups reach into the next cascade over its far blend
     // share: cascade c is read from slice c - 1's near end on (conservative).
     const LightWarp viewWarp = lightWarp(frame, p.options);
     for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) {
-        const float sliceNear = c == 0 ? near : p.cascadeFar[c - 1];
+        const float sliceNear = c == 0 ? first : p.cascadeFar[c - 1];
         // A warped slice's near plane stands for the slice's own near end at the least.
         LightWarp warp = viewWarp;
         warp.nearDistance = std::max(warp.nearDistance, sliceNear);
         p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, in,
-                                        c < 2 ? near : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr));
+                                        c < 2 ? first : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr));
     }
     p.camera = p.cascades.front();
     const glm::mat4& v = frame.viewFromWorld;
