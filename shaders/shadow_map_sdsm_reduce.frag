@@ -5,7 +5,7 @@
 // depth pre-pass (MapSdsm): the covered pixels' depth range, its box in
 // window space taken back to the world and into the light's view, and
 // writes the block's lowest (location 0) and highest (location 1) corner,
-// w = 1 if any pixel was covered. (Surfaces that receive no shadow count too: their points only
+// w = 1 if any pixel within the depth window was covered. (Surfaces that receive no shadow count too: their points only
 // widen the bounds.) MapSdsm merges the blocks.
 #include "shadowlab_shared.h"
 const int kBlock = 8;  // MapSdsm::kBlock
@@ -16,6 +16,10 @@ layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D sdsmDepth;
 // matrix (MapSdsm); the light's view is affine, so w divides alone.
 layout(location = 0) uniform mat4 lightFromWindow;
 layout(location = 2) uniform ivec2 viewport;
+// The window depths whose pixels count, [lo, hi]: one slice of cascades
+// (its distances along the view as window depths), else [0, 1) (uncovered
+// pixels, at depth 1, never count).
+layout(location = 3) uniform vec2 depthWindow;
 
 layout(location = 0) out vec4 outLo;
 layout(location = 1) out vec4 outHi;
@@ -32,10 +36,12 @@ void main() {
     for (int j = 0; j < kBlock; j += 2)
         for (int i = 0; i < kBlock; i += 2) {
             vec4 d = textureGather(sdsmDepth, (vec2(origin + ivec2(i, j)) + 1.0) * texel, 0);
-            // Uncovered pixels (depth 1) count for neither end.
-            vec4 covered = step(d, vec4(0.99999994));
-            dmin = min(dmin, min(min(d.x, d.y), min(d.z, d.w)));
-            vec4 far = d * covered;
+            // Pixels outside the window (uncovered ones at depth 1 among
+            // them) count for neither end.
+            vec4 inside = step(vec4(depthWindow.x), d) * step(d, vec4(depthWindow.y));
+            vec4 near = mix(vec4(1.0), d, inside);
+            dmin = min(dmin, min(min(near.x, near.y), min(near.z, near.w)));
+            vec4 far = d * inside;
             dmax = max(dmax, max(max(far.x, far.y), max(far.z, far.w)));
         }
     if (dmin >= 1.0) {

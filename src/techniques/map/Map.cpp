@@ -165,6 +165,20 @@ public:
             } else if (!seen.empty()) {
                 const glm::vec2 depths(-seen.hi.z, -seen.lo.z);
                 fitCameras(p, light, frame, nullptr, &depths);
+                if (!p.options.stabilize) {
+                    // Each slice its own box: the points seen at its
+                    // distances, reduced once a slice (Lauritzen et al.'s
+                    // partition bounds). Stabilised slices keep their
+                    // spheres, whose size must not follow the view.
+                    const auto slicesScope = host.timeScope("reduceSlices");
+                    const glm::mat4 lightView = sdsmLightView(light, frame);
+                    std::vector<Bounds> slices;
+                    for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) {
+                        const glm::vec2 distances = sliceDistances(p, c);
+                        slices.push_back(samples_.reduce(host, frame, lightView, &distances));
+                    }
+                    fitCameras(p, light, frame, nullptr, &depths, &slices);
+                }
             }
         }
         if (p.options.atlas)

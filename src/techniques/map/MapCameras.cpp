@@ -62,7 +62,8 @@ LightWarp lightWarp(const FrameInfo& frame, const MapOptions& o) {
     return LightWarp{glm::vec3(worldFromView[3]), -glm::normalize(glm::vec3(worldFromView[2])), o.warpNear};
 }
 
-void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in, const glm::vec2* seenDepths) {
+void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in, const glm::vec2* seenDepths,
+                 const std::vector<Bounds>* sliceSamples) {
     const Camera& camera = frame.scene.camera;
     const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
     // Stabilised slices must not move with the camera: they end at a reach
@@ -96,9 +97,13 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
         // A warped slice's near plane stands for the slice's own near end at the least.
         LightWarp warp = viewWarp;
         warp.nearDistance = std::max(warp.nearDistance, sliceNear);
-        p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, in,
+        // Not stabilised, sdsm: the slice's own samples instead of its receivers' boxes.
+        FitInput sliceIn = in;
+        if (sliceSamples && c < sliceSamples->size() && !p.options.stabilize) sliceIn.visibleSamples = &(*sliceSamples)[c];
+        p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, sliceIn,
                                         c < 2 ? first : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr));
     }
+    p.firstSliceNear = first;
     p.camera = p.cascades.front();
     const glm::mat4& v = frame.viewFromWorld;
     p.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
@@ -128,7 +133,16 @@ glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
     return directionalLightView(glm::normalize(light.direction), in);
 }
 
-void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples, const glm::vec2* seenDepths) {
+glm::vec2 sliceDistances(const MapLight& p, std::size_t c) {
+    if (c == 0) return {p.firstSliceNear, p.cascadeFar[0]};
+    // The slice before fades into this cascade over its far blend share
+    // (shadow_map_shared.h cascadeBlend): those points read this map too.
+    const float before = p.cascadeFar[c - 1], start = c > 1 ? p.cascadeFar[c - 2] : 0.0f;
+    return {std::max(before - p.options.cascadeBlend * (before - start), p.firstSliceNear), p.cascadeFar[c]};
+}
+
+void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples, const glm::vec2* seenDepths,
+                const std::vector<Bounds>* sliceSamples) {
     const FitInput in{frame.itemBounds, frame.items,          frame.itemPlanes,
                       frame.itemConvex, frame.clipFromWorld, p.options.size,
                       footprint(p.options), filterInfo(p.options.filter).rawDepth, samples};
@@ -145,7 +159,7 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
     else if (light.type == LightType::Spot)
         p.camera = fitSpot(light, lightFit(p.options.fit), in);
     else if (cascadeCount(light, p.options) > 1)
-        fitCascades(p, light, frame, in, seenDepths);
+        fitCascades(p, light, frame, in, seenDepths, sliceSamples);
     else {
         const LightWarp warp = lightWarp(frame, p.options);
         p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in, p.options.warp == MapWarp::Lispsm ? &warp : nullptr);

@@ -12,9 +12,15 @@ namespace shadowlab::map {
 /// Fit "sdsm": `samples`, the points the camera sees in sdsmLightView()'s
 /// space, for a directional light's one map; `seenDepths`, their nearest
 /// and farthest distance along the view, for cascades (the slices split
-/// that range).
+/// that range); `sliceSamples`, with cascades not stabilised, the points
+/// seen in each slice (p.cascadeFar's, from the fit before with the same
+/// `seenDepths`), which replace the receivers' boxes in that slice.
 void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples = nullptr,
-                const glm::vec2* seenDepths = nullptr);
+                const glm::vec2* seenDepths = nullptr, const std::vector<Bounds>* sliceSamples = nullptr);
+
+/// The distances along the view, [near, far], whose points read cascade c
+/// of p's: its slice, and the far blend share of the slice before.
+glm::vec2 sliceDistances(const MapLight& p, std::size_t c);
 
 /// Whether `p` takes fit "sdsm" (a directional light, no preset).
 bool usesSamples(const MapLight& p, const Light& light);

@@ -59,6 +59,7 @@ struct MapLight {
     /// Fit "sdsm", stabilised cascades: the view depths the slices split,
     /// kept while the depths seen stay within it (0, 0: none yet).
     glm::vec2 sampledDepths{0.0f};
+    float firstSliceNear = 0.0f;  ///< cascades: where the first slice starts along the view (fitCascades)
     std::vector<gl::Framebuffer> cascadeFbos;
     /// atlas: its tiles in the shadow atlas (MapAtlas): the first's index
     /// among the atlas's tiles, how many (0 when culled: its reach is out
@@ -97,6 +98,7 @@ struct MapLight {
         cascadeFar = old.cascadeFar;
         viewForward = old.viewForward;
         sampledDepths = old.sampledDepths;
+        firstSliceNear = old.firstSliceNear;
     }
     /// Takes what survives from last frame's state of the same light: its
     /// framebuffers and which layer they hold, the cube faces' dirty texels

@@ -33,7 +33,7 @@ const OptionTable& mapOptionTable() {
             .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
-                    "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights): around the points the viewer does see, reduced from a depth pre-pass of the frame; with cascades, the first slice starts at the nearest depth it sees and the last ends at the farthest (docs/techniques.md)")
+                    "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights): around the points the viewer does see, reduced from a depth pre-pass of the frame; with cascades, the first slice starts at the nearest depth it sees and the last ends at the farthest, and slices not stabilised are each fitted to the points seen in them (docs/techniques.md)")
             .choice(&MapOptions::warp, "warp", {"none", "lispsm"},
                     "directional lights (one map, or cascades with stabilize false): none; lispsm, the fitted box warped by a perspective along the view (light space perspective shadow maps), more texels near the camera and fewer far away; a light along the view gets no warp (docs/techniques.md)")
             .number(&MapOptions::warpNear, "warpNear", 0.01, 1000.0, "scene units",

@@ -4,14 +4,10 @@
 #include "core/LightCamera.h"
 #include "shadowlab_shared.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace shadowlab::map {
-
-namespace {
-
-
-} // namespace
 
 void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame) {
     // The frame's own depth, drawn now and kept by the base pass (a shared
@@ -45,7 +41,17 @@ void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame) {
                    [&](std::size_t i) { return masked(i) && seen(i); });
 }
 
-Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld) {
+namespace {
+
+// The window depth (0..1) of a point `distance` along the view's axis.
+float windowDepthAt(const FrameInfo& frame, float distance) {
+    const glm::vec4 clip = frame.clipFromView * glm::vec4(0.0f, 0.0f, -distance, 1.0f);
+    return 0.5f * clip.z / clip.w + 0.5f;
+}
+
+} // namespace
+
+Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) {
     const glm::ivec2 blocks = (size_ + (kBlock - 1)) / kBlock;
     if (!reduceFbo_ || blocks_ != blocks) {
         blocks_ = blocks;
@@ -75,6 +81,13 @@ Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const g
     const glm::mat4 lightFromWindow = lightFromWorld * glm::inverse(frame.clipFromWorld) * clipFromWindow;
     glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, &lightFromWindow[0][0]);
     glProgramUniform2i(program.id(), 2, size_.x, size_.y);
+    // A slice's distances as window depths, widened by a step of the depth
+    // buffer's 24 bits each way: a pixel on the split counts for both slices.
+    constexpr float kDepthStep = 1.0f / 16777215.0f;
+    const glm::vec2 window = distances ? glm::vec2(std::max(windowDepthAt(frame, distances->x) - kDepthStep, 0.0f),
+                                                   windowDepthAt(frame, distances->y) + kDepthStep)
+                                       : glm::vec2(0.0f, 0.99999994f);
+    glProgramUniform2f(program.id(), 3, window.x, std::min(window.y, 0.99999994f));
     if (!sampler_) {
         // Nearest; the reduction gathers 2x2 texels: past the frame's edge, the edge.
         sampler_ = gl::Sampler();
@@ -101,10 +114,13 @@ Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const g
         }
     // The large meshes left out of the pre-pass: their boxes, cut to the view's.
     if (!boxed_.empty()) {
+        // The view's frustum, or the slice's part of it (its window depths).
         const glm::mat4 worldFromClip = glm::inverse(frame.clipFromWorld);
+        const glm::vec2 z = distances ? 2.0f * glm::vec2(windowDepthAt(frame, distances->x), windowDepthAt(frame, distances->y)) - 1.0f
+                                      : glm::vec2(-1.0f, 1.0f);
         Bounds view;
         for (int c = 0; c < 8; ++c) {
-            const glm::vec4 w = worldFromClip * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? 1.0f : -1.0f, 1.0f);
+            const glm::vec4 w = worldFromClip * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? z.y : z.x, 1.0f);
             view.add(glm::vec3(lightFromWorld * glm::vec4(glm::vec3(w) / w.w, 1.0f)));
         }
         for (const std::size_t i : boxed_) {

@@ -7,7 +7,9 @@
 // camera's) by a fragment reduction of 8x8-pixel blocks
 // (shaders/shadow_map_sdsm_reduce.frag) that the CPU merges. The tight
 // fit then takes those bounds (FitInput::visibleSamples) instead of the boxes
-// of the receivers in view; cascades split the depths they span. The bounds
+// of the receivers in view; cascades end where the depths they span do,
+// and slices not stabilised take their own bounds, a reduction a slice
+// counting only the pixels at its distances. The bounds
 // come back to the CPU, which fits the light camera: a read-back the frame
 // waits for (on a GPU a pipeline bubble; the camera fitted on the GPU is
 // left for later).
@@ -28,8 +30,10 @@ public:
     /// unless this frame already has it.
     void prepass(TechniqueHost& host, const FrameInfo& frame);
     /// The pre-pass's receiver points in `lightFromWorld` space; empty when
-    /// the camera sees no receiver.
-    Bounds reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld);
+    /// the camera sees no receiver. With `distances` (along the view,
+    /// [near, far]: a slice of cascades), only the points at those.
+    Bounds reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
+                  const glm::vec2* distances = nullptr);
 
     /// Meshes of more triangles than this are not drawn in the pre-pass:
     /// their boxes, cut to the view's, join the bounds on the CPU instead
