@@ -2,11 +2,12 @@
 // of the points the camera sees (Lauritzen et al., "Sample Distribution
 // Shadow Maps", 2011), reduced by blocks: each fragment of a target
 // kBlock x kBlock times smaller than the frame bounds its block of the
-// depth pre-pass (MapSdsm): the covered pixels' depth range, its box in
-// window space taken back to the world and into the light's view, and
-// writes the block's lowest (location 0) and highest (location 1) corner,
-// w = 1 if any pixel within the depth window was covered. (Surfaces that receive no shadow count too: their points only
-// widen the bounds.) MapSdsm merges the blocks.
+// depth pre-pass (MapSdsm): for each depth window, the covered pixels'
+// depth range within it, its box in window space taken back to the world
+// and into the light's view, and writes the block's lowest and highest
+// corner, w = 1 if any pixel within the window was covered. (Surfaces
+// that receive no shadow count too: their points only widen the bounds.)
+// MapSdsm merges the blocks.
 #include "shadowlab_shared.h"
 const int kBlock = 8;  // MapSdsm::kBlock
 
@@ -16,48 +17,58 @@ layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D sdsmDepth;
 // matrix (MapSdsm); the light's view is affine, so w divides alone.
 layout(location = 0) uniform mat4 lightFromWindow;
 layout(location = 2) uniform ivec2 viewport;
-// The window depths whose pixels count, [lo, hi]: one slice of cascades
+// SDSM_WINDOWS (1, or MapSdsm::kSlicesAPass): the window depths whose
+// pixels count, [lo, hi], each its own bounds: one slice of cascades each
 // (its distances along the view as window depths), else [0, 1) (uncovered
-// pixels, at depth 1, never count).
-layout(location = 3) uniform vec2 depthWindow;
+// pixels, at depth 1, never count); lo > hi: none.
+layout(location = 3) uniform vec2 depthWindow[SDSM_WINDOWS];
 
-layout(location = 0) out vec4 outLo;
-layout(location = 1) out vec4 outHi;
+// Window w's lowest corner at location 2w, its highest at 2w + 1.
+layout(location = 0) out vec4 outBounds[2 * SDSM_WINDOWS];
 
 void main() {
-    // The block's nearest and farthest window depth (four gathers of 2x2
-    // texels; clamped at the frame's edge), then the light-view box of the
-    // eight corners of its window-space box: the map from window to light
-    // is projective, so the box of those corners holds every point of the
-    // block (a little more, where the block's depths differ).
+    // Each window's nearest and farthest window depth in the block (four
+    // gathers of 2x2 texels; clamped at the frame's edge), then the
+    // light-view box of the eight corners of its window-space box: the map
+    // from window to light is projective, so the box of those corners holds
+    // every point of the block within the window (a little more, where the
+    // block's depths differ).
     ivec2 origin = ivec2(gl_FragCoord.xy) * kBlock;
     vec2 texel = 1.0 / vec2(viewport);
-    float dmin = 1.0, dmax = 0.0;
+    float dmin[SDSM_WINDOWS], dmax[SDSM_WINDOWS];
+    for (int w = 0; w < SDSM_WINDOWS; ++w) {
+        dmin[w] = 1.0;
+        dmax[w] = 0.0;
+    }
     for (int j = 0; j < kBlock; j += 2)
         for (int i = 0; i < kBlock; i += 2) {
             vec4 d = textureGather(sdsmDepth, (vec2(origin + ivec2(i, j)) + 1.0) * texel, 0);
-            // Pixels outside the window (uncovered ones at depth 1 among
-            // them) count for neither end.
-            vec4 inside = step(vec4(depthWindow.x), d) * step(d, vec4(depthWindow.y));
-            vec4 near = mix(vec4(1.0), d, inside);
-            dmin = min(dmin, min(min(near.x, near.y), min(near.z, near.w)));
-            vec4 far = d * inside;
-            dmax = max(dmax, max(max(far.x, far.y), max(far.z, far.w)));
+            for (int w = 0; w < SDSM_WINDOWS; ++w) {
+                // Pixels outside the window (uncovered ones at depth 1
+                // among them) count for neither end.
+                vec4 inside = step(vec4(depthWindow[w].x), d) * step(d, vec4(depthWindow[w].y));
+                vec4 near = mix(vec4(1.0), d, inside);
+                dmin[w] = min(dmin[w], min(min(near.x, near.y), min(near.z, near.w)));
+                vec4 far = d * inside;
+                dmax[w] = max(dmax[w], max(max(far.x, far.y), max(far.z, far.w)));
+            }
         }
-    if (dmin >= 1.0) {
-        outLo = vec4(0.0);
-        outHi = vec4(0.0);
-        return;
-    }
     vec2 first = vec2(origin) + 0.5, last = min(vec2(origin + (kBlock - 1)), vec2(viewport - 1)) + 0.5;
-    vec3 lo = vec3(3.0e38), hi = vec3(-3.0e38);
-    for (int c = 0; c < 8; ++c) {
-        vec3 w = vec3((c & 1) != 0 ? last.x : first.x, (c & 2) != 0 ? last.y : first.y, (c & 4) != 0 ? dmax : dmin);
-        vec4 h = lightFromWindow * vec4(w, 1.0);
-        vec3 light = h.xyz / h.w;
-        lo = min(lo, light);
-        hi = max(hi, light);
+    for (int w = 0; w < SDSM_WINDOWS; ++w) {
+        if (dmin[w] >= 1.0) {
+            outBounds[2 * w] = vec4(0.0);
+            outBounds[2 * w + 1] = vec4(0.0);
+            continue;
+        }
+        vec3 lo = vec3(3.0e38), hi = vec3(-3.0e38);
+        for (int c = 0; c < 8; ++c) {
+            vec3 p = vec3((c & 1) != 0 ? last.x : first.x, (c & 2) != 0 ? last.y : first.y, (c & 4) != 0 ? dmax[w] : dmin[w]);
+            vec4 h = lightFromWindow * vec4(p, 1.0);
+            vec3 light = h.xyz / h.w;
+            lo = min(lo, light);
+            hi = max(hi, light);
+        }
+        outBounds[2 * w] = vec4(lo, 1.0);
+        outBounds[2 * w + 1] = vec4(hi, 1.0);
     }
-    outLo = vec4(lo, 1.0);
-    outHi = vec4(hi, 1.0);
 }

@@ -172,11 +172,9 @@ public:
                     // spheres, whose size must not follow the view.
                     const auto slicesScope = host.timeScope("reduceSlices");
                     const glm::mat4 lightView = sdsmLightView(light, frame);
-                    std::vector<Bounds> slices;
-                    for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) {
-                        const glm::vec2 distances = sliceDistances(p, c);
-                        slices.push_back(samples_.reduce(host, frame, lightView, &distances));
-                    }
+                    std::vector<glm::vec2> distances;
+                    for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) distances.push_back(sliceDistances(p, c));
+                    const std::vector<Bounds> slices = samples_.reduceSlices(host, frame, lightView, distances);
                     fitCameras(p, light, frame, nullptr, &depths, &slices);
                 }
             }

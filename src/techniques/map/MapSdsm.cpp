@@ -5,6 +5,7 @@
 #include "shadowlab_shared.h"
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 namespace shadowlab::map {
@@ -52,25 +53,45 @@ float windowDepthAt(const FrameInfo& frame, float distance) {
 } // namespace
 
 Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) {
+    return run(host, frame, lightFromWorld, {distances}, one_, 1).front();
+}
+
+std::vector<Bounds> SampleBounds::reduceSlices(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
+                                               const std::vector<glm::vec2>& distances) {
+    std::vector<const glm::vec2*> windows;
+    for (const glm::vec2& d : distances) windows.push_back(&d);
+    return run(host, frame, lightFromWorld, windows, slices_, kSlicesAPass);
+}
+
+std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
+                                      const std::vector<const glm::vec2*>& distances, Targets& targets, int windows) {
     const glm::ivec2 blocks = (size_ + (kBlock - 1)) / kBlock;
-    if (!reduceFbo_ || blocks_ != blocks) {
-        blocks_ = blocks;
-        lo_ = gl::Texture(GL_TEXTURE_2D);
-        hi_ = gl::Texture(GL_TEXTURE_2D);
-        glTextureStorage2D(lo_.id(), 1, GL_RGBA32F, blocks.x, blocks.y);
-        glTextureStorage2D(hi_.id(), 1, GL_RGBA32F, blocks.x, blocks.y);
-        reduceFbo_ = gl::Framebuffer();
-        glNamedFramebufferTexture(reduceFbo_.id(), GL_COLOR_ATTACHMENT0, lo_.id(), 0);
-        glNamedFramebufferTexture(reduceFbo_.id(), GL_COLOR_ATTACHMENT1, hi_.id(), 0);
-        const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        glNamedFramebufferDrawBuffers(reduceFbo_.id(), 2, both);
-        gl::checkFramebuffer(reduceFbo_, "sdsm reduction framebuffer");
+    if (!targets.fbo || targets.blocks != blocks) {
+        targets.blocks = blocks;
+        targets.lo.clear();
+        targets.hi.clear();
+        targets.fbo = gl::Framebuffer();
+        std::vector<GLenum> buffers;
+        for (int w = 0; w < windows; ++w) {
+            for (std::vector<gl::Texture>* corner : {&targets.lo, &targets.hi}) {
+                gl::Texture& t = corner->emplace_back(GL_TEXTURE_2D);
+                glTextureStorage2D(t.id(), 1, GL_RGBA32F, blocks.x, blocks.y);
+            }
+            // Window w's lowest corners at location 2w, its highest at 2w + 1.
+            const auto lo = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + 2 * w);
+            glNamedFramebufferTexture(targets.fbo.id(), lo, targets.lo.back().id(), 0);
+            glNamedFramebufferTexture(targets.fbo.id(), lo + 1, targets.hi.back().id(), 0);
+            buffers.push_back(lo);
+            buffers.push_back(lo + 1);
+        }
+        glNamedFramebufferDrawBuffers(targets.fbo.id(), static_cast<GLsizei>(buffers.size()), buffers.data());
+        gl::checkFramebuffer(targets.fbo, "sdsm reduction framebuffer");
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, reduceFbo_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo.id());
     glViewport(0, 0, blocks.x, blocks.y);
     host.apply(gl::RenderState{});
-    const gl::Program& program =
-        host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_sdsm_reduce.frag"}}, std::string()});
+    const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_sdsm_reduce.frag"}},
+                                               "#define SDSM_WINDOWS " + std::to_string(windows) + "\n"});
     program.use();
     // Window (pixel x, y, depth 0..1) to clip: x 2 / width - 1, y 2 / height - 1, z 2 d - 1.
     glm::mat4 clipFromWindow(1.0f);
@@ -81,13 +102,6 @@ Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const g
     const glm::mat4 lightFromWindow = lightFromWorld * glm::inverse(frame.clipFromWorld) * clipFromWindow;
     glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, &lightFromWindow[0][0]);
     glProgramUniform2i(program.id(), 2, size_.x, size_.y);
-    // A slice's distances as window depths, widened by a step of the depth
-    // buffer's 24 bits each way: a pixel on the split counts for both slices.
-    constexpr float kDepthStep = 1.0f / 16777215.0f;
-    const glm::vec2 window = distances ? glm::vec2(std::max(windowDepthAt(frame, distances->x) - kDepthStep, 0.0f),
-                                                   windowDepthAt(frame, distances->y) + kDepthStep)
-                                       : glm::vec2(0.0f, 0.99999994f);
-    glProgramUniform2f(program.id(), 3, window.x, std::min(window.y, 0.99999994f));
     if (!sampler_) {
         // Nearest; the reduction gathers 2x2 texels: past the frame's edge, the edge.
         sampler_ = gl::Sampler();
@@ -98,44 +112,69 @@ Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const g
     }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, host.frameDepth().id());
     glBindSampler(SL_UNIT_SHADOW_FIRST, sampler_.id());
-    host.drawFullscreenTriangle();
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
-    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
-    // The blocks' corners, merged here (a few thousand).
     const std::size_t n = static_cast<std::size_t>(blocks.x) * static_cast<std::size_t>(blocks.y);
     std::vector<glm::vec4> lo(n), hi(n);
-    glGetTextureImage(lo_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), lo.data());
-    glGetTextureImage(hi_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), hi.data());
-    Bounds b;
-    for (std::size_t k = 0; k < n; ++k)
-        if (lo[k].w > 0.5f) {
-            b.add(glm::vec3(lo[k]));
-            b.add(glm::vec3(hi[k]));
+    std::vector<Bounds> out;
+    for (std::size_t first = 0; first < distances.size(); first += static_cast<std::size_t>(windows)) {
+        // Each window's distances as window depths, widened by a step of the
+        // depth buffer's 24 bits each way: a pixel on a split counts for both
+        // slices. No distances: every covered pixel (uncovered ones, at
+        // depth 1, never count). Windows past the last: empty.
+        constexpr float kDepthStep = 1.0f / 16777215.0f;
+        std::vector<glm::vec2> depths;
+        for (int w = 0; w < windows; ++w) {
+            const std::size_t i = first + static_cast<std::size_t>(w);
+            const glm::vec2* d = i < distances.size() ? distances[i] : nullptr;
+            const glm::vec2 window = i >= distances.size() ? glm::vec2(1.0f, 0.0f)
+                                     : d ? glm::vec2(std::max(windowDepthAt(frame, d->x) - kDepthStep, 0.0f), windowDepthAt(frame, d->y) + kDepthStep)
+                                         : glm::vec2(0.0f, 0.99999994f);
+            depths.push_back(glm::vec2(window.x, std::min(window.y, 0.99999994f)));
         }
-    // The large meshes left out of the pre-pass: their boxes, cut to the view's.
-    if (!boxed_.empty()) {
-        // The view's frustum, or the slice's part of it (its window depths).
-        const glm::mat4 worldFromClip = glm::inverse(frame.clipFromWorld);
-        const glm::vec2 z = distances ? 2.0f * glm::vec2(windowDepthAt(frame, distances->x), windowDepthAt(frame, distances->y)) - 1.0f
-                                      : glm::vec2(-1.0f, 1.0f);
-        Bounds view;
-        for (int c = 0; c < 8; ++c) {
-            const glm::vec4 w = worldFromClip * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? z.y : z.x, 1.0f);
-            view.add(glm::vec3(lightFromWorld * glm::vec4(glm::vec3(w) / w.w, 1.0f)));
-        }
-        for (const std::size_t i : boxed_) {
-            Bounds box = frame.itemBounds[i].transformed(lightFromWorld);
-            box.lo = glm::max(box.lo, view.lo);
-            box.hi = glm::min(box.hi, view.hi);
-            if (!box.empty()) b.add(box);
+        glProgramUniform2fv(program.id(), 3, windows, &depths[0][0]);
+        host.drawFullscreenTriangle();
+        for (int w = 0; w < windows && first + static_cast<std::size_t>(w) < distances.size(); ++w) {
+            // The blocks' corners, merged here (a few thousand).
+            glGetTextureImage(targets.lo[static_cast<std::size_t>(w)].id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), lo.data());
+            glGetTextureImage(targets.hi[static_cast<std::size_t>(w)].id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), hi.data());
+            Bounds b;
+            for (std::size_t k = 0; k < n; ++k)
+                if (lo[k].w > 0.5f) {
+                    b.add(glm::vec3(lo[k]));
+                    b.add(glm::vec3(hi[k]));
+                }
+            addBoxed(b, frame, lightFromWorld, distances[first + static_cast<std::size_t>(w)]);
+            if (!b.empty()) {
+                // Reconstructed from depth where the light pass interpolates: a relative margin covers the rounding.
+                const glm::vec3 margin(1e-4f * glm::length(b.size()));
+                b.lo -= margin;
+                b.hi += margin;
+            }
+            out.push_back(b);
         }
     }
-    if (b.empty()) return b;
-    // Reconstructed from depth where the light pass interpolates: a relative margin covers the rounding.
-    const glm::vec3 margin(1e-4f * glm::length(b.size()));
-    b.lo -= margin;
-    b.hi += margin;
-    return b;
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
+    return out;
+}
+
+void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) const {
+    // The large meshes left out of the pre-pass: their boxes, cut to the
+    // view's frustum, or the slice's part of it (its window depths).
+    if (boxed_.empty()) return;
+    const glm::mat4 worldFromClip = glm::inverse(frame.clipFromWorld);
+    const glm::vec2 z = distances ? 2.0f * glm::vec2(windowDepthAt(frame, distances->x), windowDepthAt(frame, distances->y)) - 1.0f
+                                  : glm::vec2(-1.0f, 1.0f);
+    Bounds view;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 w = worldFromClip * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? z.y : z.x, 1.0f);
+        view.add(glm::vec3(lightFromWorld * glm::vec4(glm::vec3(w) / w.w, 1.0f)));
+    }
+    for (const std::size_t i : boxed_) {
+        Bounds box = frame.itemBounds[i].transformed(lightFromWorld);
+        box.lo = glm::max(box.lo, view.lo);
+        box.hi = glm::min(box.hi, view.hi);
+        if (!box.empty()) b.add(box);
+    }
 }
 
 } // namespace shadowlab::map

@@ -34,6 +34,11 @@ public:
     /// [near, far]: a slice of cascades), only the points at those.
     Bounds reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
                   const glm::vec2* distances = nullptr);
+    /// The same for several slices at once, one bounds each: a reduction
+    /// reads the pre-pass once for up to kSlicesAPass of them.
+    std::vector<Bounds> reduceSlices(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
+                                     const std::vector<glm::vec2>& distances);
+    static constexpr int kSlicesAPass = 4;  ///< two targets each: the 8 a framebuffer surely has
 
     /// Meshes of more triangles than this are not drawn in the pre-pass:
     /// their boxes, cut to the view's, join the bounds on the CPU instead
@@ -46,9 +51,19 @@ public:
 private:
     gl::Sampler sampler_{gl::NoCreate};  ///< the frame's depth, nearest, clamped
     static constexpr int kBlock = 8;  ///< pixels per side of a block (shadow_map_sdsm_reduce.frag)
-    gl::Texture lo_{gl::NoCreate}, hi_{gl::NoCreate};
-    gl::Framebuffer reduceFbo_{gl::NoCreate};
-    glm::ivec2 blocks_{0};
+    /// A reduction's targets: each window's lowest and highest corners a block.
+    struct Targets {
+        std::vector<gl::Texture> lo, hi;
+        gl::Framebuffer fbo{gl::NoCreate};
+        glm::ivec2 blocks{0};
+    };
+    Targets one_, slices_;  ///< one window (SDSM_WINDOWS 1), kSlicesAPass windows
+    /// Reduces the pre-pass within each window of `distances` (none: the
+    /// whole depth range) with `windows` per pass (1 or kSlicesAPass).
+    std::vector<Bounds> run(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
+                            const std::vector<const glm::vec2*>& distances, Targets& targets, int windows);
+    /// The large meshes' boxes (boxed_), cut to the view or a slice of it, into `b`.
+    void addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) const;
     glm::ivec2 size_{0};
     std::vector<std::size_t> boxed_;  ///< items in view left out of the pre-pass (kBoxedTriangles)
 };
