@@ -12,7 +12,9 @@
 // reference), OUTPUT_VISIBILITY (write the visibility term itself, for
 // compare), BLENDED (write the material's alpha: translucent surfaces, drawn
 // last over the frame). The technique's GLSL fills the "@shadow" slot with
-// vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal).
+// vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal); where it
+// defines SHADOW_QUAD_UNIFORM (it shares work across a 2x2 quad through
+// derivatives) the test runs first, before any discard or branch.
 #include "shadowlab_shared.h"
 #include "light_reach.h"
 #include "alpha_test.h"
@@ -133,15 +135,22 @@ vec3 listedLightsTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 #endif
 
 void main() {
-#if ALPHA_TEST
-    if (alphaCutOut(vUv)) discard;  // a hole in an alpha-tested surface: nothing drawn, no surface for the reference
-#endif
     vec3 N = normalize(vWorldNormal);
     // Two-sided lighting: a back face seen by the camera is lit as its front.
     if (!gl_FrontFacing) N = -N;
+#if LIGHT && SHADOW_QUAD_UNIFORM
+    // Where every fragment of the quad runs (the technique's derivatives).
+    vec3 visibility = lightVisibility(vWorldPosition, N);
+#define SL_VISIBILITY visibility
+#elif LIGHT
+#define SL_VISIBILITY lightVisibility(vWorldPosition, N)
+#endif
+#if ALPHA_TEST
+    if (alphaCutOut(vUv)) discard;  // a hole in an alpha-tested surface: nothing drawn, no surface for the reference
+#endif
 #if OUTPUT_VISIBILITY && LIGHT
     // The shadow term alone, for every pixel: compare classifies it.
-    outColor = vec4(lightVisibility(vWorldPosition, N), 1.0);
+    outColor = vec4(SL_VISIBILITY, 1.0);
     return;
 #endif
 
@@ -163,7 +172,7 @@ void main() {
 #if !AMBIENT
     if (!reached) discard;  // an additive pass adds nothing here
 #endif
-    if (reached) color += lightVisibility(vWorldPosition, N) * term;
+    if (reached) color += SL_VISIBILITY * term;
 #endif
 #if LIGHT_LIST
     vec3 V = normalize(frame.cameraPosition.xyz - vWorldPosition);

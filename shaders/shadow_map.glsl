@@ -12,6 +12,13 @@
 #include "shadow_map_sampling.glsl"
 #include "shadow_map_bias.glsl"
 
+#if MAP_QUAD_SHARED
+// PCSS's blocker search is shared by each 2x2 quad through derivatives
+// (shadow_map_sampling.glsl): the light pass runs the test where every
+// fragment of the quad does (lighting.frag).
+#define SHADOW_QUAD_UNIFORM 1
+#endif
+
 #if MAP_ATLAS
 // A tile of the shadow atlas: the "@map_filter" slot is shadow_map_atlas.glsl.
 #elif MAP_CUBE

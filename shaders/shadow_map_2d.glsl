@@ -45,14 +45,18 @@ float mapDepthAt(float layer, vec2 uv) { return texture(mapRaw, vec3(uv, layer))
 // planes, its texel's world size (perspective: per unit of distance), and
 // the receiver's texture-space point (uv, depth) per screen pixel in x and
 // y, taken where every fragment of a quad runs (PCSS's receiver-plane bias
-// of the taps).
+// of the taps); whether the point is inside the map, and whether every
+// fragment of the quad runs this test (MAP_QUAD_SHARED: the search shared
+// by the quad).
 struct MapLookup {
     float layer;
     vec2 planes;
     float texelWorld;
     vec3 dx, dy;
+    bool inside;
+    bool quad;
 };
-MapLookup mapLookup(float layer) { return MapLookup(layer, vec2(0.0, 1.0), 0.0, vec3(0.0), vec3(0.0)); }
+MapLookup mapLookup(float layer) { return MapLookup(layer, vec2(0.0, 1.0), 0.0, vec3(0.0), vec3(0.0), true, true); }
 
 // A stored depth as distance along the light (perspective: linearised).
 float mapDistance(float depth, vec2 planes) {
@@ -82,25 +86,37 @@ float mapFilter(MapLookup m, vec2 uv, float ref);
 // `transmit` becomes the translucent casters' transmittance there (left as
 // it was outside the map).
 float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
+#if MAP_QUAD_SHARED
+    // The filter's search is shared by the quad: every fragment goes on to
+    // it, one outside the map with no share (m.inside), lit after it.
+    m.inside = s.w > 0.0;
+    s.xyz /= m.inside ? s.w : 1.0;
+    m.inside = m.inside && all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0))) && s.z <= 1.0;
+#else
     if (s.w <= 0.0) return 1.0;
     s.xyz /= s.w;
     // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
     if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return 1.0;
+#endif
     float ref = s.z - map.constantBias - max(map.slopeDepthBias * (1.0 - NdotL), map.minDepthBias);
-    transmit = transmittanceAt(m.layer, s.xy, ref);
-    return mapFilter(m, s.xy, ref);
+    if (m.inside) transmit = transmittanceAt(m.layer, s.xy, ref);
+    float v = mapFilter(m, s.xy, ref);
+    return m.inside ? v : 1.0;
 }
 
 #if MAP_CASCADES > 1
 // Cascade c's test: the offsets of shadow_map_vertex.glsl, here per
 // fragment with the cascade's own texel size.
-float cascadeTest(int c, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 worldDx, vec3 worldDy, inout vec3 transmit) {
+// `quad`: every fragment of the quad runs this test (the slice's own, not
+// the fade into the next).
+float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 worldDx, vec3 worldDy, inout vec3 transmit) {
     float texel = map.cascadeTexel[c >> 2][c & 3];
 #if MAP_WARP
     if (map.warpU > 0.0) texel = mapWarpedTexel(map.cascadeWarpPlane[c], map.cascadeWarp[c].xy, worldPosition, n);  // warped cascades
 #endif
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), map.towardsLight, texel, tanTheta);
     MapLookup m = mapLookup(map.layer + float(c));
+    m.quad = quad;
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
     m.texelWorld = texel;
     m.planes = map.cascadeRange[c].xy;
@@ -131,7 +147,7 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     float v = 1.0, next = 1.0;
     int rounds = int(map.cascadeRounds);
     for (int r = 0; r < rounds; ++r) {
-        float tested = cascadeTest(min(c + r, MAP_CASCADES - 1), worldPosition, n, NdotL, tanTheta, worldDx, worldDy, transmit);
+        float tested = cascadeTest(min(c + r, MAP_CASCADES - 1), r == 0, worldPosition, n, NdotL, tanTheta, worldDx, worldDy, transmit);
         if (r == 0) v = tested;
         else next = tested;
         if (t <= 0.0) break;

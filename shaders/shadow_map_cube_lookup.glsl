@@ -93,7 +93,15 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius);
 float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     vec3 toLight = map.lightPosition - worldPosition;
     float d = length(toLight);
+#if MAP_QUAD_SHARED
+    // The filter's search is shared by the quad: every fragment goes on to
+    // it; one at the light or beyond the far plane takes no share in it
+    // (the filter sees that from its vector) and is lit after it.
+    bool lit = d <= 0.0;
+    d = lit ? 1.0 : d;
+#else
     if (d <= 0.0) return 1.0;
+#endif
     vec3 L = toLight / d;
     vec3 n = worldNormal;
     float NdotL = clamp(dot(n, L), 0.0, 1.0);
@@ -116,7 +124,14 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     }
     vec3 v = p - map.lightPosition;
     // Beyond the far plane: lit (004).
+#if MAP_QUAD_SHARED
+    lit = lit || length(v) > map.cubeFar;
+    if (!lit) transmit = cubeTransmittanceAt(v, ref);
+    float visibility = cubeFilter(v, ref, n, radius);
+    return lit ? 1.0 : visibility;
+#else
     if (length(v) > map.cubeFar) return 1.0;
     transmit = cubeTransmittanceAt(v, ref);
     return cubeFilter(v, ref, n, radius);
+#endif
 }

@@ -4,7 +4,12 @@
 // of percentage-closer filtering over it, each tap compared against the
 // receiver's plane at its own place, not the centre's depth. The taps are
 // bilinear compares, or with MAP_PCSS_NEAREST (a software rasteriser:
-// LightPassVariant::pcssNearest) nearest depths compared here.
+// LightPassVariant::pcssNearest) nearest depths compared here. The blocker
+// search is shared by the 2x2 pixels of a quad (MAP_QUAD_SHARED,
+// shadow_map_sampling.glsl): the quad's disk of map.blockerTaps taps, each
+// pixel fetching every fourth about its own point and testing them against
+// its own receiver plane, the blockers found and their depths summed over
+// the quad; the filter's taps stay each pixel's own.
 #if MAP_CUBE
 float cubeReach(float texel, float radius) { return 0.0; }  // each tap compares against the receiver's plane itself
 
@@ -26,26 +31,31 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     float nv = dot(n, v);
     float rotation = mapRotation();
     // 1. Blockers within three radii of the ray at the receiver (those at
-    // least a quarter of the way from the light).
+    // least a quarter of the way from the light): this pixel's share of the
+    // quad's search (found: blockers, the sum of their distances, taps
+    // taken), none where it is lit without a test (beyond the far plane or
+    // at the light: shadow_map_cube_lookup.glsl).
     int blockerTaps = int(map.blockerTaps);
-    float blockers = 0.0, blockerSum = 0.0;
-    vec2 d = vogelFirst(rotation);
-    for (int k = 0; k < blockerTaps; ++k, d = vogelTurn(d)) {
+    vec3 found = vec3(0.0);
+    int first = quadLane();
+    vec2 d = vogelFirst(quadRotation() + float(first) * SL_MAP_GOLDEN_ANGLE);
+    vec2 turn = vogelStep(4);
+    for (int k = first; k < blockerTaps; k += 4, d = vogelTurnBy(d, turn)) {
         vec3 w = v + vogelOffset3D(k, blockerTaps, 3.0 * size, d, t, b);
-        float d = cubeDepthAt(w);
-        if (d < cubePlaneRef(w, n, nv, ref)) {
-            blockers += 1.0;
-            blockerSum += d * map.cubeFar;
-        }
+        float depth = cubeDepthAt(w);
+        if (depth < cubePlaneRef(w, n, nv, ref)) found.xy += vec2(1.0, depth * map.cubeFar);
+        found.z += 1.0;
     }
+    found = quadSum(dr > 0.0 && dr <= map.cubeFar ? found : vec3(0.0));
+    float blockers = found.x;
     if (blockers == 0.0) return 1.0;
-    float db = blockerSum / blockers;
+    float db = found.y / blockers;
     // 2. The penumbra's half width at the receiver, by similar triangles.
     float penumbra = size * (dr - db) / max(db, 1e-6);
 #if MAP_EARLY_OUT
     // Umbra: every blocker tap blocked and the filter's disk inside their
     // hull (MapSettings: vogelHullInradius): every filter tap is too.
-    if (blockers == float(blockerTaps) && penumbra <= map.blockerHull * 3.0 * size) return 0.0;
+    if (blockers == found.z && penumbra <= map.blockerHull * 3.0 * size) return 0.0;
 #endif
     // 3. Percentage-closer filtering over it.
     int taps = int(map.filterTaps);
@@ -85,25 +95,32 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     // way from the light). At most an eighth of the map.
     float limit = 0.125 / du;
     float search = clamp((perspective ? 3.0 * size : (dr - m.planes.x) * size) / texel, 1.0, limit);
+    // This pixel's share of the quad's search (found: blockers, the sum of
+    // their distances, taps taken), none outside the map (lit:
+    // shadow_map_2d.glsl); all of it where it searches alone (a cascade's
+    // fade into the next, where not every pixel of the quad runs: m.quad).
     int blockerTaps = int(map.blockerTaps);
-    float blockers = 0.0, blockerSum = 0.0;
-    vec2 d = vogelFirst(rotation);
-    for (int k = 0; k < blockerTaps; ++k, d = vogelTurn(d)) {
+    vec3 found = vec3(0.0);
+    int first = m.quad ? quadLane() : 0, stride = m.quad ? 4 : 1;
+    vec2 d = vogelFirst((m.quad ? quadRotation() : rotation) + float(first) * SL_MAP_GOLDEN_ANGLE);
+    vec2 turn = vogelStep(stride);
+    for (int k = first; k < blockerTaps; k += stride, d = vogelTurnBy(d, turn)) {
         vec2 o = vogelOffset2D(k, blockerTaps, search, d, du);
-        float d = mapDepthAt(m.layer, uv + o);
-        if (d < ref + dot(dzduv, o)) {
-            blockers += 1.0;
-            blockerSum += mapDistance(d, m.planes);
-        }
+        float depth = mapDepthAt(m.layer, uv + o);
+        if (depth < ref + dot(dzduv, o)) found.xy += vec2(1.0, mapDistance(depth, m.planes));
+        found.z += 1.0;
     }
+    vec3 quad = quadSum(m.inside ? found : vec3(0.0));
+    if (m.quad) found = quad;
+    float blockers = found.x;
     if (blockers == 0.0) return 1.0;
-    float db = blockerSum / blockers;
+    float db = found.y / blockers;
     // 2. The penumbra's half width at the receiver, by similar triangles.
     float radius = min((perspective ? size * (dr - db) / max(db, 1e-6) : (dr - db) * size) / texel, limit);
 #if MAP_EARLY_OUT
     // Umbra: every blocker tap blocked and the filter's disk inside their
     // hull (MapSettings: vogelHullInradius): every filter tap is too.
-    if (blockers == float(blockerTaps) && radius <= map.blockerHull * search) return 0.0;
+    if (blockers == found.z && radius <= map.blockerHull * search) return 0.0;
 #endif
     // 3. Percentage-closer filtering over it.
     int taps = int(map.filterTaps);

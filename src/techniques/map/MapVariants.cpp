@@ -71,6 +71,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.transmittance = translucentCasters;
     v.plainFetch = map::plainFetch(o, v.cube, softwareRasterizer);
     v.pcssNearest = softwareRasterizer && o.filter == MapFilter::Pcss;
+    v.quadShared = o.filter == MapFilter::Pcss && v.representation == MapRepresentation::Depth && !o.atlas;
     v.earlyOut = map::earlyOut(o, v.cube, softwareRasterizer);
     v.warped = !v.cube && o.warp == MapWarp::Lispsm;
     v.atlas = o.atlas;
@@ -90,6 +91,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_TRANSMIT", transmittance)
         .set("MAP_PLAIN_FETCH", plainFetch)
         .set("MAP_PCSS_NEAREST", pcssNearest)
+        .set("MAP_QUAD_SHARED", quadShared)
         .set("MAP_EARLY_OUT", earlyOut)
         .set("MAP_WARP", warped)
         .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))

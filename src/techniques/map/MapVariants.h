@@ -33,6 +33,12 @@ struct LightPassVariant {
     /// 800x600; RMSE against the area light 0.0250 against 0.0245). A GPU
     /// keeps the bilinear compare.
     bool pcssNearest = false;
+    /// pcss (a depth map, not the atlas's): the blocker search shared by the
+    /// 2x2 pixels of a quad, each fetching every fourth of its taps, the
+    /// sums exchanged through fine derivatives (shadow_map_filter_pcss.glsl);
+    /// the light pass runs the test before any branch or discard, where the
+    /// quad's fragments all run (lighting.frag: SHADOW_QUAD_UNIFORM)
+    bool quadShared = false;
     /// grid and pcf20: the corners first, the rest skipped where they agree (MapSettings: kernelRounds)
     bool earlyOut = false;
     /// warp lispsm: the offsets take the warped texel's size per point (a
