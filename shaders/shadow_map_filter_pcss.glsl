@@ -10,6 +10,18 @@
 // pixel fetching every fourth about its own point and testing them against
 // its own receiver plane, the blockers found and their depths summed over
 // the quad; the filter's taps stay each pixel's own.
+
+// How far from the receiver's ray the blocker search reaches, in light
+// radii, for a receiver `dr` from the light (a spot: along its axis): a
+// blocker db from the light shades it from within (dr - db) / db radii of
+// its ray there, and none is nearer than map.blockerNear (the nearest
+// caster drawn into the map); at most three radii (blockers at least a
+// quarter of the way from the light), as where that is unknown (0).
+float blockerReach(float dr) {
+    float nearest = map.blockerNear;
+    return nearest > 0.0 ? clamp((dr - nearest) / nearest, 0.0, 3.0) : 3.0;
+}
+
 #if MAP_CUBE
 float cubeReach(float texel, float radius) { return 0.0; }  // each tap compares against the receiver's plane itself
 
@@ -30,18 +42,18 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     vec3 b = cross(axis, t);
     float nv = dot(n, v);
     float rotation = mapRotation();
-    // 1. Blockers within three radii of the ray at the receiver (those at
-    // least a quarter of the way from the light): this pixel's share of the
-    // quad's search (found: blockers, the sum of their distances, taps
-    // taken), none where it is lit without a test (beyond the far plane or
-    // at the light: shadow_map_cube_lookup.glsl).
+    // 1. Blockers within blockerReach radii of the ray at the receiver:
+    // this pixel's share of the quad's search (found: blockers, the sum of
+    // their distances, taps taken), none where it is lit without a test
+    // (beyond the far plane or at the light: shadow_map_cube_lookup.glsl).
+    float search = blockerReach(dr) * size;
     int blockerTaps = int(map.blockerTaps);
     vec3 found = vec3(0.0);
     int first = quadLane();
     vec2 d = vogelFirst(quadRotation() + float(first) * SL_MAP_GOLDEN_ANGLE);
     vec2 turn = vogelStep(4);
     for (int k = first; k < blockerTaps; k += 4, d = vogelTurnBy(d, turn)) {
-        vec3 w = v + vogelOffset3D(k, blockerTaps, 3.0 * size, d, t, b);
+        vec3 w = v + vogelOffset3D(k, blockerTaps, search, d, t, b);
         float depth = cubeDepthAt(w);
         if (depth < cubePlaneRef(w, n, nv, ref)) found.xy += vec2(1.0, depth * map.cubeFar);
         found.z += 1.0;
@@ -55,7 +67,7 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
 #if MAP_EARLY_OUT
     // Umbra: every blocker tap blocked and the filter's disk inside their
     // hull (MapSettings: vogelHullInradius): every filter tap is too.
-    if (blockers == found.z && penumbra <= map.blockerHull * 3.0 * size) return 0.0;
+    if (blockers == found.z && penumbra <= map.blockerHull * search) return 0.0;
 #endif
     // 3. Percentage-closer filtering over it.
     int taps = int(map.filterTaps);
@@ -92,9 +104,10 @@ float mapFilter(MapLookup m, vec2 uv, float ref) {
     // within the region a blocker can shade it from: directional, the light's
     // angular radius over the depth up to the light camera's near plane;
     // spot, three radii at the receiver (blockers at least a quarter of the
-    // way from the light). At most an eighth of the map.
+    // way from the light; nearer where the nearest caster is known:
+    // blockerReach). At most an eighth of the map.
     float limit = 0.125 / du;
-    float search = clamp((perspective ? 3.0 * size : (dr - m.planes.x) * size) / texel, 1.0, limit);
+    float search = clamp((perspective ? blockerReach(dr) * size : (dr - m.planes.x) * size) / texel, 1.0, limit);
     // This pixel's share of the quad's search (found: blockers, the sum of
     // their distances, taps taken), none outside the map (lit:
     // shadow_map_2d.glsl); all of it where it searches alone (a cascade's

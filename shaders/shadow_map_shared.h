@@ -86,7 +86,8 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float warpV;            // ... and along it per t^2, t = dot(warpPlane.xyz, point) + warpPlane.w
     float atlasTiles;       // atlas: the light's tiles in the shadow atlas (1 a spot's, 6 a point light's; 0 none this frame); `layer` is its first
     float atlasBilinear;    // atlas: 1 for a bilinear compare (filter hardware), 0 the nearest texel
-    float padding2, padding3, padding4; // to a whole 16 bytes (std140 rounds the block up)
+    float blockerNear;      // pcss, spot and point lights: no caster is nearer the light than this, scene units (a spot: along its axis; 0: unknown)
+    float padding3, padding4; // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

@@ -109,6 +109,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.farPlane = p.cube ? p.cubeCamera.farPlane : p.camera.farPlane;
     u.blockerTaps = static_cast<float>(p.options.blockerSamples);
     u.blockerHull = vogelHullInradius(p.options.blockerSamples);
+    u.blockerNear = p.nearestCaster;
     u.bleedReduction = p.options.bleedReduction;
     u.transmittance = translucent ? 1.0f : 0.0f;
     uniforms_ = u;

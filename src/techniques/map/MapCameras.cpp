@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -169,6 +170,28 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
     if (!p.cube && p.camera.casts.empty()) {
         p.camera.casts = castersThatMatter(towardsLight(light), p.camera.viewFromWorld, in);
     }
+    p.nearestCaster = p.options.filter == MapFilter::Pcss && (p.cube || light.type == LightType::Spot) ? nearestCaster(p, light, frame) : 0.0f;
+}
+
+float nearestCaster(const MapLight& p, const Light& light, const FrameInfo& frame) {
+    const glm::mat4& view = p.camera.viewFromWorld;
+    const glm::vec3 axis = -glm::vec3(view[0][2], view[1][2], view[2][2]);  // a spot camera's view direction
+    float nearest = std::numeric_limits<float>::infinity();
+    for (std::size_t i = 0; i < frame.items.size(); ++i) {
+        if (!frame.items[i].castsShadows) continue;
+        const Bounds& box = frame.itemBounds[i];
+        if (p.cube) {
+            if (p.faceMask(i) == 0) continue;
+            nearest = std::min(nearest, glm::length(glm::max(glm::max(box.lo - light.position, light.position - box.hi), glm::vec3(0.0f))));
+        } else if (castsInto(p.camera, frame, i, false)) {
+            // The box's least depth along the axis: per axis the side the axis leaves behind.
+            const glm::vec3 corner = glm::mix(box.hi, box.lo, glm::vec3(glm::greaterThanEqual(axis, glm::vec3(0.0f))));
+            nearest = std::min(nearest, glm::dot(corner - light.position, axis));
+        }
+    }
+    if (!std::isfinite(nearest)) return 0.0f;
+    // Nothing nearer than the camera's near plane is drawn.
+    return std::max(nearest, p.cube ? p.cubeCamera.nearPlane : p.camera.nearPlane);
 }
 
 bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i, bool moments) {

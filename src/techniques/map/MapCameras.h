@@ -29,6 +29,12 @@ bool usesSamples(const MapLight& p, const Light& light);
 /// directionalLightView for this frame's items): the reduction's space.
 glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame);
 
+/// How near the light the casters drawn into a spot's or point light's map
+/// come (MapLight::nearestCaster): a point light's distance to the nearest
+/// caster's box, a spot's least depth of one along its axis, at least the
+/// camera's near plane; 0 when no caster is drawn. p's cameras fitted.
+float nearestCaster(const MapLight& p, const Light& light, const FrameInfo& frame);
+
 /// Whether item i is drawn into `camera`'s map: it may cast there, and its
 /// bounds reach the frustum (an orthographic light's sides only: it clamps
 /// depth). A moment map takes every caster in the frustum, the floors too:

@@ -60,6 +60,11 @@ struct MapLight {
     /// kept while the depths seen stay within it (0, 0: none yet).
     glm::vec2 sampledDepths{0.0f};
     float firstSliceNear = 0.0f;  ///< cascades: where the first slice starts along the view (fitCascades)
+    /// Spot and point lights: how near the light the casters drawn into its
+    /// map come, scene units (a point light: the distance to the nearest
+    /// caster's box; a spot: along its axis), so that no blocker is nearer
+    /// (pcss's blocker search: map.blockerNear); 0 when none is drawn.
+    float nearestCaster = 0.0f;
     std::vector<gl::Framebuffer> cascadeFbos;
     /// atlas: its tiles in the shadow atlas (MapAtlas): the first's index
     /// among the atlas's tiles, how many (0 when culled: its reach is out
