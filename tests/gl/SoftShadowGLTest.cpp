@@ -60,7 +60,7 @@ class SoftShadowGLTest : public GLTest {};
 
 // The bar: RMSE at most 0.05 against the 1024-sample reference on
 // every lecture scene made soft (spot and point lights of radius 0.3,
-// directional ones 2 degrees across); measured 0.010 to 0.034. And always
+// directional ones 2 degrees across); measured 0.010 to 0.028. And always
 // closer than the hard map (filter "hardware", measured 0.018 to 0.12) to
 // the soft truth (that one against 256 samples: it only has to lose).
 TEST_F(SoftShadowGLTest, PcssMatchesTheAreaLightReferenceOnTheLectureScenes) {
@@ -82,7 +82,7 @@ TEST_F(SoftShadowGLTest, PcssMatchesTheAreaLightReferenceOnTheLectureScenes) {
 }
 
 // The large light: torus-floating's sun 3 degrees across, and a
-// point light of radius 1 a third of its height (measured 0.016 and 0.029).
+// point light of radius 1 a third of its height (measured 0.016 and 0.020).
 // Larger point lights over this torus miss the bar (radius 1.5: 0.065,
 // radius 3: 0.076, docs/techniques.md): PCSS keeps one blocker depth per
 // pixel, the torus's top, while its thick tube and its hole shade from
