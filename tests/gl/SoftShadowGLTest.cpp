@@ -81,15 +81,15 @@ TEST_F(SoftShadowGLTest, PcssMatchesTheAreaLightReferenceOnTheLectureScenes) {
     }
 }
 
-// The issue's large light: torus-floating's sun 3 degrees across, and a
-// point light of radius 1 a third of its height (measured 0.016 and 0.020).
-// Larger point lights over this torus miss the bar (radius 1.5: 0.065,
-// radius 3: 0.076, docs/techniques.md): PCSS keeps one blocker depth per
-// pixel, the torus's top, while its thick tube and its hole shade from
-// other depths.
+// The issue's large light: torus-floating's sun 3 degrees across, and
+// point lights of radius 1 and 2, a third and two thirds of their height
+// (measured 0.016, 0.020 and 0.031; radius 3: 0.046, docs/techniques.md).
+// Before the blocker search was bounded by the nearest caster (it reached
+// three radii), radius 1.5 and more missed the bar (0.065 to 0.084).
 TEST_F(SoftShadowGLTest, PcssMatchesTheAreaLightReferenceForALargeLight) {
     const fs::path path = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "torus-floating.json";
-    for (const std::string& light : {std::string("lights[0].size=3"), std::string(R"(lights[0]={"type":"point","position":[2,6,1.5],"size":1})")}) {
+    for (const std::string& light : {std::string("lights[0].size=3"), std::string(R"(lights[0]={"type":"point","position":[2,6,1.5],"size":1})"),
+                                     std::string(R"(lights[0]={"type":"point","position":[2,6,1.5],"size":2})")}) {
         SCOPED_TRACE(light);
         const Comparison c = compareScene(
             loadSceneFile(path, {light, "lights[0].shadow.technique=\"map\"", "lights[0].shadow.map.filter=\"pcss\""}), 480, 270, 1024);
