@@ -45,7 +45,7 @@ const OptionTable& mapOptionTable() {
             .boolean(&MapOptions::earlyOut, "earlyOut",
                      "grid (nearest taps, 2D maps) and pcf20 filters: the kernel's corners first (and an odd grid's centre), and where they all agree the taps between them are skipped; pcss: where every blocker tap finds a blocker and the filter's disk lies inside their hull, the filter is skipped; either differs from taking every tap only where a caster's edge bends or ends between agreeing taps; false: every tap (docs/techniques.md)")
             .integer(&MapOptions::samples, "samples", 4, 64, "taps", "poisson and pcss filters: taps on the disk")
-            .integer(&MapOptions::blockerSamples, "blockerSamples", 4, 64, "taps", "pcss filter: taps of the blocker search")
+            .integer(&MapOptions::blockerSamples, "blockerSamples", 4, 64, "taps", "pcss filter: taps of the blocker search, shared by each 2x2 quad of pixels (each fetches every fourth; docs/techniques.md)")
             .number(&MapOptions::radius, "radius", 0.0, 32.0, "texels", "poisson filter: disk radius")
             .number(&MapOptions::constantBias, "constantBias", 0.0, 0.1, "depth (0..1)", "subtracted from the receiver's map depth")
             .number(&MapOptions::slopeBias, "slopeBias", 0.0, 16.0, "polygon offset factor", "shadow pass: depth offset per unit of depth slope")
