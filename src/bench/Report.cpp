@@ -309,7 +309,8 @@ PassSums passSums(const json& r) {
 // to it: the rest is what is left, at least 0.
 std::string costBar(const json& r, const json& l, double scale) {
     const double frame = r["frameMs"]["median"].get<double>();
-    const double pass = l.value("shadowPassMs", 0.0), floor = std::min(l.value("shadowFloorMs", 0.0), pass);
+    // A pass or floor clocked below 0 (their differences, on a busy machine) counts as 0.
+    const double pass = std::max(l.value("shadowPassMs", 0.0), 0.0), floor = std::clamp(l.value("shadowFloorMs", 0.0), 0.0, pass);
     const double lookup = std::max(l.value("lookupMs", 0.0), 0.0), rest = std::max(frame - pass - lookup, 0.0);
     const double lookupFloor = std::clamp(l.value("lookupFloorMs", 0.0), 0.0, lookup);
     std::ostringstream s;
