@@ -28,7 +28,7 @@ float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, ve
 #endif
 float cubeStored(vec3 direction, float ref) {
     vec3 a = abs(direction);
-    float axis = (ref - map.cubeOffset) * map.cubeFar * max(a.x, max(a.y, a.z)) / length(direction);
+    float axis = (ref - map.cubeOffset) * map.cubeFar * max(a.x, max(a.y, a.z)) * inversesqrt(dot(direction, direction));
     float n = map.nearPlane, f = map.farPlane;
     return n * (f - axis) / ((f - n) * axis);
 }
