@@ -15,18 +15,16 @@ float mapRotation() { return 6.2831853 * mapNoise(gl_FragCoord.xy); }
 // per tap; on llvmpipe they were a fifth of PCSS's lookup).
 float vogelRadius(int k, int n) { return sqrt((float(k) + 0.5) / float(n)); }
 vec2 vogelFirst(float rotation) { return vec2(cos(rotation), sin(rotation)); }
-vec2 vogelTurn(vec2 d) {
-    const vec2 g = vec2(cos(SL_MAP_GOLDEN_ANGLE), sin(SL_MAP_GOLDEN_ANGLE));
-    return vec2(d.x * g.x - d.y * g.y, d.x * g.y + d.y * g.x);
-}
-// A turn by `stride` golden angles (the next tap of a pixel that takes
-// every stride-th tap of a disk: 1, or 4 in a quad's share below).
+// The turn by `stride` golden angles (the next tap of a pixel that takes
+// every stride-th tap of a disk: 1, or 4 in a quad's share below), and
+// direction d turned by it.
 vec2 vogelStep(int stride) {
     const vec2 g1 = vec2(cos(SL_MAP_GOLDEN_ANGLE), sin(SL_MAP_GOLDEN_ANGLE));
     const vec2 g4 = vec2(cos(4.0 * SL_MAP_GOLDEN_ANGLE), sin(4.0 * SL_MAP_GOLDEN_ANGLE));
     return stride == 4 ? g4 : g1;
 }
 vec2 vogelTurnBy(vec2 d, vec2 g) { return vec2(d.x * g.x - d.y * g.y, d.x * g.y + d.y * g.x); }
+vec2 vogelTurn(vec2 d) { return vogelTurnBy(d, vogelStep(1)); }
 
 // One disk shared by the 2x2 pixels of a quad (MAP_QUAD_SHARED: pcss's
 // blocker search): turned by the quad's rotation, each pixel takes every
