@@ -37,6 +37,8 @@ struct LightCamera {
     glm::vec4 warpPlane{0.0f};
     float warpU = 0.0f, warpV = 0.0f;
     glm::mat4 clipFromWorld() const { return clipFromView * viewFromWorld; }
+    /// The unit direction the camera looks along: minus the view matrix's third row.
+    glm::vec3 axis() const { return -glm::vec3(viewFromWorld[0][2], viewFromWorld[1][2], viewFromWorld[2][2]); }
 };
 
 /// The view a directional light's map is warped for (light space

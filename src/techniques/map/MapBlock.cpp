@@ -97,9 +97,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     else
         u.lightPosition = light.position;
     u.shadowedLight = p.options.shadowedLight;
-    // The light camera's view direction: minus the view matrix's third row.
-    const glm::mat4& v = p.camera.viewFromWorld;
-    u.lightAxis = -glm::vec3(v[0][2], v[1][2], v[2][2]);
+    u.lightAxis = p.camera.axis();
     if (p.cube) cubeMembers(u, p, g);
     cascadeMembers(u, p);
     // PCSS: the light's size as the similar triangles take it.

@@ -174,8 +174,7 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
 }
 
 float nearestCaster(const MapLight& p, const Light& light, const FrameInfo& frame) {
-    const glm::mat4& view = p.camera.viewFromWorld;
-    const glm::vec3 axis = -glm::vec3(view[0][2], view[1][2], view[2][2]);  // a spot camera's view direction
+    const glm::vec3 axis = p.camera.axis();  // a spot's
     float nearest = std::numeric_limits<float>::infinity();
     for (std::size_t i = 0; i < frame.items.size(); ++i) {
         if (!frame.items[i].castsShadows) continue;
