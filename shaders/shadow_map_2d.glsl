@@ -84,21 +84,21 @@ float mapFilter(MapLookup m, vec2 uv, float ref);
 
 // The test in a map, at texture-space point s (before the divide);
 // `transmit` becomes the translucent casters' transmittance there (left as
-// it was outside the map).
+// it was outside the map). Outside the map, behind a perspective light or
+// beyond its far plane: lit, never falsely shadowed (004). The filter runs
+// there too and its answer is dropped, with no early return: a rasteriser
+// that runs both sides of a branch (llvmpipe) paid for the return's masks
+// (0.1-0.2 ms of an 800x600 frame), and PCSS's quad-shared search needs
+// every fragment of the quad to run it anyway (m.inside: no share).
 float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
-#if MAP_QUAD_SHARED
-    // The filter's search is shared by the quad: every fragment goes on to
-    // it, one outside the map with no share (m.inside), lit after it.
     m.inside = s.w > 0.0;
     s.xyz /= m.inside ? s.w : 1.0;
     m.inside = m.inside && all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0))) && s.z <= 1.0;
-#else
-    if (s.w <= 0.0) return 1.0;
-    s.xyz /= s.w;
-    // Outside the map or beyond its far plane: lit, never falsely shadowed (004).
-    if (any(lessThan(s.xy, vec2(0.0))) || any(greaterThan(s.xy, vec2(1.0))) || s.z > 1.0) return 1.0;
+    float ref = s.z - map.constantBias;
+#if MAP_PRESET_BIAS
+    // LearnOpenGL's own bias, slope-scaled, in place of the offsets (the preset).
+    ref -= max(map.slopeDepthBias * (1.0 - NdotL), map.minDepthBias);
 #endif
-    float ref = s.z - map.constantBias - max(map.slopeDepthBias * (1.0 - NdotL), map.minDepthBias);
     if (m.inside) transmit = transmittanceAt(m.layer, s.xy, ref);
     float v = mapFilter(m, s.xy, ref);
     return m.inside ? v : 1.0;
@@ -156,7 +156,9 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
 }
 #else
 in vec4 vShadowCoord;   // from shadow_map_vertex.glsl: the offset point in texture space
-in float vShadowNdotL;
+#if MAP_PRESET_BIAS
+in float vShadowNdotL;  // N.L at the vertex, for the preset's slope-scaled bias
+#endif
 
 // The shadow test's visibility, 0 (shadowed) to 1 (lit); `transmit`, the
 // translucent casters' transmittance.
@@ -172,6 +174,10 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     m.dx = dFdx(q);
     m.dy = dFdy(q);
 #endif
+#if MAP_PRESET_BIAS
     return mapTest(m, vShadowCoord, vShadowNdotL, transmit);
+#else
+    return mapTest(m, vShadowCoord, 1.0, transmit);
+#endif
 }
 #endif

@@ -89,19 +89,17 @@ float cubeReach(float texel, float radius);
 float cubeFilter(vec3 v, float ref, vec3 n, float radius);
 
 // The shadow test's visibility, 0 (shadowed) to 1 (lit); `transmit`, the
-// translucent casters' transmittance.
+// translucent casters' transmittance. At the light or beyond the far
+// plane: lit (004). The filter runs there too and its answer is dropped,
+// with no early return (a rasteriser that runs both sides of a branch paid
+// for the return's masks; PCSS's quad-shared search needs every fragment
+// of the quad to run it: it sees from its vector that such a fragment
+// takes no share).
 float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     vec3 toLight = map.lightPosition - worldPosition;
     float d = length(toLight);
-#if MAP_QUAD_SHARED
-    // The filter's search is shared by the quad: every fragment goes on to
-    // it; one at the light or beyond the far plane takes no share in it
-    // (the filter sees that from its vector) and is lit after it.
     bool lit = d <= 0.0;
     d = lit ? 1.0 : d;
-#else
-    if (d <= 0.0) return 1.0;
-#endif
     vec3 L = toLight / d;
     vec3 n = worldNormal;
     float NdotL = clamp(dot(n, L), 0.0, 1.0);
@@ -111,27 +109,19 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     float radius = map.diskRadius * (1.0 + map.diskGrowth * length(frame.cameraPosition.xyz - worldPosition) / map.cubeFar);
     float reachWorld = cubeReach(texel, radius);
     vec3 p = worldPosition;
-    float ref;
-    if (map.presetBiasOnly > 0.5) {
-        // The presets: their constant bias only (in stored-depth units).
-        ref = length(p - map.lightPosition) / map.cubeFar - map.constantBias;
-    } else {
-        // The normal offset, then the receiver-plane bias for the filter's
-        // reach (as for 2D maps, along the ray: shadow_map_bias.glsl).
-        p = mapNormalOffset(p, n, NdotL, texel);
-        float tanTheta = mapTanTheta(n, L, NdotL);
-        ref = (length(p - map.lightPosition) - reachWorld * tanTheta) / map.cubeFar - map.constantBias;
-    }
+#if MAP_PRESET_BIAS
+    // The presets: their constant bias only (in stored-depth units).
+    float ref = length(p - map.lightPosition) / map.cubeFar - map.constantBias;
+#else
+    // The normal offset, then the receiver-plane bias for the filter's
+    // reach (as for 2D maps, along the ray: shadow_map_bias.glsl).
+    p = mapNormalOffset(p, n, NdotL, texel);
+    float tanTheta = mapTanTheta(n, L, NdotL);
+    float ref = (length(p - map.lightPosition) - reachWorld * tanTheta) / map.cubeFar - map.constantBias;
+#endif
     vec3 v = p - map.lightPosition;
-    // Beyond the far plane: lit (004).
-#if MAP_QUAD_SHARED
     lit = lit || length(v) > map.cubeFar;
     if (!lit) transmit = cubeTransmittanceAt(v, ref);
     float visibility = cubeFilter(v, ref, n, radius);
     return lit ? 1.0 : visibility;
-#else
-    if (length(v) > map.cubeFar) return 1.0;
-    transmit = cubeTransmittanceAt(v, ref);
-    return cubeFilter(v, ref, n, radius);
-#endif
 }

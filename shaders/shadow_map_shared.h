@@ -56,7 +56,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float texelWorld;       // world size of a map texel (perspective: per unit of distance along the axis)
     float perspective;      // 1 for a perspective light camera, 0 orthographic
     float constantBias;     // stored depth units, subtracted from the receiver's depth
-    float slopeDepthBias;   // stored depth units times (1 - N.L) (preset learnopengl) ...
+    float slopeDepthBias;   // stored depth units times (1 - N.L) (preset learnopengl, MAP_PRESET_BIAS) ...
     float minDepthBias;     // ... and the least of it: max(slopeDepthBias (1 - N.L), minDepthBias) + constantBias
     float normalBiasTexels; // the receiver moved along its normal by this many texels times 1 - N.L
     float texelUv;          // one texel in uv (1 / size)
@@ -69,7 +69,6 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float diskRadius;       // cube maps: filter radius at the fragment, world units
     float diskGrowth;       // cube maps: the radius's growth per (viewer distance / far)
     float cubeOffset;       // cube maps, shadow pass: constant offset, stored depth units
-    float presetBiasOnly;   // cube maps: 1 when the bias is the presets' constant only (no normal or receiver-plane offset)
     float lightSize;        // pcss: directional, tan of half its angular diameter; spot, point: its radius, scene units
     float nearPlane;        // the light camera's near plane, scene units
     float farPlane;         // and far plane
@@ -87,7 +86,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     float atlasTiles;       // atlas: the light's tiles in the shadow atlas (1 a spot's, 6 a point light's; 0 none this frame); `layer` is its first
     float atlasBilinear;    // atlas: 1 for a bilinear compare (filter hardware), 0 the nearest texel
     float blockerNear;      // pcss, spot and point lights: no caster is nearer the light than this, scene units (a spot: along its axis; 0: unknown)
-    float padding3, padding4; // to a whole 16 bytes (std140 rounds the block up)
+    float padding3, padding4, padding5; // to a whole 16 bytes (std140 rounds the block up)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

@@ -16,7 +16,9 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {}
 #else
 
 out vec4 vShadowCoord;  // map.shadowFromWorld times the offset point
+#if MAP_PRESET_BIAS
 out float vShadowNdotL; // N.L at the vertex, for the learnopengl preset's bias
+#endif
 
 void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     vec3 toLight = map.perspective > 0.5 ? normalize(map.lightPosition - worldPosition) : map.towardsLight;
@@ -39,6 +41,8 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     // The normal offset, then the receiver-plane bias for the filter's reach (shadow_map_bias.glsl).
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), toLight, texel, mapTanTheta(n, toLight, NdotL));
     vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);
+#if MAP_PRESET_BIAS
     vShadowNdotL = NdotL;
+#endif
 }
 #endif

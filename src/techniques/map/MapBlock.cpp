@@ -27,7 +27,7 @@ const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::
 void cubeMembers(shared::MapUniforms& u, const MapLight& p, const MapArray& g) {
     const CubeCamera& c = p.cubeCamera;
     for (std::size_t f = 0; f < 6; ++f) u.faceClipFromWorld[f] = c.faceClipFromWorld[f];
-    const bool presetBias = p.options.preset != MapPreset::Default;
+    const bool presetBias = usesPresetBias(p.options, true);
     // The presets give their constant bias in world units (001, LearnOpenGL: 0.15).
     u.constantBias = presetBias ? p.options.constantBias / c.farPlane : p.options.constantBias;
     // The constant offset in the format's smallest steps.
@@ -38,7 +38,6 @@ void cubeMembers(shared::MapUniforms& u, const MapLight& p, const MapArray& g) {
     u.diskRadius = p.options.diskRadius;
     u.diskGrowth = p.options.diskGrowth;
     u.cubeOffset = p.options.offsetUnits * step;
-    u.presetBiasOnly = presetBias ? 1.0f : 0.0f;
 }
 
 // The cascades' members: each one's texture-space matrix, far end, texel and planes.
@@ -79,8 +78,8 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.perspective = p.camera.perspective ? 1.0f : 0.0f;
     u.constantBias = p.options.constantBias;
     u.normalBiasTexels = p.options.normalBias;
-    if (p.options.preset == MapPreset::LearnOpenGL && !p.cube) {
-        // LearnOpenGL's bias: max(0.05 (1 - N.L), 0.005), nothing else.
+    if (usesPresetBias(p.options, p.cube) && !p.cube) {
+        // LearnOpenGL's bias: max(0.05 (1 - N.L), 0.005), nothing else (MAP_PRESET_BIAS).
         u.constantBias = 0.0f;
         u.slopeDepthBias = 0.05f;
         u.minDepthBias = 0.005f;

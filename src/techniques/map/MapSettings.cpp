@@ -260,6 +260,9 @@ bool isCube(const Light& light) {
 bool isLecture2D(const MapOptions& o, const Light& light) {
     return !isCube(light) && (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000);
 }
+bool usesPresetBias(const MapOptions& o, bool cube) {
+    return cube ? o.preset != MapPreset::Default : o.preset == MapPreset::LearnOpenGL;
+}
 // The presets' fixed near and far planes for a cube (001 and LearnOpenGL: 1 and 25); 0: fitted.
 std::pair<float, float> cubeNearFar(const MapOptions& o) {
     return o.preset == MapPreset::Lecture || o.preset == MapPreset::LearnOpenGL ? std::pair{1.0f, 25.0f} : std::pair{0.0f, 0.0f};

@@ -20,6 +20,11 @@ MapOptions effective(const Light& light);
 bool isCube(const Light& light);
 /// Lecture 000's 2D settings (the window-sized map, the dither spread).
 bool isLecture2D(const MapOptions& o, const Light& light);
+/// Whether the light pass takes a preset's own bias in place of the normal
+/// and receiver-plane offsets: LearnOpenGL's slope-scaled depth bias on a
+/// 2D map, any preset's constant bias alone on a cube (MapBlock's values,
+/// LightPassVariant::presetBias).
+bool usesPresetBias(const MapOptions& o, bool cube);
 /// The presets' fixed near and far planes for a cube (001 and LearnOpenGL: 1 and 25); 0: fitted.
 std::pair<float, float> cubeNearFar(const MapOptions& o);
 /// The maps of a directional light's cascades (1 for any other light).

@@ -75,6 +75,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.earlyOut = map::earlyOut(o, v.cube, softwareRasterizer);
     v.warped = !v.cube && o.warp == MapWarp::Lispsm;
     v.atlas = o.atlas;
+    v.presetBias = !o.atlas && usesPresetBias(o, v.cube);
     return v;
 }
 
@@ -96,6 +97,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_WARP", warped)
         .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))
         .set("MAP_ATLAS", atlas)
+        .set("MAP_PRESET_BIAS", presetBias)
         .str();
 }
 

@@ -46,6 +46,12 @@ struct LightPassVariant {
     bool warped = false;
     /// atlas: the light's tiles of the shadow atlas (shadow_map_atlas.glsl), not a map of its own
     bool atlas = false;
+    /// A preset's own bias in place of the normal and receiver-plane
+    /// offsets: LearnOpenGL's slope-scaled depth bias on a 2D map (with N.L
+    /// from the vertex), a cube's constant bias alone. A define, so that the
+    /// default maps carry neither the code nor the varying (llvmpipe: 0.2-0.3
+    /// ms of an 800x600 frame's lookups).
+    bool presetBias = false;
     /// The variant of `light` (its effective options); `softwareRasterizer`
     /// picks the grid's taps; `translucentCasters`, whether the frame has any.
     static LightPassVariant of(const Light& light, bool softwareRasterizer, bool translucentCasters);
