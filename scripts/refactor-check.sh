@@ -131,6 +131,13 @@ for filter in none grid pcf20; do case_ "map-point-preset-lecture-$filter" rende
 case_ "map-point-preset-learnopengl" render "$point" --set "$T=map" "$M.preset=learnopengl"
 case_ "map-point-preset-lecture-000" render "$S/torus-pyramid.json" --set "$T=map" "$M.preset=lecture-000"
 case_ "map-room-point-t2" render "$S/room-point.json" --set "$T=map" --time 2
+# The shadow atlas: one spot or point light's tiles through the map's own
+# pass, and the generated lights of many-lights.json through the light list.
+for light in spot point; do
+  for filter in none hardware; do case_ "map-$light-atlas-$filter" render "${!light}" --set "$T=map" "$M.atlas=true" "$M.filter=$filter"; done
+done
+for count in 16 64; do case_ "atlas-many-lights-$count" render "$S/many-lights.json" --set "lightGrid.count=$count"; done
+case_ "atlas-many-lights-64-hardware" render "$S/many-lights.json" --set 'lightGrid.light.shadow.map.filter=hardware'
 # Translucent and alpha-tested casters with every light type.
 glass=$S/glass-panel.json
 case_ "map-glass-spot" render "$glass" --set "$T=map"
