@@ -33,28 +33,32 @@ uint atlasFace(vec3 d) {
 // instead, exact on a flat triangle; a pass over many lights cannot). The
 // tile's polygon offset adds its slope term when it is drawn. Lookups stay
 // inside the tile (its outermost texels' centres); outside the rectangle
-// its casters may cover (AtlasTile.casters) the point is lit without a
-// fetch (the texels there were neither cleared nor drawn this frame).
+// its casters may cover (AtlasTile.casters) the point is lit (the texels
+// there were neither cleared nor drawn this frame). Past the count, every
+// step runs and the answer is dropped where the point is lit, with no early
+// return: a rasteriser that runs both sides of a branch (llvmpipe) pays for
+// a return's masks, here once per listed light and pixel.
 float atlasVisibility(vec4 shadow, vec3 lightPosition, vec3 p, vec3 n, float NdotL) {
     uint count = uint(shadow.y);
-    if (count == 0u) return 1.0;
+    if (count == 0u) return 1.0;  // no tile this frame: none to read
     uint t = uint(shadow.x);
     if (count == 6u) t += atlasFace(p - lightPosition);
-    if (atlasTiles[t].params.y == 0.0) return 1.0;  // no caster in this tile
     mat4 m = atlasTiles[t].atlasFromWorld;
     float texel = atlasTiles[t].params.x * max((m * vec4(p, 1.0)).w, 0.0);
     vec3 L = normalize(lightPosition - p);
     vec3 q = p + n * (shadow.z * texel * (1.0 - NdotL)) + L * (SL_ATLAS_CONSTANT_TEXELS * texel);
     vec4 c = m * vec4(q, 1.0);
-    if (!(c.w > 0.0)) return 1.0;  // behind a spot's camera: outside its cone
-    vec3 s = c.xyz / c.w;
+    // Lit: no caster in this tile, or behind a spot's camera (outside its cone).
+    bool lit = atlasTiles[t].params.y == 0.0 || !(c.w > 0.0);
+    vec3 s = c.xyz / (lit ? 1.0 : c.w);
     vec4 box = atlasTiles[t].uvClamp;
     vec2 uv = clamp(s.xy, box.xy, box.zw);
     // Only the texels casters may cover were cleared and drawn: lit elsewhere.
     vec4 drawn = atlasTiles[t].casters;
-    if (any(lessThan(uv, drawn.xy)) || any(greaterThan(uv, drawn.zw))) return 1.0;
-    if (shadow.w > 0.5) return texture(atlasCompare, vec3(uv, s.z));
-    return s.z <= texelFetch(atlasDepth, ivec2(uv * vec2(textureSize(atlasDepth, 0))), 0).r ? 1.0 : 0.0;
+    lit = lit || any(lessThan(uv, drawn.xy)) || any(greaterThan(uv, drawn.zw));
+    float v = shadow.w > 0.5 ? texture(atlasCompare, vec3(uv, s.z))
+                             : (s.z <= texelFetch(atlasDepth, ivec2(uv * vec2(textureSize(atlasDepth, 0))), 0).r ? 1.0 : 0.0);
+    return lit ? 1.0 : v;
 }
 
 #endif
