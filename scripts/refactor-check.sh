@@ -112,6 +112,16 @@ case_ "map-cascades-4-rgba8" render "$field" --set "$T=map" "$M.cascades=4" "$M.
 case_ "map-cascades-4-evsm4" render "$field" --set "$T=map" "$M.cascades=4" "$M.representation=evsm4"
 case_ "map-cascades-4-msm-mipmaps" render "$field" --set "$T=map" "$M.cascades=4" "$M.representation=msm" "$M.mipmaps=true"
 case_ "map-cascades-2-small" render "$dir" --set "$T=map" "$M.cascades=2"
+# Fit sdsm: one map (fitted on the GPU), warped, and cascades (read back).
+long=$S/long-view.json
+for f in long field; do
+  case_ "sdsm-$f-one" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=1"
+  case_ "compare-sdsm-$f-one" compare "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=1"
+  case_ "sdsm-$f-one-lispsm" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=1" "$M.warp=lispsm"
+  case_ "sdsm-$f-cascades" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=4"
+  case_ "sdsm-$f-cascades-tight" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=4" "$M.stabilize=false"
+done
+case_ "sdsm-dir-pcss" render "$dir" --set "$T=map" "$M.fit=sdsm" "$M.filter=pcss" "lights[0].size=2"
 # Point lights: cube maps.
 for filter in none hardware grid poisson pcf20; do case_ "map-point-filter-$filter" render "$point" --set "$T=map" "$M.filter=$filter"; done
 case_ "map-point-filter-pcss" render "$point" --set "$T=map" "$M.filter=pcss" "lights[0].size=0.2"
@@ -147,6 +157,7 @@ glassSun='lights[0]={"type":"directional","direction":[0.1,-0.3,-1],"intensity":
 case_ "map-glass-point" render "$glass" --set "$glassPoint"
 case_ "map-glass-dir" render "$glass" --set "$glassSun"
 case_ "map-glass-dir-cascades" render "$glass" --set "$glassSun" "$M.cascades=2"
+case_ "sdsm-glass-dir" render "$glass" --set "$glassSun" "$M.fit=sdsm"
 # The other techniques' options.
 for style in stencil lecture; do case_ "planar-$style" render "$S/torus-floating.json" --set "$T=planar" "lights[0].shadow.planar.style=$style"; done
 case_ "planar-geometry" render "$S/torus-floating.json" --set "$T=planar" "lights[0].shadow.planar.projection=geometry"

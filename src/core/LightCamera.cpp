@@ -178,6 +178,8 @@ glm::mat4 directionalLightView(const glm::vec3& direction, const FitInput& in) {
     return lightViewOf(direction, scene, diagonalOf(scene));
 }
 
+float sceneDiagonal(const FitInput& in) { return diagonalOf(all(in)); }
+
 namespace {
 
 // The warp's axis: the view direction across the light (unit), and the sine

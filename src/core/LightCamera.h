@@ -77,6 +77,10 @@ struct FitInput {
 /// the scene's centre moved back by its diagonal (fixed while the scene
 /// is). The space FitInput::visibleSamples are given in.
 glm::mat4 directionalLightView(const glm::vec3& direction, const FitInput& in);
+/// The scene's diagonal as the directional fits take it (how far back
+/// directionalLightView stands, and their depth padding of 10^-3 of it):
+/// that of every item's bounds, at least 10^-3; 1 with no items.
+float sceneDiagonal(const FitInput& in);
 
 /// False when the box lies entirely outside the clip volume of
 /// `clipFromWorld` (all eight corners beyond one of its six planes): a

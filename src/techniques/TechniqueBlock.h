@@ -20,14 +20,22 @@ public:
     }
     /// Writes `size` bytes at byte `offset` of the block (its binding unchanged).
     void writePart(std::size_t offset, std::size_t size, const void* data) {
-        if (!buffer_) {
-            buffer_ = gl::Buffer();
-            glNamedBufferStorage(buffer_.id(), sizeof(Block), nullptr, GL_DYNAMIC_STORAGE_BIT);
-        }
+        made();
         glNamedBufferSubData(buffer_.id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(size), data);
+    }
+    /// Copies `size` bytes at byte `from` of buffer `source` to byte
+    /// `offset` of the block, on the GPU (what a shader wrote there).
+    void copyPart(const gl::Buffer& source, std::size_t from, std::size_t offset, std::size_t size) {
+        made();
+        glCopyNamedBufferSubData(source.id(), buffer_.id(), static_cast<GLintptr>(from), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(size));
     }
 
 private:
+    void made() {
+        if (buffer_) return;
+        buffer_ = gl::Buffer();
+        glNamedBufferStorage(buffer_.id(), sizeof(Block), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
     gl::Buffer buffer_{gl::NoCreate};
 };
 

@@ -6,6 +6,7 @@
 #include "GLTestContext.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/SceneFile.h>
 
@@ -198,6 +199,36 @@ TEST_F(SdsmGLTest, TheSharedDepthPrePassChangesNoPixel) {
     for (std::size_t i = 0; i < withPrepass.pixels.size(); i += 4)
         if (!std::equal(&withPrepass.pixels[i], &withPrepass.pixels[i] + 4, &withoutPrepass.pixels[i])) ++differ;
     EXPECT_EQ(differ, 0u) << "pixels that differ with the shared pre-pass";
+}
+
+// One map is fitted on the GPU (shadow_map_sdsm_fit.comp): the frame never
+// reads the samples back, which on a GPU would wait for the frame so far.
+// Cascades still do, and say so in the same counter (the check that the
+// counter counts). That the GPU's fit is the CPU's: scripts/refactor-check.sh
+// --only sdsm, against a build that read them back, changes no pixel.
+TEST_F(SdsmGLTest, OneMapIsFittedWithoutReadingTheSamplesBack) {
+    const auto readBacks = [](const FrameStats& stats) {
+        double n = 0.0;
+        for (const auto& [name, value] : stats.counters)
+            if (name.ends_with("sdsm.readBacks")) n += value;
+        return n;
+    };
+    for (const int cascades : {1, 4}) {
+        Scene scene = sceneOf(kWall);
+        MapOptions& o = scene.lights[0].shadow.edit<MapOptions>();
+        o.fit = MapFit::Sdsm;
+        o.cascades = cascades;
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        RenderOptions options;
+        options.width = 320;
+        options.height = 240;
+        const FrameStats stats = renderer.render(scene, options);
+        if (cascades == 1)
+            EXPECT_EQ(readBacks(stats), 0.0) << "one sdsm map read its samples back";
+        else
+            EXPECT_GT(readBacks(stats), 0.0) << "cascades read their samples back, and the counter must say so";
+    }
 }
 
 // Spot and point lights are refused in one line naming the option.

@@ -122,6 +122,7 @@ public:
             if (auto old = lights_.find(index); old != lights_.end()) {
                 // Fit "sdsm" refits in the shadow pass (renderShadowPass).
                 if (usesSamples(p, light) && old->second.cascades.size() == p.cascades.size()) p.keepCamerasOf(old->second);
+                if (!fitsOnGpu(p, light)) p.gpuFit = nullptr;
                 p.keepTargetsOf(old->second, !p.cube || cubeWindowDepth(p.options) == cubeWindowDepth(old->second.options));
             }
             attachTargets(p, res_.arrays[p.array]);
@@ -153,30 +154,18 @@ public:
                 const auto pre = host.timeScope("prepass");
                 samples_.prepass(host, frame);
             }
-            const bool cascades = cascadeCount(light, p.options) > 1;
-            Bounds seen;
-            {
-                // Cascades: the view's own space, whose z is minus the distance along the view.
+            p.gpuFit = nullptr;
+            if (fitsOnGpu(p, light)) {
+                // One map: fitted on the GPU, no read-back. The CPU's
+                // camera, around where the samples may lie, culls.
+                const Bounds reach = sdsmReach(light, frame);
+                fitCameras(p, light, frame, &reach);
                 const auto reduction = host.timeScope("reduce");
-                seen = samples_.reduce(host, frame, cascades ? frame.viewFromWorld : sdsmLightView(light, frame));
-            }
-            if (!cascades) {
-                fitCameras(p, light, frame, &seen);
-            } else if (!seen.empty()) {
-                const glm::vec2 depths(-seen.hi.z, -seen.lo.z);
-                fitCameras(p, light, frame, nullptr, &depths);
-                if (!p.options.stabilize) {
-                    // Each slice its own box: the points seen at its
-                    // distances, reduced once a slice (Lauritzen et al.'s
-                    // partition bounds). Stabilised slices keep their
-                    // spheres, whose size must not follow the view.
-                    const auto slicesScope = host.timeScope("reduceSlices");
-                    const glm::mat4 lightView = sdsmLightView(light, frame);
-                    std::vector<glm::vec2> distances;
-                    for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) distances.push_back(sliceDistances(p, c));
-                    const std::vector<Bounds> slices = samples_.reduceSlices(host, frame, lightView, distances);
-                    fitCameras(p, light, frame, nullptr, &depths, &slices);
-                }
+                gl::Buffer& fitted = gpuFits_.try_emplace(view.index, gl::NoCreate).first->second;
+                samples_.fitOnGpu(host, frame, gpuFitInput(p, light, frame), fitted);
+                p.gpuFit = &fitted;
+            } else {
+                refitOnCpu(host, frame, light, p);
             }
         }
         if (p.options.atlas)
@@ -239,11 +228,43 @@ public:
         const MapLight& p = found->second;
         if (p.cube)
             out.insert(out.end(), p.cubeCamera.faceClipFromWorld.begin(), p.cubeCamera.faceClipFromWorld.end());
+        else if (p.gpuFit)
+            out.push_back(readFit(*p.gpuFit, p.camera).clipFromWorld());  // the camera the GPU fitted
         else
             for (const LightCamera& camera : p.cameras()) out.push_back(camera.clipFromWorld());
     }
 
 private:
+    // Fit "sdsm" with cascades or a warp: the samples read back and the
+    // cameras refitted on the CPU (MapSdsm).
+    void refitOnCpu(TechniqueHost& host, const FrameInfo& frame, const Light& light, MapLight& p) {
+        const bool cascades = cascadeCount(light, p.options) > 1;
+        Bounds seen;
+        {
+            // Cascades: the view's own space, whose z is minus the distance along the view.
+            const auto reduction = host.timeScope("reduce");
+            seen = samples_.reduce(host, frame, cascades ? frame.viewFromWorld : sdsmLightView(light, frame));
+        }
+        if (!cascades) {
+            fitCameras(p, light, frame, &seen);
+        } else if (!seen.empty()) {
+            const glm::vec2 depths(-seen.hi.z, -seen.lo.z);
+            fitCameras(p, light, frame, nullptr, &depths);
+            if (!p.options.stabilize) {
+                // Each slice its own box: the points seen at its
+                // distances, reduced once a slice (Lauritzen et al.'s
+                // partition bounds). Stabilised slices keep their
+                // spheres, whose size must not follow the view.
+                const auto slicesScope = host.timeScope("reduceSlices");
+                const glm::mat4 lightView = sdsmLightView(light, frame);
+                std::vector<glm::vec2> distances;
+                for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) distances.push_back(sliceDistances(p, c));
+                const std::vector<Bounds> slices = samples_.reduceSlices(host, frame, lightView, distances);
+                fitCameras(p, light, frame, nullptr, &depths, &slices);
+            }
+        }
+    }
+
     // The light's options with its preset, and lecture 000's map of the window's size.
     // PCSS on a light of size 0 stays hard: said every frame, kept maps or not.
     static void noteHardPcss(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) {
@@ -264,6 +285,7 @@ private:
     MapResources res_;
     MapAtlas atlas_;        ///< the lights with `atlas`
     SampleBounds samples_;  ///< fit "sdsm": the depth pre-pass and its reduction
+    std::map<int, gl::Buffer> gpuFits_;  ///< fit "sdsm" on the GPU: each light's fitted camera (MapLight::gpuFit)
     std::map<int, MapLight> lights_;
     std::optional<std::uint64_t> drawnFrom_;  ///< mapInputs of the frame the maps were drawn in
     std::uint64_t preparedFor_ = 0;           ///< mapInputs of this frame's fit

@@ -1,6 +1,7 @@
 // Technique "map": its uniform block (MapBlock.h).
 #include "techniques/map/MapBlock.h"
 
+#include "techniques/map/MapSdsm.h"
 #include "techniques/map/MapSettings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -17,6 +18,11 @@ static_assert(offsetof(shared::MapUniforms, lightPosition) % 16 == 0 && offsetof
               "MapUniforms must keep std140's layout (shaders/shadow_map_shared.h)");
 static_assert(offsetof(shared::MapUniforms, blurLayer) == offsetof(shared::MapUniforms, blurRadius) + 2 * sizeof(float),
               "setBlur writes blurRadius, blurAxis and blurLayer as one range");
+static_assert(offsetof(shared::MapUniforms, lightClipFromWorld) == 0 && offsetof(shared::MapUniforms, shadowFromWorld) == sizeof(glm::mat4) &&
+                  offsetof(SdsmFit, shadowFromWorld) == sizeof(glm::mat4) &&
+                  offsetof(shared::MapUniforms, farPlane) == offsetof(shared::MapUniforms, nearPlane) + sizeof(float) &&
+                  offsetof(SdsmFit, farPlane) == offsetof(SdsmFit, nearPlane) + sizeof(float),
+              "copyFit copies both matrices, and the near and far planes, as one range each");
 
 namespace {
 
@@ -111,6 +117,15 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.transmittance = translucent ? 1.0f : 0.0f;
     uniforms_ = u;
     block_.write(u);
+    fitted_ = p.gpuFit;
+    copyFit();
+}
+
+void MapBlock::copyFit() {
+    if (!fitted_) return;
+    block_.copyPart(*fitted_, offsetof(SdsmFit, clipFromWorld), offsetof(shared::MapUniforms, lightClipFromWorld), 2 * sizeof(glm::mat4));
+    block_.copyPart(*fitted_, offsetof(SdsmFit, texelWorld), offsetof(shared::MapUniforms, texelWorld), sizeof(float));
+    block_.copyPart(*fitted_, offsetof(SdsmFit, nearPlane), offsetof(shared::MapUniforms, nearPlane), 2 * sizeof(float));
 }
 
 void MapBlock::uploadAtlas(const MapLight& p, const Light& light) {
@@ -123,10 +138,18 @@ void MapBlock::uploadAtlas(const MapLight& p, const Light& light) {
     u.shadowedLight = p.options.shadowedLight;
     uniforms_ = u;
     block_.write(u);
+    fitted_ = nullptr;
 }
 
 void MapBlock::setLightClip(const glm::mat4& lightClipFromWorld) {
     block_.writePart(0, sizeof lightClipFromWorld, &lightClipFromWorld);
+}
+
+void MapBlock::setCamera(const MapLight& p, std::size_t c) {
+    if (p.gpuFit)
+        block_.copyPart(*p.gpuFit, offsetof(SdsmFit, clipFromWorld), offsetof(shared::MapUniforms, lightClipFromWorld), sizeof(glm::mat4));
+    else
+        setLightClip(p.cameras()[c].clipFromWorld());
 }
 
 void MapBlock::setBlur(float radius, float axis, float layer) {
@@ -140,6 +163,9 @@ void MapBlock::writeWithLightClip(const glm::mat4& lightClipFromWorld) {
     block_.writePart(0, sizeof u, &u);
 }
 
-void MapBlock::restore() { block_.writePart(0, sizeof uniforms_, &uniforms_); }
+void MapBlock::restore() {
+    block_.writePart(0, sizeof uniforms_, &uniforms_);
+    copyFit();
+}
 
 } // namespace shadowlab::map

@@ -19,6 +19,9 @@ public:
     void uploadAtlas(const MapLight& p, const Light& light);
     /// Only the shadow pass's camera (the block's first member).
     void setLightClip(const glm::mat4& lightClipFromWorld);
+    /// The shadow pass's camera for layer c of `p`'s (a cascade's, or the
+    /// one map's): the CPU's, or the GPU's fit (MapLight::gpuFit).
+    void setCamera(const MapLight& p, std::size_t c);
     /// The moments' passes: radius (texels), axis (unused: the variant says it) and the depth layer they are made from.
     void setBlur(float radius, float axis, float layer);
     /// The last uploaded block with another shadow-pass camera, whole.
@@ -27,8 +30,11 @@ public:
     void restore();
 
 private:
+    /// The GPU's fit over the camera's members (MapLight::gpuFit), if any.
+    void copyFit();
     TechniqueBlock<shared::MapUniforms> block_;
     shared::MapUniforms uniforms_{};  ///< what upload() last wrote
+    const gl::Buffer* fitted_ = nullptr;  ///< and the GPU's fit it took
 };
 
 } // namespace shadowlab::map

@@ -134,6 +134,43 @@ glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
     return directionalLightView(glm::normalize(light.direction), in);
 }
 
+bool fitsOnGpu(const MapLight& p, const Light& light) {
+    return usesSamples(p, light) && cascadeCount(light, p.options) == 1 && p.options.warp == MapWarp::None;
+}
+
+Bounds sdsmReach(const Light& light, const FrameInfo& frame) {
+    const glm::mat4 view = sdsmLightView(light, frame);
+    const glm::mat4 worldFromClip = glm::inverse(frame.clipFromWorld);
+    Bounds frustum;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 w = worldFromClip * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? 1.0f : -1.0f, 1.0f);
+        frustum.add(glm::vec3(view * glm::vec4(glm::vec3(w) / w.w, 1.0f)));
+    }
+    Bounds seen;
+    for (std::size_t i = 0; i < frame.items.size(); ++i)
+        if (mayIntersect(frame.clipFromWorld, frame.itemBounds[i])) seen.add(frame.itemBounds[i].transformed(view));
+    seen.lo = glm::max(seen.lo, frustum.lo);
+    seen.hi = glm::min(seen.hi, frustum.hi);
+    if (seen.empty()) return Bounds{};
+    // The reduction's margin (MapSdsm), at least as wide as the points' own.
+    const glm::vec3 margin(1e-4f * glm::length(seen.size()));
+    seen.lo -= margin;
+    seen.hi += margin;
+    return seen;
+}
+
+GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& frame) {
+    const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
+    GpuFitInput g;
+    g.lightView = sdsmLightView(light, frame);
+    g.diagonal = sceneDiagonal(in);
+    g.size = static_cast<float>(p.options.size);
+    g.padding = footprint(p.options);
+    for (std::size_t i = 0; i < frame.items.size(); ++i)
+        if (p.camera.casts.empty() ? frame.items[i].castsShadows : p.camera.casts[i] != 0) g.casters.push_back(frame.itemBounds[i].transformed(g.lightView));
+    return g;
+}
+
 glm::vec2 sliceDistances(const MapLight& p, std::size_t c) {
     if (c == 0) return {p.firstSliceNear, p.cascadeFar[0]};
     // The slice before fades into this cascade over its far blend share

@@ -3,6 +3,7 @@
 // fits them; the presets fix theirs) and which casters each camera draws.
 #include "techniques/Technique.h"
 #include "techniques/map/MapLight.h"
+#include "techniques/map/MapSdsm.h"
 
 namespace shadowlab::map {
 
@@ -28,6 +29,23 @@ bool usesSamples(const MapLight& p, const Light& light);
 /// The light view a directional light's fit works in (core/LightCamera's
 /// directionalLightView for this frame's items): the reduction's space.
 glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame);
+
+/// Whether `p`'s fit "sdsm" runs on the GPU (SampleBounds::fitOnGpu): one
+/// map, not warped. Cascades and warped maps read the samples back.
+bool fitsOnGpu(const MapLight& p, const Light& light);
+
+/// Where the points a fit "sdsm" may take lie, in sdsmLightView's space:
+/// the boxes of the items that may be in view, cut to the view's frustum,
+/// with the reduction's relative margin. Fitted to it, a camera holds
+/// the one fitted to the points themselves (whose casters over them are
+/// among the ones over it): the CPU culls the casters of a map fitted on
+/// the GPU with it.
+Bounds sdsmReach(const Light& light, const FrameInfo& frame);
+
+/// The fit on the GPU's inputs for `p` (its cameras fitted, for the casters
+/// that matter): the light view, the scene's diagonal, the map's size and
+/// padding, the casters' boxes.
+GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& frame);
 
 /// How near the light the casters drawn into a spot's or point light's map
 /// come (MapLight::nearestCaster): a point light's distance to the nearest

@@ -69,9 +69,10 @@ void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
     {
         const auto scope = host.timeScope("floor");
         const gl::Program& bare = bind(host, g);
-        for (const LightCamera& camera : p.cameras()) {
+        for (std::size_t c = 0; c < p.cameras().size(); ++c) {
+            const LightCamera& camera = p.cameras()[c];
             clear(host, fbo_, !camera.perspective);
-            block.setLightClip(camera.clipFromWorld());
+            block.setCamera(p, c);
             host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i, g.hasMoments()); });
         }
     }

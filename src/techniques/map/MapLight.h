@@ -60,6 +60,12 @@ struct MapLight {
     /// kept while the depths seen stay within it (0, 0: none yet).
     glm::vec2 sampledDepths{0.0f};
     float firstSliceNear = 0.0f;  ///< cascades: where the first slice starts along the view (fitCascades)
+    /// Fit "sdsm" on the GPU (MapCameras: fitsOnGpu): the buffer its last
+    /// shadow pass fitted the camera into (an SdsmFit, kept by the
+    /// technique per light), which MapBlock copies over `camera`'s; `camera`
+    /// is then the CPU's fit around where the samples may lie (sdsmReach),
+    /// which culls the casters. Null otherwise.
+    const gl::Buffer* gpuFit = nullptr;
     /// Spot and point lights: how near the light the casters drawn into its
     /// map come, scene units (a point light: the distance to the nearest
     /// caster's box; a spot: along its axis), so that no blocker is nearer
@@ -104,6 +110,7 @@ struct MapLight {
         viewForward = old.viewForward;
         sampledDepths = old.sampledDepths;
         firstSliceNear = old.firstSliceNear;
+        gpuFit = old.gpuFit;
     }
     /// Takes what survives from last frame's state of the same light: its
     /// framebuffers and which layer they hold, the cube faces' dirty texels

@@ -63,7 +63,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         clearLayer(host, g, fbo);
         host.apply(casterState(g, p.options, camera));
         // This cascade's camera for the depth pass (the block's first member).
-        res.block.setLightClip(camera.clipFromWorld());
+        res.block.setCamera(p, c);
         // Casters that cannot reach the light's frustum are not drawn.
         std::size_t drawnHere = 0;
         host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
@@ -74,7 +74,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
         drawn += drawnHere;
         if (g.hasMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot);
-        if (res.translucent) drawTranslucent(host, res.block, frame, g, camera, p.layer + static_cast<int>(c));
+        if (res.translucent) drawTranslucent(host, res.block, frame, g, p, c);
     }
     host.count("triangles", static_cast<double>(drawn));
     // The memory of this light's layers (the map the light pass reads and what its pass needs beside it).

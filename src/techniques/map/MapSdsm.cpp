@@ -4,6 +4,8 @@
 #include "core/LightCamera.h"
 #include "shadowlab_shared.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -50,6 +52,17 @@ float windowDepthAt(const FrameInfo& frame, float distance) {
     return 0.5f * clip.z / clip.w + 0.5f;
 }
 
+// The window depths whose pixels a reduction counts for the distances
+// `d` along the view, widened by a step of the depth buffer's 24 bits
+// each way: a pixel on a split counts for both slices. No distances:
+// every covered pixel (uncovered ones, at depth 1, never count).
+glm::vec2 depthWindow(const FrameInfo& frame, const glm::vec2* d) {
+    constexpr float kDepthStep = 1.0f / 16777215.0f;
+    const glm::vec2 window = d ? glm::vec2(std::max(windowDepthAt(frame, d->x) - kDepthStep, 0.0f), windowDepthAt(frame, d->y) + kDepthStep)
+                               : glm::vec2(0.0f, 0.99999994f);
+    return {window.x, std::min(window.y, 0.99999994f)};
+}
+
 } // namespace
 
 Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) {
@@ -63,8 +76,9 @@ std::vector<Bounds> SampleBounds::reduceSlices(TechniqueHost& host, const FrameI
     return run(host, frame, lightFromWorld, windows, slices_, kSlicesAPass);
 }
 
-std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
-                                      const std::vector<const glm::vec2*>& distances, Targets& targets, int windows) {
+void SampleBounds::draw(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const std::vector<glm::vec2>& depths,
+                        Targets& targets) {
+    const int windows = static_cast<int>(depths.size());
     const glm::ivec2 blocks = (size_ + (kBlock - 1)) / kBlock;
     if (!targets.fbo || targets.blocks != blocks) {
         targets.blocks = blocks;
@@ -112,26 +126,26 @@ std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& fram
     }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, host.frameDepth().id());
     glBindSampler(SL_UNIT_SHADOW_FIRST, sampler_.id());
+    glProgramUniform2fv(program.id(), 3, windows, &depths[0][0]);
+    host.drawFullscreenTriangle();
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
+}
+
+std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
+                                      const std::vector<const glm::vec2*>& distances, Targets& targets, int windows) {
+    const glm::ivec2 blocks = (size_ + (kBlock - 1)) / kBlock;
     const std::size_t n = static_cast<std::size_t>(blocks.x) * static_cast<std::size_t>(blocks.y);
     std::vector<glm::vec4> lo(n), hi(n);
     std::vector<Bounds> out;
     for (std::size_t first = 0; first < distances.size(); first += static_cast<std::size_t>(windows)) {
-        // Each window's distances as window depths, widened by a step of the
-        // depth buffer's 24 bits each way: a pixel on a split counts for both
-        // slices. No distances: every covered pixel (uncovered ones, at
-        // depth 1, never count). Windows past the last: empty.
-        constexpr float kDepthStep = 1.0f / 16777215.0f;
         std::vector<glm::vec2> depths;
         for (int w = 0; w < windows; ++w) {
             const std::size_t i = first + static_cast<std::size_t>(w);
-            const glm::vec2* d = i < distances.size() ? distances[i] : nullptr;
-            const glm::vec2 window = i >= distances.size() ? glm::vec2(1.0f, 0.0f)
-                                     : d ? glm::vec2(std::max(windowDepthAt(frame, d->x) - kDepthStep, 0.0f), windowDepthAt(frame, d->y) + kDepthStep)
-                                         : glm::vec2(0.0f, 0.99999994f);
-            depths.push_back(glm::vec2(window.x, std::min(window.y, 0.99999994f)));
+            depths.push_back(i < distances.size() ? depthWindow(frame, distances[i]) : glm::vec2(1.0f, 0.0f));
         }
-        glProgramUniform2fv(program.id(), 3, windows, &depths[0][0]);
-        host.drawFullscreenTriangle();
+        draw(host, frame, lightFromWorld, depths, targets);
+        host.count("sdsm.readBacks", 1.0);
         for (int w = 0; w < windows && first + static_cast<std::size_t>(w) < distances.size(); ++w) {
             // The blocks' corners, merged here (a few thousand).
             glGetTextureImage(targets.lo[static_cast<std::size_t>(w)].id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), lo.data());
@@ -152,9 +166,51 @@ std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& fram
             out.push_back(b);
         }
     }
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
-    glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
     return out;
+}
+
+void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, gl::Buffer& out) {
+    draw(host, frame, in.lightView, {depthWindow(frame, nullptr)}, one_);
+    if (!out) {
+        out = gl::Buffer();
+        glNamedBufferStorage(out.id(), sizeof(SdsmFit), nullptr, 0);
+    }
+    // The casters' boxes in the light's view, lo and hi each (none: one empty box, the buffer never empty).
+    std::vector<glm::vec4> boxes;
+    for (const Bounds& b : in.casters) {
+        boxes.emplace_back(b.lo, 0.0f);
+        boxes.emplace_back(b.hi, 0.0f);
+    }
+    if (boxes.empty()) boxes = {glm::vec4(1.0f), glm::vec4(-1.0f)};
+    const auto bytes = static_cast<GLsizeiptr>(boxes.size() * sizeof(glm::vec4));
+    if (!casters_ || castersBytes_ < bytes) {
+        casters_ = gl::Buffer();
+        castersBytes_ = std::max<GLsizeiptr>(bytes, 64 * static_cast<GLsizeiptr>(sizeof(glm::vec4)));
+        glNamedBufferStorage(casters_.id(), castersBytes_, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    glNamedBufferSubData(casters_.id(), 0, bytes, boxes.data());
+    Bounds boxed;
+    addBoxed(boxed, frame, in.lightView, nullptr);
+    const gl::Program& program = host.program({{{GL_COMPUTE_SHADER, "shadow_map_sdsm_fit.comp"}}, std::string()});
+    program.use();
+    glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, &in.lightView[0][0]);
+    glProgramUniform2i(program.id(), 1, one_.blocks.x, one_.blocks.y);
+    const glm::vec3 lo = boxed.empty() ? glm::vec3(1.0f) : boxed.lo, hi = boxed.empty() ? glm::vec3(-1.0f) : boxed.hi;
+    glProgramUniform3fv(program.id(), 2, 1, &lo.x);
+    glProgramUniform3fv(program.id(), 3, 1, &hi.x);
+    glProgramUniform1f(program.id(), 4, in.diagonal);
+    glProgramUniform1f(program.id(), 5, in.size);
+    glProgramUniform1f(program.id(), 6, in.padding);
+    glProgramUniform1i(program.id(), 7, static_cast<GLint>(in.casters.size()));
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, one_.lo.front().id());
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, one_.hi.front().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_CASTERS, casters_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, out.id());
+    glDispatchCompute(1, 1, 1);
+    // The block takes the fit by a buffer copy (MapBlock::upload).
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, 0);
 }
 
 void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) const {
@@ -175,6 +231,16 @@ void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& 
         box.hi = glm::min(box.hi, view.hi);
         if (!box.empty()) b.add(box);
     }
+}
+
+LightCamera readFit(const gl::Buffer& fit, LightCamera camera) {
+    SdsmFit f;
+    glGetNamedBufferSubData(fit.id(), 0, sizeof f, &f);
+    camera.nearPlane = f.nearPlane;
+    camera.farPlane = f.farPlane;
+    camera.clipFromView = glm::ortho(f.box.x, f.box.y, f.box.z, f.box.w, f.nearPlane, f.farPlane);
+    camera.texelSize = f.texelWorld;
+    return camera;
 }
 
 } // namespace shadowlab::map

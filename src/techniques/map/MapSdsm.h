@@ -9,11 +9,15 @@
 // fit then takes those bounds (FitInput::visibleSamples) instead of the boxes
 // of the receivers in view; cascades end where the depths they span do,
 // and slices not stabilised take their own bounds, a reduction a slice
-// counting only the pixels at its distances. The bounds
-// come back to the CPU, which fits the light camera: a read-back the frame
-// waits for (on a GPU a pipeline bubble; the camera fitted on the GPU is
-// left for later).
+// counting only the pixels at its distances. One map (no cascades, no
+// warp) is fitted on the GPU (fitOnGpu: shadow_map_sdsm_fit.comp merges
+// the blocks and fits the camera into a buffer that MapBlock copies into
+// the light's block), so the frame never waits for its depth; cascades
+// and warped maps still read the bounds back (reduce, reduceSlices) for
+// the CPU's fit: a wait for the frame so far (on a GPU a pipeline bubble),
+// counted as "sdsm.readBacks".
 #include "core/Bounds.h"
+#include "core/LightCamera.h"
 #include "techniques/Technique.h"
 
 #include <glm/glm.hpp>
@@ -23,6 +27,34 @@
 #include <vector>
 
 namespace shadowlab::map {
+
+/// The light camera that shadow_map_sdsm_fit.comp fits (its std430 block
+/// at SL_STORAGE_SDSM_FIT): what MapBlock copies over the CPU's camera.
+struct SdsmFit {
+    glm::mat4 clipFromWorld{1.0f};
+    glm::mat4 shadowFromWorld{1.0f};  ///< the bias matrix times clipFromWorld
+    float texelWorld = 0.0f, nearPlane = 0.0f, farPlane = 1.0f;
+    float seen = 0.0f;  ///< 1 when the camera saw a point
+    glm::vec4 box{0.0f};  ///< the camera's box across the light: left, right, bottom, top (light view)
+};
+static_assert(sizeof(SdsmFit) == 160, "SdsmFit must match shadow_map_sdsm_fit.comp's block");
+
+/// `camera` (the CPU's fit of the same light, for its view and casters)
+/// with the GPU's fit in `fit` read back: for what measures or shows the
+/// camera (the viewer's frustums), never the frame's own path.
+LightCamera readFit(const gl::Buffer& fit, LightCamera camera);
+
+/// What the fit on the GPU takes beside the frame's samples
+/// (MapCameras: gpuFitInput): the directional light's view (the samples'
+/// space), the scene's diagonal, the map's size and padding (FitInput's),
+/// and the boxes in that view of the casters that matter.
+struct GpuFitInput {
+    glm::mat4 lightView{1.0f};
+    float diagonal = 1.0f;
+    float size = 1024.0f;
+    float padding = 1.0f;
+    std::vector<Bounds> casters;
+};
 
 class SampleBounds {
 public:
@@ -39,6 +71,11 @@ public:
     std::vector<Bounds> reduceSlices(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
                                      const std::vector<glm::vec2>& distances);
     static constexpr int kSlicesAPass = 4;  ///< two targets each: the 8 a framebuffer surely has
+    /// One map's fit without a read-back: the pre-pass reduced, then
+    /// shadow_map_sdsm_fit.comp fits the camera as core/LightCamera's
+    /// fitDirectional does for visibleSamples, into `out` (an SdsmFit,
+    /// made on first use).
+    void fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, gl::Buffer& out);
 
     /// Meshes of more triangles than this are not drawn in the pre-pass:
     /// their boxes, cut to the view's, join the bounds on the CPU instead
@@ -58,6 +95,12 @@ private:
         glm::ivec2 blocks{0};
     };
     Targets one_, slices_;  ///< one window (SDSM_WINDOWS 1), kSlicesAPass windows
+    gl::Buffer casters_{gl::NoCreate};  ///< fitOnGpu's caster boxes
+    GLsizeiptr castersBytes_ = 0;
+    /// The reduction pass into `targets` (made or remade for this frame's
+    /// size, a window each of `depths`: the window depths counted).
+    void draw(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const std::vector<glm::vec2>& depths,
+              Targets& targets);
     /// Reduces the pre-pass within each window of `distances` (none: the
     /// whole depth range) with `windows` per pass (1 or kSlicesAPass).
     std::vector<Bounds> run(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,

@@ -55,11 +55,12 @@ bool hasTranslucentCasters(const FrameInfo& frame) {
     return translucent;
 }
 
-void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const LightCamera& camera,
-                     int layer) {
+void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p, std::size_t c) {
     const auto scope = host.timeScope("translucent");
+    const LightCamera& camera = p.cameras()[c];
+    const int layer = p.layer + static_cast<int>(c);
     const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, sharedDepthBuffer(g.key) ? 0 : layer, !camera.perspective, false);
-    block.setLightClip(camera.clipFromWorld());
+    block.setCamera(p, c);
     const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_transmit.frag"}},
                                                TranslucentVariant{}.defines()});
     host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && castsInto(camera, frame, i, true); });

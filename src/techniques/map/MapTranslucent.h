@@ -15,9 +15,9 @@ namespace shadowlab::map {
 bool translucentCaster(const FrameInfo& frame, std::size_t i);
 /// Whether any caster of the frame is translucent.
 bool hasTranslucentCasters(const FrameInfo& frame);
-/// The translucent casters into layer `layer`'s transmittance, seen from `camera`.
-void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const LightCamera& camera,
-                     int layer);
+/// The translucent casters into the transmittance of `p`'s layer c, seen
+/// from its camera c (a cascade's, or the one map's).
+void drawTranslucent(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p, std::size_t c);
 /// A point light's translucent casters into its cube's transmittance
 /// layers, face by face, after the opaque depth.
 void drawCubeTranslucent(TechniqueHost& host, const FrameInfo& frame, const MapArray& g, const MapLight& p);
