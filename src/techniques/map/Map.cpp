@@ -156,10 +156,15 @@ public:
             }
             p.gpuFit = nullptr;
             if (fitsOnGpu(p, light)) {
-                // One map: fitted on the GPU, no read-back. The CPU's
-                // camera, around where the samples may lie, culls.
-                const Bounds reach = sdsmReach(light, frame);
-                fitCameras(p, light, frame, &reach);
+                // Fitted on the GPU, no read-back. The CPU's cameras, around
+                // where the samples may lie, cull (one map: its fit to
+                // where they may be; cascades: their slices over the whole reach).
+                if (cascadeCount(light, p.options) > 1) {
+                    fitCullingCascades(p, light, frame);
+                } else {
+                    const Bounds reach = sdsmReach(light, frame);
+                    fitCameras(p, light, frame, &reach);
+                }
                 const auto reduction = host.timeScope("reduce");
                 gl::Buffer& fitted = gpuFits_.try_emplace(view.index, gl::NoCreate).first->second;
                 samples_.fitOnGpu(host, frame, gpuFitInput(p, light, frame), fitted);
@@ -229,7 +234,7 @@ public:
         if (p.cube)
             out.insert(out.end(), p.cubeCamera.faceClipFromWorld.begin(), p.cubeCamera.faceClipFromWorld.end());
         else if (p.gpuFit)
-            out.push_back(readFit(*p.gpuFit, p.camera).clipFromWorld());  // the camera the GPU fitted
+            for (const glm::mat4& clip : readFittedClips(*p.gpuFit, p.cascades.size())) out.push_back(clip);  // the cameras the GPU fitted
         else
             for (const LightCamera& camera : p.cameras()) out.push_back(camera.clipFromWorld());
     }

@@ -19,10 +19,17 @@ static_assert(offsetof(shared::MapUniforms, lightPosition) % 16 == 0 && offsetof
 static_assert(offsetof(shared::MapUniforms, blurLayer) == offsetof(shared::MapUniforms, blurRadius) + 2 * sizeof(float),
               "setBlur writes blurRadius, blurAxis and blurLayer as one range");
 static_assert(offsetof(shared::MapUniforms, lightClipFromWorld) == 0 && offsetof(shared::MapUniforms, shadowFromWorld) == sizeof(glm::mat4) &&
-                  offsetof(SdsmFit, shadowFromWorld) == sizeof(glm::mat4) &&
+                  offsetof(SdsmFit, shadowFromWorld) == offsetof(SdsmFit, clipFromWorld) + sizeof(glm::mat4) &&
                   offsetof(shared::MapUniforms, farPlane) == offsetof(shared::MapUniforms, nearPlane) + sizeof(float) &&
                   offsetof(SdsmFit, farPlane) == offsetof(SdsmFit, nearPlane) + sizeof(float),
               "copyFit copies both matrices, and the near and far planes, as one range each");
+static_assert(offsetof(shared::MapUniforms, cascadeRange) - offsetof(shared::MapUniforms, cascadeShadowFromWorld) ==
+                      offsetof(SdsmFit, cascadeRange) - offsetof(SdsmFit, cascadeShadowFromWorld) &&
+                  offsetof(shared::MapUniforms, cascadeFar) - offsetof(shared::MapUniforms, cascadeShadowFromWorld) ==
+                      offsetof(SdsmFit, cascadeFar) - offsetof(SdsmFit, cascadeShadowFromWorld) &&
+                  offsetof(shared::MapUniforms, cascadeTexel) - offsetof(shared::MapUniforms, cascadeShadowFromWorld) ==
+                      offsetof(SdsmFit, cascadeTexel) - offsetof(SdsmFit, cascadeShadowFromWorld),
+              "copyFit copies the cascades' matrices, far ends, texels and ranges as one range, laid out alike");
 
 namespace {
 
@@ -118,6 +125,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     uniforms_ = u;
     block_.write(u);
     fitted_ = p.gpuFit;
+    fittedCascades_ = !p.cascades.empty();
     copyFit();
 }
 
@@ -126,6 +134,11 @@ void MapBlock::copyFit() {
     block_.copyPart(*fitted_, offsetof(SdsmFit, clipFromWorld), offsetof(shared::MapUniforms, lightClipFromWorld), 2 * sizeof(glm::mat4));
     block_.copyPart(*fitted_, offsetof(SdsmFit, texelWorld), offsetof(shared::MapUniforms, texelWorld), sizeof(float));
     block_.copyPart(*fitted_, offsetof(SdsmFit, nearPlane), offsetof(shared::MapUniforms, nearPlane), 2 * sizeof(float));
+    if (fittedCascades_) {
+        // Their matrices, far ends, texels and depth ranges (laid out alike: one range).
+        const std::size_t first = offsetof(SdsmFit, cascadeShadowFromWorld), end = offsetof(SdsmFit, cascadeRange) + sizeof(SdsmFit::cascadeRange);
+        block_.copyPart(*fitted_, first, offsetof(shared::MapUniforms, cascadeShadowFromWorld), end - first);
+    }
 }
 
 void MapBlock::uploadAtlas(const MapLight& p, const Light& light) {
@@ -147,7 +160,8 @@ void MapBlock::setLightClip(const glm::mat4& lightClipFromWorld) {
 
 void MapBlock::setCamera(const MapLight& p, std::size_t c) {
     if (p.gpuFit)
-        block_.copyPart(*p.gpuFit, offsetof(SdsmFit, clipFromWorld), offsetof(shared::MapUniforms, lightClipFromWorld), sizeof(glm::mat4));
+        block_.copyPart(*p.gpuFit, p.cascades.empty() ? offsetof(SdsmFit, clipFromWorld) : offsetof(SdsmFit, cascadeClip) + c * sizeof(glm::mat4),
+                        offsetof(shared::MapUniforms, lightClipFromWorld), sizeof(glm::mat4));
     else
         setLightClip(p.cameras()[c].clipFromWorld());
 }

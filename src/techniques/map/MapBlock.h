@@ -35,6 +35,7 @@ private:
     TechniqueBlock<shared::MapUniforms> block_;
     shared::MapUniforms uniforms_{};  ///< what upload() last wrote
     const gl::Buffer* fitted_ = nullptr;  ///< and the GPU's fit it took
+    bool fittedCascades_ = false;         ///< a fit of cascades
 };
 
 } // namespace shadowlab::map

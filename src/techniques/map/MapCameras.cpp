@@ -135,7 +135,25 @@ glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
 }
 
 bool fitsOnGpu(const MapLight& p, const Light& light) {
-    return usesSamples(p, light) && cascadeCount(light, p.options) == 1 && p.options.warp == MapWarp::None;
+    return usesSamples(p, light) && p.options.warp == MapWarp::None && (cascadeCount(light, p.options) == 1 || p.options.stabilize);
+}
+
+void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame) {
+    // The slices without samples: split from the near plane to the
+    // stabilised reach (the farthest a fit to samples may end), each one
+    // then widened back to the near plane.
+    fitCameras(p, light, frame);
+    const FitInput in{frame.itemBounds, frame.items,          frame.itemPlanes,
+                      frame.itemConvex, frame.clipFromWorld, p.options.size,
+                      footprint(p.options), filterInfo(p.options.filter).rawDepth, nullptr};
+    const Camera& camera = frame.scene.camera;
+    const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
+    for (std::size_t c = 0; c < p.cascades.size(); ++c) {
+        // A thousandth more at the far end: the splits' clamps grow with the range but not strictly.
+        const float far = std::min(p.cascadeFar[c] * 1.001f, camera.farPlane);
+        p.cascades[c] = fitCascade(glm::normalize(light.direction), camera, aspect, camera.nearPlane, far, true, in, camera.nearPlane);
+    }
+    p.camera = p.cascades.front();
 }
 
 Bounds sdsmReach(const Light& light, const FrameInfo& frame) {
@@ -166,8 +184,26 @@ GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& 
     g.diagonal = sceneDiagonal(in);
     g.size = static_cast<float>(p.options.size);
     g.padding = footprint(p.options);
-    for (std::size_t i = 0; i < frame.items.size(); ++i)
-        if (p.camera.casts.empty() ? frame.items[i].castsShadows : p.camera.casts[i] != 0) g.casters.push_back(frame.itemBounds[i].transformed(g.lightView));
+    g.cascades = cascadeCount(light, p.options);
+    if (g.cascades == 1) {
+        for (std::size_t i = 0; i < frame.items.size(); ++i)
+            if (p.camera.casts.empty() ? frame.items[i].castsShadows : p.camera.casts[i] != 0) g.casters.push_back(frame.itemBounds[i].transformed(g.lightView));
+        return g;
+    }
+    // Cascades: the view and the splits' settings (fitCascades, fitCascade).
+    const Camera& camera = frame.scene.camera;
+    for (const Bounds& b : frame.itemBounds) g.scene.add(b);
+    const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
+    g.camera = glm::vec4(camera.nearPlane, camera.farPlane, std::tan(glm::radians(camera.fovYDeg) * 0.5f), aspect);
+    g.eye = camera.position;
+    g.forward = glm::normalize(camera.target - camera.position);
+    const glm::mat4 view = camera.viewFromWorld();
+    g.right = glm::vec3(view[0][0], view[1][0], view[2][0]);
+    g.up = glm::vec3(view[0][1], view[1][1], view[2][1]);
+    g.reach = stableReach(camera, in);
+    g.lambda = p.options.cascadeLambda;
+    std::string problem;  // checked when the scene was read
+    g.given = parseSplits(p.options, problem);
     return g;
 }
 

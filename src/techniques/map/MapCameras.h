@@ -31,8 +31,15 @@ bool usesSamples(const MapLight& p, const Light& light);
 glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame);
 
 /// Whether `p`'s fit "sdsm" runs on the GPU (SampleBounds::fitOnGpu): one
-/// map, not warped. Cascades and warped maps read the samples back.
+/// map or stabilised cascades, not warped. Cascades not stabilised (each
+/// slice fitted to its own samples) and warped maps read the samples back.
 bool fitsOnGpu(const MapLight& p, const Light& light);
+
+/// Stabilised cascades fitted on the GPU: `p`'s cameras for culling
+/// their casters, each slice's from the camera's near plane to the far end
+/// it has when split over the whole stabilised reach. The GPU's slices,
+/// split over the depths seen (which end no farther), lie within them.
+void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame);
 
 /// Where the points a fit "sdsm" may take lie, in sdsmLightView's space:
 /// the boxes of the items that may be in view, cut to the view's frustum,

@@ -4,7 +4,6 @@
 #include "core/LightCamera.h"
 #include "shadowlab_shared.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <string>
@@ -170,45 +169,67 @@ std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& fram
 }
 
 void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, gl::Buffer& out) {
-    draw(host, frame, in.lightView, {depthWindow(frame, nullptr)}, one_);
+    const bool cascades = in.cascades > 1;
+    // Cascades: the view's own space, whose z is minus the distance along the view.
+    const glm::mat4 space = cascades ? frame.viewFromWorld : in.lightView;
+    draw(host, frame, space, {depthWindow(frame, nullptr)}, one_);
     if (!out) {
         out = gl::Buffer();
-        glNamedBufferStorage(out.id(), sizeof(SdsmFit), nullptr, 0);
+        const SdsmFit zero{};
+        glNamedBufferStorage(out.id(), sizeof zero, &zero, 0);
     }
-    // The casters' boxes in the light's view, lo and hi each (none: one empty box, the buffer never empty).
-    std::vector<glm::vec4> boxes;
-    for (const Bounds& b : in.casters) {
-        boxes.emplace_back(b.lo, 0.0f);
-        boxes.emplace_back(b.hi, 0.0f);
-    }
-    if (boxes.empty()) boxes = {glm::vec4(1.0f), glm::vec4(-1.0f)};
-    const auto bytes = static_cast<GLsizeiptr>(boxes.size() * sizeof(glm::vec4));
-    if (!casters_ || castersBytes_ < bytes) {
-        casters_ = gl::Buffer();
-        castersBytes_ = std::max<GLsizeiptr>(bytes, 64 * static_cast<GLsizeiptr>(sizeof(glm::vec4)));
-        glNamedBufferStorage(casters_.id(), castersBytes_, nullptr, GL_DYNAMIC_STORAGE_BIT);
-    }
-    glNamedBufferSubData(casters_.id(), 0, bytes, boxes.data());
     Bounds boxed;
-    addBoxed(boxed, frame, in.lightView, nullptr);
-    const gl::Program& program = host.program({{{GL_COMPUTE_SHADER, "shadow_map_sdsm_fit.comp"}}, std::string()});
+    addBoxed(boxed, frame, space, nullptr);
+    const gl::Program& program =
+        host.program({{{GL_COMPUTE_SHADER, cascades ? "shadow_map_sdsm_cascades.comp" : "shadow_map_sdsm_fit.comp"}}, std::string()});
     program.use();
-    glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, &in.lightView[0][0]);
-    glProgramUniform2i(program.id(), 1, one_.blocks.x, one_.blocks.y);
+    const GLuint id = program.id();
+    glProgramUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.lightView[0][0]);
+    glProgramUniform2i(id, 1, one_.blocks.x, one_.blocks.y);
     const glm::vec3 lo = boxed.empty() ? glm::vec3(1.0f) : boxed.lo, hi = boxed.empty() ? glm::vec3(-1.0f) : boxed.hi;
-    glProgramUniform3fv(program.id(), 2, 1, &lo.x);
-    glProgramUniform3fv(program.id(), 3, 1, &hi.x);
-    glProgramUniform1f(program.id(), 4, in.diagonal);
-    glProgramUniform1f(program.id(), 5, in.size);
-    glProgramUniform1f(program.id(), 6, in.padding);
-    glProgramUniform1i(program.id(), 7, static_cast<GLint>(in.casters.size()));
+    glProgramUniform3fv(id, 2, 1, &lo.x);
+    glProgramUniform3fv(id, 3, 1, &hi.x);
+    glProgramUniform1f(id, 4, in.diagonal);
+    glProgramUniform1f(id, 5, in.size);
+    glProgramUniform1f(id, 6, in.padding);
+    if (cascades) {
+        glProgramUniform1i(id, 7, in.cascades);
+        glProgramUniform4fv(id, 8, 1, &in.camera.x);
+        glProgramUniform3fv(id, 9, 1, &in.eye.x);
+        glProgramUniform3fv(id, 10, 1, &in.forward.x);
+        glProgramUniform3fv(id, 11, 1, &in.right.x);
+        glProgramUniform3fv(id, 12, 1, &in.up.x);
+        glProgramUniform1f(id, 13, in.reach);
+        glProgramUniform1f(id, 14, in.lambda);
+        glProgramUniform3fv(id, 15, 1, &in.scene.lo.x);
+        glProgramUniform3fv(id, 16, 1, &in.scene.hi.x);
+        if (!in.given.empty()) glProgramUniform1fv(id, 17, static_cast<GLsizei>(in.given.size()), in.given.data());
+        glProgramUniform1i(id, 24, static_cast<GLint>(in.given.size()));
+    } else {
+        // The casters' boxes in the light's view, lo and hi each (none: one empty box, the buffer never empty).
+        std::vector<glm::vec4> boxes;
+        for (const Bounds& b : in.casters) {
+            boxes.emplace_back(b.lo, 0.0f);
+            boxes.emplace_back(b.hi, 0.0f);
+        }
+        if (boxes.empty()) boxes = {glm::vec4(1.0f), glm::vec4(-1.0f)};
+        const auto bytes = static_cast<GLsizeiptr>(boxes.size() * sizeof(glm::vec4));
+        if (!casters_ || castersBytes_ < bytes) {
+            casters_ = gl::Buffer();
+            castersBytes_ = std::max<GLsizeiptr>(bytes, 64 * static_cast<GLsizeiptr>(sizeof(glm::vec4)));
+            glNamedBufferStorage(casters_.id(), castersBytes_, nullptr, GL_DYNAMIC_STORAGE_BIT);
+        }
+        glNamedBufferSubData(casters_.id(), 0, bytes, boxes.data());
+        glProgramUniform1i(id, 7, static_cast<GLint>(in.casters.size()));
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_CASTERS, casters_.id());
+    }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, one_.lo.front().id());
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, one_.hi.front().id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_CASTERS, casters_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, out.id());
     glDispatchCompute(1, 1, 1);
     // The block takes the fit by a buffer copy (MapBlock::upload).
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    // And the next frame's pass reads the depths it keeps there.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, 0);
 }
@@ -233,14 +254,11 @@ void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& 
     }
 }
 
-LightCamera readFit(const gl::Buffer& fit, LightCamera camera) {
+std::vector<glm::mat4> readFittedClips(const gl::Buffer& fit, std::size_t cascades) {
     SdsmFit f;
     glGetNamedBufferSubData(fit.id(), 0, sizeof f, &f);
-    camera.nearPlane = f.nearPlane;
-    camera.farPlane = f.farPlane;
-    camera.clipFromView = glm::ortho(f.box.x, f.box.y, f.box.z, f.box.w, f.nearPlane, f.farPlane);
-    camera.texelSize = f.texelWorld;
-    return camera;
+    if (cascades <= 1) return {f.clipFromWorld};
+    return {f.cascadeClip, f.cascadeClip + std::min<std::size_t>(cascades, SL_MAP_MAX_CASCADES)};
 }
 
 } // namespace shadowlab::map

@@ -9,15 +9,16 @@
 // fit then takes those bounds (FitInput::visibleSamples) instead of the boxes
 // of the receivers in view; cascades end where the depths they span do,
 // and slices not stabilised take their own bounds, a reduction a slice
-// counting only the pixels at its distances. One map (no cascades, no
-// warp) is fitted on the GPU (fitOnGpu: shadow_map_sdsm_fit.comp merges
-// the blocks and fits the camera into a buffer that MapBlock copies into
-// the light's block), so the frame never waits for its depth; cascades
-// and warped maps still read the bounds back (reduce, reduceSlices) for
-// the CPU's fit: a wait for the frame so far (on a GPU a pipeline bubble),
-// counted as "sdsm.readBacks".
+// counting only the pixels at its distances. One map and stabilised
+// cascades (not warped) are fitted on the GPU (fitOnGpu: a compute pass
+// merges the blocks and fits the cameras into a buffer that MapBlock
+// copies into the light's block), so the frame never waits for its depth;
+// slices not stabilised and warped maps still read the bounds back
+// (reduce, reduceSlices) for the CPU's fit: a wait for the frame so far
+// (on a GPU a pipeline bubble), counted as "sdsm.readBacks".
 #include "core/Bounds.h"
 #include "core/LightCamera.h"
+#include "shadow_map_sdsm_shared.h"
 #include "techniques/Technique.h"
 
 #include <glm/glm.hpp>
@@ -28,33 +29,34 @@
 
 namespace shadowlab::map {
 
-/// The light camera that shadow_map_sdsm_fit.comp fits (its std430 block
-/// at SL_STORAGE_SDSM_FIT): what MapBlock copies over the CPU's camera.
-struct SdsmFit {
-    glm::mat4 clipFromWorld{1.0f};
-    glm::mat4 shadowFromWorld{1.0f};  ///< the bias matrix times clipFromWorld
-    float texelWorld = 0.0f, nearPlane = 0.0f, farPlane = 1.0f;
-    float seen = 0.0f;  ///< 1 when the camera saw a point
-    glm::vec4 box{0.0f};  ///< the camera's box across the light: left, right, bottom, top (light view)
-};
-static_assert(sizeof(SdsmFit) == 160, "SdsmFit must match shadow_map_sdsm_fit.comp's block");
-
-/// `camera` (the CPU's fit of the same light, for its view and casters)
-/// with the GPU's fit in `fit` read back: for what measures or shows the
-/// camera (the viewer's frustums), never the frame's own path.
-LightCamera readFit(const gl::Buffer& fit, LightCamera camera);
+/// The cameras the fit on the GPU writes (shaders/shadow_map_sdsm_shared.h),
+/// one buffer per light: what MapBlock copies over the CPU's cameras.
+using SdsmFit = shared::SdsmFit;
 
 /// What the fit on the GPU takes beside the frame's samples
 /// (MapCameras: gpuFitInput): the directional light's view (the samples'
-/// space), the scene's diagonal, the map's size and padding (FitInput's),
-/// and the boxes in that view of the casters that matter.
+/// space for one map), the scene's diagonal and box, the map's size and
+/// padding (FitInput's); one map: the boxes in that view of the casters
+/// that matter; cascades: their count and splits' settings, the view.
 struct GpuFitInput {
     glm::mat4 lightView{1.0f};
     float diagonal = 1.0f;
     float size = 1024.0f;
     float padding = 1.0f;
     std::vector<Bounds> casters;
+    int cascades = 1;
+    Bounds scene;
+    glm::vec4 camera{0.1f, 100.0f, 1.0f, 1.0f};  ///< near plane, far plane, tan(fovY / 2), aspect
+    glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f}, right{1.0f, 0.0f, 0.0f}, up{0.0f, 1.0f, 0.0f};
+    float reach = 100.0f;   ///< where stabilised slices end at the farthest
+    float lambda = 0.75f;   ///< cascadeLambda
+    std::vector<float> given;  ///< cascadeSplits (empty: by lambda)
 };
+
+/// The cameras (clip from world) the GPU fitted into `fit`, read back: one
+/// map's, or each of `cascades` cascades'. For what shows them (the
+/// viewer's frustums), never the frame's own path.
+std::vector<glm::mat4> readFittedClips(const gl::Buffer& fit, std::size_t cascades);
 
 class SampleBounds {
 public:
@@ -71,10 +73,13 @@ public:
     std::vector<Bounds> reduceSlices(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
                                      const std::vector<glm::vec2>& distances);
     static constexpr int kSlicesAPass = 4;  ///< two targets each: the 8 a framebuffer surely has
-    /// One map's fit without a read-back: the pre-pass reduced, then
-    /// shadow_map_sdsm_fit.comp fits the camera as core/LightCamera's
-    /// fitDirectional does for visibleSamples, into `out` (an SdsmFit,
-    /// made on first use).
+    /// The fit without a read-back, into `out` (an SdsmFit, made zeroed on
+    /// first use and kept: stabilised cascades keep their depths in it):
+    /// the pre-pass reduced, then for one map shadow_map_sdsm_fit.comp
+    /// fits the camera as core/LightCamera's fitDirectional does for
+    /// visibleSamples, for stabilised cascades (in.cascades > 1)
+    /// shadow_map_sdsm_cascades.comp the cascades as MapCameras'
+    /// fitCascades does for the depths seen.
     void fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, gl::Buffer& out);
 
     /// Meshes of more triangles than this are not drawn in the pre-pass:

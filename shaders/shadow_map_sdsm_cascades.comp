@@ -1,0 +1,158 @@
+// Technique "map", fit "sdsm" on the GPU for stabilised cascades: the
+// view depths the camera sees, merged from the reduction's blocks (in the
+// view's own space, whose z is minus the distance along the view), and the
+// cascades fitted to them here, into the light's SdsmFit buffer
+// (shadow_map_sdsm_shared.h), which MapBlock copies into the block (MapSdsm:
+// SampleBounds::fitCascadesOnGpu). The same steps as MapCameras'
+// fitCascades and core/LightCamera's cascadeSplits and fitCascade when
+// stabilised (keep them alike): the depths kept in whole steps of 2^(1/4),
+// the slices split by cascadeLambda (or cascadeSplits) from the camera's
+// near plane to the farthest depth seen, each slice's bounding sphere, its
+// box snapped to whole texels, and its depth range the scene's cut to
+// what the slice's lookups reach. Nothing seen: the cameras of the frame
+// before are kept (never fitted yet: the slices over the whole reach).
+#include "shadowlab_shared.h"
+#include "shadow_map_sdsm_shared.h"
+#include "shadow_map_sdsm_merge.glsl"
+
+layout(local_size_x = 256) in;
+
+layout(location = 0) uniform mat4 lightView;   // directionalLightView: fixed while the scene is
+layout(location = 1) uniform ivec2 blocks;
+layout(location = 2) uniform vec3 boxedLo;     // the large meshes' boxes cut to the view, in view space (lo > hi: none)
+layout(location = 3) uniform vec3 boxedHi;
+layout(location = 4) uniform float diagonal;   // the scene's diagonal
+layout(location = 5) uniform float size;       // map texels per side
+layout(location = 6) uniform float padding;    // FitInput::paddingTexels
+layout(location = 7) uniform int count;        // cascades
+layout(location = 8) uniform vec4 camera;      // near plane, far plane, tan(fovY / 2), aspect (width / height)
+layout(location = 9) uniform vec3 eye;
+layout(location = 10) uniform vec3 forward;    // unit, towards the target
+layout(location = 11) uniform vec3 right;      // unit, the view's x
+layout(location = 12) uniform vec3 up;         // unit, the view's y
+layout(location = 13) uniform float reach;     // where stabilised slices end at the farthest (MapCameras: stableReach)
+layout(location = 14) uniform float lambda;    // cascadeLambda
+layout(location = 15) uniform vec3 sceneLo;    // the scene's box, world space
+layout(location = 16) uniform vec3 sceneHi;
+layout(location = 17) uniform float given[SL_MAP_MAX_CASCADES - 1];  // cascadeSplits, when givenCount = count - 1
+layout(location = 24) uniform int givenCount;
+
+// sampledRange (MapCameras.cpp), stabilised: the depths seen in whole
+// steps of 2^(1/4), near two steps below the nearest, far one past the
+// farthest, kept while the depths stay inside and it is at most four steps
+// too wide at the near end and three at the far.
+vec2 sampledRange(vec2 seen, vec2 kept) {
+    float near = max(seen.x, camera.x), far = min(seen.y, camera.y);
+    float stepUp = exp2(0.25);
+    if (kept.y > kept.x && kept.x <= near && far <= kept.y && near <= kept.x * pow(stepUp, 4.0) && kept.y <= far * pow(stepUp, 3.0)) return kept;
+    near = exp2((floor(4.0 * log2(near)) - 2.0) / 4.0);
+    far = exp2((ceil(4.0 * log2(far)) + 1.0) / 4.0);
+    near = max(near, camera.x);
+    far = clamp(far, near * 1.01, camera.y);
+    return vec2(near, far);
+}
+
+// The corners of the view's frustum between distances n and f along it: their box, world space.
+void frustumBox(float n, float f, out vec3 lo, out vec3 hi) {
+    lo = vec3(3.0e38);
+    hi = vec3(-3.0e38);
+    for (int c = 0; c < 8; ++c) {
+        float d = (c & 4) != 0 ? f : n;
+        vec3 p = eye + forward * d + right * (((c & 1) != 0 ? 1.0 : -1.0) * d * camera.z * camera.w) + up * (((c & 2) != 0 ? 1.0 : -1.0) * d * camera.z);
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+}
+
+// A box's corners through an affine matrix: their box.
+void transformBox(mat4 m, inout vec3 lo, inout vec3 hi) {
+    vec3 a = vec3(3.0e38), b = vec3(-3.0e38);
+    for (int c = 0; c < 8; ++c) {
+        vec3 p = (m * vec4((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y, (c & 4) != 0 ? hi.z : lo.z, 1.0)).xyz;
+        a = min(a, p);
+        b = max(b, p);
+    }
+    lo = a;
+    hi = b;
+}
+
+void main() {
+    vec3 lo, hi;
+    mergeBlocks(blocks, lo, hi);
+    if (gl_LocalInvocationIndex != 0u) return;
+    if (all(lessThanEqual(boxedLo, boxedHi))) {
+        lo = min(lo, boxedLo);
+        hi = max(hi, boxedHi);
+    }
+    bool seen = all(lessThanEqual(lo, hi));
+    fit.seen = seen ? 1.0 : 0.0;
+    vec2 kept = vec2(fit.keptNear, fit.keptFar);
+    if (!seen && kept.y > kept.x) return;  // the frame before's cameras stay
+    float near = camera.x, far = reach, first = near;
+    if (seen) {
+        sdsmMargin(lo, hi);
+        // The slices end at the farthest depth seen (never past the reach) and
+        // the first starts at the nearest; the splits are placed from the near plane.
+        vec2 sampled = sampledRange(vec2(-hi.z, -lo.z), kept);
+        fit.keptNear = sampled.x;
+        fit.keptFar = sampled.y;
+        far = max(min(far, sampled.y), near * 1.01);
+        first = sampled.x;
+    }
+    // cascadeSplits (core/LightCamera): increasing, each slice at least 10^-5 of the range.
+    float ends[SL_MAP_MAX_CASCADES];
+    float range = 1e-5 * (far - near);
+    for (int i = 1; i < count; ++i) {
+        float t = float(i) / float(count);
+        float scheme = lambda * near * pow(far / near, t) + (1.0 - lambda) * (near + (far - near) * t);
+        float split = givenCount == count - 1 ? given[i - 1] : scheme;
+        float lowest = (i == 1 ? near : ends[i - 2]) + range;
+        ends[i - 1] = clamp(split, lowest, max(lowest, far - range * float(count - i)));
+    }
+    ends[count - 1] = far;
+    if (!(first < ends[0])) first = near;  // nothing seen before the first split: the slice as the tight fit's
+    fit.firstNear = first;
+    float k2 = (1.0 + camera.w * camera.w) * camera.z * camera.z;
+    vec3 sceneLight = sceneLo, sceneLightHi = sceneHi;
+    transformBox(lightView, sceneLight, sceneLightHi);
+    for (int c = 0; c < count; ++c) {
+        float n = c == 0 ? first : ends[c - 1], f = ends[c];
+        float readFrom = c < 2 ? first : ends[c - 2];
+        // The slice's bounding sphere, radius up to 1/64 of a unit.
+        float along = min(0.5 * (f + n) * (1.0 + k2), f);
+        float radius = sqrt((f - along) * (f - along) + k2 * f * f);
+        radius = ceil(radius * 64.0) / 64.0;
+        vec3 sphere = (lightView * vec4(eye + forward * along, 1.0)).xyz;
+        float half_ = radius * size / max(size - 2.0 * padding, 1.0);
+        float texel = 2.0 * half_ / size;
+        vec2 snapped = floor(sphere.xy / texel + 0.5) * texel;
+        // Depth: the scene's along the light, cut to what the slice's lookups reach, in steps of 1/32 of the box.
+        float from = readFrom > 0.0 ? min(readFrom, n) : n;
+        vec3 wlo, whi;
+        frustumBox(from, f, wlo, whi);
+        wlo = max(wlo, sceneLo);
+        whi = min(whi, sceneHi);
+        vec3 dlo = sceneLight, dhi = sceneLightHi;
+        float depthStep = 0.0625 * half_;
+        if (all(lessThanEqual(wlo, whi)) && depthStep > 0.0) {
+            transformBox(lightView, wlo, whi);
+            dlo.z = max(dlo.z, floor(wlo.z / depthStep) * depthStep);
+            dhi.z = min(dhi.z, ceil(whi.z / depthStep) * depthStep);
+        }
+        float depthPad = 1e-3 * diagonal;
+        float nearPlane = -dhi.z - depthPad, farPlane = -dlo.z + depthPad;
+        mat4 clip = sdsmOrtho(snapped.x - half_, snapped.x + half_, snapped.y - half_, snapped.y + half_, nearPlane, farPlane) * lightView;
+        fit.cascadeClip[c] = clip;
+        fit.cascadeShadowFromWorld[c] = kSdsmBias * clip;
+        fit.cascadeFar[c >> 2][c & 3] = f;
+        fit.cascadeTexel[c >> 2][c & 3] = texel;
+        fit.cascadeRange[c] = vec4(nearPlane, farPlane, 0.0, 0.0);
+        if (c == 0) {
+            fit.clipFromWorld = clip;
+            fit.shadowFromWorld = kSdsmBias * clip;
+            fit.texelWorld = texel;
+            fit.nearPlane = nearPlane;
+            fit.farPlane = farPlane;
+        }
+    }
+}

@@ -1,0 +1,49 @@
+// Technique "map", fit "sdsm" on the GPU: the buffer its compute passes
+// fit a light's cameras into (shadow_map_sdsm_fit.comp: one map;
+// shadow_map_sdsm_cascades.comp: stabilised cascades), one per light, kept
+// from frame to frame, and copied on the GPU over the cameras' members of
+// the light's block (MapBlock). Shared by the C++ (MapSdsm.h: SdsmFit) and
+// the GLSL (std430 at SL_STORAGE_SDSM_FIT); matrices, then vec4s, then
+// floats four at a time, so that both lay it out alike.
+#ifndef SHADOWLAB_SHADOW_MAP_SDSM_SHARED_H
+#define SHADOWLAB_SHADOW_MAP_SDSM_SHARED_H
+
+#include "shadow_map_shared.h"
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace shadowlab::shared {
+struct SdsmFit {
+#define SL_SDSM_VEC4 glm::vec4
+#define SL_SDSM_MAT4 glm::mat4
+#else
+layout(std430, binding = SL_STORAGE_SDSM_FIT) buffer SdsmFit {
+#define SL_SDSM_VEC4 vec4
+#define SL_SDSM_MAT4 mat4
+#endif
+    SL_SDSM_MAT4 clipFromWorld;   // the one map's camera, or cascade 0's (the block's lightClipFromWorld) ...
+    SL_SDSM_MAT4 shadowFromWorld; // ... and the bias matrix times it (shadowFromWorld)
+    SL_SDSM_MAT4 cascadeClip[SL_MAP_MAX_CASCADES]; // cascades: each one's camera (the shadow pass's, per layer)
+    // Cascades: these four as the block has them, in its order (one copy).
+    SL_SDSM_MAT4 cascadeShadowFromWorld[SL_MAP_MAX_CASCADES];
+    SL_SDSM_VEC4 cascadeFar[SL_MAP_MAX_CASCADES / 4];
+    SL_SDSM_VEC4 cascadeTexel[SL_MAP_MAX_CASCADES / 4];
+    SL_SDSM_VEC4 cascadeRange[SL_MAP_MAX_CASCADES];
+    float texelWorld;  // the one map's texel, or cascade 0's (the block's texelWorld) ...
+    float nearPlane;   // ... and its near and far planes
+    float farPlane;
+    float seen;        // 1 when the camera saw a point this frame
+    float keptNear;    // stabilised cascades: the view depths the slices split, kept while
+    float keptFar;     //   the depths seen stay within them (MapLight::sampledDepths; 0, 0: none yet)
+    float firstNear;   // cascades: where the first slice starts along the view
+    float padding;
+#ifdef __cplusplus
+};
+} // namespace shadowlab::shared
+#else
+} fit;
+#endif
+#undef SL_SDSM_VEC4
+#undef SL_SDSM_MAT4
+
+#endif
