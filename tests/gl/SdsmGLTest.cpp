@@ -10,6 +10,8 @@
 #include <shadowlab/Renderer.h>
 #include <shadowlab/SceneFile.h>
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 
 #include <string>
@@ -237,6 +239,40 @@ TEST_F(SdsmGLTest, OneMapAndStabilisedCascadesAreFittedWithoutReadingTheSamplesB
         else
             EXPECT_EQ(readBacks(stats), 0.0) << c.cascades << " sdsm map(s), stabilised, read their samples back";
     }
+}
+
+// The viewer draws the light cameras (Renderer::lightFrustums): with the
+// fit on the GPU they are the ones it fitted, read back, not the CPU's
+// cameras around where the samples may lie (which cull). On the wall scene
+// the map shrinks to the ground before the wall: measured at 320x240, the
+// sdsm map 10.4 m wide against the tight fit's 113 m (its width: 2 over
+// the length of clip x's row, the light's view being a rotation); the
+// bar, a quarter, leaves room for any fit that keeps to what is seen.
+TEST_F(SdsmGLTest, TheViewerDrawsTheCamerasTheGpuFitted) {
+    const auto widths = [](MapFit fit, int cascades) {
+        Scene scene = sceneOf(kWall);
+        MapOptions& o = scene.lights[0].shadow.edit<MapOptions>();
+        o.fit = fit;
+        o.cascades = cascades;
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        RenderOptions options;
+        options.width = 320;
+        options.height = 240;
+        renderer.render(scene, options);
+        std::vector<float> out;
+        for (const LightFrustum& f : renderer.lightFrustums(scene))
+            out.push_back(2.0f / glm::length(glm::vec3(f.clipFromWorld[0][0], f.clipFromWorld[1][0], f.clipFromWorld[2][0])));
+        return out;
+    };
+    const std::vector<float> tight = widths(MapFit::Tight, 1), sdsm = widths(MapFit::Sdsm, 1);
+    ASSERT_EQ(tight.size(), 1u);
+    ASSERT_EQ(sdsm.size(), 1u);
+    EXPECT_LT(sdsm[0], 0.25f * tight[0]) << "sdsm " << sdsm[0] << " m, tight " << tight[0] << " m";
+    // Four cascades: four cameras, the nearest the narrowest (its slice the shortest).
+    const std::vector<float> cascades = widths(MapFit::Sdsm, 4);
+    ASSERT_EQ(cascades.size(), 4u);
+    EXPECT_LT(cascades[0], cascades[3]);
 }
 
 // Spot and point lights are refused in one line naming the option.
