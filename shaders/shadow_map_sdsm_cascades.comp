@@ -36,6 +36,12 @@ layout(location = 15) uniform vec3 sceneLo;    // the scene's box, world space
 layout(location = 16) uniform vec3 sceneHi;
 layout(location = 17) uniform float given[SL_MAP_MAX_CASCADES - 1];  // cascadeSplits, when givenCount = count - 1
 layout(location = 24) uniform int givenCount;
+// The far end the slices are split over is clamped to this range: the
+// seen far end of a frame before (GpuFit), which the CPU culled the
+// casters for, both ends; (0, 3e38) before one is known. The last slice
+// still ends at this frame's far end (or past it): only where the other
+// slices split follows a frame late.
+layout(location = 25) uniform vec2 splitRange;
 
 // sampledRange (MapCameras.cpp), stabilised: the depths seen in whole
 // steps of 2^(1/4), near two steps below the nearest, far one past the
@@ -99,17 +105,20 @@ void main() {
         far = max(min(far, sampled.y), near * 1.01);
         first = sampled.x;
     }
-    // cascadeSplits (core/LightCamera): increasing, each slice at least 10^-5 of the range.
+    fit.seenFar = far;
+    // cascadeSplits (core/LightCamera) over the split range's far end:
+    // increasing, each slice at least 10^-5 of the range.
+    float splitFar = clamp(far, splitRange.x, splitRange.y);
     float ends[SL_MAP_MAX_CASCADES];
-    float range = 1e-5 * (far - near);
+    float range = 1e-5 * (splitFar - near);
     for (int i = 1; i < count; ++i) {
         float t = float(i) / float(count);
-        float scheme = lambda * near * pow(far / near, t) + (1.0 - lambda) * (near + (far - near) * t);
+        float scheme = lambda * near * pow(splitFar / near, t) + (1.0 - lambda) * (near + (splitFar - near) * t);
         float split = givenCount == count - 1 ? given[i - 1] : scheme;
         float lowest = (i == 1 ? near : ends[i - 2]) + range;
-        ends[i - 1] = clamp(split, lowest, max(lowest, far - range * float(count - i)));
+        ends[i - 1] = clamp(split, lowest, max(lowest, splitFar - range * float(count - i)));
     }
-    ends[count - 1] = far;
+    ends[count - 1] = max(far, splitFar);
     if (!(first < ends[0])) first = near;  // nothing seen before the first split: the slice as the tight fit's
     fit.firstNear = first;
     float k2 = (1.0 + camera.w * camera.w) * camera.z * camera.z;

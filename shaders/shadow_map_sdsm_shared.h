@@ -36,7 +36,7 @@ layout(std430, binding = SL_STORAGE_SDSM_FIT) buffer SdsmFit {
     float keptNear;    // stabilised cascades: the view depths the slices split, kept while
     float keptFar;     //   the depths seen stay within them (MapLight::sampledDepths; 0, 0: none yet)
     float firstNear;   // cascades: where the first slice starts along the view
-    float padding;
+    float seenFar;     // cascades: where the last slice ends, the farthest depth seen as kept (read back a frame late: GpuFit)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

@@ -159,16 +159,21 @@ public:
                 // Fitted on the GPU, no read-back. The CPU's cameras, around
                 // where the samples may lie, cull (one map: its fit to
                 // where they may be; cascades: their slices over the whole reach).
-                if (cascadeCount(light, p.options) > 1) {
-                    fitCullingCascades(p, light, frame);
+                GpuFit& fitted = gpuFits_[view.index];
+                const bool cascades = cascadeCount(light, p.options) > 1;
+                const float seenFar = cascades ? fitted.seenFar() : 0.0f;
+                if (cascades) {
+                    fitCullingCascades(p, light, frame, seenFar);
                 } else {
                     const Bounds reach = sdsmReach(light, frame);
                     fitCameras(p, light, frame, &reach);
                 }
                 const auto reduction = host.timeScope("reduce");
-                gl::Buffer& fitted = gpuFits_.try_emplace(view.index, gl::NoCreate).first->second;
-                samples_.fitOnGpu(host, frame, gpuFitInput(p, light, frame), fitted);
-                p.gpuFit = &fitted;
+                GpuFitInput input = gpuFitInput(p, light, frame);
+                if (seenFar > 0.0f) input.splitRange = glm::vec2(seenFar);
+                samples_.fitOnGpu(host, frame, input, fitted.buffer());
+                if (cascades) fitted.readSeenFarLater();
+                p.gpuFit = &fitted.buffer();
             } else {
                 refitOnCpu(host, frame, light, p);
             }
@@ -290,7 +295,7 @@ private:
     MapResources res_;
     MapAtlas atlas_;        ///< the lights with `atlas`
     SampleBounds samples_;  ///< fit "sdsm": the depth pre-pass and its reduction
-    std::map<int, gl::Buffer> gpuFits_;  ///< fit "sdsm" on the GPU: each light's fitted camera (MapLight::gpuFit)
+    std::map<int, GpuFit> gpuFits_;  ///< fit "sdsm" on the GPU: each light's fitted cameras (MapLight::gpuFit)
     std::map<int, MapLight> lights_;
     std::optional<std::uint64_t> drawnFrom_;  ///< mapInputs of the frame the maps were drawn in
     std::uint64_t preparedFor_ = 0;           ///< mapInputs of this frame's fit

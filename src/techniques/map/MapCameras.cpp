@@ -138,20 +138,34 @@ bool fitsOnGpu(const MapLight& p, const Light& light) {
     return usesSamples(p, light) && p.options.warp == MapWarp::None && (cascadeCount(light, p.options) == 1 || p.options.stabilize);
 }
 
-void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame) {
-    // The slices without samples: split from the near plane to the
-    // stabilised reach (the farthest a fit to samples may end), each one
-    // then widened back to the near plane.
-    fitCameras(p, light, frame);
+void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame, float seenFar) {
+    fitCameras(p, light, frame);  // the slices over the whole stabilised reach
     const FitInput in{frame.itemBounds, frame.items,          frame.itemPlanes,
                       frame.itemConvex, frame.clipFromWorld, p.options.size,
                       footprint(p.options), filterInfo(p.options.filter).rawDepth, nullptr};
     const Camera& camera = frame.scene.camera;
     const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
-    for (std::size_t c = 0; c < p.cascades.size(); ++c) {
-        // A thousandth more at the far end: the splits' clamps grow with the range but not strictly.
-        const float far = std::min(p.cascadeFar[c] * 1.001f, camera.farPlane);
-        p.cascades[c] = fitCascade(glm::normalize(light.direction), camera, aspect, camera.nearPlane, far, true, in, camera.nearPlane);
+    const float near = camera.nearPlane;
+    // The GPU splits over seenFar when it is known (its far end a frame
+    // before), and its last slice ends anywhere up to the reach; not known,
+    // over this frame's far end, anywhere up to the reach (the splits above).
+    std::vector<float> ends = p.cascadeFar;
+    if (seenFar > 0.0f) {
+        std::string problem;  // checked when the scene was read
+        ends = cascadeSplits(near, seenFar, p.options.cascades, p.options.cascadeLambda, parseSplits(p.options, problem));
+        ends.back() = std::max(ends.back(), p.cascadeFar.back());
+    }
+    // A thousandth more at either end: the GPU's splits are the same sums in
+    // other float arithmetic; the first slice and the second's lookups from
+    // the near plane (they start at the nearest depth seen).
+    const std::size_t n = ends.size();
+    for (std::size_t c = 0; c < n; ++c) {
+        const bool known = seenFar > 0.0f;
+        const float sliceNear = known && c > 0 ? ends[c - 1] * 0.999f : near;
+        const float readFrom = known && c > 1 ? ends[c - 2] * 0.999f : near;
+        const float sliceFar = std::min(ends[c] * 1.001f, camera.farPlane);
+        p.cascades[c] = fitCascade(glm::normalize(light.direction), camera, aspect, std::max(sliceNear, near), std::max(sliceFar, sliceNear * 1.001f), true,
+                                   in, std::max(readFrom, near));
     }
     p.camera = p.cascades.front();
 }

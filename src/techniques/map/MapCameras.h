@@ -35,11 +35,15 @@ glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame);
 /// slice fitted to its own samples) and warped maps read the samples back.
 bool fitsOnGpu(const MapLight& p, const Light& light);
 
-/// Stabilised cascades fitted on the GPU: `p`'s cameras for culling
-/// their casters, each slice's from the camera's near plane to the far end
-/// it has when split over the whole stabilised reach. The GPU's slices,
-/// split over the depths seen (which end no farther), lie within them.
-void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame);
+/// Stabilised cascades fitted on the GPU: `p`'s cameras for culling their
+/// casters, each around every slice the GPU may fit. With `seenFar` (the
+/// far end of the depths a frame before saw, GpuFit::seenFar) the GPU
+/// splits over it: each slice is the GPU's own but the first (from the
+/// near plane: it starts at the nearest depth seen) and the last (up to
+/// the stabilised reach: it ends at this frame's far end). Not known (0):
+/// each slice from the near plane to its far end when split over the
+/// whole reach (the GPU's, split over the depths seen, end no farther).
+void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame, float seenFar);
 
 /// Where the points a fit "sdsm" may take lie, in sdsmLightView's space:
 /// the boxes of the items that may be in view, cut to the view's frustum,

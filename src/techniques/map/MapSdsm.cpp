@@ -6,6 +6,7 @@
 
 
 #include <algorithm>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -168,16 +169,11 @@ std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& fram
     return out;
 }
 
-void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, gl::Buffer& out) {
+void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out) {
     const bool cascades = in.cascades > 1;
     // Cascades: the view's own space, whose z is minus the distance along the view.
     const glm::mat4 space = cascades ? frame.viewFromWorld : in.lightView;
     draw(host, frame, space, {depthWindow(frame, nullptr)}, one_);
-    if (!out) {
-        out = gl::Buffer();
-        const SdsmFit zero{};
-        glNamedBufferStorage(out.id(), sizeof zero, &zero, 0);
-    }
     Bounds boxed;
     addBoxed(boxed, frame, space, nullptr);
     const gl::Program& program =
@@ -205,6 +201,7 @@ void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const G
         glProgramUniform3fv(id, 16, 1, &in.scene.hi.x);
         if (!in.given.empty()) glProgramUniform1fv(id, 17, static_cast<GLsizei>(in.given.size()), in.given.data());
         glProgramUniform1i(id, 24, static_cast<GLint>(in.given.size()));
+        glProgramUniform2f(id, 25, in.splitRange.x, in.splitRange.y);
     } else {
         // The casters' boxes in the light's view, lo and hi each (none: one empty box, the buffer never empty).
         std::vector<glm::vec4> boxes;
@@ -259,6 +256,43 @@ std::vector<glm::mat4> readFittedClips(const gl::Buffer& fit, std::size_t cascad
     glGetNamedBufferSubData(fit.id(), 0, sizeof f, &f);
     if (cascades <= 1) return {f.clipFromWorld};
     return {f.cascadeClip, f.cascadeClip + std::min<std::size_t>(cascades, SL_MAP_MAX_CASCADES)};
+}
+
+GpuFit::~GpuFit() {
+    if (fence_) glDeleteSync(fence_);
+}
+
+gl::Buffer& GpuFit::buffer() {
+    if (!fit_) {
+        fit_ = gl::Buffer();
+        const SdsmFit zero{};
+        glNamedBufferStorage(fit_.id(), sizeof zero, &zero, 0);
+    }
+    return fit_;
+}
+
+float GpuFit::seenFar() {
+    if (fence_) {
+        const GLenum status = glClientWaitSync(fence_, 0, 0);  // a look, no wait
+        if (status == GL_ALREADY_SIGNALED || status == GL_CONDITION_SATISFIED) {
+            seenFar_ = *mapped_;
+            glDeleteSync(fence_);
+            fence_ = nullptr;
+        }
+    }
+    return seenFar_;
+}
+
+void GpuFit::readSeenFarLater() {
+    if (fence_) return;  // the copy before has not landed: it is read first
+    if (!copy_) {
+        copy_ = gl::Buffer();
+        const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+        glNamedBufferStorage(copy_.id(), sizeof(float), nullptr, flags);
+        mapped_ = static_cast<const float*>(glMapNamedBufferRange(copy_.id(), 0, sizeof(float), flags));
+    }
+    glCopyNamedBufferSubData(buffer().id(), copy_.id(), offsetof(SdsmFit, seenFar), 0, sizeof(float));
+    fence_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
 }
 
 } // namespace shadowlab::map

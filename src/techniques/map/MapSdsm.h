@@ -51,6 +51,40 @@ struct GpuFitInput {
     float reach = 100.0f;   ///< where stabilised slices end at the farthest
     float lambda = 0.75f;   ///< cascadeLambda
     std::vector<float> given;  ///< cascadeSplits (empty: by lambda)
+    /// Cascades: the range the far end the slices are split over is
+    /// clamped to (GpuFit::seenFar's both ends; no clamp before it is known).
+    glm::vec2 splitRange{0.0f, 3.0e38f};
+};
+
+/// A light's fit on the GPU, kept from frame to frame: the buffer the
+/// compute pass fits its cameras into (an SdsmFit, made zeroed on first
+/// use), and for stabilised cascades the far end of the depths seen, read
+/// back without waiting (copied after the fit with a fence; taken once the
+/// fence has passed, a frame or more later). The next frame splits its
+/// slices over that far end, which the CPU then knows, so that it culls
+/// each cascade's casters for its own slice (MapCameras:
+/// fitCullingCascades); the last slice still ends at that frame's own far
+/// end.
+class GpuFit {
+public:
+    GpuFit() = default;
+    GpuFit(const GpuFit&) = delete;
+    GpuFit& operator=(const GpuFit&) = delete;
+    ~GpuFit();
+    /// The fit's buffer (made on first use).
+    gl::Buffer& buffer();
+    /// The far end of the depths seen by the latest fit whose copy has
+    /// landed (never waits); 0 before one has.
+    float seenFar();
+    /// After a fit's dispatch: its far end copied for seenFar(), fenced.
+    void readSeenFarLater();
+
+private:
+    gl::Buffer fit_{gl::NoCreate};
+    gl::Buffer copy_{gl::NoCreate};  ///< persistently mapped for reading
+    const float* mapped_ = nullptr;
+    GLsync fence_ = nullptr;
+    float seenFar_ = 0.0f;
 };
 
 /// The cameras (clip from world) the GPU fitted into `fit`, read back: one
@@ -73,14 +107,14 @@ public:
     std::vector<Bounds> reduceSlices(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
                                      const std::vector<glm::vec2>& distances);
     static constexpr int kSlicesAPass = 4;  ///< two targets each: the 8 a framebuffer surely has
-    /// The fit without a read-back, into `out` (an SdsmFit, made zeroed on
-    /// first use and kept: stabilised cascades keep their depths in it):
+    /// The fit without a read-back, into `out` (an SdsmFit, GpuFit::buffer:
+    /// stabilised cascades keep their depths in it from frame to frame):
     /// the pre-pass reduced, then for one map shadow_map_sdsm_fit.comp
     /// fits the camera as core/LightCamera's fitDirectional does for
     /// visibleSamples, for stabilised cascades (in.cascades > 1)
     /// shadow_map_sdsm_cascades.comp the cascades as MapCameras'
     /// fitCascades does for the depths seen.
-    void fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, gl::Buffer& out);
+    void fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out);
 
     /// Meshes of more triangles than this are not drawn in the pre-pass:
     /// their boxes, cut to the view's, join the bounds on the CPU instead
