@@ -241,6 +241,41 @@ TEST_F(SdsmGLTest, OneMapAndStabilisedCascadesAreFittedWithoutReadingTheSamplesB
     }
 }
 
+// Stabilised cascades on the GPU: the first frame culls each cascade's
+// casters over every slice the GPU may fit (the CPU does not know how far
+// the camera sees); the next splits over the far end the first saw, read
+// back without waiting, and culls each cascade for its own slice. On the
+// wall scene (9 m seen of a 150 m reach) the second frame draws fewer
+// casters (measured: 72 triangles against 168 in all), and being the
+// same view, the same pixels.
+TEST_F(SdsmGLTest, CascadesCullForTheirOwnSlicesFromTheSecondFrame) {
+    Scene scene = sceneOf(kWall);
+    MapOptions& o = scene.lights[0].shadow.edit<MapOptions>();
+    o.fit = MapFit::Sdsm;
+    o.cascades = 4;
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options;
+    options.width = 320;
+    options.height = 240;
+    const auto triangles = [](const FrameStats& stats) {
+        double n = 0.0;
+        for (const auto& [name, value] : stats.counters)
+            if (name.starts_with("shadow[0].cascade") && name.ends_with(".triangles")) n += value;
+        return n;
+    };
+    const double first = triangles(renderer.render(scene, options));
+    const ImageRGBA8 one = renderer.readColor();
+    const double second = triangles(renderer.render(scene, options));
+    const ImageRGBA8 two = renderer.readColor();
+    EXPECT_LT(second, first) << "the second frame's cascades drew no fewer casters";
+    ASSERT_EQ(one.pixels.size(), two.pixels.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < one.pixels.size(); i += 4)
+        if (!std::equal(&one.pixels[i], &one.pixels[i] + 4, &two.pixels[i])) ++differ;
+    EXPECT_EQ(differ, 0u) << "pixels that differ between two frames of one view";
+}
+
 // The viewer draws the light cameras (Renderer::lightFrustums): with the
 // fit on the GPU they are the ones it fitted, read back, not the CPU's
 // cameras around where the samples may lie (which cull). On the wall scene
