@@ -1,13 +1,14 @@
-// Technique "map", fit "sdsm" on the GPU (one map of a directional light,
-// no warp): the reduction's blocks merged into one box and the light
-// camera fitted to it here, into the light's SdsmFit buffer
+// Technique "map", fit "sdsm" on the GPU (one map of a directional light):
+// the reduction's blocks merged into one box and the light camera fitted
+// to it here, into the light's SdsmFit buffer
 // (shadow_map_sdsm_shared.h), which MapBlock copies into the light's
 // block, so that the CPU never waits for the frame's depth (MapSdsm:
 // SampleBounds::fitOnGpu). The same steps as core/LightCamera's
 // fitDirectional for visibleSamples (keep the two alike): the samples' box
 // and the large meshes' boxes, a relative margin, cut to the casters'
 // footprint over it, padded by the filter's footprint, then the
-// orthographic camera and its texel.
+// orthographic camera and its texel; with SDSM_WARP (warp lispsm, the
+// light not along the view) the box warped as warpRegion does.
 #include "shadowlab_shared.h"
 #include "shadow_map_sdsm_shared.h"
 #include "shadow_map_sdsm_merge.glsl"
@@ -23,8 +24,89 @@ layout(location = 5) uniform float size;       // map texels per side
 layout(location = 6) uniform float padding;    // FitInput::paddingTexels
 layout(location = 7) uniform int casterCount;
 
-// The casters that matter (LightCamera::casts), their boxes in lightView: lo, hi.
+// The casters that matter (LightCamera::casts), their boxes in the
+// camera's view (lightView, or the warp's turned view): lo, hi.
 layout(std430, binding = SL_STORAGE_SDSM_CASTERS) readonly buffer Casters { vec4 casterBox[]; };
+
+#if SDSM_WARP
+// The warp (core/LightCamera: fitDirectional, warpRegion): lightView is the
+// camera's view turned so that the view's direction across the light is
+// +y; the samples' box is taken into it; the view's eye and forward direction, the
+// warp's nearest distance and the sine of the angle between view and light.
+layout(location = 8) uniform mat4 worldFromTurned;  // the inverse of lightView, the turned view
+layout(location = 9) uniform mat4 turnedFromSamples;
+layout(location = 10) uniform vec3 eye;
+layout(location = 11) uniform vec3 forward;
+layout(location = 12) uniform float warpNear;
+layout(location = 13) uniform float sinGamma;
+
+// A box's corners through a matrix: their box (affine: no divide).
+void boxThrough(mat4 m, inout vec3 lo, inout vec3 hi) {
+    vec3 a = vec3(3.0e38), b = vec3(-3.0e38);
+    for (int c = 0; c < 8; ++c) {
+        vec3 p = (m * vec4((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y, (c & 4) != 0 ? hi.z : lo.z, 1.0)).xyz;
+        a = min(a, p);
+        b = max(b, p);
+    }
+    lo = a;
+    hi = b;
+}
+
+// warpRegion: the region (turned view space) seen through a perspective
+// along +y whose centre lies n below it, n from Wimmer et al.'s n_opt.
+void warp(vec3 lo, vec3 hi) {
+    float z0 = 3.0e38, z1 = 0.0;
+    for (int c = 0; c < 8; ++c) {
+        vec3 v = vec3((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y, (c & 4) != 0 ? hi.z : lo.z);
+        float distance = dot((worldFromTurned * vec4(v, 1.0)).xyz - eye, forward);
+        z0 = min(z0, distance);
+        z1 = max(z1, distance);
+    }
+    z0 = max(z0, warpNear);
+    z1 = max(z1, z0);
+    float depth = max(hi.y - lo.y, 1e-6);
+    float n = max((z0 + sqrt(z0 * z1)) / sinGamma, 1e-3 * depth);
+    float f = n + depth;
+    vec3 centre = vec3(0.5 * (lo.x + hi.x), lo.y - n, 0.5 * (lo.z + hi.z));
+    float a = (f + n) / (f - n), b = -2.0 * n * f / (f - n);
+    mat4 perspective = mat4(0.0);  // [column][row]
+    perspective[0][0] = n;
+    perspective[1][1] = a;
+    perspective[3][1] = b;
+    perspective[2][2] = n;
+    perspective[1][3] = 1.0;
+    mat4 translate = mat4(1.0);
+    translate[3] = vec4(-centre, 1.0);
+    mat4 warped = perspective * translate;
+    vec3 blo = vec3(3.0e38), bhi = vec3(-3.0e38);
+    for (int c = 0; c < 8; ++c) {
+        vec4 q = warped * vec4((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y, (c & 4) != 0 ? hi.z : lo.z, 1.0);
+        blo = min(blo, q.xyz / q.w);
+        bhi = max(bhi, q.xyz / q.w);
+    }
+    // Pad by the filter's footprint, in texels of the warped map.
+    vec2 texel = (bhi.xy - blo.xy) / max(size, 1.0);
+    blo.xy -= texel * padding;
+    bhi.xy += texel * padding;
+    float zPad = 1e-4 * (bhi.z - blo.z) + 1e-12;
+    blo.z -= zPad;
+    bhi.z += zPad;
+    mat4 fitted = mat4(1.0);
+    fitted[0][0] = 2.0 / (bhi.x - blo.x);
+    fitted[1][1] = 2.0 / (bhi.y - blo.y);
+    fitted[2][2] = -2.0 / (bhi.z - blo.z);
+    fitted[3] = vec4(-(bhi.x + blo.x) / (bhi.x - blo.x), -(bhi.y + blo.y) / (bhi.y - blo.y), (bhi.z + blo.z) / (bhi.z - blo.z), 1.0);
+    mat4 clip = fitted * warped * lightView;
+    fit.clipFromWorld = clip;
+    fit.shadowFromWorld = kSdsmBias * clip;
+    float u = texel.x / n, w = texel.y / abs(b);
+    fit.warpU = u;
+    fit.warpV = w;
+    vec4 rowY = vec4(lightView[0][1], lightView[1][1], lightView[2][1], lightView[3][1]);
+    fit.warpPlane = vec4(rowY.xyz, rowY.w - centre.y);
+    fit.texelWorld = max(u * n, w * n * n);
+}
+#endif
 
 void main() {
     vec3 lo, hi;
@@ -38,6 +120,9 @@ void main() {
     bool seen = all(lessThanEqual(lo, hi));
     if (seen) {
         sdsmMargin(lo, hi);
+#if SDSM_WARP
+        boxThrough(turnedFromSamples, lo, hi);  // into the turned view
+#endif
     } else {
         // Nothing seen: any small valid box.
         lo = vec3(-1.0, -1.0, -diagonal - 1.0);
@@ -56,6 +141,14 @@ void main() {
         hi.xy = min(hi.xy, chi.xy);
         hi.z = max(hi.z, chi.z);
     }
+    fit.seen = seen ? 1.0 : 0.0;
+#if SDSM_WARP
+    float warpPad = 1e-3 * diagonal;
+    fit.nearPlane = -hi.z - warpPad;
+    fit.farPlane = -lo.z + warpPad;
+    warp(lo, hi);
+    return;
+#endif
     // The filter's footprint around it, in texels of the map.
     float extent = max(hi.x - lo.x, hi.y - lo.y);
     float pad = extent * padding / max(size, 1.0);
@@ -69,5 +162,4 @@ void main() {
     fit.texelWorld = max(hi.x - lo.x, hi.y - lo.y) / max(size, 1.0);
     fit.nearPlane = near;
     fit.farPlane = far;
-    fit.seen = seen ? 1.0 : 0.0;
 }

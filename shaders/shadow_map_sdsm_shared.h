@@ -29,6 +29,7 @@ layout(std430, binding = SL_STORAGE_SDSM_FIT) buffer SdsmFit {
     SL_SDSM_VEC4 cascadeFar[SL_MAP_MAX_CASCADES / 4];
     SL_SDSM_VEC4 cascadeTexel[SL_MAP_MAX_CASCADES / 4];
     SL_SDSM_VEC4 cascadeRange[SL_MAP_MAX_CASCADES];
+    SL_SDSM_VEC4 warpPlane;  // one map, warp lispsm: the block's warpPlane
     float texelWorld;  // the one map's texel, or cascade 0's (the block's texelWorld) ...
     float nearPlane;   // ... and its near and far planes
     float farPlane;
@@ -37,6 +38,9 @@ layout(std430, binding = SL_STORAGE_SDSM_FIT) buffer SdsmFit {
     float keptFar;     //   the depths seen stay within them (MapLight::sampledDepths; 0, 0: none yet)
     float firstNear;   // cascades: where the first slice starts along the view
     float seenFar;     // cascades: where the last slice ends, the farthest depth seen as kept (read back a frame late: GpuFit)
+    float warpU;       // one map, warp lispsm: the block's warpU ...
+    float warpV;       // ... and warpV
+    float padding1, padding2;
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

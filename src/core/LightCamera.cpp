@@ -182,13 +182,8 @@ float sceneDiagonal(const FitInput& in) { return diagonalOf(all(in)); }
 
 namespace {
 
-// The warp's axis: the view direction across the light (unit), and the sine
-// of the angle between view and light (its length before normalising); none
-// when the light is within about 1 degree of the view (sine below 0.02).
-struct WarpAxis {
-    glm::vec3 axis;
-    float sinGamma;
-};
+} // namespace
+
 std::optional<WarpAxis> warpAxis(const glm::vec3& direction, const LightWarp* warp) {
     if (!warp) return std::nullopt;
     const glm::vec3 across = warp->forward - glm::dot(warp->forward, direction) * direction;
@@ -196,6 +191,8 @@ std::optional<WarpAxis> warpAxis(const glm::vec3& direction, const LightWarp* wa
     if (sinGamma < 0.02f) return std::nullopt;
     return WarpAxis{glm::normalize(across), sinGamma};
 }
+
+namespace {
 
 // LiSPSM: `region` (light view space, the light looking down -z, the view's
 // direction across the light along +y) seen through a perspective whose

@@ -51,6 +51,18 @@ struct LightWarp {
     float nearDistance = 1.0f;
 };
 
+/// The warp's axis: the view direction across the light (unit), and the
+/// sine of the angle between view and light (its length before
+/// normalising).
+struct WarpAxis {
+    glm::vec3 axis{0.0f, 1.0f, 0.0f};
+    float sinGamma = 1.0f;
+};
+/// A warp's axis for a directional light along `direction` (unit); none
+/// without a warp or when the light is within about 1 degree of the view
+/// (sine below 0.02: no warp).
+std::optional<WarpAxis> warpAxis(const glm::vec3& direction, const LightWarp* warp);
+
 /// What the fit looks at: every item's world bounds, which cast and which
 /// receive, and the viewer's clipFromWorld (receivers it cannot see do not
 /// need shadows).

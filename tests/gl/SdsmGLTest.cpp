@@ -203,7 +203,7 @@ TEST_F(SdsmGLTest, TheSharedDepthPrePassChangesNoPixel) {
     EXPECT_EQ(differ, 0u) << "pixels that differ with the shared pre-pass";
 }
 
-// One map and stabilised cascades are fitted on the GPU
+// One map (warped or not) and stabilised cascades are fitted on the GPU
 // (shadow_map_sdsm_fit.comp, shadow_map_sdsm_cascades.comp): the frame
 // never reads the samples back, which on a GPU would wait for the frame so
 // far. Cascades not stabilised (each slice fitted to its own samples) still
@@ -220,14 +220,17 @@ TEST_F(SdsmGLTest, OneMapAndStabilisedCascadesAreFittedWithoutReadingTheSamplesB
     struct Case {
         int cascades;
         bool stabilize;
+        MapWarp warp;
         bool readsBack;
     };
-    for (const Case c : {Case{1, true, false}, Case{4, true, false}, Case{4, false, true}}) {
+    for (const Case c : {Case{1, true, MapWarp::None, false}, Case{1, true, MapWarp::Lispsm, false}, Case{4, true, MapWarp::None, false},
+                         Case{4, false, MapWarp::None, true}}) {
         Scene scene = sceneOf(kWall);
         MapOptions& o = scene.lights[0].shadow.edit<MapOptions>();
         o.fit = MapFit::Sdsm;
         o.cascades = c.cascades;
         o.stabilize = c.stabilize;
+        o.warp = c.warp;
         Renderer renderer(test::glContext());
         renderer.upload(scene);
         RenderOptions options;
@@ -237,7 +240,7 @@ TEST_F(SdsmGLTest, OneMapAndStabilisedCascadesAreFittedWithoutReadingTheSamplesB
         if (c.readsBack)
             EXPECT_GT(readBacks(stats), 0.0) << c.cascades << " cascades not stabilised read their samples back, and the counter must say so";
         else
-            EXPECT_EQ(readBacks(stats), 0.0) << c.cascades << " sdsm map(s), stabilised, read their samples back";
+            EXPECT_EQ(readBacks(stats), 0.0) << c.cascades << " sdsm map(s), stabilised (warp " << static_cast<int>(c.warp) << "), read their samples back";
     }
 }
 

@@ -23,6 +23,9 @@ static_assert(offsetof(shared::MapUniforms, lightClipFromWorld) == 0 && offsetof
                   offsetof(shared::MapUniforms, farPlane) == offsetof(shared::MapUniforms, nearPlane) + sizeof(float) &&
                   offsetof(SdsmFit, farPlane) == offsetof(SdsmFit, nearPlane) + sizeof(float),
               "copyFit copies both matrices, and the near and far planes, as one range each");
+static_assert(offsetof(shared::MapUniforms, warpV) == offsetof(shared::MapUniforms, warpU) + sizeof(float) &&
+                  offsetof(SdsmFit, warpV) == offsetof(SdsmFit, warpU) + sizeof(float),
+              "copyFit copies warpU and warpV as one range");
 static_assert(offsetof(shared::MapUniforms, cascadeRange) - offsetof(shared::MapUniforms, cascadeShadowFromWorld) ==
                       offsetof(SdsmFit, cascadeRange) - offsetof(SdsmFit, cascadeShadowFromWorld) &&
                   offsetof(shared::MapUniforms, cascadeFar) - offsetof(shared::MapUniforms, cascadeShadowFromWorld) ==
@@ -126,6 +129,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     block_.write(u);
     fitted_ = p.gpuFit;
     fittedCascades_ = !p.cascades.empty();
+    fittedWarp_ = p.cascades.empty() && p.camera.warped;
     copyFit();
 }
 
@@ -134,6 +138,10 @@ void MapBlock::copyFit() {
     block_.copyPart(*fitted_, offsetof(SdsmFit, clipFromWorld), offsetof(shared::MapUniforms, lightClipFromWorld), 2 * sizeof(glm::mat4));
     block_.copyPart(*fitted_, offsetof(SdsmFit, texelWorld), offsetof(shared::MapUniforms, texelWorld), sizeof(float));
     block_.copyPart(*fitted_, offsetof(SdsmFit, nearPlane), offsetof(shared::MapUniforms, nearPlane), 2 * sizeof(float));
+    if (fittedWarp_) {
+        block_.copyPart(*fitted_, offsetof(SdsmFit, warpPlane), offsetof(shared::MapUniforms, warpPlane), sizeof(glm::vec4));
+        block_.copyPart(*fitted_, offsetof(SdsmFit, warpU), offsetof(shared::MapUniforms, warpU), 2 * sizeof(float));
+    }
     if (fittedCascades_) {
         // Their matrices, far ends, texels and depth ranges (laid out alike: one range).
         const std::size_t first = offsetof(SdsmFit, cascadeShadowFromWorld), end = offsetof(SdsmFit, cascadeRange) + sizeof(SdsmFit::cascadeRange);

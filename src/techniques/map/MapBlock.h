@@ -36,6 +36,7 @@ private:
     shared::MapUniforms uniforms_{};  ///< what upload() last wrote
     const gl::Buffer* fitted_ = nullptr;  ///< and the GPU's fit it took
     bool fittedCascades_ = false;         ///< a fit of cascades
+    bool fittedWarp_ = false;             ///< a fit of one warped map
 };
 
 } // namespace shadowlab::map

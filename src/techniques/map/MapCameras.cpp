@@ -135,7 +135,8 @@ glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
 }
 
 bool fitsOnGpu(const MapLight& p, const Light& light) {
-    return usesSamples(p, light) && p.options.warp == MapWarp::None && (cascadeCount(light, p.options) == 1 || p.options.stabilize);
+    if (!usesSamples(p, light)) return false;
+    return cascadeCount(light, p.options) == 1 || (p.options.stabilize && p.options.warp == MapWarp::None);
 }
 
 void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame, float seenFar) {
@@ -194,11 +195,22 @@ Bounds sdsmReach(const Light& light, const FrameInfo& frame) {
 GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& frame) {
     const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
     GpuFitInput g;
-    g.lightView = sdsmLightView(light, frame);
+    g.samplesView = sdsmLightView(light, frame);
+    g.lightView = g.samplesView;
     g.diagonal = sceneDiagonal(in);
     g.size = static_cast<float>(p.options.size);
     g.padding = footprint(p.options);
     g.cascades = cascadeCount(light, p.options);
+    if (g.cascades == 1 && p.camera.warped) {
+        // Warped (the light not along the view): the camera's turned view (fitDirectional), the warp's parameters.
+        const LightWarp warp = lightWarp(frame, p.options);
+        g.warped = true;
+        g.lightView = p.camera.viewFromWorld;
+        g.sinGamma = warpAxis(glm::normalize(light.direction), &warp)->sinGamma;
+        g.warpNear = warp.nearDistance;
+        g.eye = warp.eye;
+        g.forward = warp.forward;
+    }
     if (g.cascades == 1) {
         for (std::size_t i = 0; i < frame.items.size(); ++i)
             if (p.camera.casts.empty() ? frame.items[i].castsShadows : p.camera.casts[i] != 0) g.casters.push_back(frame.itemBounds[i].transformed(g.lightView));

@@ -31,8 +31,8 @@ bool usesSamples(const MapLight& p, const Light& light);
 glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame);
 
 /// Whether `p`'s fit "sdsm" runs on the GPU (SampleBounds::fitOnGpu): one
-/// map or stabilised cascades, not warped. Cascades not stabilised (each
-/// slice fitted to its own samples) and warped maps read the samples back.
+/// map (warped or not) or stabilised cascades. Cascades not stabilised
+/// (each slice fitted to its own samples) read the samples back.
 bool fitsOnGpu(const MapLight& p, const Light& light);
 
 /// Stabilised cascades fitted on the GPU: `p`'s cameras for culling their

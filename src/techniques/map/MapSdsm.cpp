@@ -172,12 +172,13 @@ std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& fram
 void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out) {
     const bool cascades = in.cascades > 1;
     // Cascades: the view's own space, whose z is minus the distance along the view.
-    const glm::mat4 space = cascades ? frame.viewFromWorld : in.lightView;
+    const glm::mat4 space = cascades ? frame.viewFromWorld : in.samplesView;
     draw(host, frame, space, {depthWindow(frame, nullptr)}, one_);
     Bounds boxed;
     addBoxed(boxed, frame, space, nullptr);
     const gl::Program& program =
-        host.program({{{GL_COMPUTE_SHADER, cascades ? "shadow_map_sdsm_cascades.comp" : "shadow_map_sdsm_fit.comp"}}, std::string()});
+        host.program({{{GL_COMPUTE_SHADER, cascades ? "shadow_map_sdsm_cascades.comp" : "shadow_map_sdsm_fit.comp"}},
+                      std::string("#define SDSM_WARP ") + (in.warped ? "1\n" : "0\n")});
     program.use();
     const GLuint id = program.id();
     glProgramUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.lightView[0][0]);
@@ -219,6 +220,16 @@ void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const G
         glNamedBufferSubData(casters_.id(), 0, bytes, boxes.data());
         glProgramUniform1i(id, 7, static_cast<GLint>(in.casters.size()));
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_CASTERS, casters_.id());
+        if (in.warped) {
+            // The samples' box into the turned view, the view back to the world (as the CPU inverts it), the warp.
+            const glm::mat4 turnedFromSamples = in.lightView * glm::inverse(in.samplesView), worldFromTurned = glm::inverse(in.lightView);
+            glProgramUniformMatrix4fv(id, 8, 1, GL_FALSE, &worldFromTurned[0][0]);
+            glProgramUniformMatrix4fv(id, 9, 1, GL_FALSE, &turnedFromSamples[0][0]);
+            glProgramUniform3fv(id, 10, 1, &in.eye.x);
+            glProgramUniform3fv(id, 11, 1, &in.forward.x);
+            glProgramUniform1f(id, 12, in.warpNear);
+            glProgramUniform1f(id, 13, in.sinGamma);
+        }
     }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, one_.lo.front().id());
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, one_.hi.front().id());

@@ -9,13 +9,13 @@
 // fit then takes those bounds (FitInput::visibleSamples) instead of the boxes
 // of the receivers in view; cascades end where the depths they span do,
 // and slices not stabilised take their own bounds, a reduction a slice
-// counting only the pixels at its distances. One map and stabilised
-// cascades (not warped) are fitted on the GPU (fitOnGpu: a compute pass
+// counting only the pixels at its distances. One map (warped or not) and
+// stabilised cascades are fitted on the GPU (fitOnGpu: a compute pass
 // merges the blocks and fits the cameras into a buffer that MapBlock
 // copies into the light's block), so the frame never waits for its depth;
-// slices not stabilised and warped maps still read the bounds back
-// (reduce, reduceSlices) for the CPU's fit: a wait for the frame so far
-// (on a GPU a pipeline bubble), counted as "sdsm.readBacks".
+// slices not stabilised still read the bounds back (reduce,
+// reduceSlices) for the CPU's fit: a wait for the frame so far (on a GPU
+// a pipeline bubble), counted as "sdsm.readBacks".
 #include "core/Bounds.h"
 #include "core/LightCamera.h"
 #include "shadow_map_sdsm_shared.h"
@@ -39,7 +39,8 @@ using SdsmFit = shared::SdsmFit;
 /// padding (FitInput's); one map: the boxes in that view of the casters
 /// that matter; cascades: their count and splits' settings, the view.
 struct GpuFitInput {
-    glm::mat4 lightView{1.0f};
+    glm::mat4 samplesView{1.0f};  ///< one map: the reduction's space (directionalLightView)
+    glm::mat4 lightView{1.0f};    ///< one map: the camera's view (warped: turned), the casters' space
     float diagonal = 1.0f;
     float size = 1024.0f;
     float padding = 1.0f;
@@ -54,6 +55,10 @@ struct GpuFitInput {
     /// Cascades: the range the far end the slices are split over is
     /// clamped to (GpuFit::seenFar's both ends; no clamp before it is known).
     glm::vec2 splitRange{0.0f, 3.0e38f};
+    /// One map, warp lispsm with the light not along the view: the warp
+    /// (core/LightCamera: warpRegion) and its parameters.
+    bool warped = false;
+    float sinGamma = 1.0f, warpNear = 1.0f;
 };
 
 /// A light's fit on the GPU, kept from frame to frame: the buffer the
