@@ -44,6 +44,33 @@ const char* const kWall = R"({
 
 class SdsmGLTest : public GLTest {};
 
+// The wall scene with the map's fit, cascades, stabilisation and warp.
+Scene wallWith(MapFit fit, int cascades, bool stabilize = true, MapWarp warp = MapWarp::None) {
+    Scene scene = sceneOf(kWall);
+    MapOptions& o = scene.lights[0].shadow.edit<MapOptions>();
+    o.fit = fit;
+    o.cascades = cascades;
+    o.stabilize = stabilize;
+    o.warp = warp;
+    return scene;
+}
+
+// A frame of `scene` at 320x240.
+FrameStats renderSmall(Renderer& renderer, const Scene& scene) {
+    RenderOptions options;
+    options.width = 320;
+    options.height = 240;
+    return renderer.render(scene, options);
+}
+
+// The pixels that differ between two images of one size.
+std::size_t differingPixels(const ImageRGBA8& a, const ImageRGBA8& b) {
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); i += 4)
+        if (!std::equal(&a.pixels[i], &a.pixels[i] + 4, &b.pixels[i])) ++differ;
+    return differ;
+}
+
 } // namespace
 
 // Measured (800x600, 1024^2): tight p95 19.8 pixels a texel and 0.044 %
@@ -197,10 +224,7 @@ TEST_F(SdsmGLTest, TheSharedDepthPrePassChangesNoPixel) {
     ASSERT_FALSE(prepassed(own)) << "a frame without shadow passes kept a depth pre-pass";
     const ImageRGBA8 withoutPrepass = renderer.readColor();
     ASSERT_EQ(withPrepass.pixels.size(), withoutPrepass.pixels.size());
-    std::size_t differ = 0;
-    for (std::size_t i = 0; i < withPrepass.pixels.size(); i += 4)
-        if (!std::equal(&withPrepass.pixels[i], &withPrepass.pixels[i] + 4, &withoutPrepass.pixels[i])) ++differ;
-    EXPECT_EQ(differ, 0u) << "pixels that differ with the shared pre-pass";
+    EXPECT_EQ(differingPixels(withPrepass, withoutPrepass), 0u) << "pixels that differ with the shared pre-pass";
 }
 
 // One map (warped or not) and stabilised cascades are fitted on the GPU
@@ -225,18 +249,10 @@ TEST_F(SdsmGLTest, OneMapAndStabilisedCascadesAreFittedWithoutReadingTheSamplesB
     };
     for (const Case c : {Case{1, true, MapWarp::None, false}, Case{1, true, MapWarp::Lispsm, false}, Case{4, true, MapWarp::None, false},
                          Case{4, false, MapWarp::None, true}}) {
-        Scene scene = sceneOf(kWall);
-        MapOptions& o = scene.lights[0].shadow.edit<MapOptions>();
-        o.fit = MapFit::Sdsm;
-        o.cascades = c.cascades;
-        o.stabilize = c.stabilize;
-        o.warp = c.warp;
+        const Scene scene = wallWith(MapFit::Sdsm, c.cascades, c.stabilize, c.warp);
         Renderer renderer(test::glContext());
         renderer.upload(scene);
-        RenderOptions options;
-        options.width = 320;
-        options.height = 240;
-        const FrameStats stats = renderer.render(scene, options);
+        const FrameStats stats = renderSmall(renderer, scene);
         if (c.readsBack)
             EXPECT_GT(readBacks(stats), 0.0) << c.cascades << " cascades not stabilised read their samples back, and the counter must say so";
         else
@@ -252,31 +268,22 @@ TEST_F(SdsmGLTest, OneMapAndStabilisedCascadesAreFittedWithoutReadingTheSamplesB
 // casters (measured: 72 triangles against 168 in all), and being the
 // same view, the same pixels.
 TEST_F(SdsmGLTest, CascadesCullForTheirOwnSlicesFromTheSecondFrame) {
-    Scene scene = sceneOf(kWall);
-    MapOptions& o = scene.lights[0].shadow.edit<MapOptions>();
-    o.fit = MapFit::Sdsm;
-    o.cascades = 4;
+    const Scene scene = wallWith(MapFit::Sdsm, 4);
     Renderer renderer(test::glContext());
     renderer.upload(scene);
-    RenderOptions options;
-    options.width = 320;
-    options.height = 240;
     const auto triangles = [](const FrameStats& stats) {
         double n = 0.0;
         for (const auto& [name, value] : stats.counters)
             if (name.starts_with("shadow[0].cascade") && name.ends_with(".triangles")) n += value;
         return n;
     };
-    const double first = triangles(renderer.render(scene, options));
+    const double first = triangles(renderSmall(renderer, scene));
     const ImageRGBA8 one = renderer.readColor();
-    const double second = triangles(renderer.render(scene, options));
+    const double second = triangles(renderSmall(renderer, scene));
     const ImageRGBA8 two = renderer.readColor();
     EXPECT_LT(second, first) << "the second frame's cascades drew no fewer casters";
     ASSERT_EQ(one.pixels.size(), two.pixels.size());
-    std::size_t differ = 0;
-    for (std::size_t i = 0; i < one.pixels.size(); i += 4)
-        if (!std::equal(&one.pixels[i], &one.pixels[i] + 4, &two.pixels[i])) ++differ;
-    EXPECT_EQ(differ, 0u) << "pixels that differ between two frames of one view";
+    EXPECT_EQ(differingPixels(one, two), 0u) << "pixels that differ between two frames of one view";
 }
 
 // The viewer draws the light cameras (Renderer::lightFrustums): with the
@@ -288,16 +295,10 @@ TEST_F(SdsmGLTest, CascadesCullForTheirOwnSlicesFromTheSecondFrame) {
 // bar, a quarter, leaves room for any fit that keeps to what is seen.
 TEST_F(SdsmGLTest, TheViewerDrawsTheCamerasTheGpuFitted) {
     const auto widths = [](MapFit fit, int cascades) {
-        Scene scene = sceneOf(kWall);
-        MapOptions& o = scene.lights[0].shadow.edit<MapOptions>();
-        o.fit = fit;
-        o.cascades = cascades;
+        const Scene scene = wallWith(fit, cascades);
         Renderer renderer(test::glContext());
         renderer.upload(scene);
-        RenderOptions options;
-        options.width = 320;
-        options.height = 240;
-        renderer.render(scene, options);
+        renderSmall(renderer, scene);
         std::vector<float> out;
         for (const LightFrustum& f : renderer.lightFrustums(scene))
             out.push_back(2.0f / glm::length(glm::vec3(f.clipFromWorld[0][0], f.clipFromWorld[1][0], f.clipFromWorld[2][0])));
