@@ -11,17 +11,20 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     // Start just off the surface along its normal (a disc never shadows itself).
     vec3 n = dot(worldNormal, toLight) < 0.0 ? -worldNormal : worldNormal;
     vec3 p = worldPosition + n * disc.params.y;
+    // Every disc is tested and the hits are or-ed, with no early return or
+    // continue: a rasteriser that runs both sides of a branch (llvmpipe)
+    // pays for their masks in every round of the loop.
     int count = int(disc.params.x);
+    bool hit = false;
     for (int k = 0; k < count; ++k) {
         vec3 c = disc.centre[k].xyz, a = disc.axisA[k].xyz, b = disc.axisB[k].xyz;
         vec3 normal = cross(a, b);
         float facing = dot(normal, toLight);
-        if (abs(facing) < 1e-12) continue;  // the ray runs in the disc's plane
-        float t = dot(normal, c - p) / facing;
-        if (t <= 0.0 || t >= reach) continue;
+        bool crosses = abs(facing) >= 1e-12;  // not a ray in the disc's plane
+        float t = dot(normal, c - p) / (crosses ? facing : 1.0);
         vec3 q = p + t * toLight - c;
         float s = dot(q, a) / dot(a, a), u = dot(q, b) / dot(b, b);
-        if (s * s + u * u <= 1.0) return vec3(0.0);
+        hit = hit || (crosses && t > 0.0 && t < reach && s * s + u * u <= 1.0);
     }
-    return vec3(1.0);
+    return vec3(hit ? 0.0 : 1.0);
 }
