@@ -70,18 +70,6 @@ void frustumBox(float n, float f, out vec3 lo, out vec3 hi) {
     }
 }
 
-// A box's corners through an affine matrix: their box.
-void transformBox(mat4 m, inout vec3 lo, inout vec3 hi) {
-    vec3 a = vec3(3.0e38), b = vec3(-3.0e38);
-    for (int c = 0; c < 8; ++c) {
-        vec3 p = (m * vec4((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y, (c & 4) != 0 ? hi.z : lo.z, 1.0)).xyz;
-        a = min(a, p);
-        b = max(b, p);
-    }
-    lo = a;
-    hi = b;
-}
-
 void main() {
     vec3 lo, hi;
     mergeBlocks(blocks, lo, hi);
@@ -123,7 +111,7 @@ void main() {
     fit.firstNear = first;
     float k2 = (1.0 + camera.w * camera.w) * camera.z * camera.z;
     vec3 sceneLight = sceneLo, sceneLightHi = sceneHi;
-    transformBox(lightView, sceneLight, sceneLightHi);
+    sdsmBoxThrough(lightView, sceneLight, sceneLightHi);
     for (int c = 0; c < count; ++c) {
         float n = c == 0 ? first : ends[c - 1], f = ends[c];
         float readFrom = c < 2 ? first : ends[c - 2];
@@ -144,7 +132,7 @@ void main() {
         vec3 dlo = sceneLight, dhi = sceneLightHi;
         float depthStep = 0.0625 * half_;
         if (all(lessThanEqual(wlo, whi)) && depthStep > 0.0) {
-            transformBox(lightView, wlo, whi);
+            sdsmBoxThrough(lightView, wlo, whi);
             dlo.z = max(dlo.z, floor(wlo.z / depthStep) * depthStep);
             dhi.z = min(dhi.z, ceil(whi.z / depthStep) * depthStep);
         }

@@ -40,18 +40,6 @@ layout(location = 11) uniform vec3 forward;
 layout(location = 12) uniform float warpNear;
 layout(location = 13) uniform float sinGamma;
 
-// A box's corners through a matrix: their box (affine: no divide).
-void boxThrough(mat4 m, inout vec3 lo, inout vec3 hi) {
-    vec3 a = vec3(3.0e38), b = vec3(-3.0e38);
-    for (int c = 0; c < 8; ++c) {
-        vec3 p = (m * vec4((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y, (c & 4) != 0 ? hi.z : lo.z, 1.0)).xyz;
-        a = min(a, p);
-        b = max(b, p);
-    }
-    lo = a;
-    hi = b;
-}
-
 // warpRegion: the region (turned view space) seen through a perspective
 // along +y whose centre lies n below it, n from Wimmer et al.'s n_opt.
 void warp(vec3 lo, vec3 hi) {
@@ -121,7 +109,7 @@ void main() {
     if (seen) {
         sdsmMargin(lo, hi);
 #if SDSM_WARP
-        boxThrough(turnedFromSamples, lo, hi);  // into the turned view
+        sdsmBoxThrough(turnedFromSamples, lo, hi);  // into the turned view
 #endif
     } else {
         // Nothing seen: any small valid box.

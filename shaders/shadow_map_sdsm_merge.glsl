@@ -1,6 +1,7 @@
 // Technique "map", fit "sdsm" on the GPU: the reduction's blocks
 // (shadow_map_sdsm_reduce.frag, one window) merged into one box by a
-// workgroup of 256 (shadow_map_sdsm_fit.comp, shadow_map_sdsm_cascades.comp).
+// workgroup of 256, and the steps both fits take (shadow_map_sdsm_fit.comp,
+// shadow_map_sdsm_cascades.comp).
 
 // The reduction's lowest and highest corner a block (w = 1: covered).
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D blockLo;
@@ -44,6 +45,18 @@ void sdsmMargin(inout vec3 lo, inout vec3 hi) {
     vec3 margin = vec3(1e-4 * length(hi - lo));
     lo -= margin;
     hi += margin;
+}
+
+// A box's corners through an affine matrix: their box (Bounds::transformed).
+void sdsmBoxThrough(mat4 m, inout vec3 lo, inout vec3 hi) {
+    vec3 a = vec3(3.0e38), b = vec3(-3.0e38);
+    for (int c = 0; c < 8; ++c) {
+        vec3 p = (m * vec4((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y, (c & 4) != 0 ? hi.z : lo.z, 1.0)).xyz;
+        a = min(a, p);
+        b = max(b, p);
+    }
+    lo = a;
+    hi = b;
 }
 
 // glm::ortho(l, r, b, t, n, f), column by column.

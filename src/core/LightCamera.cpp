@@ -90,7 +90,8 @@ Bounds visibleReceivers(const FitInput& in, const glm::mat4& to) {
     return b;
 }
 
-// The camera frustum's eight corners in `to` space (NDC cube corners unprojected).
+} // namespace
+
 Bounds frustumBounds(const glm::mat4& cameraClipFromWorld, const glm::mat4& to) {
     const glm::mat4 worldFromClip = glm::inverse(cameraClipFromWorld);
     Bounds b;
@@ -101,8 +102,6 @@ Bounds frustumBounds(const glm::mat4& cameraClipFromWorld, const glm::mat4& to) 
     }
     return b;
 }
-
-} // namespace
 
 glm::vec4 towardsLight(const Light& light) {
     return light.type == LightType::Directional ? glm::vec4(-glm::normalize(light.direction), 0.0f) : glm::vec4(light.position, 1.0f);

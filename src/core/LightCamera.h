@@ -94,6 +94,10 @@ glm::mat4 directionalLightView(const glm::vec3& direction, const FitInput& in);
 /// that of every item's bounds, at least 10^-3; 1 with no items.
 float sceneDiagonal(const FitInput& in);
 
+/// The box, in `to` space, of the eight corners of the clip volume of
+/// `cameraClipFromWorld` (its NDC cube's corners taken back to the world).
+Bounds frustumBounds(const glm::mat4& cameraClipFromWorld, const glm::mat4& to);
+
 /// False when the box lies entirely outside the clip volume of
 /// `clipFromWorld` (all eight corners beyond one of its six planes): a
 /// conservative test, a box it keeps may still be outside.

@@ -14,6 +14,17 @@ namespace shadowlab::map {
 
 namespace {
 
+// What core/LightCamera's fits take for `p`'s map this frame, with the
+// samples a fit "sdsm" takes, if any.
+FitInput fitInputOf(const MapLight& p, const FrameInfo& frame, const Bounds* samples = nullptr) {
+    return FitInput{frame.itemBounds, frame.items,          frame.itemPlanes,
+                    frame.itemConvex, frame.clipFromWorld, p.options.size,
+                    footprint(p.options), filterInfo(p.options.filter).rawDepth, samples};
+}
+
+// The frame's width over its height.
+float aspectOf(const FrameInfo& frame) { return static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1)); }
+
 // A directional light's cascades: the view's depth split into slices
 // (core/LightCamera: cascadeSplits, fitCascade), one camera each.
 // Where stabilised slices end: the camera's far plane, or nearer where the
@@ -66,7 +77,7 @@ LightWarp lightWarp(const FrameInfo& frame, const MapOptions& o) {
 void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in, const glm::vec2* seenDepths,
                  const std::vector<Bounds>* sliceSamples) {
     const Camera& camera = frame.scene.camera;
-    const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
+    const float aspect = aspectOf(frame);
     // Stabilised slices must not move with the camera: they end at a reach
     // that changes by steps (stableReach); tight ones at the farthest
     // receiver it sees; sdsm's over the depths the camera sees.
@@ -141,11 +152,9 @@ bool fitsOnGpu(const MapLight& p, const Light& light) {
 
 void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame, float seenFar) {
     fitCameras(p, light, frame);  // the slices over the whole stabilised reach
-    const FitInput in{frame.itemBounds, frame.items,          frame.itemPlanes,
-                      frame.itemConvex, frame.clipFromWorld, p.options.size,
-                      footprint(p.options), filterInfo(p.options.filter).rawDepth, nullptr};
+    const FitInput in = fitInputOf(p, frame);
     const Camera& camera = frame.scene.camera;
-    const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
+    const float aspect = aspectOf(frame);
     const float near = camera.nearPlane;
     // The GPU splits over seenFar when it is known (its far end a frame
     // before), and its last slice ends anywhere up to the reach; not known,
@@ -173,12 +182,7 @@ void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame,
 
 Bounds sdsmReach(const Light& light, const FrameInfo& frame) {
     const glm::mat4 view = sdsmLightView(light, frame);
-    const glm::mat4 worldFromClip = glm::inverse(frame.clipFromWorld);
-    Bounds frustum;
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec4 w = worldFromClip * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? 1.0f : -1.0f, 1.0f);
-        frustum.add(glm::vec3(view * glm::vec4(glm::vec3(w) / w.w, 1.0f)));
-    }
+    const Bounds frustum = frustumBounds(frame.clipFromWorld, view);
     Bounds seen;
     for (std::size_t i = 0; i < frame.items.size(); ++i)
         if (mayIntersect(frame.clipFromWorld, frame.itemBounds[i])) seen.add(frame.itemBounds[i].transformed(view));
@@ -219,7 +223,7 @@ GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& 
     // Cascades: the view and the splits' settings (fitCascades, fitCascade).
     const Camera& camera = frame.scene.camera;
     for (const Bounds& b : frame.itemBounds) g.scene.add(b);
-    const float aspect = static_cast<float>(frame.viewport.x) / static_cast<float>(std::max(frame.viewport.y, 1));
+    const float aspect = aspectOf(frame);
     g.camera = glm::vec4(camera.nearPlane, camera.farPlane, std::tan(glm::radians(camera.fovYDeg) * 0.5f), aspect);
     g.eye = camera.position;
     g.forward = glm::normalize(camera.target - camera.position);
@@ -243,9 +247,7 @@ glm::vec2 sliceDistances(const MapLight& p, std::size_t c) {
 
 void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples, const glm::vec2* seenDepths,
                 const std::vector<Bounds>* sliceSamples) {
-    const FitInput in{frame.itemBounds, frame.items,          frame.itemPlanes,
-                      frame.itemConvex, frame.clipFromWorld, p.options.size,
-                      footprint(p.options), filterInfo(p.options.filter).rawDepth, samples};
+    const FitInput in = fitInputOf(p, frame, samples);
     if (p.cube) {
         const auto [nearPlane, farPlane] = cubeNearFar(p.options);
         p.cubeCamera = fitCube(light, lightFit(p.options.fit), in, nearPlane, farPlane);

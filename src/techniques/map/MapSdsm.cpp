@@ -4,7 +4,6 @@
 #include "core/LightCamera.h"
 #include "shadowlab_shared.h"
 
-
 #include <algorithm>
 #include <cstddef>
 #include <string>
