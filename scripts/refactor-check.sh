@@ -112,7 +112,7 @@ case_ "map-cascades-4-rgba8" render "$field" --set "$T=map" "$M.cascades=4" "$M.
 case_ "map-cascades-4-evsm4" render "$field" --set "$T=map" "$M.cascades=4" "$M.representation=evsm4"
 case_ "map-cascades-4-msm-mipmaps" render "$field" --set "$T=map" "$M.cascades=4" "$M.representation=msm" "$M.mipmaps=true"
 case_ "map-cascades-2-small" render "$dir" --set "$T=map" "$M.cascades=2"
-# Fit sdsm: one map (fitted on the GPU), warped, and cascades (read back).
+# Fit sdsm (fitted on the GPU): one map, warped, and cascades, stabilised or each slice fitted to its own samples, warped or not.
 long=$S/long-view.json
 for f in long field; do
   case_ "sdsm-$f-one" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=1"
@@ -120,6 +120,7 @@ for f in long field; do
   case_ "sdsm-$f-one-lispsm" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=1" "$M.warp=lispsm"
   case_ "sdsm-$f-cascades" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=4"
   case_ "sdsm-$f-cascades-tight" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=4" "$M.stabilize=false"
+  case_ "sdsm-$f-cascades-tight-lispsm" render "${!f}" --set "$T=map" "$M.fit=sdsm" "$M.cascades=4" "$M.stabilize=false" "$M.warp=lispsm"
 done
 case_ "sdsm-dir-pcss" render "$dir" --set "$T=map" "$M.fit=sdsm" "$M.filter=pcss" "lights[0].size=2"
 # Point lights: cube maps.

@@ -1,16 +1,25 @@
-// Technique "map", fit "sdsm" on the GPU for stabilised cascades: the
-// view depths the camera sees, merged from the reduction's blocks (in the
-// view's own space, whose z is minus the distance along the view), and the
-// cascades fitted to them here, into the light's SdsmFit buffer
+// Technique "map", fit "sdsm" on the GPU for cascades: the view depths
+// the camera sees, merged from the reduction's blocks (in the view's own
+// space, whose z is minus the distance along the view), and the slices
+// split over them here, into the light's SdsmFit buffer
 // (shadow_map_sdsm_shared.h), which MapBlock copies into the block (MapSdsm:
-// SampleBounds::fitCascadesOnGpu). The same steps as MapCameras'
-// fitCascades and core/LightCamera's cascadeSplits and fitCascade when
-// stabilised (keep them alike): the depths kept in whole steps of 2^(1/4),
-// the slices split by cascadeLambda (or cascadeSplits) from the camera's
-// near plane to the farthest depth seen, each slice's bounding sphere, its
-// box snapped to whole texels, and its depth range the scene's cut to
-// what the slice's lookups reach. Nothing seen: the cameras of the frame
-// before are kept (never fitted yet: the slices over the whole reach).
+// SampleBounds::fitOnGpu). The same steps as MapCameras' fitCascades and
+// core/LightCamera's cascadeSplits and fitCascade take for the receivers'
+// reach (keep them alike): the slices split by cascadeLambda (or
+// cascadeSplits) from the camera's near plane to the farthest depth seen,
+// the first starting at the nearest. (Placed from the nearest depth seen,
+// the logarithmic scheme's splits all moved out with it, and the near
+// slices, where a texel covers the most pixels, got fewer texels a metre
+// than the tight fit's: docs/techniques.md.)
+// SDSM_STABILIZE 1: the depths kept in whole steps of 2^(1/4), and each
+// slice's camera fitted here: its bounding sphere, its box snapped to
+// whole texels, and its depth range the scene's cut to what the slice's
+// lookups reach. Nothing seen: the cameras of the frame before are kept
+// (never fitted yet: the slices over the whole reach).
+// SDSM_STABILIZE 0: the slices' window depths (sliceWindow), whose pixels a
+// second reduction bounds a slice each, and shadow_map_sdsm_fit.comp
+// (SDSM_SLICE) fits each slice's camera to its own samples. Nothing seen:
+// the frame before's slices are kept (never fitted yet: over the view's reach).
 #include "shadowlab_shared.h"
 #include "shadow_map_sdsm_shared.h"
 #include "shadow_map_sdsm_merge.glsl"
@@ -30,7 +39,7 @@ layout(location = 9) uniform vec3 eye;
 layout(location = 10) uniform vec3 forward;    // unit, towards the target
 layout(location = 11) uniform vec3 right;      // unit, the view's x
 layout(location = 12) uniform vec3 up;         // unit, the view's y
-layout(location = 13) uniform float reach;     // where stabilised slices end at the farthest (MapCameras: stableReach)
+layout(location = 13) uniform float reach;     // where slices end at the farthest (MapCameras: stableReach, or viewReach when not stabilised)
 layout(location = 14) uniform float lambda;    // cascadeLambda
 layout(location = 15) uniform vec3 sceneLo;    // the scene's box, world space
 layout(location = 16) uniform vec3 sceneHi;
@@ -42,17 +51,32 @@ layout(location = 24) uniform int givenCount;
 // still ends at this frame's far end (or past it): only where the other
 // slices split follows a frame late.
 layout(location = 25) uniform vec2 splitRange;
+#if !SDSM_STABILIZE
+layout(location = 26) uniform mat4 clipFromView;  // the camera's projection
+layout(location = 27) uniform float blend;        // cascadeBlend
 
-// sampledRange (MapCameras.cpp), stabilised: the depths seen in whole
-// steps of 2^(1/4), near two steps below the nearest, far one past the
-// farthest, kept while the depths stay inside and it is at most four steps
-// too wide at the near end and three at the far.
+// The window depth (0..1) of a point `distance` along the view's axis (MapSdsm.cpp: windowDepthAt).
+float windowDepthAt(float distance) {
+    vec4 clip = clipFromView * vec4(0.0, 0.0, -distance, 1.0);
+    return 0.5 * clip.z / clip.w + 0.5;
+}
+#endif
+
+// The view depths seen, [near, far] along the view, within the camera's
+// planes. Stabilised: in whole steps of 2^(1/4) with headroom (near two
+// steps below the nearest, far one past the farthest), kept from frame to
+// frame while the depths seen stay inside and it is at most four steps
+// too wide at the near end and three at the far: the splits stay put as
+// the camera moves (each change moves every slice's texel grid: a frame of
+// flips), and follow a view that changes.
 vec2 sampledRange(vec2 seen, vec2 kept) {
     float near = max(seen.x, camera.x), far = min(seen.y, camera.y);
+#if SDSM_STABILIZE
     float stepUp = exp2(0.25);
     if (kept.y > kept.x && kept.x <= near && far <= kept.y && near <= kept.x * pow(stepUp, 4.0) && kept.y <= far * pow(stepUp, 3.0)) return kept;
     near = exp2((floor(4.0 * log2(near)) - 2.0) / 4.0);
     far = exp2((ceil(4.0 * log2(far)) + 1.0) / 4.0);
+#endif
     near = max(near, camera.x);
     far = clamp(far, near * 1.01, camera.y);
     return vec2(near, far);
@@ -109,6 +133,22 @@ void main() {
     ends[count - 1] = max(far, splitFar);
     if (!(first < ends[0])) first = near;  // nothing seen before the first split: the slice as the tight fit's
     fit.firstNear = first;
+#if !SDSM_STABILIZE
+    // Each slice's far end, and the window depths whose pixels its samples
+    // count: from its near end, or for a slice after the first from where
+    // the slice before fades into it over its far blend share
+    // (MapCameras: sliceDistances), each way a step of the 24-bit depth
+    // wider (a pixel on a split counts for both; MapSdsm.cpp: depthWindow).
+    const float depthStep = 1.0 / 16777215.0, below1 = 0.99999994;
+    for (int c = 0; c < count; ++c) {
+        fit.cascadeFar[c >> 2][c & 3] = ends[c];
+        float before = c > 0 ? ends[c - 1] : first, start = c > 1 ? ends[c - 2] : 0.0;
+        float from = c == 0 ? first : max(before - blend * (before - start), first);
+        vec2 window = vec2(windowDepthAt(from), windowDepthAt(ends[c]));
+        fit.sliceWindow[c] = vec4(max(window.x - depthStep, 0.0), min(window.y + depthStep, below1), window);
+    }
+    return;
+#endif
     float k2 = (1.0 + camera.w * camera.w) * camera.z * camera.z;
     vec3 sceneLight = sceneLo, sceneLightHi = sceneHi;
     sdsmBoxThrough(lightView, sceneLight, sceneLightHi);

@@ -19,9 +19,20 @@ layout(location = 0) uniform mat4 lightFromWindow;
 layout(location = 2) uniform ivec2 viewport;
 // SDSM_WINDOWS (1, or MapSdsm::kSlicesAPass): the window depths whose
 // pixels count, [lo, hi], each its own bounds: one slice of cascades each
-// (its distances along the view as window depths), else [0, 1) (uncovered
-// pixels, at depth 1, never count); lo > hi: none.
+// (its distances along the view as window depths, from the fit's buffer
+// with SDSM_WINDOWS_FROM_FIT), else [0, 1) (uncovered pixels, at depth 1,
+// never count); lo > hi: none.
+#if SDSM_WINDOWS_FROM_FIT
+// Cascades not stabilised: the windows the GPU placed
+// (shadow_map_sdsm_cascades.comp: sliceWindow), slices firstSlice on, of sliceCount.
+#include "shadow_map_sdsm_shared.h"
+layout(location = 3) uniform int firstSlice;
+layout(location = 4) uniform int sliceCount;
+vec2 windowOf(int w) { return firstSlice + w < sliceCount ? fit.sliceWindow[firstSlice + w].xy : vec2(1.0, 0.0); }
+#else
 layout(location = 3) uniform vec2 depthWindow[SDSM_WINDOWS];
+vec2 windowOf(int w) { return depthWindow[w]; }
+#endif
 
 // Window w's lowest corner at location 2w, its highest at 2w + 1.
 layout(location = 0) out vec4 outBounds[2 * SDSM_WINDOWS];
@@ -36,7 +47,9 @@ void main() {
     ivec2 origin = ivec2(gl_FragCoord.xy) * kBlock;
     vec2 texel = 1.0 / vec2(viewport);
     float dmin[SDSM_WINDOWS], dmax[SDSM_WINDOWS];
+    vec2 window[SDSM_WINDOWS];
     for (int w = 0; w < SDSM_WINDOWS; ++w) {
+        window[w] = windowOf(w);
         dmin[w] = 1.0;
         dmax[w] = 0.0;
     }
@@ -46,7 +59,7 @@ void main() {
             for (int w = 0; w < SDSM_WINDOWS; ++w) {
                 // Pixels outside the window (uncovered ones at depth 1
                 // among them) count for neither end.
-                vec4 inside = step(vec4(depthWindow[w].x), d) * step(d, vec4(depthWindow[w].y));
+                vec4 inside = step(vec4(window[w].x), d) * step(d, vec4(window[w].y));
                 vec4 near = mix(vec4(1.0), d, inside);
                 dmin[w] = min(dmin[w], min(min(near.x, near.y), min(near.z, near.w)));
                 vec4 far = d * inside;

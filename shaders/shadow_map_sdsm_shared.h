@@ -1,6 +1,8 @@
 // Technique "map", fit "sdsm" on the GPU: the buffer its compute passes
-// fit a light's cameras into (shadow_map_sdsm_fit.comp: one map;
-// shadow_map_sdsm_cascades.comp: stabilised cascades), one per light, kept
+// fit a light's cameras into (shadow_map_sdsm_fit.comp: one map, or with
+// SDSM_SLICE a slice of cascades not stabilised;
+// shadow_map_sdsm_cascades.comp: the cascades' splits, and stabilised
+// ones' cameras), one per light, kept
 // from frame to frame, and copied on the GPU over the cameras' members of
 // the light's block (MapBlock). Shared by the C++ (MapSdsm.h: SdsmFit) and
 // the GLSL (std430 at SL_STORAGE_SDSM_FIT); matrices, then vec4s, then
@@ -30,12 +32,19 @@ layout(std430, binding = SL_STORAGE_SDSM_FIT) buffer SdsmFit {
     SL_SDSM_VEC4 cascadeTexel[SL_MAP_MAX_CASCADES / 4];
     SL_SDSM_VEC4 cascadeRange[SL_MAP_MAX_CASCADES];
     SL_SDSM_VEC4 warpPlane;  // one map, warp lispsm: the block's warpPlane
+    // Warped cascades: these two as the block has them (one copy).
+    SL_SDSM_VEC4 cascadeWarpPlane[SL_MAP_MAX_CASCADES];
+    SL_SDSM_VEC4 cascadeWarp[SL_MAP_MAX_CASCADES];
+    // Cascades not stabilised: the window depths whose pixels count for
+    // each slice's samples (x, y: a step of the depth buffer wider each way;
+    // z, w: not widened, where the large meshes' boxes are cut).
+    SL_SDSM_VEC4 sliceWindow[SL_MAP_MAX_CASCADES];
     float texelWorld;  // the one map's texel, or cascade 0's (the block's texelWorld) ...
     float nearPlane;   // ... and its near and far planes
     float farPlane;
     float seen;        // 1 when the camera saw a point this frame
-    float keptNear;    // stabilised cascades: the view depths the slices split, kept while
-    float keptFar;     //   the depths seen stay within them (MapLight::sampledDepths; 0, 0: none yet)
+    float keptNear;    // cascades: the view depths the slices split (stabilised: kept while
+    float keptFar;     //   the depths seen stay within them; 0, 0: none seen yet)
     float firstNear;   // cascades: where the first slice starts along the view
     float seenFar;     // cascades: where the last slice ends, the farthest depth seen as kept (read back a frame late: GpuFit)
     float warpU;       // one map, warp lispsm: the block's warpU ...

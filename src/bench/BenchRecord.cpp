@@ -114,7 +114,7 @@ std::optional<json> sdsmCost(const Scene& scene, const TimedFrames& timed, doubl
                 sum += median(t->second);
         return sum;
     };
-    const double prepass = summed("prepass"), reduce = summed("reduce") + summed("reduceSlices");
+    const double prepass = summed("prepass"), reduce = summed("reduce");
     const double base = median(timed.passTimes.at("base")), without = median(timed.unprepassedBaseTimes);
     const double net = prepass + reduce - (without - base);
     return json{{"prepassMs", prepass},

@@ -122,7 +122,7 @@ public:
             if (auto old = lights_.find(index); old != lights_.end()) {
                 // Fit "sdsm" refits in the shadow pass (renderShadowPass).
                 if (usesSamples(p, light) && old->second.cascades.size() == p.cascades.size()) p.keepCamerasOf(old->second);
-                if (!fitsOnGpu(p, light)) p.gpuFit = nullptr;
+                if (!usesSamples(p, light)) p.gpuFit = nullptr;
                 p.keepTargetsOf(old->second, !p.cube || cubeWindowDepth(p.options) == cubeWindowDepth(old->second.options));
             }
             attachTargets(p, res_.arrays[p.array]);
@@ -154,29 +154,24 @@ public:
                 const auto pre = host.timeScope("prepass");
                 samples_.prepass(host, frame);
             }
-            p.gpuFit = nullptr;
-            if (fitsOnGpu(p, light)) {
-                // Fitted on the GPU, no read-back. The CPU's cameras, around
-                // where the samples may lie, cull (one map: its fit to
-                // where they may be; cascades: their slices over the whole reach).
-                GpuFit& fitted = gpuFits_[view.index];
-                const bool cascades = cascadeCount(light, p.options) > 1;
-                const float seenFar = cascades ? fitted.seenFar() : 0.0f;
-                if (cascades) {
-                    fitCullingCascades(p, light, frame, seenFar);
-                } else {
-                    const Bounds reach = sdsmReach(light, frame);
-                    fitCameras(p, light, frame, &reach);
-                }
-                const auto reduction = host.timeScope("reduce");
-                GpuFitInput input = gpuFitInput(p, light, frame);
-                if (seenFar > 0.0f) input.splitRange = glm::vec2(seenFar);
-                samples_.fitOnGpu(host, frame, input, fitted.buffer());
-                if (cascades) fitted.readSeenFarLater();
-                p.gpuFit = &fitted.buffer();
+            // Fitted on the GPU, no read-back. The CPU's cameras, around
+            // where the samples may lie, cull (one map: its fit to where
+            // they may be; cascades: fitCullingCascades).
+            GpuFit& fitted = gpuFits_[view.index];
+            const bool cascades = cascadeCount(light, p.options) > 1;
+            const float seenFar = cascades ? fitted.seenFar() : 0.0f;
+            if (cascades) {
+                fitCullingCascades(p, light, frame, seenFar);
             } else {
-                refitOnCpu(host, frame, light, p);
+                const Bounds reach = sdsmReach(light, frame, frame.clipFromWorld);
+                fitCameras(p, light, frame, &reach);
             }
+            const auto reduction = host.timeScope("reduce");
+            GpuFitInput input = gpuFitInput(p, light, frame);
+            if (seenFar > 0.0f) input.splitRange = glm::vec2(seenFar);
+            samples_.fitOnGpu(host, frame, input, fitted.buffer());
+            if (cascades) fitted.readSeenFarLater();
+            p.gpuFit = &fitted.buffer();
         }
         if (p.options.atlas)
             atlas_.draw(host, frame, p, view.index);
@@ -245,36 +240,6 @@ public:
     }
 
 private:
-    // Fit "sdsm" with cascades or a warp: the samples read back and the
-    // cameras refitted on the CPU (MapSdsm).
-    void refitOnCpu(TechniqueHost& host, const FrameInfo& frame, const Light& light, MapLight& p) {
-        const bool cascades = cascadeCount(light, p.options) > 1;
-        Bounds seen;
-        {
-            // Cascades: the view's own space, whose z is minus the distance along the view.
-            const auto reduction = host.timeScope("reduce");
-            seen = samples_.reduce(host, frame, cascades ? frame.viewFromWorld : sdsmLightView(light, frame));
-        }
-        if (!cascades) {
-            fitCameras(p, light, frame, &seen);
-        } else if (!seen.empty()) {
-            const glm::vec2 depths(-seen.hi.z, -seen.lo.z);
-            fitCameras(p, light, frame, nullptr, &depths);
-            if (!p.options.stabilize) {
-                // Each slice its own box: the points seen at its
-                // distances, reduced once a slice (Lauritzen et al.'s
-                // partition bounds). Stabilised slices keep their
-                // spheres, whose size must not follow the view.
-                const auto slicesScope = host.timeScope("reduceSlices");
-                const glm::mat4 lightView = sdsmLightView(light, frame);
-                std::vector<glm::vec2> distances;
-                for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) distances.push_back(sliceDistances(p, c));
-                const std::vector<Bounds> slices = samples_.reduceSlices(host, frame, lightView, distances);
-                fitCameras(p, light, frame, nullptr, &depths, &slices);
-            }
-        }
-    }
-
     // The light's options with its preset, and lecture 000's map of the window's size.
     // PCSS on a light of size 0 stays hard: said every frame, kept maps or not.
     static void noteHardPcss(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) {

@@ -33,6 +33,9 @@ static_assert(offsetof(shared::MapUniforms, cascadeRange) - offsetof(shared::Map
                   offsetof(shared::MapUniforms, cascadeTexel) - offsetof(shared::MapUniforms, cascadeShadowFromWorld) ==
                       offsetof(SdsmFit, cascadeTexel) - offsetof(SdsmFit, cascadeShadowFromWorld),
               "copyFit copies the cascades' matrices, far ends, texels and ranges as one range, laid out alike");
+static_assert(offsetof(SdsmFit, cascadeWarp) - offsetof(SdsmFit, cascadeWarpPlane) ==
+                  offsetof(shared::MapUniforms, cascadeWarp) - offsetof(shared::MapUniforms, cascadeWarpPlane),
+              "copyFit copies the warped cascades' planes and texels as one range, laid out alike");
 
 namespace {
 
@@ -129,7 +132,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     block_.write(u);
     fitted_ = p.gpuFit;
     fittedCascades_ = !p.cascades.empty();
-    fittedWarp_ = p.cascades.empty() && p.camera.warped;
+    fittedWarp_ = p.camera.warped;
     copyFit();
 }
 
@@ -146,6 +149,11 @@ void MapBlock::copyFit() {
         // Their matrices, far ends, texels and depth ranges (laid out alike: one range).
         const std::size_t first = offsetof(SdsmFit, cascadeShadowFromWorld), end = offsetof(SdsmFit, cascadeRange) + sizeof(SdsmFit::cascadeRange);
         block_.copyPart(*fitted_, first, offsetof(shared::MapUniforms, cascadeShadowFromWorld), end - first);
+        if (fittedWarp_) {
+            // Warped (not stabilised): each one's warp plane and texels.
+            const std::size_t warpFirst = offsetof(SdsmFit, cascadeWarpPlane), warpEnd = offsetof(SdsmFit, cascadeWarp) + sizeof(SdsmFit::cascadeWarp);
+            block_.copyPart(*fitted_, warpFirst, offsetof(shared::MapUniforms, cascadeWarpPlane), warpEnd - warpFirst);
+        }
     }
 }
 

@@ -36,7 +36,7 @@ private:
     shared::MapUniforms uniforms_{};  ///< what upload() last wrote
     const gl::Buffer* fitted_ = nullptr;  ///< and the GPU's fit it took
     bool fittedCascades_ = false;         ///< a fit of cascades
-    bool fittedWarp_ = false;             ///< a fit of one warped map
+    bool fittedWarp_ = false;             ///< a fit of warped cameras (one map, or cascades not stabilised)
 };
 
 } // namespace shadowlab::map

@@ -45,77 +45,36 @@ float stableReach(const Camera& camera, const FitInput& in) {
     return std::clamp(stepped, camera.nearPlane * 2.0f, camera.farPlane);
 }
 
-// Fit "sdsm": the view depths the camera sees, [near, far] along its axis
-// (reduced from its depth pre-pass), within the camera's planes.
-// Stabilised, in whole steps of 2^(1/4) with headroom (near two steps
-// below the nearest depth seen, far one past the farthest), kept from frame
-// to frame (`kept`) while the depths seen stay inside it and it is at most
-// four steps too wide at the near end and three at the far: the splits stay
-// put as the camera moves (each change moves every slice's texel grid: a
-// frame of flips), and follow a view that changes.
-glm::vec2 sampledRange(const Camera& camera, glm::vec2 seen, bool stabilize, glm::vec2 kept) {
-    float near = std::max(seen.x, camera.nearPlane), far = std::min(seen.y, camera.farPlane);
-    if (stabilize) {
-        const float step = std::exp2(0.25f);
-        if (kept.y > kept.x && kept.x <= near && far <= kept.y && near <= kept.x * std::pow(step, 4.0f) &&
-            kept.y <= far * std::pow(step, 3.0f))
-            return kept;
-        near = std::exp2((std::floor(4.0f * std::log2(near)) - 2.0f) / 4.0f);
-        far = std::exp2((std::ceil(4.0f * std::log2(far)) + 1.0f) / 4.0f);
-    }
-    near = std::max(near, camera.nearPlane);
-    far = std::clamp(far, near * 1.01f, camera.farPlane);
-    return {near, far};
-}
-
 // The view a warped map is warped for: the frame's camera and warpNear.
 LightWarp lightWarp(const FrameInfo& frame, const MapOptions& o) {
     const glm::mat4 worldFromView = glm::inverse(frame.viewFromWorld);
     return LightWarp{glm::vec3(worldFromView[3]), -glm::normalize(glm::vec3(worldFromView[2])), o.warpNear};
 }
 
-void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in, const glm::vec2* seenDepths,
-                 const std::vector<Bounds>* sliceSamples) {
+void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in) {
     const Camera& camera = frame.scene.camera;
     const float aspect = aspectOf(frame);
     // Stabilised slices must not move with the camera: they end at a reach
     // that changes by steps (stableReach); tight ones at the farthest
-    // receiver it sees; sdsm's over the depths the camera sees.
+    // receiver it sees. (Fit "sdsm" splits over the depths the camera
+    // sees, on the GPU: shadow_map_sdsm_cascades.comp.)
     const float near = camera.nearPlane;
-    float far = p.options.stabilize ? stableReach(camera, in) : viewReach(camera, in);
-    // Fit "sdsm": the slices end at the farthest depth seen (never past the
-    // tight fit's end) and the first starts at the nearest one, but the
-    // splits are placed from the camera's near plane, as the tight fit's:
-    // placed from the nearest depth seen, the logarithmic scheme's splits
-    // (near^(1 - i/N) far^(i/N)) all move out with it, and the near slices,
-    // where a texel covers the most pixels, got fewer texels a metre than
-    // the tight fit's (docs/techniques.md).
-    float first = near;
-    if (seenDepths) {
-        p.sampledDepths = sampledRange(camera, *seenDepths, p.options.stabilize, p.sampledDepths);
-        far = std::max(std::min(far, p.sampledDepths.y), near * 1.01f);
-        first = p.sampledDepths.x;
-    }
+    const float far = p.options.stabilize ? stableReach(camera, in) : viewReach(camera, in);
     std::string problem;  // checked when the scene was read (the registry's unsupported())
     const std::vector<float> given = parseSplits(p.options, problem);
     p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
-    if (!(first < p.cascadeFar.front())) first = near;  // nothing seen before the first split: the slice as the tight fit's
     p.cascades.clear();
     // A slice's lookups reach into the next cascade over its far blend
     // share: cascade c is read from slice c - 1's near end on (conservative).
     const LightWarp viewWarp = lightWarp(frame, p.options);
     for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) {
-        const float sliceNear = c == 0 ? first : p.cascadeFar[c - 1];
+        const float sliceNear = c == 0 ? near : p.cascadeFar[c - 1];
         // A warped slice's near plane stands for the slice's own near end at the least.
         LightWarp warp = viewWarp;
         warp.nearDistance = std::max(warp.nearDistance, sliceNear);
-        // Not stabilised, sdsm: the slice's own samples instead of its receivers' boxes.
-        FitInput sliceIn = in;
-        if (sliceSamples && c < sliceSamples->size() && !p.options.stabilize) sliceIn.visibleSamples = &(*sliceSamples)[c];
-        p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, sliceIn,
-                                        c < 2 ? first : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr));
+        p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, in,
+                                        c < 2 ? near : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr));
     }
-    p.firstSliceNear = first;
     p.camera = p.cascades.front();
     const glm::mat4& v = frame.viewFromWorld;
     p.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
@@ -145,13 +104,8 @@ glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
     return directionalLightView(glm::normalize(light.direction), in);
 }
 
-bool fitsOnGpu(const MapLight& p, const Light& light) {
-    if (!usesSamples(p, light)) return false;
-    return cascadeCount(light, p.options) == 1 || (p.options.stabilize && p.options.warp == MapWarp::None);
-}
-
 void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame, float seenFar) {
-    fitCameras(p, light, frame);  // the slices over the whole stabilised reach
+    fitCameras(p, light, frame);  // the slices over the whole reach (stabilised: stableReach; else viewReach)
     const FitInput in = fitInputOf(p, frame);
     const Camera& camera = frame.scene.camera;
     const float aspect = aspectOf(frame);
@@ -159,8 +113,9 @@ void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame,
     // The GPU splits over seenFar when it is known (its far end a frame
     // before), and its last slice ends anywhere up to the reach; not known,
     // over this frame's far end, anywhere up to the reach (the splits above).
+    const bool known = seenFar > 0.0f;
     std::vector<float> ends = p.cascadeFar;
-    if (seenFar > 0.0f) {
+    if (known) {
         std::string problem;  // checked when the scene was read
         ends = cascadeSplits(near, seenFar, p.options.cascades, p.options.cascadeLambda, parseSplits(p.options, problem));
         ends.back() = std::max(ends.back(), p.cascadeFar.back());
@@ -169,23 +124,50 @@ void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame,
     // other float arithmetic; the first slice and the second's lookups from
     // the near plane (they start at the nearest depth seen).
     const std::size_t n = ends.size();
+    const glm::vec3 direction = glm::normalize(light.direction);
     for (std::size_t c = 0; c < n; ++c) {
-        const bool known = seenFar > 0.0f;
         const float sliceNear = known && c > 0 ? ends[c - 1] * 0.999f : near;
         const float readFrom = known && c > 1 ? ends[c - 2] * 0.999f : near;
-        const float sliceFar = std::min(ends[c] * 1.001f, camera.farPlane);
-        p.cascades[c] = fitCascade(glm::normalize(light.direction), camera, aspect, std::max(sliceNear, near), std::max(sliceFar, sliceNear * 1.001f), true,
-                                   in, std::max(readFrom, near));
+        const float sliceFar = std::max(std::min(ends[c] * 1.001f, camera.farPlane), sliceNear * 1.001f);
+        if (p.options.stabilize) {
+            p.cascades[c] = fitCascade(direction, camera, aspect, std::max(sliceNear, near), sliceFar, true, in, std::max(readFrom, near));
+            continue;
+        }
+        // Not stabilised: the GPU fits the slice to its samples, which lie
+        // in the view between where its lookups start (the slice before's
+        // blend share, after readFrom) and its far end. The camera over the
+        // box of what may be seen there, padded by two texels more than the
+        // filter's footprint (the GPU's box lies within it, so its texels
+        // are no larger), culls; warped, the GPU's texels far from the view
+        // may be larger than any box of the CPU's says, so only the casters
+        // that matter for the slice cull.
+        const glm::mat4 sliceClip = glm::perspective(glm::radians(camera.fovYDeg), aspect, std::max(readFrom, near), sliceFar) * camera.viewFromWorld();
+        FitInput sliceIn = in;
+        sliceIn.cameraClipFromWorld = sliceClip;
+        // Warped: the GPU's view and warp (the block takes their flag and axes from it).
+        LightWarp warp = lightWarp(frame, p.options);
+        warp.nearDistance = std::max(warp.nearDistance, std::max(sliceNear, near));
+        LightCamera cam = fitDirectional(direction, LightFit::Tight, sliceIn, p.options.warp == MapWarp::Lispsm ? &warp : nullptr);
+        Bounds region = cam.warped ? Bounds{} : sdsmReach(light, frame, sliceClip);
+        if (region.empty()) {
+            region = Bounds{};
+            for (const Bounds& b : frame.itemBounds) region.add(b.transformed(cam.viewFromWorld));
+        }
+        if (!region.empty()) {
+            const float pad = std::max(region.hi.x - region.lo.x, region.hi.y - region.lo.y) * (in.paddingTexels + 2.0f) / static_cast<float>(std::max(in.size, 1));
+            cam.clipFromView = glm::ortho(region.lo.x - pad, region.hi.x + pad, region.lo.y - pad, region.hi.y + pad, cam.nearPlane, cam.farPlane);
+        }
+        p.cascades[c] = cam;
     }
     p.camera = p.cascades.front();
 }
 
-Bounds sdsmReach(const Light& light, const FrameInfo& frame) {
+Bounds sdsmReach(const Light& light, const FrameInfo& frame, const glm::mat4& clipFromWorld) {
     const glm::mat4 view = sdsmLightView(light, frame);
-    const Bounds frustum = frustumBounds(frame.clipFromWorld, view);
+    const Bounds frustum = frustumBounds(clipFromWorld, view);
     Bounds seen;
     for (std::size_t i = 0; i < frame.items.size(); ++i)
-        if (mayIntersect(frame.clipFromWorld, frame.itemBounds[i])) seen.add(frame.itemBounds[i].transformed(view));
+        if (mayIntersect(clipFromWorld, frame.itemBounds[i])) seen.add(frame.itemBounds[i].transformed(view));
     seen.lo = glm::max(seen.lo, frustum.lo);
     seen.hi = glm::min(seen.hi, frustum.hi);
     if (seen.empty()) return Bounds{};
@@ -196,6 +178,23 @@ Bounds sdsmReach(const Light& light, const FrameInfo& frame) {
     return seen;
 }
 
+namespace {
+
+// Warped (the light not along the view: p.camera, one map's or cascade 0's,
+// is): the camera's turned view (fitDirectional) and the warp's parameters.
+void warpedBy(GpuFitInput& g, const MapLight& p, const Light& light, const FrameInfo& frame) {
+    if (!p.camera.warped) return;
+    const LightWarp warp = lightWarp(frame, p.options);
+    g.warped = true;
+    g.lightView = p.camera.viewFromWorld;
+    g.sinGamma = warpAxis(glm::normalize(light.direction), &warp)->sinGamma;
+    g.warpNear = warp.nearDistance;
+    g.eye = warp.eye;
+    g.forward = warp.forward;
+}
+
+} // namespace
+
 GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& frame) {
     const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
     GpuFitInput g;
@@ -205,17 +204,8 @@ GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& 
     g.size = static_cast<float>(p.options.size);
     g.padding = footprint(p.options);
     g.cascades = cascadeCount(light, p.options);
-    if (g.cascades == 1 && p.camera.warped) {
-        // Warped (the light not along the view): the camera's turned view (fitDirectional), the warp's parameters.
-        const LightWarp warp = lightWarp(frame, p.options);
-        g.warped = true;
-        g.lightView = p.camera.viewFromWorld;
-        g.sinGamma = warpAxis(glm::normalize(light.direction), &warp)->sinGamma;
-        g.warpNear = warp.nearDistance;
-        g.eye = warp.eye;
-        g.forward = warp.forward;
-    }
     if (g.cascades == 1) {
+        warpedBy(g, p, light, frame);
         for (std::size_t i = 0; i < frame.items.size(); ++i)
             if (p.camera.casts.empty() ? frame.items[i].castsShadows : p.camera.casts[i] != 0) g.casters.push_back(frame.itemBounds[i].transformed(g.lightView));
         return g;
@@ -230,23 +220,25 @@ GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& 
     const glm::mat4 view = camera.viewFromWorld();
     g.right = glm::vec3(view[0][0], view[1][0], view[2][0]);
     g.up = glm::vec3(view[0][1], view[1][1], view[2][1]);
-    g.reach = stableReach(camera, in);
+    g.stabilize = p.options.stabilize;
+    g.reach = g.stabilize ? stableReach(camera, in) : viewReach(camera, in);
     g.lambda = p.options.cascadeLambda;
+    g.blend = p.options.cascadeBlend;
     std::string problem;  // checked when the scene was read
     g.given = parseSplits(p.options, problem);
+    if (g.stabilize) return g;
+    // Not stabilised: each slice fitted as fitDirectional fits one map, in
+    // the light's view (warped: the turned view of cascade 0's CPU camera,
+    // the slices' alike), cut by the casters that matter for the whole view
+    // (each slice's own are among them).
+    warpedBy(g, p, light, frame);
+    const std::vector<std::uint8_t> casts = castersThatMatter(towardsLight(light), g.lightView, fitInputOf(p, frame));
+    for (std::size_t i = 0; i < frame.items.size(); ++i)
+        if (casts[i] != 0) g.casters.push_back(frame.itemBounds[i].transformed(g.lightView));
     return g;
 }
 
-glm::vec2 sliceDistances(const MapLight& p, std::size_t c) {
-    if (c == 0) return {p.firstSliceNear, p.cascadeFar[0]};
-    // The slice before fades into this cascade over its far blend share
-    // (shadow_map_shared.h cascadeBlend): those points read this map too.
-    const float before = p.cascadeFar[c - 1], start = c > 1 ? p.cascadeFar[c - 2] : 0.0f;
-    return {std::max(before - p.options.cascadeBlend * (before - start), p.firstSliceNear), p.cascadeFar[c]};
-}
-
-void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples, const glm::vec2* seenDepths,
-                const std::vector<Bounds>* sliceSamples) {
+void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples) {
     const FitInput in = fitInputOf(p, frame, samples);
     if (p.cube) {
         const auto [nearPlane, farPlane] = cubeNearFar(p.options);
@@ -261,7 +253,7 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
     else if (light.type == LightType::Spot)
         p.camera = fitSpot(light, lightFit(p.options.fit), in);
     else if (cascadeCount(light, p.options) > 1)
-        fitCascades(p, light, frame, in, seenDepths, sliceSamples);
+        fitCascades(p, light, frame, in);
     else {
         const LightWarp warp = lightWarp(frame, p.options);
         p.camera = fitDirectional(glm::normalize(light.direction), lightFit(p.options.fit), in, p.options.warp == MapWarp::Lispsm ? &warp : nullptr);

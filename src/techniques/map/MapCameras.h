@@ -10,18 +10,10 @@ namespace shadowlab::map {
 /// Fits `p`'s cameras for `light` (p.options and p.cube already set): a
 /// cube's six faces, a spot's frustum, a directional light's box or
 /// cascades, or a preset's fixed camera.
-/// Fit "sdsm": `samples`, the points the camera sees in sdsmLightView()'s
-/// space, for a directional light's one map; `seenDepths`, their nearest
-/// and farthest distance along the view, for cascades (the slices split
-/// that range); `sliceSamples`, with cascades not stabilised, the points
-/// seen in each slice (p.cascadeFar's, from the fit before with the same
-/// `seenDepths`), which replace the receivers' boxes in that slice.
-void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples = nullptr,
-                const glm::vec2* seenDepths = nullptr, const std::vector<Bounds>* sliceSamples = nullptr);
-
-/// The distances along the view, [near, far], whose points read cascade c
-/// of p's: its slice, and the far blend share of the slice before.
-glm::vec2 sliceDistances(const MapLight& p, std::size_t c);
+/// `samples`: points in sdsmLightView()'s space that replace the
+/// receivers' boxes for a directional light's one map (fit "sdsm" culls
+/// with sdsmReach's; its cameras are fitted on the GPU: MapSdsm).
+void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples = nullptr);
 
 /// Whether `p` takes fit "sdsm" (a directional light, no preset).
 bool usesSamples(const MapLight& p, const Light& light);
@@ -30,28 +22,26 @@ bool usesSamples(const MapLight& p, const Light& light);
 /// directionalLightView for this frame's items): the reduction's space.
 glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame);
 
-/// Whether `p`'s fit "sdsm" runs on the GPU (SampleBounds::fitOnGpu): one
-/// map (warped or not) or stabilised cascades. Cascades not stabilised
-/// (each slice fitted to its own samples) read the samples back.
-bool fitsOnGpu(const MapLight& p, const Light& light);
-
-/// Stabilised cascades fitted on the GPU: `p`'s cameras for culling their
-/// casters, each around every slice the GPU may fit. With `seenFar` (the
-/// far end of the depths a frame before saw, GpuFit::seenFar) the GPU
+/// Cascades fitted on the GPU (fit "sdsm"): `p`'s cameras for culling
+/// their casters, each around every slice the GPU may fit. With `seenFar`
+/// (the far end of the depths a frame before saw, GpuFit::seenFar) the GPU
 /// splits over it: each slice is the GPU's own but the first (from the
 /// near plane: it starts at the nearest depth seen) and the last (up to
-/// the stabilised reach: it ends at this frame's far end). Not known (0):
-/// each slice from the near plane to its far end when split over the
-/// whole reach (the GPU's, split over the depths seen, end no farther).
+/// the reach: it ends at this frame's far end). Not known (0): each slice
+/// from the near plane to its far end when split over the whole reach
+/// (the GPU's, split over the depths seen, end no farther). Stabilised:
+/// each slice's sphere (fitCascade); not: the box of what may be seen
+/// in the slice (sdsmReach) with two texels more padding, or, warped,
+/// every caster that matters for the slice.
 void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame, float seenFar);
 
 /// Where the points a fit "sdsm" may take lie, in sdsmLightView's space:
-/// the boxes of the items that may be in view, cut to the view's frustum,
-/// with the reduction's relative margin. Fitted to it, a camera holds
-/// the one fitted to the points themselves (whose casters over them are
-/// among the ones over it): the CPU culls the casters of a map fitted on
-/// the GPU with it.
-Bounds sdsmReach(const Light& light, const FrameInfo& frame);
+/// the boxes of the items that may be in the view `clipFromWorld` (the
+/// frame's, or a slice of it), cut to its frustum, with the reduction's
+/// relative margin. Fitted to it, a camera holds the one fitted to the
+/// points themselves (whose casters over them are among the ones over
+/// it): the CPU culls the casters of a map fitted on the GPU with it.
+Bounds sdsmReach(const Light& light, const FrameInfo& frame, const glm::mat4& clipFromWorld);
 
 /// The fit on the GPU's inputs for `p` (its cameras fitted, for the casters
 /// that matter): the light view, the scene's diagonal, the map's size and

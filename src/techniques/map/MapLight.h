@@ -56,15 +56,12 @@ struct MapLight {
     std::vector<LightCamera> cascades;
     std::vector<float> cascadeFar;
     glm::vec3 viewForward{0.0f, 0.0f, -1.0f};
-    /// Fit "sdsm", stabilised cascades: the view depths the slices split,
-    /// kept while the depths seen stay within it (0, 0: none yet).
-    glm::vec2 sampledDepths{0.0f};
-    float firstSliceNear = 0.0f;  ///< cascades: where the first slice starts along the view (fitCascades)
-    /// Fit "sdsm" on the GPU (MapCameras: fitsOnGpu): the buffer its last
-    /// shadow pass fitted the camera into (an SdsmFit, kept by the
-    /// technique per light), which MapBlock copies over `camera`'s; `camera`
-    /// is then the CPU's fit around where the samples may lie (sdsmReach),
-    /// which culls the casters. Null otherwise.
+    /// Fit "sdsm" (fitted on the GPU: MapSdsm): the buffer its last
+    /// shadow pass fitted the cameras into (an SdsmFit, kept by the
+    /// technique per light), which MapBlock copies over the cameras'; the
+    /// cameras are then the CPU's fits around where the samples may lie
+    /// (MapCameras: sdsmReach, fitCullingCascades), which cull the
+    /// casters. Null otherwise.
     const gl::Buffer* gpuFit = nullptr;
     /// Spot and point lights: how near the light the casters drawn into its
     /// map come, scene units (a point light: the distance to the nearest
@@ -108,8 +105,6 @@ struct MapLight {
         cascades = old.cascades;
         cascadeFar = old.cascadeFar;
         viewForward = old.viewForward;
-        sampledDepths = old.sampledDepths;
-        firstSliceNear = old.firstSliceNear;
         gpuFit = old.gpuFit;
     }
     /// Takes what survives from last frame's state of the same light: its

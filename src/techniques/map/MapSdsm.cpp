@@ -45,39 +45,13 @@ void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame) {
 
 namespace {
 
-// The window depth (0..1) of a point `distance` along the view's axis.
-float windowDepthAt(const FrameInfo& frame, float distance) {
-    const glm::vec4 clip = frame.clipFromView * glm::vec4(0.0f, 0.0f, -distance, 1.0f);
-    return 0.5f * clip.z / clip.w + 0.5f;
-}
-
-// The window depths whose pixels a reduction counts for the distances
-// `d` along the view, widened by a step of the depth buffer's 24 bits
-// each way: a pixel on a split counts for both slices. No distances:
-// every covered pixel (uncovered ones, at depth 1, never count).
-glm::vec2 depthWindow(const FrameInfo& frame, const glm::vec2* d) {
-    constexpr float kDepthStep = 1.0f / 16777215.0f;
-    const glm::vec2 window = d ? glm::vec2(std::max(windowDepthAt(frame, d->x) - kDepthStep, 0.0f), windowDepthAt(frame, d->y) + kDepthStep)
-                               : glm::vec2(0.0f, 0.99999994f);
-    return {window.x, std::min(window.y, 0.99999994f)};
-}
+// Every covered pixel's window depth (uncovered ones, at depth 1, never count).
+constexpr glm::vec2 kWholeDepth(0.0f, 0.99999994f);
 
 } // namespace
 
-Bounds SampleBounds::reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) {
-    return run(host, frame, lightFromWorld, {distances}, one_, 1).front();
-}
-
-std::vector<Bounds> SampleBounds::reduceSlices(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
-                                               const std::vector<glm::vec2>& distances) {
-    std::vector<const glm::vec2*> windows;
-    for (const glm::vec2& d : distances) windows.push_back(&d);
-    return run(host, frame, lightFromWorld, windows, slices_, kSlicesAPass);
-}
-
-void SampleBounds::draw(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const std::vector<glm::vec2>& depths,
-                        Targets& targets) {
-    const int windows = static_cast<int>(depths.size());
+void SampleBounds::draw(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const Windows& from, Targets& targets) {
+    const int windows = from.count();
     const glm::ivec2 blocks = (size_ + (kBlock - 1)) / kBlock;
     if (!targets.fbo || targets.blocks != blocks) {
         targets.blocks = blocks;
@@ -103,8 +77,9 @@ void SampleBounds::draw(TechniqueHost& host, const FrameInfo& frame, const glm::
     glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo.id());
     glViewport(0, 0, blocks.x, blocks.y);
     host.apply(gl::RenderState{});
-    const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_sdsm_reduce.frag"}},
-                                               "#define SDSM_WINDOWS " + std::to_string(windows) + "\n"});
+    const gl::Program& program =
+        host.program({{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_sdsm_reduce.frag"}},
+                      "#define SDSM_WINDOWS " + std::to_string(windows) + "\n#define SDSM_WINDOWS_FROM_FIT " + (from.fit ? "1" : "0") + "\n"});
     program.use();
     // Window (pixel x, y, depth 0..1) to clip: x 2 / width - 1, y 2 / height - 1, z 2 d - 1.
     glm::mat4 clipFromWindow(1.0f);
@@ -125,70 +100,91 @@ void SampleBounds::draw(TechniqueHost& host, const FrameInfo& frame, const glm::
     }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, host.frameDepth().id());
     glBindSampler(SL_UNIT_SHADOW_FIRST, sampler_.id());
-    glProgramUniform2fv(program.id(), 3, windows, &depths[0][0]);
+    if (from.fit) {
+        glProgramUniform1i(program.id(), 3, from.firstSlice);
+        glProgramUniform1i(program.id(), 4, from.sliceCount);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, from.fit->id());
+    } else {
+        glProgramUniform2fv(program.id(), 3, windows, &from.depths[0][0]);
+    }
     host.drawFullscreenTriangle();
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
     glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
 }
 
-std::vector<Bounds> SampleBounds::run(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
-                                      const std::vector<const glm::vec2*>& distances, Targets& targets, int windows) {
-    const glm::ivec2 blocks = (size_ + (kBlock - 1)) / kBlock;
-    const std::size_t n = static_cast<std::size_t>(blocks.x) * static_cast<std::size_t>(blocks.y);
-    std::vector<glm::vec4> lo(n), hi(n);
-    std::vector<Bounds> out;
-    for (std::size_t first = 0; first < distances.size(); first += static_cast<std::size_t>(windows)) {
-        std::vector<glm::vec2> depths;
-        for (int w = 0; w < windows; ++w) {
-            const std::size_t i = first + static_cast<std::size_t>(w);
-            depths.push_back(i < distances.size() ? depthWindow(frame, distances[i]) : glm::vec2(1.0f, 0.0f));
-        }
-        draw(host, frame, lightFromWorld, depths, targets);
-        host.count("sdsm.readBacks", 1.0);
-        for (int w = 0; w < windows && first + static_cast<std::size_t>(w) < distances.size(); ++w) {
-            // The blocks' corners, merged here (a few thousand).
-            glGetTextureImage(targets.lo[static_cast<std::size_t>(w)].id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), lo.data());
-            glGetTextureImage(targets.hi[static_cast<std::size_t>(w)].id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(n * sizeof(glm::vec4)), hi.data());
-            Bounds b;
-            for (std::size_t k = 0; k < n; ++k)
-                if (lo[k].w > 0.5f) {
-                    b.add(glm::vec3(lo[k]));
-                    b.add(glm::vec3(hi[k]));
-                }
-            addBoxed(b, frame, lightFromWorld, distances[first + static_cast<std::size_t>(w)]);
-            if (!b.empty()) {
-                // Reconstructed from depth where the light pass interpolates: a relative margin covers the rounding.
-                const glm::vec3 margin(1e-4f * glm::length(b.size()));
-                b.lo -= margin;
-                b.hi += margin;
-            }
-            out.push_back(b);
-        }
+void SampleBounds::uploadBoxes(const FrameInfo& frame, const std::vector<Bounds>& casters, bool withBoxed) {
+    // The casters' boxes in the light's view, lo and hi each; then the
+    // large meshes' in the world (none at all: one empty box, the buffer never empty).
+    std::vector<glm::vec4> boxes;
+    for (const Bounds& b : casters) {
+        boxes.emplace_back(b.lo, 0.0f);
+        boxes.emplace_back(b.hi, 0.0f);
     }
-    return out;
+    if (withBoxed)
+        for (const std::size_t i : boxed_) {
+            boxes.emplace_back(frame.itemBounds[i].lo, 0.0f);
+            boxes.emplace_back(frame.itemBounds[i].hi, 0.0f);
+        }
+    if (boxes.empty()) boxes = {glm::vec4(1.0f), glm::vec4(-1.0f)};
+    const auto bytes = static_cast<GLsizeiptr>(boxes.size() * sizeof(glm::vec4));
+    if (!casters_ || castersBytes_ < bytes) {
+        casters_ = gl::Buffer();
+        castersBytes_ = std::max<GLsizeiptr>(bytes, 64 * static_cast<GLsizeiptr>(sizeof(glm::vec4)));
+        glNamedBufferStorage(casters_.id(), castersBytes_, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    glNamedBufferSubData(casters_.id(), 0, bytes, boxes.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_CASTERS, casters_.id());
 }
+
+namespace {
+
+// The fit's settings both of shadow_map_sdsm_fit.comp's uses take
+// (locations 0 and 4 to 7, and 8 to 13 when warped).
+void setFitUniforms(GLuint id, const GpuFitInput& in) {
+    glProgramUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.lightView[0][0]);
+    glProgramUniform1f(id, 4, in.diagonal);
+    glProgramUniform1f(id, 5, in.size);
+    glProgramUniform1f(id, 6, in.padding);
+    glProgramUniform1i(id, 7, static_cast<GLint>(in.casters.size()));
+    if (in.warped) {
+        // The samples' box into the turned view, the view back to the world (as the CPU inverts it), the warp.
+        const glm::mat4 turnedFromSamples = in.lightView * glm::inverse(in.samplesView), worldFromTurned = glm::inverse(in.lightView);
+        glProgramUniformMatrix4fv(id, 8, 1, GL_FALSE, &worldFromTurned[0][0]);
+        glProgramUniformMatrix4fv(id, 9, 1, GL_FALSE, &turnedFromSamples[0][0]);
+        glProgramUniform3fv(id, 10, 1, &in.eye.x);
+        glProgramUniform3fv(id, 11, 1, &in.forward.x);
+        glProgramUniform1f(id, 12, in.warpNear);
+        glProgramUniform1f(id, 13, in.sinGamma);
+    }
+}
+
+std::string fitDefines(const GpuFitInput& in, bool slice) {
+    return std::string("#define SDSM_WARP ") + (in.warped ? "1" : "0") + "\n#define SDSM_SLICE " + (slice ? "1" : "0") + "\n";
+}
+
+} // namespace
 
 void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out) {
     const bool cascades = in.cascades > 1;
     // Cascades: the view's own space, whose z is minus the distance along the view.
     const glm::mat4 space = cascades ? frame.viewFromWorld : in.samplesView;
-    draw(host, frame, space, {depthWindow(frame, nullptr)}, one_);
+    draw(host, frame, space, {{kWholeDepth}}, one_);
     Bounds boxed;
-    addBoxed(boxed, frame, space, nullptr);
+    addBoxed(boxed, frame, space);
     const gl::Program& program =
-        host.program({{{GL_COMPUTE_SHADER, cascades ? "shadow_map_sdsm_cascades.comp" : "shadow_map_sdsm_fit.comp"}},
-                      std::string("#define SDSM_WARP ") + (in.warped ? "1\n" : "0\n")});
+        cascades ? host.program({{{GL_COMPUTE_SHADER, "shadow_map_sdsm_cascades.comp"}}, std::string("#define SDSM_STABILIZE ") + (in.stabilize ? "1\n" : "0\n")})
+                 : host.program({{{GL_COMPUTE_SHADER, "shadow_map_sdsm_fit.comp"}}, fitDefines(in, false)});
     program.use();
     const GLuint id = program.id();
-    glProgramUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.lightView[0][0]);
     glProgramUniform2i(id, 1, one_.blocks.x, one_.blocks.y);
     const glm::vec3 lo = boxed.empty() ? glm::vec3(1.0f) : boxed.lo, hi = boxed.empty() ? glm::vec3(-1.0f) : boxed.hi;
     glProgramUniform3fv(id, 2, 1, &lo.x);
     glProgramUniform3fv(id, 3, 1, &hi.x);
-    glProgramUniform1f(id, 4, in.diagonal);
-    glProgramUniform1f(id, 5, in.size);
-    glProgramUniform1f(id, 6, in.padding);
     if (cascades) {
+        glProgramUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.samplesView[0][0]);
+        glProgramUniform1f(id, 4, in.diagonal);
+        glProgramUniform1f(id, 5, in.size);
+        glProgramUniform1f(id, 6, in.padding);
         glProgramUniform1i(id, 7, in.cascades);
         glProgramUniform4fv(id, 8, 1, &in.camera.x);
         glProgramUniform3fv(id, 9, 1, &in.eye.x);
@@ -202,57 +198,57 @@ void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const G
         if (!in.given.empty()) glProgramUniform1fv(id, 17, static_cast<GLsizei>(in.given.size()), in.given.data());
         glProgramUniform1i(id, 24, static_cast<GLint>(in.given.size()));
         glProgramUniform2f(id, 25, in.splitRange.x, in.splitRange.y);
+        if (!in.stabilize) {
+            glProgramUniformMatrix4fv(id, 26, 1, GL_FALSE, &frame.clipFromView[0][0]);
+            glProgramUniform1f(id, 27, in.blend);
+        }
     } else {
-        // The casters' boxes in the light's view, lo and hi each (none: one empty box, the buffer never empty).
-        std::vector<glm::vec4> boxes;
-        for (const Bounds& b : in.casters) {
-            boxes.emplace_back(b.lo, 0.0f);
-            boxes.emplace_back(b.hi, 0.0f);
-        }
-        if (boxes.empty()) boxes = {glm::vec4(1.0f), glm::vec4(-1.0f)};
-        const auto bytes = static_cast<GLsizeiptr>(boxes.size() * sizeof(glm::vec4));
-        if (!casters_ || castersBytes_ < bytes) {
-            casters_ = gl::Buffer();
-            castersBytes_ = std::max<GLsizeiptr>(bytes, 64 * static_cast<GLsizeiptr>(sizeof(glm::vec4)));
-            glNamedBufferStorage(casters_.id(), castersBytes_, nullptr, GL_DYNAMIC_STORAGE_BIT);
-        }
-        glNamedBufferSubData(casters_.id(), 0, bytes, boxes.data());
-        glProgramUniform1i(id, 7, static_cast<GLint>(in.casters.size()));
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_CASTERS, casters_.id());
-        if (in.warped) {
-            // The samples' box into the turned view, the view back to the world (as the CPU inverts it), the warp.
-            const glm::mat4 turnedFromSamples = in.lightView * glm::inverse(in.samplesView), worldFromTurned = glm::inverse(in.lightView);
-            glProgramUniformMatrix4fv(id, 8, 1, GL_FALSE, &worldFromTurned[0][0]);
-            glProgramUniformMatrix4fv(id, 9, 1, GL_FALSE, &turnedFromSamples[0][0]);
-            glProgramUniform3fv(id, 10, 1, &in.eye.x);
-            glProgramUniform3fv(id, 11, 1, &in.forward.x);
-            glProgramUniform1f(id, 12, in.warpNear);
-            glProgramUniform1f(id, 13, in.sinGamma);
-        }
+        uploadBoxes(frame, in.casters, false);
+        setFitUniforms(id, in);
     }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, one_.lo.front().id());
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, one_.hi.front().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, out.id());
     glDispatchCompute(1, 1, 1);
-    // The block takes the fit by a buffer copy (MapBlock::upload).
-    // And the next frame's pass reads the depths it keeps there.
+    // The block takes the fit by a buffer copy (MapBlock::upload), the
+    // slices' reduction its windows; the next frame's pass reads the depths it keeps there.
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, 0);
+    if (cascades && !in.stabilize) fitSlices(host, frame, in, out);
+}
+
+void SampleBounds::fitSlices(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out) {
+    // Each slice's samples in the light's view (the one map's space), kSlicesAPass slices a reduction.
+    uploadBoxes(frame, in.casters, true);
+    for (int first = 0; first < in.cascades; first += kSlicesAPass) {
+        draw(host, frame, in.samplesView, Windows{{}, &out, first, in.cascades}, slices_);
+        const gl::Program& program = host.program({{{GL_COMPUTE_SHADER, "shadow_map_sdsm_fit.comp"}}, fitDefines(in, true)});
+        program.use();
+        const GLuint id = program.id();
+        setFitUniforms(id, in);
+        glProgramUniform2i(id, 1, slices_.blocks.x, slices_.blocks.y);
+        const glm::mat4 samplesFromClip = in.samplesView * glm::inverse(frame.clipFromWorld);
+        glProgramUniformMatrix4fv(id, 15, 1, GL_FALSE, &samplesFromClip[0][0]);
+        glProgramUniform1i(id, 16, static_cast<GLint>(boxed_.size()));
+        glProgramUniformMatrix4fv(id, 17, 1, GL_FALSE, &in.samplesView[0][0]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, out.id());
+        for (int w = 0; w < kSlicesAPass && first + w < in.cascades; ++w) {
+            glProgramUniform1i(id, 14, first + w);
+            glBindTextureUnit(SL_UNIT_SHADOW_FIRST, slices_.lo[static_cast<std::size_t>(w)].id());
+            glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, slices_.hi[static_cast<std::size_t>(w)].id());
+            glDispatchCompute(1, 1, 1);
+        }
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    }
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
     glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, 0);
 }
 
-void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) const {
-    // The large meshes left out of the pre-pass: their boxes, cut to the
-    // view's frustum, or the slice's part of it (its window depths).
+void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& lightFromWorld) const {
+    // The large meshes left out of the pre-pass: their boxes, cut to the view's frustum.
     if (boxed_.empty()) return;
-    const glm::mat4 worldFromClip = glm::inverse(frame.clipFromWorld);
-    const glm::vec2 z = distances ? 2.0f * glm::vec2(windowDepthAt(frame, distances->x), windowDepthAt(frame, distances->y)) - 1.0f
-                                  : glm::vec2(-1.0f, 1.0f);
-    Bounds view;
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec4 w = worldFromClip * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? z.y : z.x, 1.0f);
-        view.add(glm::vec3(lightFromWorld * glm::vec4(glm::vec3(w) / w.w, 1.0f)));
-    }
+    const Bounds view = frustumBounds(frame.clipFromWorld, lightFromWorld);
     for (const std::size_t i : boxed_) {
         Bounds box = frame.itemBounds[i].transformed(lightFromWorld);
         box.lo = glm::max(box.lo, view.lo);

@@ -5,17 +5,13 @@
 // frame's own depth, which the base pass keeps: TechniqueHost::
 // beginDepthPrepass), bounded in a light's view (or, for cascades, the
 // camera's) by a fragment reduction of 8x8-pixel blocks
-// (shaders/shadow_map_sdsm_reduce.frag) that the CPU merges. The tight
-// fit then takes those bounds (FitInput::visibleSamples) instead of the boxes
-// of the receivers in view; cascades end where the depths they span do,
-// and slices not stabilised take their own bounds, a reduction a slice
-// counting only the pixels at its distances. One map (warped or not) and
-// stabilised cascades are fitted on the GPU (fitOnGpu: a compute pass
-// merges the blocks and fits the cameras into a buffer that MapBlock
-// copies into the light's block), so the frame never waits for its depth;
-// slices not stabilised still read the bounds back (reduce,
-// reduceSlices) for the CPU's fit: a wait for the frame so far (on a GPU
-// a pipeline bubble), counted as "sdsm.readBacks".
+// (shaders/shadow_map_sdsm_reduce.frag), which compute passes merge and fit
+// the cameras to on the GPU (fitOnGpu), into a buffer that MapBlock copies
+// into the light's block: the frame never waits for its depth. The tight
+// fit takes those bounds instead of the boxes of the receivers in view;
+// cascades end where the depths they span do, and slices not stabilised
+// take their own bounds, a second reduction counting for each slice only
+// the pixels at its distances.
 #include "core/Bounds.h"
 #include "core/LightCamera.h"
 #include "shadow_map_sdsm_shared.h"
@@ -36,11 +32,12 @@ using SdsmFit = shared::SdsmFit;
 /// What the fit on the GPU takes beside the frame's samples
 /// (MapCameras: gpuFitInput): the directional light's view (the samples'
 /// space for one map), the scene's diagonal and box, the map's size and
-/// padding (FitInput's); one map: the boxes in that view of the casters
-/// that matter; cascades: their count and splits' settings, the view.
+/// padding (FitInput's); one map and cascades not stabilised: the boxes in
+/// that view of the casters that matter; cascades: their count and splits'
+/// settings, the view.
 struct GpuFitInput {
     glm::mat4 samplesView{1.0f};  ///< one map: the reduction's space (directionalLightView)
-    glm::mat4 lightView{1.0f};    ///< one map: the camera's view (warped: turned), the casters' space
+    glm::mat4 lightView{1.0f};    ///< one map, slices: the camera's view (warped: turned), the casters' space
     float diagonal = 1.0f;
     float size = 1024.0f;
     float padding = 1.0f;
@@ -49,21 +46,24 @@ struct GpuFitInput {
     Bounds scene;
     glm::vec4 camera{0.1f, 100.0f, 1.0f, 1.0f};  ///< near plane, far plane, tan(fovY / 2), aspect
     glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f}, right{1.0f, 0.0f, 0.0f}, up{0.0f, 1.0f, 0.0f};
-    float reach = 100.0f;   ///< where stabilised slices end at the farthest
+    bool stabilize = true;  ///< cascades: stabilised (else each slice fitted to its own samples)
+    float reach = 100.0f;   ///< where slices end at the farthest (stabilised: MapCameras' stableReach; else viewReach)
+    float blend = 0.1f;     ///< cascades not stabilised: cascadeBlend (the slices' windows)
     float lambda = 0.75f;   ///< cascadeLambda
     std::vector<float> given;  ///< cascadeSplits (empty: by lambda)
     /// Cascades: the range the far end the slices are split over is
     /// clamped to (GpuFit::seenFar's both ends; no clamp before it is known).
     glm::vec2 splitRange{0.0f, 3.0e38f};
-    /// One map, warp lispsm with the light not along the view: the warp
-    /// (core/LightCamera: warpRegion) and its parameters.
+    /// One map or cascades not stabilised, warp lispsm with the light not
+    /// along the view: the warp (core/LightCamera: warpRegion) and its
+    /// parameters (each slice's near distance is at least its near end).
     bool warped = false;
     float sinGamma = 1.0f, warpNear = 1.0f;
 };
 
 /// A light's fit on the GPU, kept from frame to frame: the buffer the
-/// compute pass fits its cameras into (an SdsmFit, made zeroed on first
-/// use), and for stabilised cascades the far end of the depths seen, read
+/// compute passes fit its cameras into (an SdsmFit, made zeroed on first
+/// use), and for cascades the far end of the depths seen, read
 /// back without waiting (copied after the fit with a fence; taken once the
 /// fence has passed, a frame or more later). The next frame splits its
 /// slices over that far end, which the CPU then knows, so that it culls
@@ -102,23 +102,17 @@ public:
     /// Draws the frame's depth pre-pass (TechniqueHost::beginDepthPrepass)
     /// unless this frame already has it.
     void prepass(TechniqueHost& host, const FrameInfo& frame);
-    /// The pre-pass's receiver points in `lightFromWorld` space; empty when
-    /// the camera sees no receiver. With `distances` (along the view,
-    /// [near, far]: a slice of cascades), only the points at those.
-    Bounds reduce(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
-                  const glm::vec2* distances = nullptr);
-    /// The same for several slices at once, one bounds each: a reduction
-    /// reads the pre-pass once for up to kSlicesAPass of them.
-    std::vector<Bounds> reduceSlices(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
-                                     const std::vector<glm::vec2>& distances);
+    /// Cascades not stabilised: the slices a second reduction bounds at once.
     static constexpr int kSlicesAPass = 4;  ///< two targets each: the 8 a framebuffer surely has
-    /// The fit without a read-back, into `out` (an SdsmFit, GpuFit::buffer:
-    /// stabilised cascades keep their depths in it from frame to frame):
-    /// the pre-pass reduced, then for one map shadow_map_sdsm_fit.comp
-    /// fits the camera as core/LightCamera's fitDirectional does for
-    /// visibleSamples, for stabilised cascades (in.cascades > 1)
-    /// shadow_map_sdsm_cascades.comp the cascades as MapCameras'
-    /// fitCascades does for the depths seen.
+    /// The fit, into `out` (an SdsmFit, GpuFit::buffer: cascades keep
+    /// their depths in it from frame to frame): the pre-pass reduced, then
+    /// for one map shadow_map_sdsm_fit.comp fits the camera as
+    /// core/LightCamera's fitDirectional does for visibleSamples; for
+    /// cascades (in.cascades > 1) shadow_map_sdsm_cascades.comp splits the
+    /// depths seen as MapCameras' fitCascades does and, stabilised, fits
+    /// their cameras; not stabilised, a second reduction bounds each
+    /// slice's samples (kSlicesAPass at a time) and
+    /// shadow_map_sdsm_fit.comp fits each slice to its own.
     void fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out);
 
     /// Meshes of more triangles than this are not drawn in the pre-pass:
@@ -139,18 +133,28 @@ private:
         glm::ivec2 blocks{0};
     };
     Targets one_, slices_;  ///< one window (SDSM_WINDOWS 1), kSlicesAPass windows
-    gl::Buffer casters_{gl::NoCreate};  ///< fitOnGpu's caster boxes
+    gl::Buffer casters_{gl::NoCreate};  ///< fitOnGpu's caster boxes (and the large meshes')
     GLsizeiptr castersBytes_ = 0;
+    /// The windows a reduction counts: `depths`, or (cascades not
+    /// stabilised) kSlicesAPass slices from firstSlice on of the ones the
+    /// GPU placed in `fit` (SdsmFit::sliceWindow).
+    struct Windows {
+        std::vector<glm::vec2> depths;
+        const gl::Buffer* fit = nullptr;
+        int firstSlice = 0, sliceCount = 0;
+        int count() const { return fit ? kSlicesAPass : static_cast<int>(depths.size()); }
+    };
     /// The reduction pass into `targets` (made or remade for this frame's
-    /// size, a window each of `depths`: the window depths counted).
-    void draw(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const std::vector<glm::vec2>& depths,
-              Targets& targets);
-    /// Reduces the pre-pass within each window of `distances` (none: the
-    /// whole depth range) with `windows` per pass (1 or kSlicesAPass).
-    std::vector<Bounds> run(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld,
-                            const std::vector<const glm::vec2*>& distances, Targets& targets, int windows);
-    /// The large meshes' boxes (boxed_), cut to the view or a slice of it, into `b`.
-    void addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& lightFromWorld, const glm::vec2* distances) const;
+    /// size, a window each of `windows`).
+    void draw(TechniqueHost& host, const FrameInfo& frame, const glm::mat4& lightFromWorld, const Windows& windows, Targets& targets);
+    /// Cascades not stabilised, after their splits: each slice's samples
+    /// reduced and its camera fitted to them (shadow_map_sdsm_fit.comp, SDSM_SLICE).
+    void fitSlices(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out);
+    /// The casters' boxes (lo, hi each), then the large meshes' world boxes, into casters_.
+    void uploadBoxes(const FrameInfo& frame, const std::vector<Bounds>& casters, bool withBoxed);
+    /// The large meshes' boxes (boxed_), cut to the view, into `b`
+    /// (a slice's: shadow_map_sdsm_fit.comp, SDSM_SLICE).
+    void addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& lightFromWorld) const;
     glm::ivec2 size_{0};
     std::vector<std::size_t> boxed_;  ///< items in view left out of the pre-pass (kBoxedTriangles)
 };
