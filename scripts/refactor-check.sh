@@ -147,7 +147,8 @@ case_ "map-room-point-t2" render "$S/room-point.json" --set "$T=map" --time 2
 for light in spot point; do
   for filter in none hardware; do case_ "map-$light-atlas-$filter" render "${!light}" --set "$T=map" "$M.atlas=true" "$M.filter=$filter"; done
 done
-for count in 16 64; do case_ "atlas-many-lights-$count" render "$S/many-lights.json" --set "lightGrid.count=$count"; done
+for count in 16 64 256; do case_ "atlas-many-lights-$count" render "$S/many-lights.json" --set "lightGrid.count=$count"; done
+case_ "list-many-lights-64-unshadowed" render "$S/many-lights.json" --set 'lightGrid.light.shadow.technique=none'
 case_ "atlas-many-lights-64-hardware" render "$S/many-lights.json" --set 'lightGrid.light.shadow.map.filter=hardware'
 # Translucent and alpha-tested casters with every light type.
 glass=$S/glass-panel.json

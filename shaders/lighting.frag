@@ -4,7 +4,7 @@
 //   colour = globalAmbient*ambient*base
 //          + visibility * light * (diffuse*base*max(N.L,0) + specular*max(N.H,0)^shininess)
 // Variants (ShaderVariant): AMBIENT, LIGHT (0/1: the ambient term, one
-// light's term), LIGHT_LIST (the tiled list's lights), LIGHT_LIST_SHADOWS (some
+// light's term), LIGHT_LIST (the clustered list's lights), LIGHT_LIST_SHADOWS (some
 // of them with shadows in the shadow atlas, shadow_atlas.glsl), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE, ALPHA_TEST
 // (alphaMode mask: discard under the cutoff),
 // WRITE_SURFACES (world position and geometric normal for the reference),
@@ -100,20 +100,25 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 #if LIGHT_LIST
 // The lights beyond the base pass's that have no shadow pass after it
 // (none, or a map in the shadow atlas), in one pass: the lights whose
-// reach overlaps this pixel's tile (src/render/LightList.cpp bins them on
-// the CPU each frame).
+// reach overlaps this pixel's cluster, its tile and the slice of the view
+// its depth lies in (core/LightTiles.h; src/render/LightList.cpp bins them
+// on the CPU each frame).
 #if LIGHT_LIST_SHADOWS
 #include "shadow_atlas.glsl"
 #endif
 layout(std430, binding = SL_STORAGE_LIGHT_LIST) readonly buffer LightList { ListedLight listed[]; };
 layout(std430, binding = SL_STORAGE_LIGHT_TILES) readonly buffer LightTiles {
-    uvec4 tiling;  // tile size in pixels, tiles across, tiles down, 0
-    uint cells[];  // per tile (first, count) into cells itself, then the light indices
+    uvec4 tiling;  // tile size in pixels, tiles across, tiles down, depth slices
+    vec4 slicing;  // x: the view depth the slices are counted from, y: slices per unit of log(depth / x)
+    uint cells[];  // per cluster (first, count) into cells itself, then the light indices
 };
 
 vec3 listedLightsTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
     uvec2 tile = min(uvec2(gl_FragCoord.xy) / tiling.x, tiling.yz - 1u);
-    uint t = tile.y * tiling.y + tile.x;
+    // The pixel's slice from its view depth (clip w = 1 / gl_FragCoord.w), as LightTiles::sliceOf.
+    float slice = floor(log(1.0 / (gl_FragCoord.w * slicing.x)) * slicing.y);
+    uint s = uint(clamp(slice, 0.0, float(tiling.w - 1u)));
+    uint t = (s * tiling.z + tile.y) * tiling.y + tile.x;
     uint first = cells[2u * t], count = cells[2u * t + 1u];
     vec3 sum = vec3(0.0);
     reached = false;

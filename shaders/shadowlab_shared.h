@@ -16,12 +16,13 @@
 #define SL_BINDING_DRAW 2
 #define SL_BINDING_TECHNIQUE 3     // a technique's own block (light-space matrices, bias, ...)
 
-// Shader-storage binding points (their own namespace): the tiled light
+// Shader-storage binding points (their own namespace): the clustered light
 // list of the pass that shades many lights at once (lighting.frag's
 // LIGHT_LIST variant, src/render/LightList.cpp).
 #define SL_STORAGE_LIGHT_LIST 0    // ListedLight[]: each light's terms, as LightUniforms without the projector
-#define SL_STORAGE_LIGHT_TILES 1   // uvec4 (tile size px, tiles across, tiles down, 0), then per tile (first, count), then light indices
+#define SL_STORAGE_LIGHT_TILES 1   // uvec4 (tile size px, tiles across, tiles down, slices), vec4 (slices' near, scale), then per cluster (first, count), then light indices
 #define SL_LIGHT_TILE_SIZE 16      // pixels per side of a tile
+#define SL_LIGHT_SLICES 16         // depth slices a tile (core/LightTiles.h)
 #define SL_STORAGE_ATLAS_TILES 2   // AtlasTile[]: the shadow atlas's tiles (technique map, atlas: shadow_atlas.glsl)
 #define SL_STORAGE_SDSM_CASTERS 3  // technique map, fit sdsm on the GPU: the casters' boxes in the light's view (shadow_map_sdsm_fit.comp)
 #define SL_STORAGE_SDSM_FIT 4      // and the camera it fits (MapSdsm.h: SdsmFit)
@@ -67,7 +68,7 @@ SL_BLOCK(LightUniforms, SL_BINDING_LIGHT, light) {
     SL_MAT4 projectorFromWorld; // spot with a projected image: world -> the image's clip space (HAS_PROJECTOR)
 } SL_END_BLOCK(light)
 
-// One light of the tiled light list (std430; vec4 members only): a
+// One light of the clustered light list (std430; vec4 members only): a
 // LightUniforms without the projector, and its shadow in the atlas.
 struct ListedLight {
     SL_VEC4 radiance;

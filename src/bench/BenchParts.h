@@ -61,7 +61,7 @@ struct TimedFrames {
     std::vector<double> frameTimes;      ///< the plain frames' wall times, ms
     std::vector<double> unshadowedTimes; ///< the same scene with every technique "none"
     /// The unshadowed scene again with a pass per light (RenderOptions::
-    /// groupLights off, the renderer before the tiled light list); timed
+    /// groupLights off, the renderer before the clustered light list); timed
     /// only for three lights or more, where the list can group some.
     std::vector<double> unshadowedPerLightTimes;
     bool timedPerLight = false;

@@ -158,14 +158,14 @@ json runRecord(const BenchRun& run, const Scene& scene, const TimedFrames& timed
     for (const DrawItem& item : scene.drawItems()) triangles += scene.meshes[static_cast<std::size_t>(item.mesh)].triangleCount();
     const double frame = median(timed.frameTimes);
     json extra = json::object();
-    // The tiled light list's pass ("lights"), where the frame has one.
+    // The clustered light list's pass ("lights"), where the frame has one.
     if (timed.counters.count("lights.listed")) {
         json list = json::object();
         for (const char* name : {"listed", "tileEntries", "culled"}) list[name] = median(timed.counters.at(std::string("lights.") + name));
         extra["lightList"] = list;
     }
     if (timed.timedPerLight) {
-        // The tiled light list's gain: the unshadowed frame against the same with a pass per light.
+        // The clustered light list's gain: the unshadowed frame against the same with a pass per light.
         extra["unshadowedPerLightFrameMs"] = stats(timed.unshadowedPerLightTimes);
         extra["unshadowedOverPerLight"] = median(timed.unshadowedTimes) / std::max(median(timed.unshadowedPerLightTimes), 1e-9);
     }

@@ -83,45 +83,94 @@ LightReach reachOf(const Light& light) {
     return r;
 }
 
+std::uint32_t LightTiles::sliceOf(float d) const {
+    if (!(d > 0.0f) || slices <= 1) return 0;
+    const float s = std::floor(std::log(d / sliceNear) * sliceScale);
+    if (!(s > 0.0f)) return 0;
+    return std::min(static_cast<std::uint32_t>(std::min(s, 1.0e6f)), slices - 1);
+}
+
 LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size,
-                     std::uint32_t tileSize) {
+                     std::uint32_t tileSize, std::uint32_t slices) {
     LightTiles out;
     out.tileSize = std::max<std::uint32_t>(tileSize, 1);
+    out.slices = std::max<std::uint32_t>(slices, 1);
     const glm::ivec2 tiles((std::max(size.x, 1) + static_cast<int>(out.tileSize) - 1) / static_cast<int>(out.tileSize),
                            (std::max(size.y, 1) + static_cast<int>(out.tileSize) - 1) / static_cast<int>(out.tileSize));
     out.tiles = glm::uvec2(tiles);
-    const std::size_t count = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
+    const std::size_t perSlice = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
+    const std::size_t count = perSlice * out.slices;
+    // The slices: from the camera's near plane (P[3][2] / (P[2][2] - 1) of a
+    // GL perspective) to where the farthest sphere in view ends.
+    const float near = clipFromView[3][2] / (clipFromView[2][2] - 1.0f);
+    out.sliceNear = near > 0.0f && std::isfinite(near) ? near : 0.1f;
     std::vector<TileRect> rects;
     rects.reserve(reach.size());
-    std::vector<std::uint32_t> perTile(count, 0);
+    float far = 2.0f * out.sliceNear;
     for (const LightReach& r : reach) {
-        const TileRect rect = rectOf(r, viewFromWorld, clipFromView, size, out.tileSize, tiles);
-        rects.push_back(rect);
+        rects.push_back(rectOf(r, viewFromWorld, clipFromView, size, out.tileSize, tiles));
+        if (rects.back().x0 <= rects.back().x1 && !r.everywhere)
+            far = std::max(far, -(viewFromWorld * glm::vec4(r.centre, 1.0f)).z + r.radius);
+    }
+    out.sliceScale = static_cast<float>(out.slices) / std::log(far / out.sliceNear);
+    // Each slice's depths, widened by 10^-3 each way (the first from the eye,
+    // the last to the farthest sphere's end); each tile's slopes x / d, y / d
+    // (ndc = P[0][0] x / d - P[2][0] with d = -z, the same for y), widened by 10^-4.
+    std::vector<glm::vec2> depths(out.slices);
+    for (std::uint32_t s = 0; s < out.slices; ++s)
+        depths[s] = {s == 0 ? 0.0f : out.sliceNear * std::exp(static_cast<float>(s) / out.sliceScale) * (1.0f - 1e-3f),
+                     (s + 1 == out.slices ? far : out.sliceNear * std::exp(static_cast<float>(s + 1) / out.sliceScale)) * (1.0f + 1e-3f)};
+    const auto slope = [&](int tile, int extent, int axis) {
+        const float ndc = 2.0f * static_cast<float>(std::min(tile * static_cast<int>(out.tileSize), extent)) / static_cast<float>(extent) - 1.0f;
+        return (ndc + clipFromView[2][axis]) / clipFromView[axis][axis];
+    };
+    // Each light's clusters, in cluster order within a slice's rows.
+    std::vector<std::vector<std::uint32_t>> clusters(reach.size());
+    std::vector<std::uint32_t> perCluster(count, 0);
+    for (std::size_t k = 0; k < reach.size(); ++k) {
+        const TileRect& rect = rects[k];
         if (rect.x0 > rect.x1) {
             ++out.culled;
             continue;
         }
-        for (int y = rect.y0; y <= rect.y1; ++y)
-            for (int x = rect.x0; x <= rect.x1; ++x) ++perTile[static_cast<std::size_t>(y) * tiles.x + x];
+        const LightReach& r = reach[k];
+        const glm::vec3 c = glm::vec3(viewFromWorld * glm::vec4(r.centre, 1.0f));
+        const float d = -c.z;
+        const std::uint32_t s0 = r.everywhere ? 0 : out.sliceOf((d - r.radius) * (1.0f - 2e-3f));
+        const std::uint32_t s1 = r.everywhere ? out.slices - 1 : out.sliceOf((d + r.radius) * (1.0f + 2e-3f));
+        const float radius = r.radius * 1.0001f + 1e-6f;
+        for (std::uint32_t s = s0; s <= s1; ++s)
+            for (int y = rect.y0; y <= rect.y1; ++y)
+                for (int x = rect.x0; x <= rect.x1; ++x) {
+                    if (!r.everywhere) {
+                        // The box of the cluster's frustum (view x, y and depth) against the sphere.
+                        const glm::vec2 kx(slope(x, size.x, 0) - 1e-4f, slope(x + 1, size.x, 0) + 1e-4f);
+                        const glm::vec2 ky(slope(y, size.y, 1) - 1e-4f, slope(y + 1, size.y, 1) + 1e-4f);
+                        const glm::vec2 dz = depths[s];
+                        const glm::vec3 lo(std::min(kx.x * dz.x, kx.x * dz.y), std::min(ky.x * dz.x, ky.x * dz.y), dz.x);
+                        const glm::vec3 hi(std::max(kx.y * dz.x, kx.y * dz.y), std::max(ky.y * dz.x, ky.y * dz.y), dz.y);
+                        const glm::vec3 p(c.x, c.y, d);
+                        const glm::vec3 outside = glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f));
+                        if (glm::dot(outside, outside) > radius * radius) continue;
+                    }
+                    const std::uint32_t cluster = (s * static_cast<std::uint32_t>(tiles.y) + static_cast<std::uint32_t>(y)) * static_cast<std::uint32_t>(tiles.x) +
+                                                  static_cast<std::uint32_t>(x);
+                    clusters[k].push_back(cluster);
+                    ++perCluster[cluster];
+                }
     }
-    // Headers first, then each tile's indices in light order.
+    // Headers first, then each cluster's indices in light order.
     out.cells.assign(2 * count, 0);
     std::uint32_t next = static_cast<std::uint32_t>(2 * count);
     for (std::size_t t = 0; t < count; ++t) {
         out.cells[2 * t] = next;
-        next += perTile[t];
+        next += perCluster[t];
     }
     out.entries = next - 2 * count;
     out.cells.resize(next);
     std::vector<std::uint32_t> filled(count, 0);
-    for (std::size_t k = 0; k < rects.size(); ++k) {
-        const TileRect& rect = rects[k];
-        for (int y = rect.y0; y <= rect.y1; ++y)
-            for (int x = rect.x0; x <= rect.x1; ++x) {
-                const std::size_t t = static_cast<std::size_t>(y) * tiles.x + x;
-                out.cells[out.cells[2 * t] + filled[t]++] = static_cast<std::uint32_t>(k);
-            }
-    }
+    for (std::size_t k = 0; k < clusters.size(); ++k)
+        for (const std::uint32_t t : clusters[k]) out.cells[out.cells[2 * t] + filled[t]++] = static_cast<std::uint32_t>(k);
     for (std::size_t t = 0; t < count; ++t) out.cells[2 * t + 1] = filled[t];
     return out;
 }

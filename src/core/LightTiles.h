@@ -1,8 +1,9 @@
 #pragma once
-// Which lights reach which screen tiles: the tiled light list of the pass
-// that shades many lights at once (render/LightList.cpp uploads it,
-// lighting.frag's LIGHT_LIST variant reads it). GPU-free, so it is tested
-// on its own.
+// Which lights reach which screen tiles and depth slices (clusters: Olsson,
+// Billeter and Assarsson, "Clustered Deferred and Forward Shading", 2012):
+// the clustered light list of the pass that shades many lights at once
+// (render/LightList.cpp uploads it, lighting.frag's LIGHT_LIST variant
+// reads it). GPU-free, so it is tested on its own.
 #include <shadowlab/Scene.h>
 
 #include <glm/glm.hpp>
@@ -34,26 +35,42 @@ LightReach reachOf(const Light& light);
 /// outside one of the view's planes.
 std::optional<glm::vec4> screenRectOf(const LightReach& r, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView);
 
-/// The tiles of a `size` frame, `tileSize` pixels a side (the last row and
-/// column may be partial), and for each the lights whose reach may overlap
-/// it. Conservative: a light that reaches a pixel is listed in its tile;
-/// a light may be listed where it reaches nothing (its sphere's screen
-/// rectangle, or the whole frame when the sphere reaches the eye's plane).
+/// The clusters of a `size` frame: tiles `tileSize` pixels a side (the
+/// last row and column may be partial), each cut along the view into
+/// `slices` depth slices, spaced evenly in log(depth) from the near plane
+/// (slice 0 also holds what is nearer) to where the farthest sphere ends
+/// (the last slice also holds what is farther): a pixel at view depth d
+/// (its clip w) is in slice clamp(floor(log(d / sliceNear) * sliceScale),
+/// 0, slices - 1). For each cluster, the lights whose reach may overlap
+/// it. Conservative: a light that reaches a pixel is listed in its
+/// cluster (each slice's depths widened by 10^-3 each way, so that the
+/// shader's rounding never puts a pixel in a slice that leaves it out); a
+/// light may be listed where it reaches nothing (the box of the cluster's
+/// frustum overlaps its sphere, or everywhere for a directional light).
 struct LightTiles {
     glm::uvec2 tiles{0};               ///< across, down (from the bottom row: GL's window origin)
     std::uint32_t tileSize = 16;       ///< pixels
-    /// Per tile (row-major from the bottom-left), its first index into
-    /// `cells` and its count, then the light indices themselves: the layout
-    /// the shader reads (cells[2t], cells[2t + 1], cells[first + k]).
+    std::uint32_t slices = 1;          ///< depth slices a tile
+    float sliceNear = 1.0f;            ///< view depth where slice 1 would start at the least (the camera's near plane)
+    float sliceScale = 0.0f;           ///< slices per unit of log(depth / sliceNear)
+    /// Per cluster (index (slice * tiles.y + row) * tiles.x + column, rows
+    /// from the bottom-left), its first index into `cells` and its count,
+    /// then the light indices themselves in light order: the layout the
+    /// shader reads (cells[2c], cells[2c + 1], cells[first + k]).
     std::vector<std::uint32_t> cells;
-    std::size_t entries = 0;           ///< light indices listed over all tiles
+    std::size_t entries = 0;           ///< light indices listed over all clusters
     std::size_t culled = 0;            ///< lights outside the view, listed nowhere
+    /// The slice of a pixel at view depth `d` (what the shader computes).
+    std::uint32_t sliceOf(float d) const;
 };
 
-/// Bins `reach[k]` (light k of the list) into tiles of the frame seen
-/// through `viewFromWorld` and the perspective `clipFromView` (OpenGL clip
-/// space, clip w = -z of the view; a far plane at infinity is fine).
+/// Depth slices a tile by default (the renderer's: SL_LIGHT_SLICES).
+inline constexpr std::uint32_t kLightSlices = 16;
+
+/// Bins `reach[k]` (light k of the list) into the clusters of the frame
+/// seen through `viewFromWorld` and the perspective `clipFromView` (OpenGL
+/// clip space, clip w = -z of the view; a far plane at infinity is fine).
 LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size,
-                     std::uint32_t tileSize);
+                     std::uint32_t tileSize, std::uint32_t slices = kLightSlices);
 
 } // namespace shadowlab

@@ -21,15 +21,19 @@ void LightList::upload(const Scene& scene, const std::vector<int>& lights, const
         listed.push_back({u.radiance, u.position, u.direction, u.params, k < shadows.size() ? shadows[k] : glm::vec4(0.0f)});
         reach.push_back(reachOf(light));
     }
-    tiles_ = binLights(reach, viewFromWorld, clipFromView, size, SL_LIGHT_TILE_SIZE);
+    tiles_ = binLights(reach, viewFromWorld, clipFromView, size, SL_LIGHT_TILE_SIZE, SL_LIGHT_SLICES);
     const std::size_t lightBytes = std::max<std::size_t>(listed.size(), 1) * sizeof(shared::ListedLight);
-    const std::size_t cellBytes = sizeof(glm::uvec4) + tiles_.cells.size() * sizeof(std::uint32_t);
+    const std::size_t cellBytes = sizeof(glm::uvec4) + sizeof(glm::vec4) + tiles_.cells.size() * sizeof(std::uint32_t);
     gl::reserveBuffer(lights_, lightBytes_, lightBytes);
     gl::reserveBuffer(cells_, cellBytes_, cellBytes);
     if (!listed.empty()) glNamedBufferSubData(lights_.id(), 0, static_cast<GLsizeiptr>(listed.size() * sizeof(shared::ListedLight)), listed.data());
-    const glm::uvec4 header(tiles_.tileSize, tiles_.tiles.x, tiles_.tiles.y, 0u);
+    // The header (lighting.frag's LightTiles): tiling, then the slices' depths.
+    const glm::uvec4 header(tiles_.tileSize, tiles_.tiles.x, tiles_.tiles.y, tiles_.slices);
+    const glm::vec4 slicing(tiles_.sliceNear, tiles_.sliceScale, 0.0f, 0.0f);
     glNamedBufferSubData(cells_.id(), 0, sizeof header, &header);
-    glNamedBufferSubData(cells_.id(), sizeof header, static_cast<GLsizeiptr>(tiles_.cells.size() * sizeof(std::uint32_t)), tiles_.cells.data());
+    glNamedBufferSubData(cells_.id(), sizeof header, sizeof slicing, &slicing);
+    glNamedBufferSubData(cells_.id(), sizeof header + sizeof slicing, static_cast<GLsizeiptr>(tiles_.cells.size() * sizeof(std::uint32_t)),
+                         tiles_.cells.data());
 }
 
 void LightList::bind() const {

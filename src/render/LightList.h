@@ -1,5 +1,5 @@
 #pragma once
-// The tiled light list on the GPU: the lights that have no shadow pass of
+// The clustered light list on the GPU: the lights that have no shadow pass of
 // their own after the base pass (Technique::joinsLightList: none, or a map
 // in the shadow atlas) beyond the base pass's light,
 // shaded together in one pass (lighting.frag's LIGHT_LIST variant) instead

@@ -208,7 +208,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
 
     // 3. The lights without a shadow pass after the base pass (none, or a
     // map in the shadow atlas) beyond the base pass's, two or more of
-    // them, in one pass over a tiled list; every other light: its
+    // them, in one pass over a clustered list; every other light: its
     // technique's pass. Both on the base pass's depth.
     std::vector<int> listed;
     for (std::size_t i = 0; i < s.lights.size() && options.groupLights && !screenVisibility; ++i)

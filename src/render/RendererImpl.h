@@ -24,7 +24,7 @@
 
 namespace shadowlab {
 
-/// A light's block (also the tiled light list's entries).
+/// A light's block (also the clustered light list's entries).
 shared::LightUniforms lightUniforms(const Light& light);
 
 /// What drawLit draws: the light's shading, its visibility term (compare),
@@ -157,7 +157,7 @@ struct Renderer::Impl final : TechniqueHost {
     /// The base pass: depth, clears, ambient and light `baseLight` (-1: none).
     void basePass(const Scene& s, const RenderOptions& options, int baseLight, const std::vector<std::vector<float>>* screenVisibility);
     /// The lights in `listed` (indices, at least one) in one pass over the
-    /// tiled light list, added on the base pass's depth.
+    /// clustered light list, added on the base pass's depth.
     void lightListPass(const Scene& s, const std::vector<int>& listed);
     /// Each light but `baseLight` and those in `listed`, its pass added on the base pass's depth.
     void otherLights(const Scene& s, int baseLight, const std::vector<int>& listed, const std::vector<std::vector<float>>* screenVisibility);

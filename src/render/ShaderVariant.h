@@ -13,7 +13,7 @@ namespace shadowlab {
 struct ShaderVariant {
     bool ambient = true;            ///< add the ambient term (the base pass)
     bool light = false;             ///< add one light's term (merged base pass, light passes)
-    /// Add the terms of the tiled light list's lights (no shadows; the
+    /// Add the terms of the clustered light list's lights (no shadows; the
     /// light-list pass, LightList.h). Not with `light`.
     bool lightList = false;
     /// With `lightList`: some listed lights have shadows in the shadow atlas

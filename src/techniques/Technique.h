@@ -143,7 +143,7 @@ public:
     /// that need passes after the base pass (stencil) return false.
     virtual bool sharesBasePass(const Light&) const { return true; }
     /// Whether the light, when it is not the base pass's, may be shaded in
-    /// the one pass over the tiled light list with the other such lights
+    /// the one pass over the clustered light list with the other such lights
     /// (RenderOptions::groupLights): its visibility is 1 everywhere ("none"),
     /// or read from what bindLightList binds by shadows/atlas lookups
     /// described by listedShadow ("map" with `atlas`: shadow_atlas.glsl).

@@ -1,4 +1,4 @@
-// The tiled light list: the lights without shadows beyond the base pass's
+// The clustered light list: the lights without shadows beyond the base pass's
 // shaded in one pass ("lights") instead of a pass each.
 #include "GLTestContext.h"
 

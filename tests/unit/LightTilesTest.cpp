@@ -1,5 +1,6 @@
-// The tiled light list's binning (core/LightTiles.h): conservative, so a
-// light is listed in the tile of every pixel it can reach.
+// The clustered light list's binning (core/LightTiles.h): conservative, so
+// a light is listed in the cluster (tile and depth slice) of every pixel
+// it can reach.
 #include "core/LightTiles.h"
 
 #include <shadowlab/Scene.h>
@@ -13,8 +14,13 @@ using namespace shadowlab;
 
 namespace {
 
-bool listed(const LightTiles& t, glm::uvec2 tile, std::uint32_t light) {
-    const std::size_t i = static_cast<std::size_t>(tile.y) * t.tiles.x + tile.x;
+// The cluster of a pixel in `tile` at view depth `depth`: its first cell and count.
+std::size_t clusterOf(const LightTiles& t, glm::uvec2 tile, float depth) {
+    return (static_cast<std::size_t>(t.sliceOf(depth)) * t.tiles.y + tile.y) * t.tiles.x + tile.x;
+}
+
+bool listed(const LightTiles& t, glm::uvec2 tile, float depth, std::uint32_t light) {
+    const std::size_t i = clusterOf(t, tile, depth);
     const auto first = t.cells.begin() + t.cells[2 * i];
     return std::find(first, first + t.cells[2 * i + 1], light) != first + t.cells[2 * i + 1];
 }
@@ -25,8 +31,10 @@ float uniform(std::mt19937& rng) { return static_cast<float>(rng() >> 8) * (1.0f
 
 // 300 spheres around a camera (in view, at the frame's edges, crossing the
 // eye's plane, behind it), 2000 points on and in each: every point in
-// front of the near plane that projects into the frame is in a tile that
-// lists its sphere. The seed is fixed.
+// front of the near plane that projects into the frame is in a cluster
+// (its tile, the slice of its view depth) that lists its sphere. The seed
+// is fixed. And the slices pay: a point's cluster lists fewer lights than
+// its whole tile (one slice) does.
 TEST(LightTilesTest, EveryPixelASphereReachesListsIt) {
     Camera camera;
     camera.position = {1.0f, 3.0f, 9.0f};
@@ -43,8 +51,11 @@ TEST(LightTilesTest, EveryPixelASphereReachesListsIt) {
         reach.push_back(r);
     }
     const LightTiles tiles = binLights(reach, view, projection, size, 16);
+    const LightTiles flat = binLights(reach, view, projection, size, 16, 1);
     ASSERT_EQ(tiles.tiles, glm::uvec2(20, 13));
+    ASSERT_EQ(tiles.slices, kLightSlices);
     int checked = 0;
+    double inCluster = 0.0, inTile = 0.0;
     for (std::uint32_t k = 0; k < reach.size(); ++k) {
         for (int s = 0; s < 2000; ++s) {
             const glm::vec3 d = glm::normalize(glm::vec3(uniform(rng), uniform(rng), uniform(rng)) * 2.0f - 1.0f);
@@ -53,7 +64,10 @@ TEST(LightTilesTest, EveryPixelASphereReachesListsIt) {
             if (clip.w <= camera.nearPlane) continue;
             const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(size);
             if (pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(size.x) || pixel.y >= float(size.y)) continue;
-            ASSERT_TRUE(listed(tiles, glm::uvec2(pixel) / 16u, k)) << "light " << k << " at pixel " << pixel.x << ", " << pixel.y;
+            ASSERT_TRUE(listed(tiles, glm::uvec2(pixel) / 16u, clip.w, k)) << "light " << k << " at pixel " << pixel.x << ", " << pixel.y << ", depth " << clip.w;
+            ASSERT_TRUE(listed(flat, glm::uvec2(pixel) / 16u, clip.w, k)) << "light " << k << " at pixel " << pixel.x << ", " << pixel.y;
+            inCluster += tiles.cells[2 * clusterOf(tiles, glm::uvec2(pixel) / 16u, clip.w) + 1];
+            inTile += flat.cells[2 * clusterOf(flat, glm::uvec2(pixel) / 16u, clip.w) + 1];
             ++checked;
         }
     }
@@ -61,5 +75,8 @@ TEST(LightTilesTest, EveryPixelASphereReachesListsIt) {
     // And not every light everywhere: the spheres behind the camera or off
     // to the side are culled, the rest listed in part of the frame.
     EXPECT_GT(tiles.culled, 30u);
-    EXPECT_LT(tiles.entries, reach.size() * tiles.tiles.x * tiles.tiles.y / 3);
+    EXPECT_LT(flat.entries, reach.size() * flat.tiles.x * flat.tiles.y / 3);
+    // Measured: 14.6 lights a point's cluster on average, against 29.8 its
+    // tile's (300 spheres in a 30 m box, many overlapping); the bar, 0.6x.
+    EXPECT_LT(inCluster, 0.6 * inTile) << inCluster / checked << " lights a cluster, " << inTile / checked << " a tile";
 }

@@ -84,7 +84,7 @@ const OptionTable& mapOptionTable() {
             .number(&MapOptions::diskGrowth, "diskGrowth", 0.0, 100.0, "per viewer distance / far",
                     "point lights: the radius times 1 + diskGrowth x (viewer distance / far)")
             .boolean(&MapOptions::atlas, "atlas",
-                     "spot and point lights: the map is a tile of the scene's shared shadow atlas (a point light's faces, six tiles), sized each frame from the light's reach on screen (the scene's shadowAtlas), and the light is shaded with the other such lights in one pass over the tiled light list; format depth32f, filter none or hardware (docs/techniques.md)")
+                     "spot and point lights: the map is a tile of the scene's shared shadow atlas (a point light's faces, six tiles), sized each frame from the light's reach on screen (the scene's shadowAtlas), and the light is shaded with the other such lights in one pass over the clustered light list; format depth32f, filter none or hardware (docs/techniques.md)")
             .build();
     return table;
 }
