@@ -116,7 +116,7 @@ public:
     void fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out);
 
     /// Meshes of more triangles than this are not drawn in the pre-pass:
-    /// their boxes, cut to the view's, join the bounds on the CPU instead
+    /// their boxes, cut to the view's (a slice's on the GPU), join the bounds instead
     /// (every point of theirs the camera can see lies in both). Bounds that
     /// way are never smaller than the points seen, a little larger where a
     /// large mesh hid what lies behind it; the pre-pass, which the vertex
