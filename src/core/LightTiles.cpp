@@ -120,10 +120,15 @@ LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& view
     for (std::uint32_t s = 0; s < out.slices; ++s)
         depths[s] = {s == 0 ? 0.0f : out.sliceNear * std::exp(static_cast<float>(s) / out.sliceScale) * (1.0f - 1e-3f),
                      (s + 1 == out.slices ? far : out.sliceNear * std::exp(static_cast<float>(s + 1) / out.sliceScale)) * (1.0f + 1e-3f)};
-    const auto slope = [&](int tile, int extent, int axis) {
-        const float ndc = 2.0f * static_cast<float>(std::min(tile * static_cast<int>(out.tileSize), extent)) / static_cast<float>(extent) - 1.0f;
-        return (ndc + clipFromView[2][axis]) / clipFromView[axis][axis];
+    const auto slopes = [&](int count, int extent, int axis) {
+        std::vector<float> s(static_cast<std::size_t>(count) + 1);
+        for (int tile = 0; tile <= count; ++tile) {
+            const float ndc = 2.0f * static_cast<float>(std::min(tile * static_cast<int>(out.tileSize), extent)) / static_cast<float>(extent) - 1.0f;
+            s[static_cast<std::size_t>(tile)] = (ndc + clipFromView[2][axis]) / clipFromView[axis][axis];
+        }
+        return s;
     };
+    const std::vector<float> columns = slopes(tiles.x, size.x, 0), rows = slopes(tiles.y, size.y, 1);  // each tile's edges
     // Each light's clusters, in cluster order within a slice's rows.
     std::vector<std::vector<std::uint32_t>> clusters(reach.size());
     std::vector<std::uint32_t> perCluster(count, 0);
@@ -144,8 +149,8 @@ LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& view
                 for (int x = rect.x0; x <= rect.x1; ++x) {
                     if (!r.everywhere) {
                         // The box of the cluster's frustum (view x, y and depth) against the sphere.
-                        const glm::vec2 kx(slope(x, size.x, 0) - 1e-4f, slope(x + 1, size.x, 0) + 1e-4f);
-                        const glm::vec2 ky(slope(y, size.y, 1) - 1e-4f, slope(y + 1, size.y, 1) + 1e-4f);
+                        const auto xi = static_cast<std::size_t>(x), yi = static_cast<std::size_t>(y);
+                        const glm::vec2 kx(columns[xi] - 1e-4f, columns[xi + 1] + 1e-4f), ky(rows[yi] - 1e-4f, rows[yi + 1] + 1e-4f);
                         const glm::vec2 dz = depths[s];
                         const glm::vec3 lo(std::min(kx.x * dz.x, kx.x * dz.y), std::min(ky.x * dz.x, ky.x * dz.y), dz.x);
                         const glm::vec3 hi(std::max(kx.y * dz.x, kx.y * dz.y), std::max(ky.y * dz.x, ky.y * dz.y), dz.y);

@@ -64,13 +64,11 @@ struct LightTiles {
     std::uint32_t sliceOf(float d) const;
 };
 
-/// Depth slices a tile by default (the renderer's: SL_LIGHT_SLICES).
-inline constexpr std::uint32_t kLightSlices = 16;
 
 /// Bins `reach[k]` (light k of the list) into the clusters of the frame
 /// seen through `viewFromWorld` and the perspective `clipFromView` (OpenGL
 /// clip space, clip w = -z of the view; a far plane at infinity is fine).
 LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size,
-                     std::uint32_t tileSize, std::uint32_t slices = kLightSlices);
+                     std::uint32_t tileSize, std::uint32_t slices);
 
 } // namespace shadowlab

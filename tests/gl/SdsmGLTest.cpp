@@ -63,6 +63,19 @@ FrameStats renderSmall(Renderer& renderer, const Scene& scene) {
     return renderer.render(scene, options);
 }
 
+// The widths of the light cameras the viewer draws (Renderer::lightFrustums)
+// after a small frame of `scene`: 2 over the length of clip x's row (the
+// light's view being a rotation).
+std::vector<float> frustumWidths(const Scene& scene) {
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    renderSmall(renderer, scene);
+    std::vector<float> out;
+    for (const LightFrustum& f : renderer.lightFrustums(scene))
+        out.push_back(2.0f / glm::length(glm::vec3(f.clipFromWorld[0][0], f.clipFromWorld[1][0], f.clipFromWorld[2][0])));
+    return out;
+}
+
 // The pixels that differ between two images of one size.
 std::size_t differingPixels(const ImageRGBA8& a, const ImageRGBA8& b) {
     std::size_t differ = 0;
@@ -244,17 +257,7 @@ TEST_F(SdsmGLTest, TheSharedDepthPrePassChangesNoPixel) {
 // The bar: each sdsm slice at most half as wide as the tight fit's same
 // slice (a fit that did not keep to the samples seen would not come near).
 TEST_F(SdsmGLTest, SlicesNotStabilisedAreFittedOnTheGpuToTheirOwnSamples) {
-    const auto widths = [](MapFit fit) {
-        const Scene scene = wallWith(fit, 4, false);
-        Renderer renderer(test::glContext());
-        renderer.upload(scene);
-        renderSmall(renderer, scene);
-        std::vector<float> out;
-        for (const LightFrustum& f : renderer.lightFrustums(scene))
-            out.push_back(2.0f / glm::length(glm::vec3(f.clipFromWorld[0][0], f.clipFromWorld[1][0], f.clipFromWorld[2][0])));
-        return out;
-    };
-    const std::vector<float> tight = widths(MapFit::Tight), sdsm = widths(MapFit::Sdsm);
+    const std::vector<float> tight = frustumWidths(wallWith(MapFit::Tight, 4, false)), sdsm = frustumWidths(wallWith(MapFit::Sdsm, 4, false));
     ASSERT_EQ(tight.size(), 4u);
     ASSERT_EQ(sdsm.size(), 4u);
     for (std::size_t c = 0; c < 4; ++c)
@@ -316,22 +319,12 @@ TEST_F(SdsmGLTest, CascadesCullForTheirOwnSlicesFromTheSecondFrame) {
 // the length of clip x's row, the light's view being a rotation); the
 // bar, a quarter, leaves room for any fit that keeps to what is seen.
 TEST_F(SdsmGLTest, TheViewerDrawsTheCamerasTheGpuFitted) {
-    const auto widths = [](MapFit fit, int cascades) {
-        const Scene scene = wallWith(fit, cascades);
-        Renderer renderer(test::glContext());
-        renderer.upload(scene);
-        renderSmall(renderer, scene);
-        std::vector<float> out;
-        for (const LightFrustum& f : renderer.lightFrustums(scene))
-            out.push_back(2.0f / glm::length(glm::vec3(f.clipFromWorld[0][0], f.clipFromWorld[1][0], f.clipFromWorld[2][0])));
-        return out;
-    };
-    const std::vector<float> tight = widths(MapFit::Tight, 1), sdsm = widths(MapFit::Sdsm, 1);
+    const std::vector<float> tight = frustumWidths(wallWith(MapFit::Tight, 1)), sdsm = frustumWidths(wallWith(MapFit::Sdsm, 1));
     ASSERT_EQ(tight.size(), 1u);
     ASSERT_EQ(sdsm.size(), 1u);
     EXPECT_LT(sdsm[0], 0.25f * tight[0]) << "sdsm " << sdsm[0] << " m, tight " << tight[0] << " m";
     // Four cascades: four cameras, the nearest the narrowest (its slice the shortest).
-    const std::vector<float> cascades = widths(MapFit::Sdsm, 4);
+    const std::vector<float> cascades = frustumWidths(wallWith(MapFit::Sdsm, 4));
     ASSERT_EQ(cascades.size(), 4u);
     EXPECT_LT(cascades[0], cascades[3]);
 }

@@ -221,17 +221,18 @@ void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const G
 void SampleBounds::fitSlices(TechniqueHost& host, const FrameInfo& frame, const GpuFitInput& in, const gl::Buffer& out) {
     // Each slice's samples in the light's view (the one map's space), kSlicesAPass slices a reduction.
     uploadBoxes(frame, in.casters, true);
+    // The fit's settings once; each group's reduction draws with its own program in between.
+    const gl::Program& program = host.program({{{GL_COMPUTE_SHADER, "shadow_map_sdsm_fit.comp"}}, fitDefines(in, true)});
+    const GLuint id = program.id();
+    setFitUniforms(id, in);
+    const glm::mat4 samplesFromClip = in.samplesView * glm::inverse(frame.clipFromWorld);
+    glProgramUniformMatrix4fv(id, 15, 1, GL_FALSE, &samplesFromClip[0][0]);
+    glProgramUniform1i(id, 16, static_cast<GLint>(boxed_.size()));
+    glProgramUniformMatrix4fv(id, 17, 1, GL_FALSE, &in.samplesView[0][0]);
     for (int first = 0; first < in.cascades; first += kSlicesAPass) {
         draw(host, frame, in.samplesView, Windows{{}, &out, first, in.cascades}, slices_);
-        const gl::Program& program = host.program({{{GL_COMPUTE_SHADER, "shadow_map_sdsm_fit.comp"}}, fitDefines(in, true)});
         program.use();
-        const GLuint id = program.id();
-        setFitUniforms(id, in);
         glProgramUniform2i(id, 1, slices_.blocks.x, slices_.blocks.y);
-        const glm::mat4 samplesFromClip = in.samplesView * glm::inverse(frame.clipFromWorld);
-        glProgramUniformMatrix4fv(id, 15, 1, GL_FALSE, &samplesFromClip[0][0]);
-        glProgramUniform1i(id, 16, static_cast<GLint>(boxed_.size()));
-        glProgramUniformMatrix4fv(id, 17, 1, GL_FALSE, &in.samplesView[0][0]);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, out.id());
         for (int w = 0; w < kSlicesAPass && first + w < in.cascades; ++w) {
             glProgramUniform1i(id, 14, first + w);
