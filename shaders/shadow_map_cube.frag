@@ -17,7 +17,9 @@ layout(location = 0) out vec4 outPacked;
 #endif
 
 void main() {
-    if (alphaCutOut(gCubeUv) || translucentSurface()) discard;  // holes; translucent casters cast no depth
+#if MAP_HOLES
+    if (alphaCutOut(gCubeUv) || translucentSurface()) discard;  // holes (CubePassVariant::holes); translucent casters cast no depth
+#endif
 #if !MAP_CUBE_WINDOW
     float distance = length(gCubeWorld - map.lightPosition);
     float slope = max(abs(dFdx(distance)), abs(dFdy(distance)));

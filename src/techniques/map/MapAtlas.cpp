@@ -218,7 +218,7 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     // The opaque casters in one batch, one call per tile; those with holes one by one.
     const gl::Program& batched = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_batch.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
     const gl::Program& single = host.program(
-        {{{GL_VERTEX_SHADER, "shadow_atlas_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{MapFormat::Depth32F}.defines()});
+        {{{GL_VERTEX_SHADER, "shadow_atlas_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{MapFormat::Depth32F, true}.defines()});  // casters with holes
     batch_.update(frame);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     gl::RenderState state;

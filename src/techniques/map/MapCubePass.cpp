@@ -5,6 +5,7 @@
 #include "techniques/map/MapResources.h"
 
 #include "techniques/map/MapCameras.h"
+#include "techniques/map/MapCasterDraw.h"
 #include "techniques/map/MapSettings.h"
 #include "techniques/map/MapTranslucent.h"
 #include "techniques/map/MapVariants.h"
@@ -76,30 +77,38 @@ gl::RenderState windowDepthState(gl::RenderState state, const MapOptions& o) {
 }
 
 // The casters into the cube: once through the geometry shader, or once per face they touch.
-void drawCasters(TechniqueHost& host, const MapArray& g, const MapLight& p, const FaceUse& use) {
+void drawCasters(TechniqueHost& host, const FrameInfo& frame, const MapArray& g, const MapLight& p, const FaceUse& use) {
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
-    const std::string defines = CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options)}.defines();
+    const auto defines = [&](bool holes) {
+        return CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options), holes}.defines();
+    };
     glViewport(0, 0, g.size(), g.size());
     if (onePass) {
-        const gl::Program& program = host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"},
-                                                    {GL_GEOMETRY_SHADER, "shadow_map_cube.geom"},
-                                                    {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}},
-                                                   defines});
+        const auto program = [&](bool holes) -> const gl::Program& {
+            return host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"},
+                                  {GL_GEOMETRY_SHADER, "shadow_map_cube.geom"},
+                                  {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}},
+                                 defines(holes)});
+        };
         glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
-        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+        drawDepthCasters(host, frame, program, [&](std::size_t i, const gl::Program& drawing) {
             if (!p.faceMask(i)) return false;
-            glProgramUniform1ui(program.id(), 0, p.faceMask(i));
+            glProgramUniform1ui(drawing.id(), 0, p.faceMask(i));
             return true;
         });
         return;
     }
-    const gl::Program& program = host.program(
-        {{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}}, defines});
+    const auto program = [&](bool holes) -> const gl::Program& {
+        return host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}}, defines(holes)});
+    };
     for (int f = 0; f < 6; ++f) {
         if (!use.used[static_cast<std::size_t>(f)]) continue;
         glBindFramebuffer(GL_FRAMEBUFFER, p.faceFbos[static_cast<std::size_t>(f)].id());
-        glProgramUniform1i(program.id(), 1, f);
-        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return (p.faceMask(i) & (1u << f)) != 0; });
+        drawDepthCasters(host, frame, program, [&](std::size_t i, const gl::Program& drawing) {
+            if ((p.faceMask(i) & (1u << f)) == 0) return false;
+            glProgramUniform1i(drawing.id(), 1, f);
+            return true;
+        });
     }
 }
 
@@ -116,7 +125,7 @@ void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView
     state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
     if (cubeWindowDepth(p.options)) state = windowDepthState(state, p.options);
     host.apply(state);
-    drawCasters(host, g, p, use);
+    drawCasters(host, frame, g, p, use);
     static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
     host.count("triangles", static_cast<double>(use.drawn));
     host.count("mapBytes", 6.0 * texelBytes(g.key) * static_cast<double>(g.size()) * static_cast<double>(g.size()));

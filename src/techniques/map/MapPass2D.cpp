@@ -5,6 +5,7 @@
 #include "techniques/map/MapResources.h"
 
 #include "techniques/map/MapCameras.h"
+#include "techniques/map/MapCasterDraw.h"
 #include "techniques/map/MapMoments.h"
 #include "techniques/map/MapSettings.h"
 #include "techniques/map/MapTranslucent.h"
@@ -50,9 +51,10 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
     const MapArray& g = res.arrays[p.array];
     const bool packed = isPacked(g.format());
     res.block.upload(p, g, view.light, res.translucent);
-    const gl::Program& program = host.program(
-        {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
-         DepthPassVariant{g.hasMoments() ? MapFormat::Depth32F : g.format()}.defines()});
+    const auto program = [&](bool holes) -> const gl::Program& {
+        return host.program({{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}},
+                             DepthPassVariant{g.hasMoments() ? MapFormat::Depth32F : g.format(), holes}.defines()});
+    };
     std::size_t drawn = 0;
     const std::span<const LightCamera> cameras = p.cameras();
     for (std::size_t c = 0; c < cameras.size(); ++c) {
@@ -66,7 +68,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         res.block.setCamera(p, c);
         // Casters that cannot reach the light's frustum are not drawn.
         std::size_t drawnHere = 0;
-        host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) {
+        drawDepthCasters(host, frame, program, [&](std::size_t i, const gl::Program&) {
             const bool inside = castsInto(camera, frame, i, g.hasMoments());
             if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
             return inside;

@@ -108,7 +108,7 @@ std::string LightPassVariant::kernelFile() const {
 
 std::string LookupFloorVariant::defines() const { return Defines().set("LOOKUP_FETCH", fetch).set("LOOKUP_CUBE", cube).str(); }
 
-std::string DepthPassVariant::defines() const { return Defines().packing(format).str(); }
+std::string DepthPassVariant::defines() const { return Defines().packing(format).set("MAP_HOLES", holes).str(); }
 
 std::string CubePassVariant::defines() const {
     return Defines()
@@ -116,6 +116,7 @@ std::string CubePassVariant::defines() const {
         .set("MAP_CUBE_ONE_PASS", onePass)
         .set("MAP_CUBE_CULL", faceCulling)
         .set("MAP_CUBE_WINDOW", windowDepth)
+        .set("MAP_HOLES", holes)
         .str();
 }
 

@@ -73,6 +73,9 @@ struct LookupFloorVariant {
 /// Moment maps are drawn as depth32f (their moments made after: BlurVariant).
 struct DepthPassVariant {
     MapFormat format = MapFormat::Depth32F;
+    /// The casters it draws have holes (alphaMode mask) to cut: the fragment
+    /// stage tests their alpha (MapCasterDraw.h; opaque casters: no test)
+    bool holes = false;
     std::string defines() const;
 };
 
@@ -82,6 +85,7 @@ struct CubePassVariant {
     bool onePass = true;            ///< the geometry shader picks the faces (else one draw per face)
     bool faceCulling = true;        ///< one pass: each triangle only to the faces it touches
     bool windowDepth = false;       ///< the reversed window depth, not gl_FragDepth (MapSettings: cubeWindowDepth)
+    bool holes = false;             ///< the casters have holes to cut (DepthPassVariant::holes)
     std::string defines() const;
 };
 
