@@ -13,6 +13,7 @@
 // fades into the next.
 
 #if MAP_MOMENTS > 0
+// The moments, or the depth they are taken from (MAP_MOMENTS_FROM_DEPTH).
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapMoments;
 #elif MAP_RGBA8
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;

@@ -41,6 +41,29 @@ float msmShadow(vec4 b, float z) {
 }
 #endif
 
+// The filtered moments at uv of layer `layer` (planes: a spot's near and
+// far, which linearise its depth as shadow_map_blur.frag does).
+#if MAP_MOMENTS_FROM_DEPTH
+// Taken from the depth itself (MapArrays.h: momentsFromDepth): the four
+// depth texels a bilinear lookup reads, gathered, their moments blended
+// with the bilinear weights, which is what a bilinear lookup of moments
+// made per texel returns (with no blur, no mipmaps, 32-bit moments).
+vec4 momentsOfDepth(float z, vec2 planes) {
+    z = clamp(z, 0.0, 1.0);
+    if (map.perspective > 0.5) z = (perspectiveDistance(z, planes.x, planes.y) - planes.x) / (planes.y - planes.x);
+    return momentsOf(z);
+}
+vec4 filteredMoments(vec2 uv, float layer, vec2 planes) {
+    vec2 f = fract(uv * vec2(textureSize(mapMoments, 0).xy) - 0.5);
+    vec4 d = textureGather(mapMoments, vec3(uv, layer));  // (i0, j1), (i1, j1), (i1, j0), (i0, j0)
+    vec4 below = mix(momentsOfDepth(d.w, planes), momentsOfDepth(d.z, planes), f.x);
+    vec4 above = mix(momentsOfDepth(d.x, planes), momentsOfDepth(d.y, planes), f.x);
+    return mix(below, above, f.y);
+}
+#else
+vec4 filteredMoments(vec2 uv, float layer, vec2 planes) { return texture(mapMoments, vec3(uv, layer)); }
+#endif
+
 // A moment map's visibility at uv for the receiver's depth `ref`: the
 // filtered moments (bilinear, mipmapped when asked, blurred by the shadow
 // pass) bound the share of occluders nearer than the receiver from above;
@@ -48,7 +71,7 @@ float msmShadow(vec4 b, float z) {
 // penumbrae).
 float mapFilter(MapLookup m, vec2 uv, float ref) {
     float z = map.perspective > 0.5 ? (mapDistance(ref, m.planes) - m.planes.x) / (m.planes.y - m.planes.x) : ref;
-    vec4 moments = texture(mapMoments, vec3(uv, m.layer));
+    vec4 moments = filteredMoments(uv, m.layer, m.planes);
 #if MAP_MOMENTS == SL_MAP_MOMENTS_VSM
     float v = chebyshev(moments.xy, z, MAP_MIN_VARIANCE);
 #elif MAP_MOMENTS == SL_MAP_MOMENTS_MSM

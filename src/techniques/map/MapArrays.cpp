@@ -27,6 +27,10 @@ GLenum depthFormat(const ArrayKey& key) {
     return key.representation != MapRepresentation::Depth ? GL_DEPTH_COMPONENT32F : depthFormat(key.format);
 }
 
+bool momentsFromDepth(const MapOptions& o) {
+    return o.representation != MapRepresentation::Depth && o.blur == 0 && !o.mipmaps && o.momentFormat == MapMomentFormat::Rgba32f;
+}
+
 int momentCount(MapRepresentation r) { return r == MapRepresentation::Depth ? 0 : r == MapRepresentation::Vsm || r == MapRepresentation::Evsm2 ? 2 : 4; }
 
 bool sharedDepthBuffer(const ArrayKey& key) { return key.format == MapFormat::R8 && !key.cube; }
@@ -37,6 +41,7 @@ namespace {
 double depthTexelBytes(const ArrayKey& key) { return depthFormat(key) == GL_DEPTH_COMPONENT16 ? 2.0 : 4.0; }  // depth24 is stored in 4 bytes
 double colourTexelBytes(const ArrayKey& key) { return key.format == MapFormat::Rgba8 ? 4.0 : key.format == MapFormat::R8 ? 1.0 : 0.0; }
 double momentTexelBytes(const ArrayKey& key) {
+    if (!key.storedMoments) return 0.0;  // taken from the depth (momentsFromDepth)
     return momentCount(key.representation) * (key.momentFormat == MapMomentFormat::Rgba16f ? 2.0 : 4.0);
 }
 
@@ -130,7 +135,7 @@ MapArray makeArray(const ArrayKey& key, int layers, std::uint64_t generation) {
         g.packed = gl::Texture(g.target());
         glTextureStorage3D(g.packed.id(), levels, key.format == MapFormat::R8 ? GL_R8 : GL_RGBA8, size, size, layers * g.layersPerLight());
     }
-    if (g.hasMoments()) {
+    if (g.storesMoments()) {
         g.moments = gl::Texture(g.target());
         glTextureStorage3D(g.moments.id(), levels, momentFormatOf(key), size, size, layers);
         g.blurScratch = gl::Texture(GL_TEXTURE_2D);

@@ -19,6 +19,15 @@ namespace shadowlab::map {
 GLenum depthFormat(MapFormat f);
 
 /// What lights must agree on to share one texture array.
+/// Whether a moment map's moments are taken from its depth by the light
+/// pass itself (four depths gathered where a bilinear lookup of moments
+/// would read, their moments blended with the same weights): with no blur,
+/// no mipmaps and 32-bit moments, the moments a fullscreen pass would store
+/// are just those of each depth texel, and making them cost more than the
+/// depth map's whole frame (light-leak at 1024^2: 4-6 ms). Otherwise
+/// (blurred, mipmapped or 16-bit moments) makeMoments stores them.
+bool momentsFromDepth(const MapOptions& o);
+
 struct ArrayKey {
     MapFormat format = MapFormat::Depth32F;
     bool mipmaps = false;
@@ -26,11 +35,13 @@ struct ArrayKey {
     MapRepresentation representation = MapRepresentation::Depth;
     MapMomentFormat momentFormat = MapMomentFormat::Rgba32f;  ///< moments only
     int size = 0;
+    bool storedMoments = false;  ///< moments only: made into a texture of their own (not momentsFromDepth)
     static ArrayKey of(const MapOptions& o, bool cube) {
         const bool moments = o.representation != MapRepresentation::Depth;
-        return {o.format, o.mipmaps, cube, o.representation, moments ? o.momentFormat : MapMomentFormat::Rgba32f, o.size};
+        return {o.format, o.mipmaps, cube, o.representation, moments ? o.momentFormat : MapMomentFormat::Rgba32f, o.size,
+                moments && !momentsFromDepth(o)};
     }
-    auto tie() const { return std::tie(format, mipmaps, cube, representation, momentFormat, size); }
+    auto tie() const { return std::tie(format, mipmaps, cube, representation, momentFormat, size, storedMoments); }
     bool operator<(const ArrayKey& o) const { return tie() < o.tie(); }
     bool operator==(const ArrayKey& o) const { return tie() == o.tie(); }
 };
@@ -57,7 +68,7 @@ struct MapArray {
     std::uint64_t generation = 0;     ///< unique per allocation: framebuffers attached to an older one are rebuilt
     gl::Texture depth{gl::NoCreate};  ///< DEPTH_COMPONENT* array: the map, the depth test's buffer for rgba8, or for moments the depth they are made from (32-bit)
     gl::Texture packed{gl::NoCreate}; ///< RGBA8 array: the map for rgba8
-    gl::Texture moments{gl::NoCreate};///< RG/RGBA float array: the map for moment representations
+    gl::Texture moments{gl::NoCreate};///< RG/RGBA float array: the map for moment representations whose moments are stored (key.storedMoments)
     gl::Texture blurScratch{gl::NoCreate};   ///< moments: one layer's horizontal blur
     gl::Texture transmit{gl::NoCreate};      ///< RGBA8 array: the translucent casters' transmittance per layer (cube: per face)
     gl::Texture transmitDepth{gl::NoCreate}; ///< R32F array: the nearest translucent caster's depth per layer
@@ -66,6 +77,7 @@ struct MapArray {
     GLenum target() const { return key.cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY; }
     int layersPerLight() const { return key.cube ? 6 : 1; }
     bool hasMoments() const { return key.representation != MapRepresentation::Depth; }
+    bool storesMoments() const { return hasMoments() && key.storedMoments; }
     // Shorthands.
     MapFormat format() const { return key.format; }
     bool mipmaps() const { return key.mipmaps; }

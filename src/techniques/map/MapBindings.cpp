@@ -83,7 +83,12 @@ void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samp
         bindCube(p, g, samplers, translucent, plain);
         return;
     }
-    if (g.hasMoments()) {
+    if (g.hasMoments() && !g.storesMoments()) {
+        // The light pass gathers the depth and makes the moments (momentsFromDepth);
+        // a gather ignores the filter, and takes the moments' edge.
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
+        glBindSampler(SL_UNIT_SHADOW_FIRST, samplers.momentLinear.id());
+    } else if (g.hasMoments()) {
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.moments.id());
         glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? samplers.momentLinearMip.id() : samplers.momentLinear.id());
     } else if (isPacked(g.format())) {

@@ -75,7 +75,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         });
         if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
         drawn += drawnHere;
-        if (g.hasMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot);
+        if (g.storesMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot);
         if (res.translucent) drawTranslucent(host, res.block, frame, g, p, c);
     }
     host.count("triangles", static_cast<double>(drawn));
@@ -84,7 +84,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
     if (g.mipmaps()) {
         // Every level from the map: averaged depths or moments (of all layers; each light's pass refreshes them).
         const auto scope = host.timeScope("mipmaps");
-        glGenerateTextureMipmap(packed ? g.packed.id() : g.hasMoments() ? g.moments.id() : g.depth.id());
+        glGenerateTextureMipmap(packed ? g.packed.id() : g.storesMoments() ? g.moments.id() : g.depth.id());
     }
     if (frame.measureFloors) res.floors.draw(host, res.block, frame, g, p);
 }

@@ -1,5 +1,6 @@
 // Technique "map": its typed shader variants (MapVariants.h).
 #include "techniques/map/MapVariants.h"
+#include "techniques/map/MapArrays.h"
 
 #include "techniques/map/MapFilters.h"
 #include "techniques/map/MapMoments.h"
@@ -76,6 +77,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.warped = !v.cube && o.warp == MapWarp::Lispsm;
     v.atlas = o.atlas;
     v.presetBias = !o.atlas && usesPresetBias(o, v.cube);
+    v.momentsFromDepth = !v.cube && !o.atlas && map::momentsFromDepth(o);
     return v;
 }
 
@@ -98,6 +100,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))
         .set("MAP_ATLAS", atlas)
         .set("MAP_PRESET_BIAS", presetBias)
+        .set("MAP_MOMENTS_FROM_DEPTH", momentsFromDepth)
         .str();
 }
 

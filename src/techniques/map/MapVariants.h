@@ -52,6 +52,9 @@ struct LightPassVariant {
     /// default maps carry neither the code nor the varying (llvmpipe: 0.2-0.3
     /// ms of an 800x600 frame's lookups).
     bool presetBias = false;
+    /// A moment map whose moments the light pass takes from the depth
+    /// (MapArrays.h: momentsFromDepth), not from a texture of moments
+    bool momentsFromDepth = false;
     /// The variant of `light` (its effective options); `softwareRasterizer`
     /// picks the grid's taps; `translucentCasters`, whether the frame has any.
     static LightPassVariant of(const Light& light, bool softwareRasterizer, bool translucentCasters);
