@@ -8,6 +8,9 @@
 #include <shadowlab/SceneFile.h>
 
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace shadowlab;
 using shadowlab::test::compareScene;
@@ -163,4 +166,31 @@ TEST_F(SoftShadowGLTest, MomentMapsClassifyLikeDepthMapsAwayFromEdges) {
             const LightComparison l = compareScene(scene, 480, 270, 1).lights[0];
             EXPECT_LE(l.falseLitAwayFromEdges + l.falseShadowAwayFromEdges, 0.0005);
         }
+}
+
+// Moments with no blur, no mipmaps and 32-bit floats are taken from the
+// depth by the light pass (MapArrays.h: momentsFromDepth), so such a map
+// holds its depth alone (bench's mapBytes: 4 bytes a texel); 16-bit or
+// blurred moments are made and stored beside it. The two tests above hold
+// both kinds to the reference (32-bit unblurred, 16-bit, and blurred).
+TEST_F(SoftShadowGLTest, MomentsTakenFromTheDepthTakeNoMemoryOfTheirOwn) {
+    const fs::path path = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "light-leak.json";
+    const double texels = 1024.0 * 1024.0;
+    auto bytes = [&](const std::string& representation, const std::string& more) {
+        std::vector<std::string> set = {"lights[0].shadow.map.size=1024", "lights[0].shadow.map.representation=\"" + representation + "\""};
+        if (!more.empty()) set.push_back(more);
+        const Scene scene = loadSceneFile(path, set);
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        double b = -1.0;
+        for (const auto& [name, value] : renderer.render(scene, RenderOptions{64, 48}).counters)
+            if (name == "shadow[0].mapBytes") b = value;
+        return b;
+    };
+    for (const auto& [representation, moments] : {std::pair{"vsm", 2.0}, std::pair{"evsm4", 4.0}, std::pair{"msm", 4.0}}) {
+        SCOPED_TRACE(representation);
+        EXPECT_EQ(bytes(representation, ""), 4.0 * texels);
+        EXPECT_EQ(bytes(representation, "lights[0].shadow.map.momentFormat=\"rgba16f\""), (4.0 + 2.0 * moments) * texels);
+        EXPECT_EQ(bytes(representation, "lights[0].shadow.map.blur=2"), (4.0 + 4.0 * moments) * texels);
+    }
 }
