@@ -24,8 +24,18 @@ float mapTap(float layer, vec2 uv, float ref) {
 #elif MAP_PLAIN_FETCH
 // A software rasteriser: the nearest depth at level 0, compared here
 // (LightPassVariant::plainFetch; the comparison sampler's LEQUAL, its border).
+// One 2D map (MAP_LAYER_VIEW): a 2D view of its layer, which llvmpipe
+// addresses faster than the array's layer (MapSettings: layerView).
+#if MAP_LAYER_VIEW
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D mapDepthPlain;
+float mapTap(float layer, vec2 uv, float ref) { return ref <= textureLod(mapDepthPlain, uv, 0.0).r ? 1.0 : 0.0; }
+#else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapDepthPlain;
 float mapTap(float layer, vec2 uv, float ref) { return ref <= textureLod(mapDepthPlain, vec3(uv, layer), 0.0).r ? 1.0 : 0.0; }
+#endif
+#elif MAP_LAYER_VIEW
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DShadow mapDepth;
+float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec3(uv, ref)); }
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
 float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec4(uv, layer, ref)); }

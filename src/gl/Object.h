@@ -63,6 +63,17 @@ struct TextureTraits {
     static GLuint create(GLenum target) { GLuint id = 0; glCreateTextures(target, 1, &id); return id; }
     static void destroy(GLuint id) { glDeleteTextures(1, &id); }
 };
+// A view of another texture's levels and layers (glTextureView): named by
+// glGenTextures, as a view needs a name never bound to a target.
+struct TextureViewTraits {
+    static GLuint create(GLenum target, GLuint original, GLenum format, GLuint minLevel, GLuint levels, GLuint minLayer, GLuint layers) {
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        glTextureView(id, target, original, format, minLevel, levels, minLayer, layers);
+        return id;
+    }
+    static void destroy(GLuint id) { glDeleteTextures(1, &id); }
+};
 struct SamplerTraits {
     static GLuint create() { GLuint id = 0; glCreateSamplers(1, &id); return id; }
     static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
@@ -88,6 +99,7 @@ struct ProgramTraits {
 using Buffer = Object<detail::BufferTraits>;
 using VertexArray = Object<detail::VertexArrayTraits>;
 using Texture = Object<detail::TextureTraits>;         ///< Texture(GL_TEXTURE_2D) etc.
+using TextureView = Object<detail::TextureViewTraits>; ///< TextureView(GL_TEXTURE_2D, array, format, 0, 1, layer, 1) etc.
 using Sampler = Object<detail::SamplerTraits>;
 using Framebuffer = Object<detail::FramebufferTraits>;
 using Query = Object<detail::QueryTraits>;             ///< Query(GL_TIME_ELAPSED) etc.

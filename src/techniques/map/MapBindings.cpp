@@ -95,7 +95,8 @@ void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samp
         glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
         glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
     } else {
-        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
+        // One 2D map: a 2D view of its layer (MapSettings: layerView).
+        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, p.layerView ? p.layerView.id() : g.depth.id());
         // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
         const bool linear = filterInfo(p.options.filter).linear2D(bilinearGrid);
         glBindSampler(SL_UNIT_SHADOW_FIRST, plain        ? samplers.plainNearest.id()

@@ -39,6 +39,10 @@ struct MapLight {
     gl::Framebuffer fbo{gl::NoCreate};  ///< the layer attached (at prepare, when the array or layer changes); cube: the whole array, layered
     std::uint64_t attachedGeneration = 0;
     int attachedLayer = -1;
+    /// One 2D map of depth (MapSettings: layerView): its layer of the depth
+    /// array as a 2D texture of its own (a view), which the light pass samples
+    /// (made with the framebuffers)
+    gl::TextureView layerView{gl::NoCreate};
     // Point lights.
     bool cube = false;
     CubeCamera cubeCamera;
@@ -115,6 +119,7 @@ struct MapLight {
         fbo = std::move(old.fbo);
         attachedGeneration = old.attachedGeneration;
         attachedLayer = old.attachedLayer;
+        layerView = std::move(old.layerView);
         faceFbos = std::move(old.faceFbos);
         cascadeFbos = std::move(old.cascadeFbos);
         faceDirty = old.faceDirty;

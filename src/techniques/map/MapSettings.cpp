@@ -52,6 +52,10 @@ bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer) {
     return cube ? !f.linearCube : !f.linear2D(bilinearGrid(o, softwareRasterizer));
 }
 
+bool layerView(const MapOptions& o, bool cube, int cascades) {
+    return !cube && cascades == 1 && !o.atlas && o.representation == MapRepresentation::Depth && !isPacked(o.format) && !o.mipmaps;
+}
+
 int kernelRounds(const MapOptions& o, bool cube) {
     if (!o.earlyOut || o.representation != MapRepresentation::Depth) return 0;
     if (o.filter == MapFilter::Pcf20 && cube) return 5;

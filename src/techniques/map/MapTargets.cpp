@@ -3,6 +3,8 @@
 
 #include "techniques/map/MapSettings.h"
 
+#include <algorithm>
+
 namespace shadowlab::map {
 
 namespace {
@@ -22,12 +24,25 @@ void attachLayer(gl::Framebuffer& fbo, const MapArray& g, GLuint colour, int lay
     gl::checkFramebuffer(fbo, what);
 }
 
+// The light pass's 2D view of the light's layer when it samples one
+// (MapSettings: layerView), made unless it is there; none otherwise.
+void viewLayer(MapLight& p, const MapArray& g) {
+    if (!layerView(p.options, p.cube, static_cast<int>(std::max<std::size_t>(p.cascades.size(), 1)))) {
+        p.layerView = gl::TextureView(gl::NoCreate);
+        return;
+    }
+    if (!p.layerView) p.layerView = gl::TextureView(GL_TEXTURE_2D, g.depth.id(), depthFormat(g.key), 0u, 1u, static_cast<GLuint>(p.layer), 1u);
+}
+
 } // namespace
 
 void attachTargets(MapLight& p, const MapArray& g) {
     const bool attached = p.attachedGeneration == g.generation && p.attachedLayer == p.layer &&
                           (p.cascades.empty() ? static_cast<bool>(p.fbo) : p.cascadeFbos.size() == p.cascades.size());
-    if (attached) return;
+    if (attached) {
+        viewLayer(p, g);  // the options may have changed, not the layer
+        return;
+    }
     if (!p.fbo || p.attachedGeneration != g.generation) p.fbo = gl::Framebuffer();
     const bool packed = isPacked(g.format());
     // The colour the pass writes: depth packed into RGBA8 (moment maps are
@@ -50,6 +65,8 @@ void attachTargets(MapLight& p, const MapArray& g) {
     } else {
         attachLayer(p.fbo, g, colour, p.layer, "shadow map framebuffer");
     }
+    p.layerView = gl::TextureView(gl::NoCreate);  // of the layer it held
+    viewLayer(p, g);
     p.attachedGeneration = g.generation;
     p.attachedLayer = p.layer;
 }

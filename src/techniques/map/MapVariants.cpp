@@ -78,6 +78,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.atlas = o.atlas;
     v.presetBias = !o.atlas && usesPresetBias(o, v.cube);
     v.momentsFromDepth = !v.cube && !o.atlas && map::momentsFromDepth(o);
+    v.layerView = map::layerView(o, v.cube, v.cascades);
     return v;
 }
 
@@ -101,6 +102,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_ATLAS", atlas)
         .set("MAP_PRESET_BIAS", presetBias)
         .set("MAP_MOMENTS_FROM_DEPTH", momentsFromDepth)
+        .set("MAP_LAYER_VIEW", layerView)
         .str();
 }
 

@@ -52,6 +52,8 @@ struct LightPassVariant {
     /// default maps carry neither the code nor the varying (llvmpipe: 0.2-0.3
     /// ms of an 800x600 frame's lookups).
     bool presetBias = false;
+    /// The map through a 2D view of its layer (MapSettings: layerView)
+    bool layerView = false;
     /// A moment map whose moments the light pass takes from the depth
     /// (MapArrays.h: momentsFromDepth), not from a texture of moments
     bool momentsFromDepth = false;
