@@ -46,6 +46,9 @@ float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec4(uv
 // sampler without comparison (rgba8: unpacked).
 #if MAP_RGBA8
 float mapDepthAt(float layer, vec2 uv) { return unpackDepth(texture(mapPacked, vec3(uv, layer))); }
+#elif MAP_LAYER_VIEW
+layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform sampler2D mapRaw;  // the layer's view
+float mapDepthAt(float layer, vec2 uv) { return texture(mapRaw, uv).r; }
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform sampler2DArray mapRaw;
 float mapDepthAt(float layer, vec2 uv) { return texture(mapRaw, vec3(uv, layer)).r; }

@@ -40,14 +40,22 @@ float cubeStored(vec3 direction, float ref) {
 // A software rasteriser: the nearest depth at level 0, compared here
 // (LightPassVariant::plainFetch; the comparison sampler's LEQUAL, or
 // GEQUAL for a reversed window depth).
+// The light's six layers as a cube of their own (MAP_LAYER_VIEW:
+// MapSettings layerView) or the array with the light's layer.
+#if MAP_LAYER_VIEW
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCube mapCubePlain;
+float cubeStoredAt(vec3 direction) { return textureLod(mapCubePlain, direction, 0.0).r; }
+#else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePlain;
+float cubeStoredAt(vec3 direction) { return textureLod(mapCubePlain, vec4(direction, map.layer), 0.0).r; }
+#endif
 #if MAP_CUBE_WINDOW
 // cubeStored(direction, ref) >= stored without its root and division, per
 // tap: with k = n f / ((f - n) (ref - offset) far) (the same for a
 // kernel's taps of one reference) and m the direction's largest
 // component, k |direction| / m - n / (f - n) >= stored, squared.
 float cubeTap(vec3 direction, float ref) {
-    float stored = textureLod(mapCubePlain, vec4(direction, map.layer), 0.0).r;
+    float stored = cubeStoredAt(direction);
     float n = map.nearPlane, f = map.farPlane;
     float k = n * f / ((f - n) * (ref - map.cubeOffset) * map.cubeFar);
     vec3 a = abs(direction);
@@ -55,16 +63,24 @@ float cubeTap(vec3 direction, float ref) {
     return k <= 0.0 || k * k * dot(direction, direction) >= rhs * rhs ? 1.0 : 0.0;
 }
 #else
-float cubeTap(vec3 direction, float ref) { return ref <= textureLod(mapCubePlain, vec4(direction, map.layer), 0.0).r ? 1.0 : 0.0; }
+float cubeTap(vec3 direction, float ref) { return ref <= cubeStoredAt(direction) ? 1.0 : 0.0; }
 #endif
+#elif MAP_LAYER_VIEW
+layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeShadow mapCube;
+float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, SL_CUBE_REF(direction, ref))); }
 #else
 layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
 float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.layer), SL_CUBE_REF(direction, ref)); }
 #endif
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
 // The stored depths for PCSS's blocker search (distance / far): a sampler without comparison.
+#if MAP_LAYER_VIEW
+layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCube mapCubeRaw;
+float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, direction).r; }
+#else
 layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
 float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.layer)).r; }
+#endif
 #endif
 #endif
 

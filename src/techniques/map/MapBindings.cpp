@@ -39,14 +39,14 @@ void bindTransmittance(const MapArray& g, const MapSamplers& samplers, bool tran
 // depth array on the next unit through a sampler without comparison.
 void bindRawDepth(const MapLight& p, const MapArray& g, const MapSamplers& samplers) {
     if (!filterInfo(p.options.filter).rawDepth || isPacked(g.format())) return;
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, g.depth.id());
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, p.layerView ? p.layerView.id() : g.depth.id());
     glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
 }
 
 // Filters read across face edges (RenderState::seamlessCubeMaps; the test with a plane over the seams).
 void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool plain) {
     const bool packed = isPacked(g.format());
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : g.depth.id());
+    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : p.layerView ? p.layerView.id() : g.depth.id());
     const bool linear = filterInfo(p.options.filter).linearCube;
     // A reversed window depth (cubeWindowDepth): lit where the receiver's is the greater.
     const bool reversed = cubeWindowDepth(p.options);

@@ -39,9 +39,9 @@ struct MapLight {
     gl::Framebuffer fbo{gl::NoCreate};  ///< the layer attached (at prepare, when the array or layer changes); cube: the whole array, layered
     std::uint64_t attachedGeneration = 0;
     int attachedLayer = -1;
-    /// One 2D map of depth (MapSettings: layerView): its layer of the depth
-    /// array as a 2D texture of its own (a view), which the light pass samples
-    /// (made with the framebuffers)
+    /// A 2D map of depth or a cube (MapSettings: layerView): its layer (a
+    /// cube's six) of the depth array as a texture of its own (a view, 2D or
+    /// cube), which the light pass samples (made with the framebuffers)
     gl::TextureView layerView{gl::NoCreate};
     // Point lights.
     bool cube = false;

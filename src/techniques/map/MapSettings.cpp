@@ -53,7 +53,9 @@ bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer) {
 }
 
 bool layerView(const MapOptions& o, bool cube, int cascades) {
-    return !cube && cascades == 1 && !o.atlas && o.representation == MapRepresentation::Depth && !isPacked(o.format) && !o.mipmaps;
+    if (o.atlas || isPacked(o.format) || o.mipmaps) return false;
+    if (cube) return o.filter != MapFilter::None && o.filter != MapFilter::Hardware;
+    return cascades == 1 && o.representation == MapRepresentation::Depth;
 }
 
 int kernelRounds(const MapOptions& o, bool cube) {

@@ -24,14 +24,17 @@ void attachLayer(gl::Framebuffer& fbo, const MapArray& g, GLuint colour, int lay
     gl::checkFramebuffer(fbo, what);
 }
 
-// The light pass's 2D view of the light's layer when it samples one
-// (MapSettings: layerView), made unless it is there; none otherwise.
+// The light pass's view of the light's layers when it samples one
+// (MapSettings: layerView: a 2D map's layer, a cube's six), made unless it
+// is there; none otherwise.
 void viewLayer(MapLight& p, const MapArray& g) {
     if (!layerView(p.options, p.cube, static_cast<int>(std::max<std::size_t>(p.cascades.size(), 1)))) {
         p.layerView = gl::TextureView(gl::NoCreate);
         return;
     }
-    if (!p.layerView) p.layerView = gl::TextureView(GL_TEXTURE_2D, g.depth.id(), depthFormat(g.key), 0u, 1u, static_cast<GLuint>(p.layer), 1u);
+    if (p.layerView) return;
+    const GLuint first = static_cast<GLuint>(p.layer * g.layersPerLight()), count = static_cast<GLuint>(g.layersPerLight());
+    p.layerView = gl::TextureView(p.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, g.depth.id(), depthFormat(g.key), 0u, 1u, first, count);
 }
 
 } // namespace
