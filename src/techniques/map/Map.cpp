@@ -13,6 +13,7 @@
 #include "techniques/map/MapAtlas.h"
 #include "techniques/map/MapCache.h"
 #include "techniques/map/MapCameras.h"
+#include "techniques/map/MapCasterDraw.h"
 #include "techniques/map/MapDebugImages.h"
 #include "techniques/map/MapResources.h"
 #include "techniques/map/MapSdsm.h"
@@ -98,6 +99,7 @@ public:
         // Translucent casters (alphaMode blend) colour the light: each
         // array gets its transmittance layers (made once, kept with the array).
         res_.translucent = hasTranslucentCasters(frame);
+        res_.holes = hasCastersWithHoles(frame);
         res_.arrays.allocate(layersWanted, firstLightOf, host.glInfo(), lights.size(), res_.translucent,
                              atlas ? MapAtlas::bytesFor(frame.scene.shadowAtlas) : 0.0);
         if (res_.translucent) res_.arrays.addTransmittance();

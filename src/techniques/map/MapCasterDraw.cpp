@@ -14,10 +14,13 @@ CasterSurface casterSurface(const FrameInfo& frame, std::size_t i) {
     return CasterSurface::Opaque;
 }
 
-void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, const CasterProgram& program, const CasterFilter& keep) {
-    bool holes = false;
+bool hasCastersWithHoles(const FrameInfo& frame) {
     for (std::size_t i = 0; i < frame.items.size(); ++i)
-        holes = holes || (frame.items[i].castsShadows && casterSurface(frame, i) == CasterSurface::Holes);
+        if (frame.items[i].castsShadows && casterSurface(frame, i) == CasterSurface::Holes) return true;
+    return false;
+}
+
+void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep) {
     for (const bool withHoles : {false, true}) {
         if (withHoles && !holes) break;
         const gl::Program& p = program(withHoles);

@@ -25,6 +25,8 @@ enum class CasterSurface {
 
 /// Item i's surface (its material's alphaMode; no material: opaque).
 CasterSurface casterSurface(const FrameInfo& frame, std::size_t i);
+/// Whether some caster of the frame has holes (found once a frame: MapResources::holes).
+bool hasCastersWithHoles(const FrameInfo& frame);
 
 /// The program that draws a caster of surface `holes` (true: with the test
 /// that cuts holes).
@@ -34,7 +36,8 @@ using CasterProgram = std::function<const gl::Program&(bool holes)>;
 using CasterFilter = std::function<bool(std::size_t i, const gl::Program& program)>;
 
 /// The casters `keep` picks: first the opaque ones through program(false),
-/// then, if the frame has any, those with holes through program(true).
-void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, const CasterProgram& program, const CasterFilter& keep);
+/// then, when `holes` (the frame has such casters), those with holes
+/// through program(true).
+void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep);
 
 } // namespace shadowlab::map

@@ -77,7 +77,7 @@ gl::RenderState windowDepthState(gl::RenderState state, const MapOptions& o) {
 }
 
 // The casters into the cube: once through the geometry shader, or once per face they touch.
-void drawCasters(TechniqueHost& host, const FrameInfo& frame, const MapArray& g, const MapLight& p, const FaceUse& use) {
+void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const MapArray& g, const MapLight& p, const FaceUse& use) {
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
     const auto defines = [&](bool holes) {
         return CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options), holes}.defines();
@@ -91,7 +91,7 @@ void drawCasters(TechniqueHost& host, const FrameInfo& frame, const MapArray& g,
                                  defines(holes)});
         };
         glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
-        drawDepthCasters(host, frame, program, [&](std::size_t i, const gl::Program& drawing) {
+        drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program& drawing) {
             if (!p.faceMask(i)) return false;
             glProgramUniform1ui(drawing.id(), 0, p.faceMask(i));
             return true;
@@ -104,11 +104,9 @@ void drawCasters(TechniqueHost& host, const FrameInfo& frame, const MapArray& g,
     for (int f = 0; f < 6; ++f) {
         if (!use.used[static_cast<std::size_t>(f)]) continue;
         glBindFramebuffer(GL_FRAMEBUFFER, p.faceFbos[static_cast<std::size_t>(f)].id());
-        drawDepthCasters(host, frame, program, [&](std::size_t i, const gl::Program& drawing) {
-            if ((p.faceMask(i) & (1u << f)) == 0) return false;
-            glProgramUniform1i(drawing.id(), 1, f);
-            return true;
-        });
+        glProgramUniform1i(program(false).id(), 1, f);
+        if (holes) glProgramUniform1i(program(true).id(), 1, f);
+        drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; });
     }
 }
 
@@ -125,7 +123,7 @@ void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView
     state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
     if (cubeWindowDepth(p.options)) state = windowDepthState(state, p.options);
     host.apply(state);
-    drawCasters(host, frame, g, p, use);
+    drawCasters(host, frame, res.holes, g, p, use);
     static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
     host.count("triangles", static_cast<double>(use.drawn));
     host.count("mapBytes", 6.0 * texelBytes(g.key) * static_cast<double>(g.size()) * static_cast<double>(g.size()));

@@ -68,7 +68,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         res.block.setCamera(p, c);
         // Casters that cannot reach the light's frustum are not drawn.
         std::size_t drawnHere = 0;
-        drawDepthCasters(host, frame, program, [&](std::size_t i, const gl::Program&) {
+        drawDepthCasters(host, frame, res.holes, program, [&](std::size_t i, const gl::Program&) {
             const bool inside = castsInto(camera, frame, i, g.hasMoments());
             if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
             return inside;

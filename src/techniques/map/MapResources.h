@@ -14,6 +14,7 @@ struct MapResources {
     MapSamplers samplers;
     MapFloors floors;
     bool translucent = false;  ///< the frame has translucent casters: the arrays have transmittance layers
+    bool holes = false;        ///< the frame has casters with holes (alphaMode mask): the depth passes draw them through the alpha test
     bool software = false;     ///< a software rasteriser (MapSettings: bilinearGrid)
 };
 

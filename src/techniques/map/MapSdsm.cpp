@@ -1,6 +1,8 @@
 // Technique "map": fit "sdsm", the depth pre-pass and its reduction (MapSdsm.h).
 #include "techniques/map/MapSdsm.h"
 
+#include "techniques/map/MapCasterDraw.h"
+
 #include "core/LightCamera.h"
 #include "shadowlab_shared.h"
 
@@ -21,10 +23,7 @@ void SampleBounds::prepass(TechniqueHost& host, const FrameInfo& frame) {
     host.apply(depthOnly);
     // Alpha-tested surfaces through the fragment shader that cuts their
     // holes; the rest depth only, with no fragment shader.
-    const auto masked = [&](std::size_t i) {
-        const int m = frame.items[i].material;
-        return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Mask;
-    };
+    const auto masked = [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Holes; };
     // Only what may be in view; large meshes as their boxes (kBoxedTriangles).
     const auto seen = [&](std::size_t i) { return mayIntersect(frame.clipFromWorld, frame.itemBounds[i]); };
     const auto large = [&](std::size_t i) {

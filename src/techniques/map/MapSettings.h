@@ -70,7 +70,7 @@ bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer);
 /// texture's taps cost less than an array layer's (learnopengl-shadow-
 /// mapping's lookup 2.40 against 2.15-2.22 ms), and a cube's nearest and
 /// raw taps less than a cube array's (penumbra-step's pcss 16.1-16.4
-/// against 15.0-15.5 ms), while its one bilinear compare (none, hardware)
+/// against 15.0-15.9 ms), while its one bilinear compare (none, hardware)
 /// came out no faster (four-spheres-point 3.95-4.20 against 4.15-4.43 ms).
 bool layerView(const MapOptions& o, bool cube, int cascades);
 

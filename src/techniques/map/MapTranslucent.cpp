@@ -2,6 +2,7 @@
 #include "techniques/map/MapTranslucent.h"
 
 #include "techniques/map/MapCameras.h"
+#include "techniques/map/MapCasterDraw.h"
 #include "techniques/map/MapSettings.h"
 #include "techniques/map/MapVariants.h"
 
@@ -44,10 +45,7 @@ gl::Framebuffer bindTranslucentTarget(TechniqueHost& host, const MapArray& g, in
 
 } // namespace
 
-bool translucentCaster(const FrameInfo& frame, std::size_t i) {
-    const int m = frame.items[i].material;
-    return m >= 0 && frame.scene.materials[static_cast<std::size_t>(m)].alphaMode == AlphaMode::Blend;
-}
+bool translucentCaster(const FrameInfo& frame, std::size_t i) { return casterSurface(frame, i) == CasterSurface::Translucent; }
 
 bool hasTranslucentCasters(const FrameInfo& frame) {
     bool translucent = false;
