@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
@@ -109,10 +110,8 @@ void Renderer::Impl::drawShaded(ShaderVariant variant, const std::vector<std::si
     const gl::Program* byKind[4] = {nullptr, nullptr, nullptr, nullptr};
     const gl::Program* current = nullptr;
     static const Material fallback;
-    const std::size_t count = only ? only->size() : items.size();
-    for (std::size_t k = 0; k < count; ++k) {
-        const std::size_t i = only ? (*only)[k] : k;
-        if (!only && translucent(i)) continue;  // drawn last, blended (blendedPass)
+    const std::vector<std::size_t>& order = only ? *only : opaqueOrder;  // translucent items: drawn last, blended (blendedPass)
+    for (const std::size_t i : order) {
         const DrawItem& item = items[i];
         const Material& m = item.material >= 0 ? scene->materials[static_cast<std::size_t>(item.material)] : fallback;
         const bool textured = m.baseColorTexture >= 0, masked = m.alphaMode == AlphaMode::Mask;
@@ -152,6 +151,18 @@ void Renderer::Impl::beginFrame(const Scene& s, glm::ivec2 size, double timeSeco
     info->viewFromWorld = s.camera.viewFromWorld();
     info->clipFromView = infiniteFar ? s.camera.clipFromViewInfiniteFar(aspect) : s.camera.clipFromView(aspect);
     info->clipFromWorld = info->clipFromView * info->viewFromWorld;
+    // Nearest first: a fragment behind one already drawn fails the depth
+    // test before it is shaded (a rasteriser tests depth early where the
+    // shader neither discards nor writes depth). Ties keep the scene's order.
+    opaqueOrder.clear();
+    std::vector<float> viewDepth(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (translucent(i)) continue;
+        opaqueOrder.push_back(i);
+        const float z = itemBounds[i].empty() ? 0.0f : -(info->viewFromWorld * glm::vec4(itemBounds[i].centre(), 1.0f)).z;
+        viewDepth[i] = std::isfinite(z) ? z : 0.0f;
+    }
+    std::stable_sort(opaqueOrder.begin(), opaqueOrder.end(), [&](std::size_t a, std::size_t b) { return viewDepth[a] < viewDepth[b]; });
     info->timeSeconds = timeSeconds;
     info->frameIndex = frames;
     shared::FrameUniforms u{};

@@ -52,6 +52,10 @@ struct Renderer::Impl final : TechniqueHost {
     std::vector<Bounds> itemBounds;
     std::vector<std::optional<glm::vec4>> itemPlanes;
     std::vector<std::vector<glm::vec4>> itemConvex;
+    /// The opaque items nearest first (their boxes' centres along the
+    /// view): drawShaded's order, so that the depth test rejects hidden
+    /// fragments before they are shaded.
+    std::vector<std::size_t> opaqueOrder;
     std::optional<FrameInfo> info;
     std::optional<gl::PassClock> clock;
     LitMode litMode = LitMode::Shade;
