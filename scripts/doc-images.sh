@@ -65,7 +65,7 @@ view() {
 }
 
 # README.md
-render  default                 --width 960 --height 540   # README: the default scene at its defaults (a light with no technique gets `map`, 1024^2)
+render  default                 --width 960 --height 540   # README: the default scene at its defaults (a light with no technique gets `map`, 768^2)
 # (the unshadowed baseline instead, as README said before the default changed: add --set "$L.shadow.technique=none")
 view    viewer                  scenes/room-point.json --width 1280 --height 720 --frames 60   # README "The viewer": room-point's cube map at its defaults; times and graph vary per run
 

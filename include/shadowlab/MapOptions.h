@@ -76,7 +76,7 @@ enum class MapCubePasses {
 
 struct MapOptions {
     static constexpr const char* kTechnique = "map";
-    int size = 1024;                     ///< texels per side of the map (a cube: of each face), 16..16384; default 1024
+    int size = 768;                      ///< texels per side of the map (a cube: of each face), 16..16384; default 768
     MapFormat format = MapFormat::Depth32F;
     MapFit fit = MapFit::Tight;
     MapWarp warp = MapWarp::None;

@@ -7,6 +7,7 @@
 #include "Comparisons.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
 #include <shadowlab/SceneFile.h>
 
 #include <filesystem>
@@ -78,6 +79,7 @@ TEST_F(DiscGLTest, AnEightBitMapSufficesForCastersNearerTheLight) {
             if (name == "shadow[0].mapBytes") bytes[k] = value;
         ++k;
     }
-    EXPECT_EQ(bytes[0], 4.0 * 1024 * 1024);  // the default size
-    EXPECT_EQ(bytes[1], 1.0 * 1024 * 1024);
+    const double texels = static_cast<double>(MapOptions{}.size) * MapOptions{}.size;  // the default size
+    EXPECT_EQ(bytes[0], 4.0 * texels);
+    EXPECT_EQ(bytes[1], 1.0 * texels);
 }

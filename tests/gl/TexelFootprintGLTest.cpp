@@ -7,6 +7,7 @@
 #include "GLTestContext.h"
 
 #include <shadowlab/DebugImage.h>
+#include <shadowlab/MapOptions.h>
 #include <shadowlab/Renderer.h>
 #include <shadowlab/SceneFile.h>
 
@@ -60,13 +61,14 @@ TEST_F(TexelFootprintGLTest, AnOrthographicMapOverAWallHasTheFootprintOfItsProje
 // A point light 6 m in front of the wall: the cube's -z face sees the
 // whole wall in view (|x|, |y| < 6), and on a plane square to a face's
 // axis the face's coordinates are the plane's over the distance, so one
-// texel is 6 x 2/1024 m everywhere: 0.849 pixels a texel.
+// texel is 6 x 2/size m everywhere at the default size: 0.849 pixels a
+// texel at 1024^2, 1.132 at 768^2.
 TEST_F(TexelFootprintGLTest, ACubeFaceSquareToAWallHasTheFootprintOfItsTexelThere) {
     const Comparison c = compareScene(sceneOf(wallScene(R"({ "type": "point", "position": [0, 0, 6], "shadow": { "technique": "map" } })")),
                                       kWidth, kHeight);
     const LightComparison& l = c.lights[0];
     ASSERT_GT(l.receiverPixels, static_cast<std::size_t>(kWidth * kHeight * 9 / 10));
-    const double expected = 6.0 * (2.0 / 1024.0) / kPixel;
+    const double expected = 6.0 * (2.0 / static_cast<double>(MapOptions{}.size)) / kPixel;
     EXPECT_NEAR(l.texelFootprintP50, expected, 0.01 * expected);
     EXPECT_NEAR(l.texelFootprintP95, expected, 0.01 * expected);
     EXPECT_NEAR(l.texelFootprintMax, expected, 0.01 * expected);

@@ -71,7 +71,7 @@ def test_techniques_table():
     tables = shadowlab.techniques()
     assert list(tables)[:2] == ["none", "map"]
     size = tables["map"]["options"]["size"]
-    assert size["default"] == "1024" and size["unit"] == "texels" and size["range"] == "16..16384"
+    assert size["default"] == "768" and size["unit"] == "texels" and size["range"] == "16..16384"
     assert '"hardware"' in tables["map"]["options"]["filter"]["range"]
 
 
