@@ -14,7 +14,9 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     // Every disc is tested and the hits are or-ed, with no early return or
     // continue: a rasteriser that runs both sides of a branch (llvmpipe)
     // pays for their masks in every round of the loop.
-    int count = int(disc.params.x);
+    // DISC_COUNT (the variant): the light's discs as a constant, so that
+    // the loop unrolls and each disc's uniforms are read at a constant index.
+    const int count = DISC_COUNT;
     bool hit = false;
     for (int k = 0; k < count; ++k) {
         vec3 c = disc.centre[k].xyz, a = disc.axisA[k].xyz, b = disc.axisB[k].xyz;

@@ -71,6 +71,7 @@ public:
         }
         const auto radiusOf = [&](std::size_t i) { return radii_[static_cast<std::size_t>(frame.items[i].mesh)].radius; };
         discs_.clear();
+        counts_.clear();
         for (int index : lights) {
             const DiscOptions& o = frame.scene.lights[static_cast<std::size_t>(index)].shadow.get<DiscOptions>();
             const std::string at = "lights[" + std::to_string(index) + "].shadow.disc.casters";
@@ -85,7 +86,13 @@ public:
                 host.note("lights[" + std::to_string(index) + "].shadow.disc: no casting node is a disc shape, so this light casts no shadow");
             if (list.size() > SL_DISC_MAX)
                 throw Error(at + ": " + std::to_string(list.size()) + " discs, more than the " + std::to_string(SL_DISC_MAX) + " one light tests");
+            counts_[&frame.scene.lights[static_cast<std::size_t>(index)]] = list.size();
         }
+    }
+
+    std::string lightPassDefines(const Light& light) const override {
+        const auto found = counts_.find(&light);
+        return "#define DISC_COUNT " + std::to_string(found == counts_.end() ? 0 : found->second) + "\n";
     }
 
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
@@ -96,11 +103,15 @@ public:
             // A point light in the disc's plane (within the receivers' offset
             // of it) sees the disc edge-on: a disc of no thickness shadows nothing.
             const glm::vec3 normal = glm::cross(d.a, d.b);
-            if (view.light.type != LightType::Directional && std::abs(glm::dot(normal, view.light.position - d.centre)) <= offset_ * glm::length(normal))
-                continue;
-            u.centre[count] = glm::vec4(d.centre, 1.0f);
-            u.axisA[count] = glm::vec4(d.a, 0.0f);
-            u.axisB[count] = glm::vec4(d.b, 0.0f);
+            // It stays in the list as a disc of no extent (a zero normal: no
+            // ray crosses its plane), so that the count is the variant's.
+            const bool edgeOn = view.light.type != LightType::Directional &&
+                                std::abs(glm::dot(normal, view.light.position - d.centre)) <= offset_ * glm::length(normal);
+            if (!edgeOn) {
+                u.centre[count] = glm::vec4(d.centre, 1.0f);
+                u.axisA[count] = glm::vec4(d.a, 0.0f);
+                u.axisB[count] = glm::vec4(d.b, 0.0f);
+            }
             ++count;
         }
         u.light = view.light.type == LightType::Directional ? glm::vec4(-glm::normalize(view.light.direction), 0.0f) : glm::vec4(view.light.position, 1.0f);
@@ -116,6 +127,7 @@ private:
     };
     std::vector<Known> radii_;  ///< per mesh
     std::map<int, std::vector<Disc>> discs_;
+    std::map<const Light*, std::size_t> counts_;  ///< this frame's discs per light (the variant's DISC_COUNT)
     float offset_ = 1e-5f;
     TechniqueBlock<shared::DiscUniforms> block_;
 };
