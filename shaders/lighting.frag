@@ -56,9 +56,9 @@ vec3 lightVisibility(vec3 worldPosition, vec3 worldNormal) {
 // A light's diffuse and specular at this fragment, before visibility, for
 // a light of `type` (SL_LIGHT_*) at `position` travelling along
 // `direction`, with `params` as LightUniforms.params and `radiance` its
-// colour; `reached` false outside the light's reach or facing away.
-vec3 lightTermOf(int type, vec3 position, vec3 direction, vec4 params, vec3 radiance, vec3 N, vec3 V, vec3 base, out bool reached) {
-    vec3 L;
+// colour; `reached` false outside the light's reach or facing away; L the
+// unit direction towards the light (the light list's shadow lookups take it).
+vec3 lightTermOf(int type, vec3 position, vec3 direction, vec4 params, vec3 radiance, vec3 N, vec3 V, vec3 base, out bool reached, out vec3 L) {
     float attenuation = 1.0;
     if (type == SL_LIGHT_DIRECTIONAL) {
         L = -direction;
@@ -93,7 +93,8 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
     bool onSlide = c.w > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
     radiance *= onSlide ? texture(projectorImage, vec2(uv.x, 1.0 - uv.y)).rgb : vec3(0.0);
 #endif
-    return lightTermOf(LIGHT_TYPE, light.position.xyz, light.direction.xyz, light.params, radiance, N, V, base, reached);
+    vec3 L;
+    return lightTermOf(LIGHT_TYPE, light.position.xyz, light.direction.xyz, light.params, radiance, N, V, base, reached, L);
 }
 #endif
 
@@ -125,11 +126,11 @@ vec3 listedLightsTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
     for (uint k = 0u; k < count; ++k) {
         ListedLight l = listed[cells[first + k]];
         bool one;
-        vec3 term = lightTermOf(int(l.params.w), l.position.xyz, l.direction.xyz, l.params, l.radiance.rgb, N, V, base, one);
+        vec3 L;
+        vec3 term = lightTermOf(int(l.params.w), l.position.xyz, l.direction.xyz, l.params, l.radiance.rgb, N, V, base, one, L);
 #if LIGHT_LIST_SHADOWS
-        if (one && l.shadow.y > 0.0 && draw.baseColor.w > 0.5) {  // receivesShadows
-            float NdotL = clamp(dot(N, normalize(l.position.xyz - vWorldPosition)), 0.0, 1.0);
-            term *= atlasVisibility(l.shadow, l.position.xyz, vWorldPosition, N, NdotL);
+        if (one && l.shadow.y > 0.0 && draw.baseColor.w > 0.5) {  // receivesShadows (the atlas: spot and point lights)
+            term *= atlasVisibility(l.shadow, l.position.xyz, vWorldPosition, N, L, clamp(dot(N, L), 0.0, 1.0));
         }
 #endif
         if (one) sum += term;

@@ -22,7 +22,7 @@ uint atlasFace(vec3 d) {
 }
 
 // Visibility (1 lit, 0 shadowed) of point p with normal n for a light at
-// `lightPosition` whose N.L there is NdotL, with `shadow` as
+// `lightPosition` in the unit direction L from p, whose N.L there is NdotL, with `shadow` as
 // ListedLight.shadow. The point is moved along its normal by the normal
 // offset (shadow.z texels of the tile, their world size where p is, times
 // 1 - N.L) and towards the light by SL_ATLAS_CONSTANT_TEXELS texels: the
@@ -38,14 +38,13 @@ uint atlasFace(vec3 d) {
 // step runs and the answer is dropped where the point is lit, with no early
 // return: a rasteriser that runs both sides of a branch (llvmpipe) pays for
 // a return's masks, here once per listed light and pixel.
-float atlasVisibility(vec4 shadow, vec3 lightPosition, vec3 p, vec3 n, float NdotL) {
+float atlasVisibility(vec4 shadow, vec3 lightPosition, vec3 p, vec3 n, vec3 L, float NdotL) {
     uint count = uint(shadow.y);
     if (count == 0u) return 1.0;  // no tile this frame: none to read
     uint t = uint(shadow.x);
     if (count == 6u) t += atlasFace(p - lightPosition);
     mat4 m = atlasTiles[t].atlasFromWorld;
     float texel = atlasTiles[t].params.x * max((m * vec4(p, 1.0)).w, 0.0);
-    vec3 L = normalize(lightPosition - p);
     vec3 q = p + n * (shadow.z * texel * (1.0 - NdotL)) + L * (SL_ATLAS_CONSTANT_TEXELS * texel);
     vec4 c = m * vec4(q, 1.0);
     // Lit: no caster in this tile, or behind a spot's camera (outside its cone).

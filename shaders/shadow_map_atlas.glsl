@@ -5,7 +5,7 @@
 #include "shadow_atlas.glsl"
 
 float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
-    float NdotL = clamp(dot(worldNormal, normalize(map.lightPosition - worldPosition)), 0.0, 1.0);
+    vec3 L = normalize(map.lightPosition - worldPosition);
     vec4 shadow = vec4(map.layer, map.atlasTiles, map.normalBiasTexels, map.atlasBilinear);
-    return atlasVisibility(shadow, map.lightPosition, worldPosition, worldNormal, NdotL);
+    return atlasVisibility(shadow, map.lightPosition, worldPosition, worldNormal, L, clamp(dot(worldNormal, L), 0.0, 1.0));
 }
