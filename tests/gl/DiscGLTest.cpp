@@ -35,6 +35,23 @@ TEST_F(DiscGLTest, DiscShadowsAreExactUnderEveryKindOfLight) {
     }
 }
 
+// Two disc lights in one frame, each its own variant (DISC_COUNT: the
+// sun every disc, the lamp one): the sun stays exact (a count too small
+// would drop discs from its test), and the lamp's classification is what
+// it is alone in the scene (the same pixels misclassified, both ways).
+TEST_F(DiscGLTest, EachLightTestsItsOwnDiscs) {
+    const std::string sun = R"({"name": "sun", "type": "directional", "direction": [0.3, -1.0, 0.2], "shadow": {"technique": "disc"}})";
+    const std::string lamp = R"({"name": "lamp", "type": "point", "position": [0.5, 6, 0.5], "intensity": 0.5,
+                                 "shadow": {"technique": "disc", "disc": {"casters": "ufo 1"}}})";
+    const Comparison both = compareScene(loadSceneFile(kDiscs, {"lights=[" + sun + ", " + lamp + "]"}), 480, 270);
+    const Comparison alone = compareScene(loadSceneFile(kDiscs, {"lights=[" + lamp + "]"}), 480, 270);
+    ASSERT_EQ(both.lights.size(), 2u);
+    EXPECT_EQ(awayFromEdges(both.lights[0]), 0.0);
+    EXPECT_GT(both.lights[1].falseLitAwayFromEdges, 0.001);  // the other discs' shadows: only the reference has them
+    EXPECT_EQ(both.lights[1].falseLit, alone.lights[0].falseLit);
+    EXPECT_EQ(both.lights[1].falseShadow, alone.lights[0].falseShadow);
+}
+
 // Only the named discs cast; a named node that is no disc, or no node at
 // all, is an error naming the option.
 TEST_F(DiscGLTest, CastersNamesTheDiscs) {
