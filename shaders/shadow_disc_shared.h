@@ -23,7 +23,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform DiscUniforms {
     SL_DISC_VEC4 axisA[SL_DISC_MAX];
     SL_DISC_VEC4 axisB[SL_DISC_MAX];
     SL_DISC_VEC4 light;   // xyz the light's position (w = 1) or the direction towards it (w = 0)
-    SL_DISC_VEC4 params;  // x discs, y the shortest ray length that counts (scene units), zw unused
+    SL_DISC_VEC4 params;  // y the shortest ray length that counts (scene units); x, z, w unused (the disc count is the variant's DISC_COUNT)
 #ifdef __cplusplus
 };
 } // namespace shadowlab::shared

@@ -91,31 +91,30 @@ public:
     }
 
     std::string lightPassDefines(const Light& light) const override {
+        // A light this frame did not prepare: every slot of the block (the
+        // ones past its discs are zero, which no ray crosses), slower but right.
         const auto found = counts_.find(&light);
-        return "#define DISC_COUNT " + std::to_string(found == counts_.end() ? 0 : found->second) + "\n";
+        return "#define DISC_COUNT " + std::to_string(found == counts_.end() ? std::size_t{SL_DISC_MAX} : found->second) + "\n";
     }
 
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {
         const std::vector<Disc>& list = discs_[view.index];
         shared::DiscUniforms u{};
-        std::size_t count = 0;
-        for (const Disc& d : list) {
+        for (std::size_t k = 0; k < list.size(); ++k) {
+            const Disc& d = list[k];
             // A point light in the disc's plane (within the receivers' offset
-            // of it) sees the disc edge-on: a disc of no thickness shadows nothing.
+            // of it) sees the disc edge-on: a disc of no thickness shadows
+            // nothing. Its slot stays zero, a disc of no extent (no ray
+            // crosses a zero normal's plane), so that the count is the variant's.
             const glm::vec3 normal = glm::cross(d.a, d.b);
-            // It stays in the list as a disc of no extent (a zero normal: no
-            // ray crosses its plane), so that the count is the variant's.
-            const bool edgeOn = view.light.type != LightType::Directional &&
-                                std::abs(glm::dot(normal, view.light.position - d.centre)) <= offset_ * glm::length(normal);
-            if (!edgeOn) {
-                u.centre[count] = glm::vec4(d.centre, 1.0f);
-                u.axisA[count] = glm::vec4(d.a, 0.0f);
-                u.axisB[count] = glm::vec4(d.b, 0.0f);
-            }
-            ++count;
+            if (view.light.type != LightType::Directional && std::abs(glm::dot(normal, view.light.position - d.centre)) <= offset_ * glm::length(normal))
+                continue;
+            u.centre[k] = glm::vec4(d.centre, 1.0f);
+            u.axisA[k] = glm::vec4(d.a, 0.0f);
+            u.axisB[k] = glm::vec4(d.b, 0.0f);
         }
         u.light = view.light.type == LightType::Directional ? glm::vec4(-glm::normalize(view.light.direction), 0.0f) : glm::vec4(view.light.position, 1.0f);
-        u.params = glm::vec4(static_cast<float>(count), offset_, 0.0f, 0.0f);
+        u.params = glm::vec4(0.0f, offset_, 0.0f, 0.0f);
         block_.write(u);
     }
 
