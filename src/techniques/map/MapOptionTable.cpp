@@ -29,7 +29,7 @@ std::string filterDoc() {
 const OptionTable& mapOptionTable() {
     static const OptionTable table =
         OptionTableFor<MapOptions>("map")
-            .integer(&MapOptions::size, "size", 16, 16384, "texels", "side of the square shadow map (a cube map: of each face); 768 by default, which keeps every bundled scene but the 400 m field and the 300 m street (which ship cascades) within 0.05 % misclassified at 800x600 and 1280x720; a 1920x1080 view wants 1024 (docs/techniques.md)")
+            .integer(&MapOptions::size, "size", 16, 16384, "texels", "side of the square shadow map (a cube map: of each face); 768 by default, which keeps every bundled scene but the 400 m field and the 300 m street (which ship cascades) within 0.05 % misclassified at 800x600; larger views want more (glass-panel at 1920x1080 wants 1024; docs/techniques.md)")
             .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
