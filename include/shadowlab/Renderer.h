@@ -68,6 +68,15 @@ struct RenderOptions {
     /// differ from a pass each only by rounding (one sRGB encoding instead
     /// of one per light). Default on.
     bool groupLights = true;
+    /// The base pass runs its light's shadow test only inside the screen
+    /// rectangle that the light's technique says its shadows can fall in
+    /// this frame (technique "map" with one 2D map: around the screen
+    /// image of each caster's box swept away from the light, widened by
+    /// the filter's reach); it shades the pixels outside as lit, without
+    /// the test, which would find them lit: the same image for less
+    /// (FrameStats counts "base.shadowedShare", the rectangle's share of
+    /// the frame). Off: the test at every pixel. Default on.
+    bool shadowRegions = true;
 };
 
 struct PassTiming {

@@ -81,6 +81,8 @@ void addPassNumbers(json& record, const TimedFrames& timed, std::size_t l) {
             if (name.rfind(prefix, 0) == 0 && name != skip) out[name.substr(prefix.size())] = median(values);
         return out;
     };
+    // The share of the frame the base pass ran this light's test in (RenderOptions::shadowRegions).
+    if (lit == "base" && counters.count("base.shadowedShare")) record["shadowedShare"] = median(counters.at("base.shadowedShare"));
     if (json r = reportedUnder(pass + ".", pass + ".triangles"); !r.empty()) record["shadowCounters"] = std::move(r);
     if (json r = reportedUnder("light[" + std::to_string(l) + "].", ""); !r.empty()) record["lightCounters"] = std::move(r);
 }

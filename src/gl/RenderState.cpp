@@ -39,6 +39,8 @@ void apply(const RenderState& s) {
     enable(GL_FRAMEBUFFER_SRGB, s.framebufferSrgb);
     for (int i = 0; i < kClipDistances; ++i) enable(static_cast<GLenum>(GL_CLIP_DISTANCE0 + i), i < s.clipDistances);
     enable(GL_TEXTURE_CUBE_MAP_SEAMLESS, s.seamlessCubeMaps);
+    enable(GL_SCISSOR_TEST, s.scissor.has_value());
+    if (s.scissor) glScissor((*s.scissor)[0], (*s.scissor)[1], (*s.scissor)[2], (*s.scissor)[3]);
 }
 
 } // namespace shadowlab::gl

@@ -65,6 +65,9 @@ struct RenderState {
     bool framebufferSrgb = false; ///< linear-to-sRGB conversion on writes to sRGB targets
     int clipDistances = 0;        ///< GL_CLIP_DISTANCE0 .. this - 1 on (the vertex stage writes gl_ClipDistance), 0..kClipDistances
     bool seamlessCubeMaps = true; ///< cube-map filters read across face edges (a context-wide switch in GL)
+    /// Fragments only inside this box (glScissor: x, y, width, height in
+    /// pixels from the lower left); none: everywhere. Clears obey it too.
+    std::optional<std::array<GLint, 4>> scissor = std::nullopt;
 
     /// The same stencil test and operations on both faces.
     RenderState& stencil(const StencilFace& both) {

@@ -107,7 +107,19 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
     } else {
         glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     }
-    drawShaded(variant);
+    // The light's test where its shadows can fall, then the rest shaded lit
+    // without it: the lit draw's fragments where the test's drew already
+    // fail the depth test (LESS) before they are shaded. Not on a depth
+    // pre-pass (LEQUAL: they would pass), nor with the surfaces (compare's
+    // reference, whose derivatives the frame keeps whole).
+    const std::optional<std::vector<PixelRect>> region =
+        baseLight >= 0 && !screenVisibility && options.shadowRegions && !depthPrepassed && !options.surfaces
+            ? technique(currentLight->shadow.technique).shadowedPixels(*info, view(static_cast<std::size_t>(baseLight)))
+            : std::nullopt;
+    if (!region)
+        drawShaded(variant);
+    else
+        drawShadedByRegion(variant, state, *region);
     targets->drawBuffers(false);
 }
 

@@ -4,6 +4,7 @@
 // in frame()), BlendedPass.cpp (translucent surfaces, last); the host
 // services: RendererHost.cpp.
 #include "gl/Debug.h"
+#include "core/ScreenRect.h"
 #include "render/DrawList.h"
 #include "render/FrameTargets.h"
 #include "render/GpuScene.h"
@@ -146,6 +147,10 @@ struct Renderer::Impl final : TechniqueHost {
     // Draws with the renderer's shading program for `variant` (textured or
     // untextured per material) the items in `only`, or every opaque one.
     void drawShaded(ShaderVariant variant, const std::vector<std::size_t>* only = nullptr);
+    /// drawShaded, the light's test (in `variant`) run only in the pixels
+    /// of `region` (its technique's shadowedPixels) and the rest shaded
+    /// lit without it, under `state` (RegionDraw.cpp).
+    void drawShadedByRegion(const ShaderVariant& variant, const gl::RenderState& state, const std::vector<PixelRect>& region);
 
     /// Whether item i is a translucent (AlphaMode::Blend) surface.
     bool translucent(std::size_t i) const {

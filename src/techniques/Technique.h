@@ -164,6 +164,13 @@ public:
     virtual gl::IncludeAliases lightPassIncludes(const Light&) const { return {}; }
     /// Binds what the GLSL hook reads (textures, the technique's block).
     virtual void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView&) {}
+    /// Screen rectangles outside of which the light's visibility (its
+    /// light-pass hook) is exactly 1 this frame, each (x0, y0, x1, y1) in
+    /// pixels from the lower left, x1 and y1 excluded (none: lit
+    /// everywhere), or nothing when it may be less than 1 anywhere (the
+    /// default). The renderer shades the pixels outside them without the
+    /// hook (RenderOptions::shadowRegions).
+    virtual std::optional<std::vector<glm::ivec4>> shadowedPixels(const FrameInfo&, const LightView&) const { return std::nullopt; }
     /// The light's pass after the base pass; the frame target is bound. The
     /// default binds and draws lit; stencil techniques fill the stencil first.
     virtual void renderLightPass(TechniqueHost& host, const FrameInfo& frame, const LightView& light) {

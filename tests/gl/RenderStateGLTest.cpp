@@ -52,6 +52,7 @@ const std::vector<Dirt>& dirt() {
         {"sRGB writes", [] { glEnable(GL_FRAMEBUFFER_SRGB); }},
         {"clip distance", [] { glEnable(GL_CLIP_DISTANCE0); }},
         {"seamless cube maps off", [] { glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS); }},
+        {"scissor", [] { glEnable(GL_SCISSOR_TEST); glScissor(0, 0, 1, 1); }},
     };
     return all;
 }

@@ -15,6 +15,7 @@
 #include "techniques/map/MapCameras.h"
 #include "techniques/map/MapCasterDraw.h"
 #include "techniques/map/MapDebugImages.h"
+#include "techniques/map/MapRegion.h"
 #include "techniques/map/MapResources.h"
 #include "techniques/map/MapSdsm.h"
 #include "techniques/map/MapSettings.h"
@@ -191,6 +192,14 @@ public:
 
     gl::IncludeAliases lightPassIncludes(const Light& light) const override {
         return {{"@map_filter", LightPassVariant::of(light, res_.software, res_.translucent).kernelFile()}};
+    }
+
+    std::optional<std::vector<glm::ivec4>> shadowedPixels(const FrameInfo& frame, const LightView& view) const override {
+        // A frame through the previous frame's maps keeps their cameras, not
+        // necessarily what they were drawn from.
+        const auto found = lights_.find(view.index);
+        if (frame.reuseShadowMaps || found == lights_.end() || found->second.options.atlas || found->second.cube) return std::nullopt;
+        return map::shadowedPixels(found->second, frame);
     }
 
     bool joinsLightList(const Light& light) const override { return effective(light).atlas; }

@@ -24,6 +24,7 @@
 //   MapBlock           the uniform block (shaders/shadow_map_shared.h)
 //   MapBindings        the light pass's textures and samplers
 //   MapFloors          each pass's floor (a bare depth draw), for bench
+//   MapRegion          where on the screen a light's shadows can fall
 //   MapDebugImages     the maps, cube crosses, texel density, cascades as images
 #include "techniques/Technique.h"
 
