@@ -4,6 +4,7 @@
 // against each. It shares the base pass: no shadow pass, no map.
 #include "techniques/Disc.h"
 
+#include "core/ShadowRegion.h"
 #include "techniques/NodeNames.h"
 #include "techniques/TechniqueBlock.h"
 
@@ -11,6 +12,8 @@
 #include <shadowlab/Error.h>
 
 #include "shadow_disc_shared.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -116,6 +119,54 @@ public:
         u.light = view.light.type == LightType::Directional ? glm::vec4(-glm::normalize(view.light.direction), 0.0f) : glm::vec4(view.light.position, 1.0f);
         u.params = glm::vec4(0.0f, offset_, 0.0f, 0.0f);
         block_.write(u);
+    }
+
+    std::optional<std::vector<glm::ivec4>> shadowedPixels(const FrameInfo& frame, const LightView& view) const override {
+        const auto found = discs_.find(view.index);
+        if (found == discs_.end()) return std::nullopt;
+        // Each disc's box, widened by the ray's start off the surface
+        // (offset_) four times over: a receiver's ray can meet the disc only
+        // where the receiver lies in the disc's column, past it from the light.
+        const float margin = 4.0f * offset_;
+        std::vector<Bounds> boxes;
+        for (const Disc& d : found->second) {
+            const glm::vec3 extent = glm::sqrt(d.a * d.a + d.b * d.b) + margin;
+            boxes.push_back(Bounds{d.centre - extent, d.centre + extent});
+        }
+        if (boxes.empty()) return std::vector<glm::ivec4>{};
+        const RegionScene scene{frame.items, frame.itemBounds, frame.itemPlanes, frame.clipFromWorld, frame.viewport};
+        Bounds all;
+        for (const Bounds& b : frame.itemBounds) all.add(b);
+        const float sceneSize = std::max(glm::length(all.size()), 1.0f);
+        if (view.light.type == LightType::Directional) {
+            // An orthographic light space around every item along the light.
+            const glm::vec3 direction = glm::normalize(view.light.direction);
+            const glm::vec3 up = std::abs(direction.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+            const glm::mat4 lightView = glm::lookAt(all.centre() - direction * sceneSize, all.centre(), up);
+            const Bounds seen = all.transformed(lightView);
+            const float nearPlane = -seen.hi.z - 1.0f, farPlane = -seen.lo.z + 1.0f;
+            const glm::mat4 clip = glm::ortho(seen.lo.x - 1.0f, seen.hi.x + 1.0f, seen.lo.y - 1.0f, seen.hi.y + 1.0f, nearPlane, farPlane) * lightView;
+            return shadowRects(clip, false, boxes, 2.0f * margin / (farPlane - nearPlane) + 1e-5f, scene, kMaxShadowRects);
+        }
+        // A point or spot light: a perspective light space from the light
+        // around each disc (its bounding sphere), out past every item.
+        const glm::vec3 light = view.light.position;
+        float farthest = 0.0f;
+        for (int c = 0; c < 8; ++c) farthest = std::max(farthest, glm::length(glm::mix(all.lo, all.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - light));
+        std::vector<glm::ivec4> rects;
+        for (const Bounds& box : boxes) {
+            const glm::vec3 centre = box.centre();
+            const float radius = 0.5f * glm::length(box.size()), distance = glm::length(centre - light);
+            if (distance <= 1.05f * radius) return std::nullopt;  // the light at the disc: anything may be behind it
+            const glm::vec3 axis = (centre - light) / distance;
+            const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+            const float fovY = std::min(2.04f * std::asin(radius / distance), glm::radians(170.0f));
+            const glm::mat4 clip = glm::perspective(fovY, 1.0f, 0.5f * (distance - radius), 1.01f * farthest + 1.0f) * glm::lookAt(light, centre, up);
+            const auto some = shadowRects(clip, true, {box}, 4.0f, scene, kMaxShadowRects);  // the whole depth range past the near plane
+            if (!some) return std::nullopt;
+            rects.insert(rects.end(), some->begin(), some->end());
+        }
+        return mergedRects(std::move(rects), kMaxShadowRects);
     }
 
 private:

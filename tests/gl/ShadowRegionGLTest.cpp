@@ -62,9 +62,9 @@ std::optional<double> expectSameFrame(const Scene& scene, const std::string& wha
 class ShadowRegionGLTest : public GLTest {};
 
 // Every bundled scene as shipped. Most of them have a directional or spot
-// light with one 2D map first (the base pass's light); those must use the
-// rectangles and cover less than the whole frame with them (measured at
-// 320x240: every such scene, 9 of them, at most 0.62 of the frame).
+// light with one 2D map, or technique "disc", first (the base pass's
+// light); those must use the rectangles and cover less than the whole
+// frame with them (measured at 320x240: every such scene, 11 of them).
 TEST_F(ShadowRegionGLTest, EveryBundledSceneLooksTheSame) {
     int used = 0;
     for (const auto& file : bundledScenes()) {
@@ -76,7 +76,7 @@ TEST_F(ShadowRegionGLTest, EveryBundledSceneLooksTheSame) {
             EXPECT_LT(*share, 1.0);
         }
     }
-    EXPECT_GE(used, 9) << "the rectangles were used on fewer scenes than they apply to";
+    EXPECT_GE(used, 11) << "the rectangles were used on fewer scenes than they apply to";
 }
 
 // The options that move where a shadow falls, or how far from it a
@@ -111,6 +111,25 @@ TEST_F(ShadowRegionGLTest, FiltersOffsetsAndBiasesLookTheSame) {
             SCOPED_TRACE(what);
             expectSameFrame(loadSceneFile(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / file, overrides), what);
         }
+    }
+}
+
+// Technique "disc" under each light type: an orthographic light space for
+// the sun, a perspective one from the lamp around each disc.
+TEST_F(ShadowRegionGLTest, DiscsUnderEveryLightTypeLookTheSame) {
+    const std::vector<std::vector<std::string>> lights = {
+        {},
+        {R"(lights[0]={"type": "point", "position": [0.5, 6, 0.5], "shadow": {"technique": "disc"}})"},
+        {R"(lights[0]={"type": "spot", "position": [1, 7, 1], "direction": [-0.1, -1, -0.1], "outerCone": 60, "innerCone": 50, "shadow": {"technique": "disc"}})"},
+        {R"(lights[0]={"type": "point", "position": [-2, 5, 0], "shadow": {"technique": "disc"}})"},  // 2 m over a disc of 1 m: its shadow spreads wide
+    };
+    for (const auto& set : lights) {
+        std::string what = "discs";
+        for (const std::string& s : set) what += " " + s;
+        SCOPED_TRACE(what);
+        const Scene scene = loadSceneFile(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes/discs.json", set);
+        const std::optional<double> share = expectSameFrame(scene, what);
+        EXPECT_TRUE(share.has_value()) << "the rectangles were not used";
     }
 }
 

@@ -5,21 +5,17 @@
 // reads a texel that a caster covers, and a caster covers texels only
 // inside its box's image in the map; the receivers those taps come from lie
 // within the filter's footprint and the normal offset of that image, and
-// between the light's near and far planes. So each caster drawn into the
-// map gives a box in the light's clip space: its image widened by those
-// texels, over the whole depth range; the screen rectangle around those
-// boxes' corners holds every pixel the test could shadow.
-#include "techniques/Technique.h"
+// past the caster's nearest depth less what the offsets and biases move a
+// compared depth. So each caster drawn into the map, its box widened by
+// those texels, goes to core/ShadowRegion with that slack of depth.
 #include "core/ScreenRect.h"
+#include "techniques/Technique.h"
 #include "techniques/map/MapLight.h"
 
 #include <optional>
 #include <vector>
 
 namespace shadowlab::map {
-
-/// At most this many rectangles a light (MapRegion.cpp merges the casters' into as few).
-inline constexpr std::size_t kMaxRects = 8;
 
 /// The pixels outside of which light `p`'s test finds every receiver lit:
 /// a rectangle around each caster's box swept away from the light, those

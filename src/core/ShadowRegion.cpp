@@ -1,0 +1,135 @@
+// Where on the screen a light's shadows can fall (ShadowRegion.h).
+#include "core/ShadowRegion.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace shadowlab {
+
+namespace {
+
+// A box in the light's clip space, divided: the points of the box past the
+// near plane (perspective; the corners there and where the edges cross
+// it), and their bounds.
+struct LightImage {
+    std::vector<glm::vec3> points;
+    glm::vec2 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
+    float zLo = std::numeric_limits<float>::max(), zHi = -std::numeric_limits<float>::max();
+    bool empty() const { return points.empty(); }
+    bool overlaps(const LightImage& o) const { return !(o.lo.x > hi.x || o.hi.x < lo.x || o.lo.y > hi.y || o.hi.y < lo.y); }
+};
+
+LightImage imageOf(const Bounds& box, const glm::mat4& lightClip, bool perspective) {
+    LightImage out;
+    std::array<glm::vec4, 8> clip;
+    for (int c = 0; c < 8; ++c)
+        clip[static_cast<std::size_t>(c)] = lightClip * glm::vec4((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z, 1.0f);
+    // Past the near plane: z >= -w (an orthographic light keeps all: its map clamps depth).
+    auto past = [&](const glm::vec4& p) { return perspective ? p.z + p.w : 1.0f; };
+    auto add = [&](const glm::vec4& p) {
+        const glm::vec3 ndc = glm::vec3(p) / p.w;
+        out.points.push_back(ndc);
+        out.lo = glm::min(out.lo, glm::vec2(ndc));
+        out.hi = glm::max(out.hi, glm::vec2(ndc));
+        out.zLo = std::min(out.zLo, ndc.z);
+        out.zHi = std::max(out.zHi, ndc.z);
+    };
+    for (const glm::vec4& p : clip)
+        if (past(p) >= 0.0f && p.w > 0.0f) add(p);
+    if (!perspective) return out;
+    for (int c = 0; c < 8; ++c)
+        for (int axis = 1; axis < 8; axis <<= 1) {
+            if (c & axis) continue;  // each edge once, from its lower corner
+            const glm::vec4 &a = clip[static_cast<std::size_t>(c)], &b = clip[static_cast<std::size_t>(c | axis)];
+            const float ea = past(a), eb = past(b);
+            if ((ea < 0.0f) == (eb < 0.0f)) continue;
+            const glm::vec4 p = glm::mix(a, b, ea / (ea - eb));
+            if (p.w > 0.0f) add(p);
+        }
+    return out;
+}
+
+// The pixels of points in the light's clip space (through the world),
+// and whether one lies behind the viewer (then they bound nothing).
+struct Extent {
+    glm::vec2 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
+    bool behind = false;
+    void add(const glm::vec3& ndc, const glm::mat4& worldFromLight, const glm::mat4& clipFromWorld) {
+        const glm::vec4 world = worldFromLight * glm::vec4(ndc, 1.0f);
+        const glm::vec4 seen = clipFromWorld * glm::vec4(glm::vec3(world) / world.w, 1.0f);
+        if (!(seen.w > 1e-6f)) behind = true;
+        lo = glm::min(lo, glm::vec2(seen) / seen.w);
+        hi = glm::max(hi, glm::vec2(seen) / seen.w);
+    }
+};
+
+// The pixels around clip-space points from `lo` to `hi`: a pixel wider
+// for rounding, out to whole 4x4 blocks (the rasteriser's), in the frame.
+PixelRect pixelsOf(glm::vec2 lo, glm::vec2 hi, glm::ivec2 viewport) {
+    const glm::vec2 size(viewport);
+    const glm::vec2 pixelLo = glm::clamp(glm::floor((lo * 0.5f + 0.5f) * size) - 1.0f, glm::vec2(0.0f), size);
+    const glm::vec2 pixelHi = glm::clamp(glm::ceil((hi * 0.5f + 0.5f) * size) + 1.0f, glm::vec2(0.0f), size);
+    auto down4 = [](float v) { return static_cast<int>(std::floor(v / 4.0f)) * 4; };
+    auto up4 = [](float v) { return static_cast<int>(std::ceil(v / 4.0f)) * 4; };
+    return PixelRect(down4(pixelLo.x), down4(pixelLo.y), std::min(up4(pixelHi.x), viewport.x), std::min(up4(pixelHi.y), viewport.y));
+}
+
+} // namespace
+
+std::optional<std::vector<PixelRect>> shadowRects(const glm::mat4& lightClip, bool perspective, const std::vector<Bounds>& casters,
+                                                  float depthSlack, const RegionScene& scene, std::size_t most) {
+    const glm::mat4 worldFromLightClip = glm::inverse(lightClip);
+    const glm::mat4 planeToLightClip = glm::transpose(worldFromLightClip);  // a plane (n, d) into the light's clip space
+    // The receivers in the light's clip space, for how deep a caster's box
+    // need reach: a planar one's plane, else its box.
+    struct Receiver {
+        LightImage image;
+        std::optional<glm::vec4> plane;
+        std::size_t item = 0;
+    };
+    std::vector<Receiver> receivers;
+    for (std::size_t i = 0; i < scene.items.size(); ++i) {
+        if (!scene.items[i].receivesShadows) continue;
+        Receiver r{imageOf(scene.itemBounds[i], lightClip, perspective), std::nullopt, i};
+        if (r.image.empty()) continue;  // before the light's near plane: its test finds it lit
+        if (scene.itemPlanes[i]) {
+            const glm::vec4 plane = planeToLightClip * *scene.itemPlanes[i];
+            if (std::abs(plane.z) > 1e-6f) r.plane = plane;  // not along the light
+        }
+        receivers.push_back(std::move(r));
+    }
+    std::vector<PixelRect> rects;
+    for (const Bounds& box : casters) {
+        const LightImage caster = imageOf(box, lightClip, perspective);
+        if (caster.empty() || caster.lo.x > 1.0f || caster.hi.x < -1.0f || caster.lo.y > 1.0f || caster.hi.y < -1.0f) continue;  // beside the light's view
+        const float zNear = std::max(caster.zLo - depthSlack, -1.0f);
+        for (const Receiver& r : receivers) {
+            if (!caster.overlaps(r.image) || r.image.zHi < zNear) continue;
+            Extent seen;
+            if (r.plane) {
+                // Its plane where the box's points, swept along the light, land.
+                for (const glm::vec3& k : caster.points) {
+                    const float z = -(r.plane->x * k.x + r.plane->y * k.y + r.plane->w) / r.plane->z;
+                    seen.add(glm::vec3(k.x, k.y, std::clamp(z, std::max(k.z - depthSlack, -1.0f), 1.0f)), worldFromLightClip, scene.cameraClipFromWorld);
+                }
+            } else {
+                // Its image's box cut to the caster's column past its nearest depth.
+                const glm::vec2 lo = glm::max(r.image.lo, caster.lo), hi = glm::min(r.image.hi, caster.hi);
+                const float zLo = std::max(r.image.zLo, zNear), zHi = std::min(r.image.zHi + 1e-3f, 1.0f);
+                for (int c = 0; c < 8; ++c)
+                    seen.add(glm::vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? zHi : zLo), worldFromLightClip, scene.cameraClipFromWorld);
+            }
+            if (seen.behind) return std::nullopt;
+            PixelRect rect = pixelsOf(seen.lo, seen.hi, scene.viewport);
+            // Within its own box too (tighter than its image's box, which a
+            // box turned to the light's axes outgrows).
+            if (!r.plane) rect = intersection(rect, screenRectOf(scene.itemBounds[r.item], scene.cameraClipFromWorld, scene.viewport));
+            if (!isEmpty(rect)) rects.push_back(rect);
+        }
+    }
+    return mergedRects(std::move(rects), most);
+}
+
+} // namespace shadowlab

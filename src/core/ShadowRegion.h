@@ -1,0 +1,48 @@
+#pragma once
+// Where on the screen a light's shadows can fall (RenderOptions::shadowRegions):
+// screen rectangles outside of which no receiver is shadowed by the given
+// casters. Worked in a light's clip space, where the light travels along
+// the depth axis (orthographic: a directional light; perspective: from a
+// point): a receiver is shadowed by a caster only where the caster's image
+// in that space covers the receiver's own and the receiver lies beyond the
+// caster's nearest depth (less a slack the caller gives for its biases).
+// So for each caster box (the caller widens it by its filter's reach) and
+// each receiver under its image, the rectangle around: a planar receiver's
+// plane where the box's corners swept along the light land on it, any other
+// receiver's own box, cut to the box's column past its nearest depth.
+// GPU-free.
+#include "core/Bounds.h"
+#include "core/ScreenRect.h"
+
+#include <shadowlab/Scene.h>
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace shadowlab {
+
+/// At most this many rectangles a light (the techniques merge theirs into as few).
+inline constexpr std::size_t kMaxShadowRects = 8;
+
+/// The frame's items (as FrameInfo has them) and the view.
+struct RegionScene {
+    const std::vector<DrawItem>& items;                       ///< DrawItem::receivesShadows says which may be shadowed
+    const std::vector<Bounds>& itemBounds;                    ///< world bounds of each
+    const std::vector<std::optional<glm::vec4>>& itemPlanes;  ///< world plane of each planar one
+    glm::mat4 cameraClipFromWorld{1.0f};
+    glm::ivec2 viewport{0};
+};
+
+/// The rectangles for `casters` (world boxes) in the light space
+/// `lightClipFromWorld` (perspective: what lies nearer than its near plane
+/// is left out, as the light's map leaves it), a receiver counting past a
+/// caster's nearest clip depth less `depthSlack` (2 or more: the whole
+/// depth range). At most `most` rectangles (core/ScreenRect: mergedRects);
+/// none when no caster can shadow a receiver; nothing when a point reaches
+/// behind the viewer (its image is then not bounded by its corners').
+std::optional<std::vector<PixelRect>> shadowRects(const glm::mat4& lightClipFromWorld, bool perspective, const std::vector<Bounds>& casters,
+                                                  float depthSlack, const RegionScene& scene, std::size_t most);
+
+} // namespace shadowlab
