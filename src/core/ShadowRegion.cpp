@@ -1,6 +1,8 @@
 // Where on the screen a light's shadows can fall (ShadowRegion.h).
 #include "core/ShadowRegion.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -77,6 +79,70 @@ PixelRect pixelsOf(glm::vec2 lo, glm::vec2 hi, glm::ivec2 viewport) {
 }
 
 } // namespace
+
+std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const RegionScene& scene) {
+    const glm::vec3 centre = box.centre();
+    const float radius = 0.5f * glm::length(box.size()), distance = glm::length(centre - light);
+    std::vector<PixelRect> rects;
+    for (std::size_t i = 0; i < scene.items.size(); ++i) {
+        if (!scene.items[i].receivesShadows) continue;
+        const Bounds& r = scene.itemBounds[i];
+        const PixelRect own = screenRectOf(r, scene.cameraClipFromWorld, scene.viewport);
+        if (isEmpty(own)) continue;
+        PixelRect rect = own;
+        if (scene.itemPlanes[i]) {
+            // The corners' rays meet the plane at t > 0 (from the light), all of them, or the shadow there is not bounded by them.
+            const glm::vec4 plane = *scene.itemPlanes[i];
+            Extent seen;
+            bool bounded = true;
+            for (int c = 0; c < 8 && bounded; ++c) {
+                const glm::vec3 corner = glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1));
+                const float along = glm::dot(glm::vec3(plane), corner - light);
+                const float t = -(glm::dot(glm::vec3(plane), light) + plane.w) / along;
+                bounded = std::abs(along) > 1e-12f && t > 0.0f && std::isfinite(t);
+                if (bounded) seen.add(light + t * (corner - light), glm::mat4(1.0f), scene.cameraClipFromWorld);
+            }
+            if (bounded) {
+                if (seen.behind) return std::nullopt;
+                rect = intersection(own, pixelsOf(seen.lo, seen.hi, scene.viewport));
+            }
+        } else {
+            // Its bounding sphere against the box's, as angles from the light.
+            const glm::vec3 to = r.centre() - light;
+            const float rr = 0.5f * glm::length(r.size()), d = glm::length(to);
+            const bool around = d <= rr || distance <= radius;
+            if (!around) {
+                const float apart = std::acos(std::clamp(glm::dot(to / d, (centre - light) / distance), -1.0f, 1.0f));
+                if (apart > std::asin(std::min(rr / d, 1.0f)) + std::asin(std::min(radius / distance, 1.0f))) continue;
+            }
+        }
+        if (!isEmpty(rect)) rects.push_back(rect);
+    }
+    return rects;
+}
+
+std::optional<PointLightView> pointLightView(const glm::vec3& light, const Bounds& box) {
+    std::array<glm::vec3, 8> towards;
+    glm::vec3 sum(0.0f);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 d = glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - light;
+        const float length = glm::length(d);
+        if (!(length > 0.0f)) return std::nullopt;
+        towards[static_cast<std::size_t>(c)] = d;
+        sum += d / length;
+    }
+    if (!(glm::length(sum) > 1e-3f)) return std::nullopt;
+    const glm::vec3 axis = glm::normalize(sum);
+    float widest = 1.0f, nearest = std::numeric_limits<float>::max();
+    for (const glm::vec3& d : towards) {
+        widest = std::min(widest, glm::dot(axis, glm::normalize(d)));
+        nearest = std::min(nearest, glm::dot(axis, d));
+    }
+    if (widest < std::cos(glm::radians(80.0f)) || !(nearest > 0.0f)) return std::nullopt;
+    const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    // The square field's half-angle holds the widest corner's (a little more for rounding).
+    return PointLightView{glm::lookAt(light, light + axis, up), 2.0f * std::acos(widest) * 1.02f + 1e-3f, nearest};
+}
 
 std::optional<std::vector<PixelRect>> shadowRects(const glm::mat4& lightClip, bool perspective, const std::vector<Bounds>& casters,
                                                   float depthSlack, const RegionScene& scene, std::size_t most) {

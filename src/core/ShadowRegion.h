@@ -45,4 +45,26 @@ struct RegionScene {
 std::optional<std::vector<PixelRect>> shadowRects(const glm::mat4& lightClipFromWorld, bool perspective, const std::vector<Bounds>& casters,
                                                   float depthSlack, const RegionScene& scene, std::size_t most);
 
+/// The rectangles for one caster `box` (world, widened by the caller) of a
+/// point light at `light`, worked in the world: a planar receiver's plane
+/// where the rays from the light through the box's corners meet it (its
+/// whole rectangle when one of them does not), any other receiver's whole
+/// rectangle when its bounding sphere and the box's overlap as seen from
+/// the light. For a box too wide for a perspective light space
+/// (pointLightView), receivers before it included. Nothing when a point
+/// lies behind the viewer.
+std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const RegionScene& scene);
+
+/// A view from a point light at `light` around `box`, for a perspective
+/// light space of shadowRects: looking along the mean direction to the
+/// box's corners, with the field (square) that holds them all and the
+/// box's nearest depth along that axis. Nothing when the corners spread
+/// over more than 80 degrees from it, or the box reaches the light's side.
+struct PointLightView {
+    glm::mat4 viewFromWorld{1.0f};
+    float fovY = 0.0f;        ///< radians
+    float nearestDepth = 0.0f;///< the box's, along the view's axis, scene units
+};
+std::optional<PointLightView> pointLightView(const glm::vec3& light, const Bounds& box);
+
 } // namespace shadowlab

@@ -1,7 +1,8 @@
 // The base pass with its light's test only where the light's shadows can
 // fall (RenderOptions::shadowRegions; Technique::shadowedPixels gives the
-// rectangles). Each item, in drawShaded's order (nearest first), is drawn
-// one of three ways:
+// rectangles). Where they cover more than nine tenths of the frame, one
+// draw with the test, as without them; else each item, in drawShaded's
+// order (nearest first), is drawn one of three ways:
 //   - lit, without the test, where its screen rectangle meets none of the
 //     region's (the test would find it lit everywhere);
 //   - with the test, whole, where the region covers most of it or it has
@@ -28,6 +29,9 @@ namespace {
 constexpr std::size_t kSplitTriangles = 4096;
 // A share of its screen rectangle in the region above which an item is drawn once, with the test.
 constexpr double kWholeShare = 0.5;
+// A share of the frame in the region above which every item is (what the
+// lit draws would skip is less than what the extra draws cost).
+constexpr double kMostShare = 0.9;
 
 double area(const PixelRect& r) { return isEmpty(r) ? 0.0 : double(r.z - r.x) * double(r.w - r.y); }
 
@@ -45,6 +49,11 @@ void Renderer::Impl::drawShadedByRegion(const ShaderVariant& variant, const gl::
     const glm::ivec2 size = targets->size;
     double share = 0.0;
     for (const PixelRect& r : region) share += area(r) / (double(size.x) * double(size.y));
+    if (share > kMostShare) {  // hardly anything left to skip: one draw, with the test
+        gl::apply(state);
+        drawShaded(variant);
+        return;
+    }
     count("shadowedShare", share);
 
     // Each item's way, then runs of consecutive items of the same way, in order.

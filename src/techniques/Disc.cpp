@@ -149,19 +149,21 @@ public:
             return shadowRects(clip, false, boxes, 2.0f * margin / (farPlane - nearPlane) + 1e-5f, scene, kMaxShadowRects);
         }
         // A point or spot light: a perspective light space from the light
-        // around each disc (its bounding sphere), out past every item.
+        // around each disc, out past every item.
         const glm::vec3 light = view.light.position;
         float farthest = 0.0f;
         for (int c = 0; c < 8; ++c) farthest = std::max(farthest, glm::length(glm::mix(all.lo, all.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - light));
         std::vector<glm::ivec4> rects;
         for (const Bounds& box : boxes) {
-            const glm::vec3 centre = box.centre();
-            const float radius = 0.5f * glm::length(box.size()), distance = glm::length(centre - light);
-            if (distance <= 1.05f * radius) return std::nullopt;  // the light at the disc: anything may be behind it
-            const glm::vec3 axis = (centre - light) / distance;
-            const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-            const float fovY = std::min(2.04f * std::asin(radius / distance), glm::radians(170.0f));
-            const glm::mat4 clip = glm::perspective(fovY, 1.0f, 0.5f * (distance - radius), 1.01f * farthest + 1.0f) * glm::lookAt(light, centre, up);
+            const std::optional<PointLightView> v = pointLightView(light, box);
+            if (!v) {
+                // Too wide a disc for a perspective view: in the world.
+                const auto some = centralRects(light, box, scene);
+                if (!some) return std::nullopt;
+                rects.insert(rects.end(), some->begin(), some->end());
+                continue;
+            }
+            const glm::mat4 clip = glm::perspective(v->fovY, 1.0f, 0.5f * v->nearestDepth, 1.01f * farthest + 1.0f) * v->viewFromWorld;
             const auto some = shadowRects(clip, true, {box}, 4.0f, scene, kMaxShadowRects);  // the whole depth range past the near plane
             if (!some) return std::nullopt;
             rects.insert(rects.end(), some->begin(), some->end());

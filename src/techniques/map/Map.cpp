@@ -198,8 +198,8 @@ public:
         // A frame through the previous frame's maps keeps their cameras, not
         // necessarily what they were drawn from.
         const auto found = lights_.find(view.index);
-        if (frame.reuseShadowMaps || found == lights_.end() || found->second.options.atlas || found->second.cube) return std::nullopt;
-        return map::shadowedPixels(found->second, frame);
+        if (frame.reuseShadowMaps || found == lights_.end() || found->second.options.atlas) return std::nullopt;
+        return map::shadowedPixels(found->second, view.light, frame, res_.arrays[found->second.array].size());
     }
 
     bool joinsLightList(const Light& light) const override { return effective(light).atlas; }

@@ -5,10 +5,14 @@
 
 #include "techniques/map/MapCameras.h"
 #include "techniques/map/MapFilters.h"
+#include "techniques/map/MapSettings.h"
 #include "techniques/map/MapTranslucent.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace shadowlab::map {
@@ -29,9 +33,83 @@ bool drawnInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i)
 
 } // namespace
 
-std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const FrameInfo& frame) {
+std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, const Light& light, const FrameInfo& frame, int size) {
     const MapOptions& o = p.options;
-    if (p.cube || o.atlas || !p.cascades.empty() || p.gpuFit || p.camera.warped) return std::nullopt;
+    if (o.atlas || o.representation != MapRepresentation::Depth) return std::nullopt;
+    if (o.slopeBias < 0.0f || o.offsetUnits < 0.0f) return std::nullopt;  // stored depths nearer than the casters
+    const glm::vec3 lamp = light.position;
+    const float far = p.cubeCamera.farPlane, perDistance = 2.0f / static_cast<float>(size);
+    const bool pcss = o.filter == MapFilter::Pcss;
+    // The receivers: the nearest to the light, the farthest from the viewer
+    // (a filter radius grows with it); every item: the farthest from the light.
+    const glm::vec3 eye = glm::vec3(glm::inverse(frame.viewFromWorld)[3]);
+    float nearestReceiver = std::numeric_limits<float>::max(), viewerFar = 0.0f, farthest = 0.0f;
+    for (std::size_t i = 0; i < frame.items.size(); ++i) {
+        const Bounds& box = frame.itemBounds[i];
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 corner = glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1));
+            farthest = std::max(farthest, glm::length(corner - lamp));
+            if (frame.items[i].receivesShadows) viewerFar = std::max(viewerFar, glm::length(corner - eye));
+        }
+        if (frame.items[i].receivesShadows)
+            nearestReceiver = std::min(nearestReceiver, glm::length(glm::max(glm::max(box.lo - lamp, lamp - box.hi), glm::vec3(0.0f))));
+    }
+    // How far a receiver's taps reach across its ray: texels (a bilinear
+    // footprint, the normal offset, two for rounding) as an angle, the
+    // grid's, pcf20's and poisson's radius (world units at the receiver,
+    // growing with the viewer's distance), and for pcss its blocker search
+    // (the light's size over the receiver's distance at most) and its
+    // filter (the size over the blockers' distance, no nearer than the
+    // nearest caster) as angles.
+    float angle = (1.5f + std::max(o.normalBias, 0.0f) + 2.0f) * perDistance;
+    const bool radial = o.filter == MapFilter::Grid || o.filter == MapFilter::Pcf20 || o.filter == MapFilter::Poisson;
+    const float reach = radial ? 1.7320508f * o.diskRadius * (1.0f + std::max(o.diskGrowth, 0.0f) * viewerFar / far) : 0.0f;
+    if (pcss) {
+        if (!(p.nearestCaster > 0.0f) || !(nearestReceiver > 0.0f)) return std::nullopt;
+        angle += light.size / std::min(p.nearestCaster, nearestReceiver);
+    }
+    // How much nearer the light than a caster a receiver it shadows may be
+    // (world units): the constant bias (the presets' in world units, else
+    // in stored depth, distance / far) and the normal offset, a quarter
+    // more; pcss, whose taps compare with the receiver's plane extended,
+    // any distance.
+    const float bias = usesPresetBias(o, true) ? std::abs(o.constantBias) : std::abs(o.constantBias) * far;
+    const float slack = 1.25f * (bias + (std::max(o.normalBias, 0.0f) + 2.0f) * perDistance * far) + 1e-4f * far;
+    const RegionScene scene{frame.items, frame.itemBounds, frame.itemPlanes, frame.clipFromWorld, frame.viewport};
+    std::vector<PixelRect> rects;
+    for (std::size_t i = 0; i < frame.items.size(); ++i) {
+        if (!frame.items[i].castsShadows || p.faceMask(i) == 0) continue;
+        // The box widened by the taps' reach where it lies farthest, then a
+        // perspective light space from the lamp around it.
+        Bounds box = frame.itemBounds[i];
+        float boxFar = 0.0f;
+        for (int c = 0; c < 8; ++c) boxFar = std::max(boxFar, glm::length(glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - lamp));
+        const float widen = angle * boxFar + reach;
+        box.lo -= widen;
+        box.hi += widen;
+        const std::optional<PointLightView> v = pointLightView(lamp, box);
+        if (!v) {
+            // Too wide a caster for a perspective view: in the world.
+            const auto some = centralRects(lamp, box, scene);
+            if (!some) return std::nullopt;
+            rects.insert(rects.end(), some->begin(), some->end());
+            continue;
+        }
+        const float nearPlane = pcss ? 0.5f * std::min(v->nearestDepth, nearestReceiver) : std::max(v->nearestDepth - slack, 1e-3f * v->nearestDepth);
+        if (!(nearPlane > 0.0f)) return std::nullopt;
+        const glm::mat4 clip = glm::perspective(v->fovY, 1.0f, nearPlane, 1.01f * farthest + 1.0f) * v->viewFromWorld;
+        // Past its near plane: the receivers that may be shadowed.
+        const auto some = shadowRects(clip, true, {box}, 4.0f, scene, kMaxShadowRects);
+        if (!some) return std::nullopt;
+        rects.insert(rects.end(), some->begin(), some->end());
+    }
+    return mergedRects(std::move(rects), kMaxShadowRects);
+}
+
+std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const Light& light, const FrameInfo& frame, int size) {
+    if (p.cube) return cubeShadowedPixels(p, light, frame, size);
+    const MapOptions& o = p.options;
+    if (o.atlas || !p.cascades.empty() || p.gpuFit || p.camera.warped) return std::nullopt;
     if (o.representation != MapRepresentation::Depth || o.filter == MapFilter::Dither4) return std::nullopt;
     if (o.slopeBias < 0.0f || o.offsetUnits < 0.0f) return std::nullopt;  // stored depths nearer than the casters
     const LightCamera& camera = p.camera;

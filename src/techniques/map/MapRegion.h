@@ -19,11 +19,13 @@ namespace shadowlab::map {
 
 /// The pixels outside of which light `p`'s test finds every receiver lit:
 /// a rectangle around each caster's box swept away from the light, those
-/// that overlap merged (none: no caster); nothing when that is not known:
-/// a cube, the atlas, cascades, a fit or warp made on the GPU or per point,
-/// moments, the lecture's dither (its spread follows the map's size), a
-/// negative polygon offset, or a box that reaches behind the light or the
-/// viewer.
-std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const FrameInfo& frame);
+/// that overlap merged (none: no caster). A point light's cube: each
+/// caster's box widened by its taps' reach, in a perspective light space
+/// from the light around it. `size`: the map's texels a side. Nothing when
+/// that is not known: the atlas, cascades, a fit or warp made on the GPU or
+/// per point, moments, the lecture's dither (its spread follows the map's
+/// size), a negative polygon offset, a light within a caster's box, or a
+/// box that reaches behind the viewer.
+std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const Light& light, const FrameInfo& frame, int size);
 
 } // namespace shadowlab::map
