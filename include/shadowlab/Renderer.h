@@ -69,13 +69,14 @@ struct RenderOptions {
     /// of one per light). Default on.
     bool groupLights = true;
     /// The base pass runs its light's shadow test only inside the screen
-    /// rectangle that the light's technique says its shadows can fall in
-    /// this frame (technique "map" with one 2D map: around the screen
-    /// image of each caster's box swept away from the light, widened by
-    /// the filter's reach); it shades the pixels outside as lit, without
-    /// the test, which would find them lit: the same image for less
-    /// (FrameStats counts "base.shadowedShare", the rectangle's share of
-    /// the frame). Off: the test at every pixel. Default on.
+    /// rectangles that the light's technique says its shadows can fall in
+    /// this frame (technique "map" with one 2D map or a cube, and "disc":
+    /// around the screen image of each caster's box swept away from the
+    /// light, widened by the filter's reach); it shades the pixels outside
+    /// as lit, without the test, which would find them lit: the same image
+    /// for less (FrameStats counts "base.shadowedShare", the rectangles'
+    /// share of the frame, when it used them: not over nine tenths of it).
+    /// Off: the test at every pixel. Default on.
     bool shadowRegions = true;
 };
 
