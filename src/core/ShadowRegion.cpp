@@ -80,7 +80,12 @@ PixelRect pixelsOf(glm::vec2 lo, glm::vec2 hi, glm::ivec2 viewport) {
 
 } // namespace
 
-std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const RegionScene& scene) {
+float TapReach::at(float distance) const {
+    if (!(distance > 0.0f)) return std::numeric_limits<float>::infinity();
+    return angle + world / distance + (pcssSize > 0.0f ? pcssSize * std::max(1.0f / pcssNearest - 1.0f / distance, 0.0f) : 0.0f);
+}
+
+std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const TapReach& reach, const RegionScene& scene) {
     const glm::vec3 centre = box.centre();
     const float radius = 0.5f * glm::length(box.size()), distance = glm::length(centre - light);
     std::vector<PixelRect> rects;
@@ -91,29 +96,42 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
         if (isEmpty(own)) continue;
         PixelRect rect = own;
         if (scene.itemPlanes[i]) {
-            // The corners' rays meet the plane at t > 0 (from the light), all of them, or the shadow there is not bounded by them.
+            // Rays from the light through the box's corners, each tilted by
+            // the taps' reach at the plane (no nearer the light than the
+            // plane's own distance) four ways across it, a square around the
+            // cone of the reach; where all meet the plane (t > 0) they bound
+            // the shadow there, else it is not bounded by them.
             const glm::vec4 plane = *scene.itemPlanes[i];
+            const glm::vec3 n(plane);
+            const float tilt = std::tan(std::min(reach.at(std::abs(glm::dot(n, light) + plane.w)), 1.4f));
             Extent seen;
             bool bounded = true;
             for (int c = 0; c < 8 && bounded; ++c) {
-                const glm::vec3 corner = glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1));
-                const float along = glm::dot(glm::vec3(plane), corner - light);
-                const float t = -(glm::dot(glm::vec3(plane), light) + plane.w) / along;
-                bounded = std::abs(along) > 1e-12f && t > 0.0f && std::isfinite(t);
-                if (bounded) seen.add(light + t * (corner - light), glm::mat4(1.0f), scene.cameraClipFromWorld);
+                const glm::vec3 u = glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - light;
+                const glm::vec3 e1 = glm::normalize(std::abs(u.y) < 0.9f * glm::length(u) ? glm::cross(u, glm::vec3(0.0f, 1.0f, 0.0f)) : glm::cross(u, glm::vec3(1.0f, 0.0f, 0.0f)));
+                const glm::vec3 e2 = glm::normalize(glm::cross(u, e1));
+                const float across = tilt * glm::length(u);
+                for (int k = 0; k < (tilt > 0.0f ? 4 : 1) && bounded; ++k) {
+                    const glm::vec3 ray = tilt > 0.0f ? u + across * ((k & 1) ? 1.0f : -1.0f) * ((k & 2) ? e1 : e2) : u;
+                    const float along = glm::dot(n, ray);
+                    const float t = -(glm::dot(n, light) + plane.w) / along;
+                    bounded = std::abs(along) > 1e-12f && t > 0.0f && std::isfinite(t);
+                    if (bounded) seen.add(light + t * ray, glm::mat4(1.0f), scene.cameraClipFromWorld);
+                }
             }
             if (bounded) {
                 if (seen.behind) return std::nullopt;
                 rect = intersection(own, pixelsOf(seen.lo, seen.hi, scene.viewport));
             }
         } else {
-            // Its bounding sphere against the box's, as angles from the light.
+            // Its bounding sphere against the box's widened by the reach, as angles from the light.
             const glm::vec3 to = r.centre() - light;
             const float rr = 0.5f * glm::length(r.size()), d = glm::length(to);
-            const bool around = d <= rr || distance <= radius;
+            const float nearest = glm::length(glm::max(glm::max(r.lo - light, light - r.hi), glm::vec3(0.0f)));
+            const bool around = d <= rr || distance <= radius || !(nearest > 0.0f);
             if (!around) {
                 const float apart = std::acos(std::clamp(glm::dot(to / d, (centre - light) / distance), -1.0f, 1.0f));
-                if (apart > std::asin(std::min(rr / d, 1.0f)) + std::asin(std::min(radius / distance, 1.0f))) continue;
+                if (apart > std::asin(std::min(rr / d, 1.0f)) + std::asin(std::min(radius / distance, 1.0f)) + reach.at(nearest)) continue;
             }
         }
         if (!isEmpty(rect)) rects.push_back(rect);

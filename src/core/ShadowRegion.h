@@ -45,15 +45,27 @@ struct RegionScene {
 std::optional<std::vector<PixelRect>> shadowRects(const glm::mat4& lightClipFromWorld, bool perspective, const std::vector<Bounds>& casters,
                                                   float depthSlack, const RegionScene& scene, std::size_t most);
 
-/// The rectangles for one caster `box` (world, widened by the caller) of a
-/// point light at `light`, worked in the world: a planar receiver's plane
-/// where the rays from the light through the box's corners meet it (its
-/// whole rectangle when one of them does not), any other receiver's whole
-/// rectangle when its bounding sphere and the box's overlap as seen from
-/// the light. For a box too wide for a perspective light space
-/// (pointLightView), receivers before it included. Nothing when a point
-/// lies behind the viewer.
-std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const RegionScene& scene);
+/// How far across its ray a receiver's taps reach, as an angle from the
+/// light (radians) for a receiver `distance` from it: `angle`, plus `world`
+/// scene units at the receiver, plus for pcss (`pcssSize` > 0, the light's
+/// radius) its search and penumbra, size (1 / nearest caster - 1 / distance).
+struct TapReach {
+    float angle = 0.0f;
+    float world = 0.0f;
+    float pcssSize = 0.0f;
+    float pcssNearest = 1.0f;
+    float at(float distance) const;
+};
+
+/// The rectangles for one caster `box` (world) of a point light at
+/// `light`, worked in the world: a planar receiver's plane where the rays
+/// from the light through the box's corners, each tilted by the taps'
+/// reach, meet it (its whole rectangle when one of them does not), any
+/// other receiver's whole rectangle when its bounding sphere and the box's,
+/// widened by the reach, overlap as seen from the light. For a box too wide
+/// for a perspective light space (pointLightView); receivers nearer the
+/// light than the box included. Nothing when a point lies behind the viewer.
+std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const TapReach& reach, const RegionScene& scene);
 
 /// A view from a point light at `light` around `box`, for a perspective
 /// light space of shadowRects: looking along the mean direction to the

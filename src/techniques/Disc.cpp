@@ -158,7 +158,7 @@ public:
             const std::optional<PointLightView> v = pointLightView(light, box);
             if (!v) {
                 // Too wide a disc for a perspective view: in the world.
-                const auto some = centralRects(light, box, scene);
+                const auto some = centralRects(light, box, TapReach{}, scene);
                 if (!some) return std::nullopt;
                 rects.insert(rects.end(), some->begin(), some->end());
                 continue;

@@ -148,13 +148,14 @@ TEST_F(ShadowRegionGLTest, PointLightsLookTheSame) {
 
 // A lamp over a floor and a small floating box, the box's shadow blurred
 // far past its edge: the rectangle must reach that far (each case fails
-// with the taps' reach left out of the box's widening: checked). pcf20's
-// and the grid's radii here reach over nine tenths of the frame, so that
-// frame is drawn in one draw with the test; pcss and the 32^2 cube's
-// bilinear taps leave part of it to skip.
+// with the taps' reach left out of the box's widening: checked; the grid's
+// box, widened, spreads too wide for a perspective view from the lamp and
+// goes through the world's rays, which fail without the tilt: checked).
+// pcf20's radius here reaches over nine tenths of the frame, so that frame
+// is drawn in one draw with the test; the others leave part of it to skip.
 TEST_F(ShadowRegionGLTest, APointLightsBlurredShadowLooksTheSame) {
     const std::vector<std::pair<const char*, bool>> filters = {{R"("filter": "pcf20", "diskRadius": 0.5, "diskGrowth": 2)", false},
-                                                               {R"("filter": "grid", "diskRadius": 0.4)", false},
+                                                               {R"("filter": "grid", "diskRadius": 0.4)", true},
                                                                {R"("filter": "pcss")", true},
                                                                {R"("filter": "hardware", "size": 32)", true}};
     for (const auto& [filter, skips] : filters) {

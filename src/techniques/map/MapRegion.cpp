@@ -61,7 +61,8 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
     // (the light's size over the receiver's distance at most) and its
     // filter (the size over the blockers' distance, no nearer than the
     // nearest caster) as angles.
-    float angle = (1.5f + std::max(o.normalBias, 0.0f) + 2.0f) * perDistance;
+    const float texelAngle = (1.5f + std::max(o.normalBias, 0.0f) + 2.0f) * perDistance;
+    float angle = texelAngle;
     const bool radial = o.filter == MapFilter::Grid || o.filter == MapFilter::Pcf20 || o.filter == MapFilter::Poisson;
     const float reach = radial ? 1.7320508f * o.diskRadius * (1.0f + std::max(o.diskGrowth, 0.0f) * viewerFar / far) : 0.0f;
     if (pcss) {
@@ -89,8 +90,10 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
         box.hi += widen;
         const std::optional<PointLightView> v = pointLightView(lamp, box);
         if (!v) {
-            // Too wide a caster for a perspective view: in the world.
-            const auto some = centralRects(lamp, box, scene);
+            // Too wide a caster for a perspective view: in the world, its
+            // own box, each corner's ray tilted by the reach at each receiver.
+            const TapReach taps{texelAngle, reach, pcss ? light.size : 0.0f, pcss ? p.nearestCaster : 1.0f};
+            const auto some = centralRects(lamp, frame.itemBounds[i], taps, scene);
             if (!some) return std::nullopt;
             rects.insert(rects.end(), some->begin(), some->end());
             continue;
