@@ -57,6 +57,17 @@ std::optional<double> expectSameFrame(const Scene& scene, const std::string& wha
     return with.share;
 }
 
+// `--set` lines giving light 0 technique "map" and each of `set` (under
+// lights[0].), each also added to `what`.
+std::vector<std::string> lightSettings(const std::vector<std::string>& set, std::string& what) {
+    std::vector<std::string> overrides = {"lights[0].shadow.technique=map"};
+    for (const std::string& s : set) {
+        overrides.push_back("lights[0]." + s);
+        what += " " + s;
+    }
+    return overrides;
+}
+
 } // namespace
 
 class ShadowRegionGLTest : public GLTest {};
@@ -100,12 +111,8 @@ TEST_F(ShadowRegionGLTest, FiltersOffsetsAndBiasesLookTheSame) {
     };
     for (const char* file : {"scenes/spot-objects.json", "scenes/learnopengl-shadow-mapping.json", "scenes/torus-resting.json"}) {
         for (const auto& set : settings) {
-            std::vector<std::string> overrides = {"lights[0].shadow.technique=map"};
             std::string what = std::filesystem::path(file).stem().string();
-            for (const std::string& s : set) {
-                overrides.push_back("lights[0]." + s);
-                what += " " + s;
-            }
+            std::vector<std::string> overrides = lightSettings(set, what);
             // pcss on a sun takes an angular size in degrees.
             if (set.back() == "size=0.3" && std::string(file) != "scenes/spot-objects.json") overrides.back() = "lights[0].size=2";
             SCOPED_TRACE(what);
@@ -134,12 +141,8 @@ TEST_F(ShadowRegionGLTest, PointLightsLookTheSame) {
     };
     for (const char* file : {"scenes/four-spheres-point.json", "scenes/torus-pyramid.json", "scenes/room-point.json", "scenes/penumbra-step.json"}) {
         for (const auto& set : settings) {
-            std::vector<std::string> overrides = {"lights[0].shadow.technique=map"};
             std::string what = std::filesystem::path(file).stem().string();
-            for (const std::string& s : set) {
-                overrides.push_back("lights[0]." + s);
-                what += " " + s;
-            }
+            std::vector<std::string> overrides = lightSettings(set, what);
             SCOPED_TRACE(what);
             expectSameFrame(loadSceneFile(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / file, overrides), what);
         }
