@@ -76,7 +76,8 @@ struct RenderOptions {
     /// as lit, without the test, which would find them lit: the same image
     /// for less (FrameStats counts "base.shadowedShare", the rectangles'
     /// share of the frame, when it used them: not over nine tenths of it).
-    /// Off: the test at every pixel. Default on.
+    /// Items that receive no shadows are shaded without the test too. Off:
+    /// the test at every pixel. Default on.
     bool shadowRegions = true;
 };
 

@@ -1,10 +1,10 @@
 // The base pass with its light's test only where the light's shadows can
 // fall (RenderOptions::shadowRegions; Technique::shadowedPixels gives the
-// rectangles). Where they cover more than nine tenths of the frame, one
-// draw with the test, as without them; else each item, in drawShaded's
-// order (nearest first), is drawn one of three ways:
-//   - lit, without the test, where its screen rectangle meets none of the
-//     region's (the test would find it lit everywhere);
+// rectangles). Each item, in drawShaded's order (nearest first), is drawn
+// one of three ways:
+//   - lit, without the test, where it does not receive shadows (its hook
+//     returns 1 whatever the test finds) or its screen rectangle meets none
+//     of the region's (the test would find it lit everywhere);
 //   - with the test, whole, where the region covers nearly all of it or it has
 //     many triangles (drawing it more than once would cost more vertices
 //     than the skipped tests save);
@@ -12,6 +12,8 @@
 //     (a scissor each), then lit over the whole of it, whose fragments
 //     where the first draws put this item fail the depth test (LESS, the
 //     same depth) before they are shaded.
+// Without rectangles, or where they cover more than nine tenths of the
+// frame, every item that receives shadows is drawn with the test, whole.
 // The image is the one drawShaded makes: every pixel takes its colour from
 // the same item's fragment (the items still arrive in the same order at
 // every pixel, so ties in depth go the same way) with visibility 1 outside
@@ -41,7 +43,7 @@ enum class Way { Lit, Tested, Split };
 
 } // namespace
 
-void Renderer::Impl::drawShadedByRegion(const ShaderVariant& variant, const gl::RenderState& state, const std::vector<PixelRect>& region) {
+void Renderer::Impl::drawShadedByRegion(const ShaderVariant& variant, const gl::RenderState& state, const std::vector<PixelRect>* region) {
     ShaderVariant lit = variant;  // the light's shading with visibility 1 (technique "none")
     const ShaderVariant plain;
     lit.techniqueFile = plain.techniqueFile;
@@ -49,23 +51,31 @@ void Renderer::Impl::drawShadedByRegion(const ShaderVariant& variant, const gl::
     lit.techniqueDefines = plain.techniqueDefines;
     lit.techniqueIncludes = plain.techniqueIncludes;
     const glm::ivec2 size = targets->size;
-    double share = 0.0;
-    for (const PixelRect& r : region) share += area(r) / (double(size.x) * double(size.y));
-    if (share > kMostShare) {  // hardly anything left to skip: one draw, with the test
-        gl::apply(state);
-        drawShaded(variant);
-        return;
+    if (region) {
+        double share = 0.0;
+        for (const PixelRect& r : *region) share += area(r) / (double(size.x) * double(size.y));
+        if (share > kMostShare)
+            region = nullptr;  // hardly anything left to skip: every receiver with the test
+        else
+            count("shadowedShare", share);
     }
-    count("shadowedShare", share);
 
     // Each item's way, then runs of consecutive items of the same way, in order.
     std::vector<Way> ways(opaqueOrder.size());
     std::vector<PixelRect> rects(opaqueOrder.size());
     for (std::size_t k = 0; k < opaqueOrder.size(); ++k) {
         const std::size_t i = opaqueOrder[k];
+        if (!items[i].receivesShadows) {
+            ways[k] = Way::Lit;  // its hook returns 1 whatever the test says
+            continue;
+        }
+        if (!region) {
+            ways[k] = Way::Tested;
+            continue;
+        }
         rects[k] = screenRectOf(itemBounds[i], info->clipFromWorld, size);
         double inside = 0.0;
-        for (const PixelRect& r : region) inside += area(intersection(rects[k], r));
+        for (const PixelRect& r : *region) inside += area(intersection(rects[k], r));
         const std::size_t triangles = scene->meshes[static_cast<std::size_t>(items[i].mesh)].triangleCount();
         ways[k] = inside <= 0.0                                                                   ? Way::Lit
                   : inside >= kWholeShare * area(rects[k]) || triangles > kSplitTriangles ? Way::Tested
@@ -84,7 +94,7 @@ void Renderer::Impl::drawShadedByRegion(const ShaderVariant& variant, const gl::
             // Rectangle by rectangle, the run's items that meet it (each
             // pixel still sees the run's items in order), then the run lit.
             std::vector<std::size_t> in;
-            for (const PixelRect& r : region) {
+            for (const PixelRect& r : *region) {
                 in.clear();
                 for (std::size_t j = k; j < end; ++j)
                     if (overlaps(rects[j], r)) in.push_back(opaqueOrder[j]);

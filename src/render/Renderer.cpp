@@ -107,19 +107,20 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
     } else {
         glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     }
-    // The light's test where its shadows can fall, then the rest shaded lit
-    // without it: the lit draw's fragments where the test's drew already
-    // fail the depth test (LESS) before they are shaded. Not on a depth
-    // pre-pass (LEQUAL: they would pass), nor with the surfaces (compare's
-    // reference, whose derivatives the frame keeps whole).
+    // The light's test only on items that receive shadows and where its
+    // shadows can fall, the rest shaded lit without it (RegionDraw.cpp).
+    // The rectangles split items, whose lit draw's fragments where the
+    // test's drew already fail the depth test (LESS) before they are
+    // shaded: not on a depth pre-pass (LEQUAL: they would pass). Neither
+    // with the surfaces (compare's reference images, drawn as they were).
+    const bool regions = baseLight >= 0 && !screenVisibility && options.shadowRegions && !options.surfaces;
     const std::optional<std::vector<PixelRect>> region =
-        baseLight >= 0 && !screenVisibility && options.shadowRegions && !depthPrepassed && !options.surfaces
-            ? technique(currentLight->shadow.technique).shadowedPixels(*info, view(static_cast<std::size_t>(baseLight)))
-            : std::nullopt;
-    if (!region)
-        drawShaded(variant);
+        regions && !depthPrepassed ? technique(currentLight->shadow.technique).shadowedPixels(*info, view(static_cast<std::size_t>(baseLight)))
+                                   : std::nullopt;
+    if (regions)
+        drawShadedByRegion(variant, state, region ? &*region : nullptr);
     else
-        drawShadedByRegion(variant, state, *region);
+        drawShaded(variant);
     targets->drawBuffers(false);
 }
 

@@ -147,10 +147,11 @@ struct Renderer::Impl final : TechniqueHost {
     // Draws with the renderer's shading program for `variant` (textured or
     // untextured per material) the items in `only`, or every opaque one.
     void drawShaded(ShaderVariant variant, const std::vector<std::size_t>* only = nullptr);
-    /// drawShaded, the light's test (in `variant`) run only in the pixels
-    /// of `region` (its technique's shadowedPixels) and the rest shaded
-    /// lit without it, under `state` (RegionDraw.cpp).
-    void drawShadedByRegion(const ShaderVariant& variant, const gl::RenderState& state, const std::vector<PixelRect>& region);
+    /// drawShaded, the light's test (in `variant`) run only on items that
+    /// receive shadows, in the pixels of `region` (its technique's
+    /// shadowedPixels; null: anywhere), and the rest shaded lit without it,
+    /// under `state` (RegionDraw.cpp).
+    void drawShadedByRegion(const ShaderVariant& variant, const gl::RenderState& state, const std::vector<PixelRect>* region);
 
     /// Whether item i is a translucent (AlphaMode::Blend) surface.
     bool translucent(std::size_t i) const {

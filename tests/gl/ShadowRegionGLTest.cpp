@@ -207,6 +207,18 @@ TEST_F(ShadowRegionGLTest, AViewFromInsideAShadowLooksTheSame) {
     }
 }
 
+// An item that receives no shadows is drawn without the test, whether the
+// light has rectangles or not (cascades: none; fit sdsm: a depth pre-pass,
+// where items are not split).
+TEST_F(ShadowRegionGLTest, ItemsThatReceiveNoShadowsLookTheSame) {
+    for (const char* how : {"lights[0].shadow.map.filter=grid", "lights[0].shadow.map.cascades=3", "lights[0].shadow.map.fit=sdsm"}) {
+        SCOPED_TRACE(how);
+        const Scene scene = loadSceneFile(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes/learnopengl-shadow-mapping.json",
+                                          {"lights[0].shadow.technique=map", how, "nodes[0].receivesShadows=false", "nodes[2].receivesShadows=false"});
+        expectSameFrame(scene, std::string("no-receivers ") + how);
+    }
+}
+
 // LearnOpenGL's directional scene at the peer's settings (a 3x3 kernel):
 // the three cubes' shadows and the cubes take a fifth of the frame or so
 // (measured: 0.22 at 800x600); the rest of the floor is shaded without the
