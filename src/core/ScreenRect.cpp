@@ -31,6 +31,13 @@ double area(const PixelRect& r) { return isEmpty(r) ? 0.0 : double(r.z - r.x) * 
 
 std::vector<PixelRect> mergedRects(std::vector<PixelRect> rects, std::size_t most) {
     std::erase_if(rects, [](const PixelRect& r) { return isEmpty(r); });
+    // The pairwise merges below cost the cube of the count: past a few
+    // hundred, the one rectangle around them all.
+    if (rects.size() > kMergeAtMost) {
+        PixelRect all = rects.front();
+        for (const PixelRect& r : rects) all = around(all, r);
+        return {all};
+    }
     // Pairs whose rectangle adds few pixels to the two (a tenth of their
     // union at most), until none do: one draw instead of two, and no pixel
     // drawn twice where they overlap.

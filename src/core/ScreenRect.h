@@ -24,10 +24,14 @@ inline bool isEmpty(const PixelRect& r) { return r.x >= r.z || r.y >= r.w; }
 /// when a corner lies behind the viewer.
 PixelRect screenRectOf(const Bounds& box, const glm::mat4& clipFromWorld, glm::ivec2 viewport);
 
+/// More rectangles than this are merged into the one around them all.
+inline constexpr std::size_t kMergeAtMost = 256;
+
 /// `rects` with every two whose rectangle adds a tenth or less to the
 /// pixels of both replaced by that rectangle, until none do, then the two
 /// whose rectangle adds the fewest, until at most `most` remain (empty
-/// ones dropped). Those left may overlap.
+/// ones dropped). Those left may overlap. More than kMergeAtMost: the
+/// rectangle around them all.
 std::vector<PixelRect> mergedRects(std::vector<PixelRect> rects, std::size_t most);
 
 /// The pixels in both (empty when they share none).

@@ -12,6 +12,9 @@ namespace shadowlab {
 
 namespace {
 
+// Casters times receivers above which shadowRects gives up.
+constexpr double kMostPairs = 1e6;
+
 // A box in the light's clip space, divided: the points of the box past the
 // near plane (perspective; the corners there and where the edges cross
 // it), and their bounds.
@@ -184,6 +187,9 @@ std::optional<std::vector<PixelRect>> shadowRects(const glm::mat4& lightClip, bo
         }
         receivers.push_back(std::move(r));
     }
+    // Every caster against every receiver: past a million pairs (a frame's
+    // worth of work on the CPU), the test everywhere.
+    if (double(casters.size()) * double(receivers.size()) > kMostPairs) return std::nullopt;
     std::vector<PixelRect> rects;
     for (const Bounds& box : casters) {
         const LightImage caster = imageOf(box, lightClip, perspective);

@@ -71,3 +71,9 @@ TEST(ScreenRectTest, AtMostTheAskedNumberRemainTheCheapestMergedFirst) {
             EXPECT_TRUE(inside) << "at most " << most;
         }
 }
+
+TEST(ScreenRectTest, ManyRectanglesBecomeTheOneAroundThemAll) {
+    std::vector<PixelRect> many;
+    for (int i = 0; i <= static_cast<int>(kMergeAtMost); ++i) many.push_back({3 * i, 0, 3 * i + 1, 1});
+    EXPECT_EQ(mergedRects(many, 8), std::vector<PixelRect>{PixelRect(0, 0, 3 * static_cast<int>(kMergeAtMost) + 1, 1)});
+}
