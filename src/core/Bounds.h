@@ -22,15 +22,16 @@ struct Bounds {
         add(b.hi);
     }
     glm::vec3 centre() const { return 0.5f * (lo + hi); }
+    /// Corner c (0..7): bit 0 picks hi.x, bit 1 hi.y, bit 2 hi.z.
+    glm::vec3 corner(int c) const { return glm::vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z); }
+    /// The distance from `p` to the box (0 inside it).
+    float distanceTo(const glm::vec3& p) const { return glm::length(glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f))); }
     glm::vec3 size() const { return hi - lo; }
     /// The bounds of this box's eight corners moved by an affine `to`.
     Bounds transformed(const glm::mat4& to) const {
         Bounds out;
         if (empty()) return out;
-        for (int c = 0; c < 8; ++c) {
-            const glm::vec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-            out.add(glm::vec3(to * glm::vec4(corner, 1.0f)));
-        }
+        for (int c = 0; c < 8; ++c) out.add(glm::vec3(to * glm::vec4(corner(c), 1.0f)));
         return out;
     }
 };

@@ -7,26 +7,27 @@
 
 namespace shadowlab {
 
-PixelRect screenRectOf(const Bounds& box, const glm::mat4& clipFromWorld, glm::ivec2 viewport) {
-    const PixelRect whole(0, 0, viewport.x, viewport.y);
-    if (box.empty()) return PixelRect(0);
-    glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z);
-        const glm::vec4 clip = clipFromWorld * glm::vec4(corner, 1.0f);
-        if (!(clip.w > 1e-6f)) return whole;
-        lo = glm::min(lo, glm::vec2(clip) / clip.w);
-        hi = glm::max(hi, glm::vec2(clip) / clip.w);
-    }
+PixelRect pixelsAround(glm::vec2 lo, glm::vec2 hi, glm::ivec2 viewport) {
     const glm::vec2 size(viewport);
     const glm::vec2 pixelLo = glm::clamp(glm::floor((lo * 0.5f + 0.5f) * size) - 1.0f, glm::vec2(0.0f), size);
     const glm::vec2 pixelHi = glm::clamp(glm::ceil((hi * 0.5f + 0.5f) * size) + 1.0f, glm::vec2(0.0f), size);
     return PixelRect(static_cast<int>(pixelLo.x), static_cast<int>(pixelLo.y), static_cast<int>(pixelHi.x), static_cast<int>(pixelHi.y));
 }
 
+PixelRect screenRectOf(const Bounds& box, const glm::mat4& clipFromWorld, glm::ivec2 viewport) {
+    if (box.empty()) return PixelRect(0);
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 clip = clipFromWorld * glm::vec4(box.corner(c), 1.0f);
+        if (!(clip.w > 1e-6f)) return PixelRect(0, 0, viewport.x, viewport.y);
+        lo = glm::min(lo, glm::vec2(clip) / clip.w);
+        hi = glm::max(hi, glm::vec2(clip) / clip.w);
+    }
+    return pixelsAround(lo, hi, viewport);
+}
+
 namespace {
 PixelRect around(const PixelRect& a, const PixelRect& b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.z, b.z), std::max(a.w, b.w)}; }
-double area(const PixelRect& r) { return isEmpty(r) ? 0.0 : double(r.z - r.x) * double(r.w - r.y); }
 } // namespace
 
 std::vector<PixelRect> mergedRects(std::vector<PixelRect> rects, std::size_t most) {

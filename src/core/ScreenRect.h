@@ -7,8 +7,6 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
-
-#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -18,6 +16,13 @@ using PixelRect = glm::ivec4;
 
 /// True when `r` holds no pixel.
 inline bool isEmpty(const PixelRect& r) { return r.x >= r.z || r.y >= r.w; }
+
+/// Its pixels.
+inline double area(const PixelRect& r) { return isEmpty(r) ? 0.0 : double(r.z - r.x) * double(r.w - r.y); }
+
+/// The pixels of a `viewport`-sized frame around clip-space (divided)
+/// points from `lo` to `hi`, a pixel wider for rounding.
+PixelRect pixelsAround(glm::vec2 lo, glm::vec2 hi, glm::ivec2 viewport);
 
 /// The pixels of a `viewport`-sized frame that `box` may cover through
 /// `clipFromWorld` (its corners' images, a pixel wider), or the whole frame

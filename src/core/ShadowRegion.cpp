@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace shadowlab {
@@ -30,7 +31,7 @@ LightImage imageOf(const Bounds& box, const glm::mat4& lightClip, bool perspecti
     LightImage out;
     std::array<glm::vec4, 8> clip;
     for (int c = 0; c < 8; ++c)
-        clip[static_cast<std::size_t>(c)] = lightClip * glm::vec4((c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y, (c & 4) ? box.hi.z : box.lo.z, 1.0f);
+        clip[static_cast<std::size_t>(c)] = lightClip * glm::vec4(box.corner(c), 1.0f);
     // Past the near plane: z >= -w (an orthographic light keeps all: its map clamps depth).
     auto past = [&](const glm::vec4& p) { return perspective ? p.z + p.w : 1.0f; };
     auto add = [&](const glm::vec4& p) {
@@ -70,15 +71,12 @@ struct Extent {
     }
 };
 
-// The pixels around clip-space points from `lo` to `hi`: a pixel wider
-// for rounding, out to whole 4x4 blocks (the rasteriser's), in the frame.
+// pixelsAround, out to whole 4x4 blocks (the rasteriser's).
 PixelRect pixelsOf(glm::vec2 lo, glm::vec2 hi, glm::ivec2 viewport) {
-    const glm::vec2 size(viewport);
-    const glm::vec2 pixelLo = glm::clamp(glm::floor((lo * 0.5f + 0.5f) * size) - 1.0f, glm::vec2(0.0f), size);
-    const glm::vec2 pixelHi = glm::clamp(glm::ceil((hi * 0.5f + 0.5f) * size) + 1.0f, glm::vec2(0.0f), size);
-    auto down4 = [](float v) { return static_cast<int>(std::floor(v / 4.0f)) * 4; };
-    auto up4 = [](float v) { return static_cast<int>(std::ceil(v / 4.0f)) * 4; };
-    return PixelRect(down4(pixelLo.x), down4(pixelLo.y), std::min(up4(pixelHi.x), viewport.x), std::min(up4(pixelHi.y), viewport.y));
+    const PixelRect r = pixelsAround(lo, hi, viewport);
+    auto down4 = [](int v) { return v / 4 * 4; };  // v >= 0
+    auto up4 = [](int v) { return (v + 3) / 4 * 4; };
+    return PixelRect(down4(r.x), down4(r.y), std::min(up4(r.z), viewport.x), std::min(up4(r.w), viewport.y));
 }
 
 } // namespace
@@ -110,7 +108,7 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
             Extent seen;
             bool bounded = true;
             for (int c = 0; c < 8 && bounded; ++c) {
-                const glm::vec3 u = glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - light;
+                const glm::vec3 u = box.corner(c) - light;
                 const glm::vec3 e1 = glm::normalize(std::abs(u.y) < 0.9f * glm::length(u) ? glm::cross(u, glm::vec3(0.0f, 1.0f, 0.0f)) : glm::cross(u, glm::vec3(1.0f, 0.0f, 0.0f)));
                 const glm::vec3 e2 = glm::normalize(glm::cross(u, e1));
                 const float across = tilt * glm::length(u);
@@ -130,7 +128,7 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
             // Its bounding sphere against the box's widened by the reach, as angles from the light.
             const glm::vec3 to = r.centre() - light;
             const float rr = 0.5f * glm::length(r.size()), d = glm::length(to);
-            const float nearest = glm::length(glm::max(glm::max(r.lo - light, light - r.hi), glm::vec3(0.0f)));
+            const float nearest = r.distanceTo(light);
             const bool around = d <= rr || distance <= radius || !(nearest > 0.0f);
             if (!around) {
                 const float apart = std::acos(std::clamp(glm::dot(to / d, (centre - light) / distance), -1.0f, 1.0f));
@@ -142,11 +140,24 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
     return rects;
 }
 
+namespace {
+
+// A view from a point light at `light` around `box`: looking along the
+// mean direction to the box's corners, with the field (square) that holds
+// them all and the box's nearest depth along that axis. Nothing when the
+// corners spread over more than 80 degrees from it, or the box reaches the
+// light's side.
+struct PointLightView {
+    glm::mat4 viewFromWorld{1.0f};
+    float fovY = 0.0f;         // radians
+    float nearestDepth = 0.0f; // the box's, along the view's axis, scene units
+};
+
 std::optional<PointLightView> pointLightView(const glm::vec3& light, const Bounds& box) {
     std::array<glm::vec3, 8> towards;
     glm::vec3 sum(0.0f);
     for (int c = 0; c < 8; ++c) {
-        const glm::vec3 d = glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - light;
+        const glm::vec3 d = box.corner(c) - light;
         const float length = glm::length(d);
         if (!(length > 0.0f)) return std::nullopt;
         towards[static_cast<std::size_t>(c)] = d;
@@ -163,6 +174,21 @@ std::optional<PointLightView> pointLightView(const glm::vec3& light, const Bound
     const glm::vec3 up = std::abs(axis.y) > 0.99f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
     // The square field's half-angle holds the widest corner's (a little more for rounding).
     return PointLightView{glm::lookAt(light, light + axis, up), 2.0f * std::acos(widest) * 1.02f + 1e-3f, nearest};
+}
+
+} // namespace
+
+std::optional<std::vector<PixelRect>> pointCasterRects(const glm::vec3& light, const Bounds& box, float widen, const TapReach& taps,
+                                                       const std::function<float(float)>& nearPlaneFor, float farPlane, const RegionScene& scene) {
+    Bounds widened = box;
+    widened.lo -= widen;
+    widened.hi += widen;
+    const std::optional<PointLightView> v = pointLightView(light, widened);
+    if (!v) return centralRects(light, box, taps, scene);  // too wide a caster for a perspective view: in the world
+    const float nearPlane = nearPlaneFor(v->nearestDepth);
+    if (!(nearPlane > 0.0f)) return std::nullopt;
+    const glm::mat4 clip = glm::perspective(v->fovY, 1.0f, nearPlane, farPlane) * v->viewFromWorld;
+    return shadowRects(clip, true, {widened}, 4.0f, scene, kMaxShadowRects);  // every receiver past the near plane counts
 }
 
 std::optional<std::vector<PixelRect>> shadowRects(const glm::mat4& lightClip, bool perspective, const std::vector<Bounds>& casters,

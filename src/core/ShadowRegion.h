@@ -18,6 +18,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -63,20 +64,19 @@ struct TapReach {
 /// reach, meet it (its whole rectangle when one of them does not), any
 /// other receiver's whole rectangle when its bounding sphere and the box's,
 /// widened by the reach, overlap as seen from the light. For a box too wide
-/// for a perspective light space (pointLightView); receivers nearer the
+/// for a perspective light space (pointCasterRects); receivers nearer the
 /// light than the box included. Nothing when a point lies behind the viewer.
 std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const TapReach& reach, const RegionScene& scene);
 
-/// A view from a point light at `light` around `box`, for a perspective
-/// light space of shadowRects: looking along the mean direction to the
-/// box's corners, with the field (square) that holds them all and the
-/// box's nearest depth along that axis. Nothing when the corners spread
-/// over more than 80 degrees from it, or the box reaches the light's side.
-struct PointLightView {
-    glm::mat4 viewFromWorld{1.0f};
-    float fovY = 0.0f;        ///< radians
-    float nearestDepth = 0.0f;///< the box's, along the view's axis, scene units
-};
-std::optional<PointLightView> pointLightView(const glm::vec3& light, const Bounds& box);
+/// The rectangles for one caster `box` (world) of a point light at
+/// `light`: the box widened by `widen` (the taps' reach where it lies
+/// farthest) in a perspective light space from the light around it (along
+/// the mean direction to its corners), whose near plane `nearPlaneFor`
+/// gives from the box's nearest depth along that axis (none above 0:
+/// nothing) and every receiver past it counts, out to `farPlane`; or, when
+/// the box spreads more than 80 degrees from that axis or reaches the
+/// light's side, centralRects of `box` itself with `taps`. Not merged.
+std::optional<std::vector<PixelRect>> pointCasterRects(const glm::vec3& light, const Bounds& box, float widen, const TapReach& taps,
+                                                       const std::function<float(float)>& nearPlaneFor, float farPlane, const RegionScene& scene);
 
 } // namespace shadowlab

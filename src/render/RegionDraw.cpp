@@ -37,8 +37,6 @@ constexpr double kWholeShare = 0.9;
 // lit draws would skip is less than what the extra draws cost).
 constexpr double kMostShare = 0.9;
 
-double area(const PixelRect& r) { return isEmpty(r) ? 0.0 : double(r.z - r.x) * double(r.w - r.y); }
-
 enum class Way { Lit, Tested, Split };
 
 } // namespace
@@ -81,6 +79,8 @@ void Renderer::Impl::drawShadedByRegion(const ShaderVariant& variant, const gl::
                   : inside >= kWholeShare * area(rects[k]) || triangles > kSplitTriangles ? Way::Tested
                                                                                           : Way::Split;
     }
+    // `state` is in effect on entry (the base pass applied it); only the
+    // split draws' scissors change it, and it is applied again after them.
     std::vector<std::size_t> run;
     for (std::size_t k = 0; k < opaqueOrder.size();) {
         const Way way = ways[k];
@@ -88,7 +88,6 @@ void Renderer::Impl::drawShadedByRegion(const ShaderVariant& variant, const gl::
         run.clear();
         for (; end < opaqueOrder.size() && ways[end] == way; ++end) run.push_back(opaqueOrder[end]);
         if (way != Way::Split) {
-            gl::apply(state);
             drawShaded(way == Way::Lit ? lit : variant, &run);
         } else {
             // Rectangle by rectangle, the run's items that meet it (each
@@ -109,7 +108,6 @@ void Renderer::Impl::drawShadedByRegion(const ShaderVariant& variant, const gl::
         }
         k = end;
     }
-    gl::apply(state);
 }
 
 } // namespace shadowlab

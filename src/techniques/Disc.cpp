@@ -152,19 +152,10 @@ public:
         // around each disc, out past every item.
         const glm::vec3 light = view.light.position;
         float farthest = 0.0f;
-        for (int c = 0; c < 8; ++c) farthest = std::max(farthest, glm::length(glm::mix(all.lo, all.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - light));
+        for (int c = 0; c < 8; ++c) farthest = std::max(farthest, glm::length(all.corner(c) - light));
         std::vector<glm::ivec4> rects;
         for (const Bounds& box : boxes) {
-            const std::optional<PointLightView> v = pointLightView(light, box);
-            if (!v) {
-                // Too wide a disc for a perspective view: in the world.
-                const auto some = centralRects(light, box, TapReach{}, scene);
-                if (!some) return std::nullopt;
-                rects.insert(rects.end(), some->begin(), some->end());
-                continue;
-            }
-            const glm::mat4 clip = glm::perspective(v->fovY, 1.0f, 0.5f * v->nearestDepth, 1.01f * farthest + 1.0f) * v->viewFromWorld;
-            const auto some = shadowRects(clip, true, {box}, 4.0f, scene, kMaxShadowRects);  // the whole depth range past the near plane
+            const auto some = pointCasterRects(light, box, 0.0f, TapReach{}, [](float nearestDepth) { return 0.5f * nearestDepth; }, 1.01f * farthest + 1.0f, scene);
             if (!some) return std::nullopt;
             rects.insert(rects.end(), some->begin(), some->end());
         }

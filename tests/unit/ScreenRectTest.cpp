@@ -10,7 +10,6 @@ using namespace shadowlab;
 namespace {
 // A 45-degree camera at the origin looking down -z, 100x100 pixels.
 glm::mat4 camera() { return glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f); }
-double area(const PixelRect& r) { return isEmpty(r) ? 0.0 : double(r.z - r.x) * double(r.w - r.y); }
 } // namespace
 
 TEST(ScreenRectTest, ABoxInFrontCoversItsImageAPixelWider) {

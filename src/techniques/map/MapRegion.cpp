@@ -8,8 +8,6 @@
 #include "techniques/map/MapSettings.h"
 #include "techniques/map/MapTranslucent.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -47,12 +45,10 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
     for (std::size_t i = 0; i < frame.items.size(); ++i) {
         const Bounds& box = frame.itemBounds[i];
         for (int c = 0; c < 8; ++c) {
-            const glm::vec3 corner = glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1));
-            farthest = std::max(farthest, glm::length(corner - lamp));
-            if (frame.items[i].receivesShadows) viewerFar = std::max(viewerFar, glm::length(corner - eye));
+            farthest = std::max(farthest, glm::length(box.corner(c) - lamp));
+            if (frame.items[i].receivesShadows) viewerFar = std::max(viewerFar, glm::length(box.corner(c) - eye));
         }
-        if (frame.items[i].receivesShadows)
-            nearestReceiver = std::min(nearestReceiver, glm::length(glm::max(glm::max(box.lo - lamp, lamp - box.hi), glm::vec3(0.0f))));
+        if (frame.items[i].receivesShadows) nearestReceiver = std::min(nearestReceiver, box.distanceTo(lamp));
     }
     // How far a receiver's taps reach across its ray: texels (a bilinear
     // footprint, the normal offset, two for rounding) as an angle, the
@@ -77,32 +73,20 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
     const float bias = usesPresetBias(o, true) ? std::abs(o.constantBias) : std::abs(o.constantBias) * far;
     const float slack = 1.25f * (bias + (std::max(o.normalBias, 0.0f) + 2.0f) * perDistance * far) + 1e-4f * far;
     const RegionScene scene{frame.items, frame.itemBounds, frame.itemPlanes, frame.clipFromWorld, frame.viewport};
+    // Each caster's box widened by the taps' reach where it lies farthest;
+    // too wide for a perspective view, its corners' rays tilted by the
+    // reach at each receiver.
+    const TapReach taps{texelAngle, reach, pcss ? light.size : 0.0f, pcss ? p.nearestCaster : 1.0f};
+    const auto nearPlaneFor = [&](float nearestDepth) {
+        return pcss ? 0.5f * std::min(nearestDepth, nearestReceiver) : std::max(nearestDepth - slack, 1e-3f * nearestDepth);
+    };
     std::vector<PixelRect> rects;
     for (std::size_t i = 0; i < frame.items.size(); ++i) {
         if (!frame.items[i].castsShadows || p.faceMask(i) == 0) continue;
-        // The box widened by the taps' reach where it lies farthest, then a
-        // perspective light space from the lamp around it.
-        Bounds box = frame.itemBounds[i];
+        const Bounds& box = frame.itemBounds[i];
         float boxFar = 0.0f;
-        for (int c = 0; c < 8; ++c) boxFar = std::max(boxFar, glm::length(glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - lamp));
-        const float widen = angle * boxFar + reach;
-        box.lo -= widen;
-        box.hi += widen;
-        const std::optional<PointLightView> v = pointLightView(lamp, box);
-        if (!v) {
-            // Too wide a caster for a perspective view: in the world, its
-            // own box, each corner's ray tilted by the reach at each receiver.
-            const TapReach taps{texelAngle, reach, pcss ? light.size : 0.0f, pcss ? p.nearestCaster : 1.0f};
-            const auto some = centralRects(lamp, frame.itemBounds[i], taps, scene);
-            if (!some) return std::nullopt;
-            rects.insert(rects.end(), some->begin(), some->end());
-            continue;
-        }
-        const float nearPlane = pcss ? 0.5f * std::min(v->nearestDepth, nearestReceiver) : std::max(v->nearestDepth - slack, 1e-3f * v->nearestDepth);
-        if (!(nearPlane > 0.0f)) return std::nullopt;
-        const glm::mat4 clip = glm::perspective(v->fovY, 1.0f, nearPlane, 1.01f * farthest + 1.0f) * v->viewFromWorld;
-        // Past its near plane: the receivers that may be shadowed.
-        const auto some = shadowRects(clip, true, {box}, 4.0f, scene, kMaxShadowRects);
+        for (int c = 0; c < 8; ++c) boxFar = std::max(boxFar, glm::length(box.corner(c) - lamp));
+        const auto some = pointCasterRects(lamp, box, angle * boxFar + reach, taps, nearPlaneFor, 1.01f * farthest + 1.0f, scene);
         if (!some) return std::nullopt;
         rects.insert(rects.end(), some->begin(), some->end());
     }
@@ -143,7 +127,7 @@ std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const Li
         if (camera.perspective) {
             float farthest = camera.nearPlane;
             for (int c = 0; c < 8; ++c)
-                farthest = std::max(farthest, glm::dot(glm::mix(box.lo, box.hi, glm::vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1)) - lightPosition, axis));
+                farthest = std::max(farthest, glm::dot(box.corner(c) - lightPosition, axis));
             margin *= farthest;
         }
         box.lo -= margin;
