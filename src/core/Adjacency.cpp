@@ -1,5 +1,6 @@
 #include "core/Adjacency.h"
 
+#include <cmath>
 #include <cstring>
 #include <unordered_map>
 
@@ -72,6 +73,30 @@ std::size_t openEdges(const std::vector<glm::vec3>& positions, const std::vector
         if (use.count != 1 || twin == edges.end() || twin->second.count != 1) ++open;
     }
     return open;
+}
+
+int closedWinding(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
+    if (indices.size() < 3 || indices.size() % 3 != 0) return 0;
+    for (const std::uint32_t i : indices)
+        if (i >= positions.size()) return 0;
+    if (openEdges(positions, indices) != 0) return 0;
+    // Six times the signed volume, about the bounds' centre (for precision).
+    glm::dvec3 lo(positions[indices[0]]), hi = lo;
+    for (const std::uint32_t i : indices) {
+        lo = glm::min(lo, glm::dvec3(positions[i]));
+        hi = glm::max(hi, glm::dvec3(positions[i]));
+    }
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    double volume = 0.0;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const glm::dvec3 a = glm::dvec3(positions[indices[t]]) - centre, b = glm::dvec3(positions[indices[t + 1]]) - centre,
+                         c = glm::dvec3(positions[indices[t + 2]]) - centre;
+        volume += glm::dot(a, glm::cross(b, c));
+    }
+    // Enclosing next to nothing against its bounds' cube: no inside to speak of.
+    const double diagonal = glm::length(hi - lo);
+    if (!(std::abs(volume) > 1e-9 * diagonal * diagonal * diagonal)) return 0;
+    return volume > 0.0 ? 1 : -1;
 }
 
 } // namespace shadowlab

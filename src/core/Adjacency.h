@@ -24,4 +24,13 @@ std::vector<std::uint32_t> adjacencyIndices(const std::vector<glm::vec3>& positi
 /// more than two: 0 for a closed manifold mesh.
 std::size_t openEdges(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices);
 
+/// Which way a closed mesh's triangles turn: +1 when it has no open edge
+/// (openEdges() == 0: every edge walked once each way, so the triangles
+/// wind one way round an inside) and its counter-clockwise sides face out
+/// (a positive signed volume), -1 when they face in, 0 for any other mesh
+/// (open, none, or enclosing no volume, as a plane drawn from both sides).
+/// A ray from outside such a mesh meets a side facing it first: a depth
+/// pass from a light outside it may leave the far sides out.
+int closedWinding(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices);
+
 } // namespace shadowlab

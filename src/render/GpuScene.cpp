@@ -50,6 +50,7 @@ GpuScene::GpuScene(const Scene& scene) {
         for (const glm::vec3& p : mesh.positions) gpu.bounds.add(p);
         gpu.plane = meshPlane(mesh);
         gpu.convex = convexPlanes(mesh);
+        gpu.winding = closedWinding(mesh.positions, mesh.indices);
         meshes_.push_back(std::move(gpu));
     }
     GLint maxSize = 0;

@@ -18,6 +18,7 @@ struct GpuMesh {
     Bounds bounds;                 ///< object space
     std::optional<glm::vec4> plane; ///< object space, when the mesh is planar (core/Plane.h)
     std::vector<glm::vec4> convex;  ///< object space, the planes of a convex mesh (core/Plane.h); empty otherwise
+    int winding = 0;                ///< closed: +1, counter-clockwise sides out; -1, in; open: 0 (core/Adjacency.h: closedWinding)
     gl::Buffer adjacency{gl::NoCreate}; ///< GL_TRIANGLES_ADJACENCY indices, built on first use
     gl::VertexArray adjacencyArray{gl::NoCreate};
 };
@@ -38,6 +39,8 @@ public:
     const std::optional<glm::vec4>& plane(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].plane; }
     /// Object-space planes of Scene::meshes[mesh] when it is convex (small meshes only), else empty.
     const std::vector<glm::vec4>& convex(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].convex; }
+    /// Which way Scene::meshes[mesh] winds when it is closed (closedWinding: +1, -1), 0 when it is not.
+    int winding(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].winding; }
     /// The texture for Scene::textures[i].
     const gl::Texture& texture(int i) const { return textures_[static_cast<std::size_t>(i)]; }
     std::size_t meshCount() const { return meshes_.size(); }

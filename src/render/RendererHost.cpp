@@ -139,7 +139,11 @@ void Renderer::Impl::beginFrame(const Scene& s, glm::ivec2 size, double timeSeco
     itemBounds.clear();
     itemPlanes.clear();
     itemConvex.clear();
+    itemWinding.clear();
     for (const DrawItem& item : items) {
+        // A mirroring transform turns the mesh's winding round.
+        const int winding = gpu->winding(item.mesh) * (glm::determinant(glm::mat3(item.worldFromObject)) < 0.0f ? -1 : 1);
+        itemWinding.push_back(static_cast<std::int8_t>(winding));
         std::vector<glm::vec4>& convex = itemConvex.emplace_back();
         for (const glm::vec4& plane : gpu->convex(item.mesh)) convex.push_back(transformPlane(plane, item.worldFromObject));
         itemBounds.push_back(gpu->bounds(item.mesh).transformed(item.worldFromObject));
@@ -147,7 +151,7 @@ void Renderer::Impl::beginFrame(const Scene& s, glm::ivec2 size, double timeSeco
         itemPlanes.push_back(plane ? std::optional<glm::vec4>(transformPlane(*plane, item.worldFromObject)) : std::nullopt);
     }
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-    info.emplace(FrameInfo{s, items, itemBounds, itemPlanes, itemConvex, size});
+    info.emplace(FrameInfo{s, items, itemBounds, itemPlanes, itemConvex, itemWinding, size});
     info->viewFromWorld = s.camera.viewFromWorld();
     info->clipFromView = infiniteFar ? s.camera.clipFromViewInfiniteFar(aspect) : s.camera.clipFromView(aspect);
     info->clipFromWorld = info->clipFromView * info->viewFromWorld;

@@ -53,6 +53,7 @@ struct Renderer::Impl final : TechniqueHost {
     std::vector<Bounds> itemBounds;
     std::vector<std::optional<glm::vec4>> itemPlanes;
     std::vector<std::vector<glm::vec4>> itemConvex;
+    std::vector<std::int8_t> itemWinding;
     /// The opaque items nearest first (their boxes' centres along the
     /// view): drawShaded's order, so that the depth test rejects hidden
     /// fragments before they are shaded.

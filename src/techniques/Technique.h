@@ -20,6 +20,7 @@
 #include <shadowlab/Scene.h>
 #include <shadowlab/Techniques.h>
 
+#include <cstdint>
 #include <optional>
 
 #include <cstdint>
@@ -37,6 +38,7 @@ struct FrameInfo {
     const std::vector<Bounds>& itemBounds;   ///< world-space bounds of each item
     const std::vector<std::optional<glm::vec4>>& itemPlanes; ///< world-space plane (n, d) of each planar item (core/Plane.h)
     const std::vector<std::vector<glm::vec4>>& itemConvex;   ///< world-space planes of each convex item (core/Plane.h), else empty
+    const std::vector<std::int8_t>& itemWinding;             ///< each closed item's winding in world space (+1: its counter-clockwise sides face out, -1: its clockwise ones; core/Adjacency.h: closedWinding), 0 for an open one
     glm::ivec2 viewport{0};                  ///< the frame's size, pixels
     glm::mat4 viewFromWorld{1.0f};           ///< the camera's
     glm::mat4 clipFromView{1.0f};

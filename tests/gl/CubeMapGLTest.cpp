@@ -225,6 +225,47 @@ TEST_F(CubeMapGLTest, CastersAreDrawnOnlyIntoTheFacesTheyTouch) {
     EXPECT_LT(sent[0], 0.5 * sent[1]);
 }
 
+// A cube's pass leaves out the far sides of closed casters the light sees
+// from outside (MapCasterDraw.h). Whichever way a crate's triangles wind
+// (as built, mirrored by its transform, turned inside out), the map keeps
+// its near side: the crate's side facing the light lies 2.5 m from it
+// along +X, its far side 3.5 m, and a floor (open: both sides drawn) 2 m
+// below it (a ball under the floor keeps it in the map), so the stored distances at the two faces' centres stand at
+// 1.25 (the far side: 1.75; the offsets and slope bias, a texel's slope
+// at most there, move it by well under 0.05).
+TEST_F(CubeMapGLTest, ClosedCastersKeepTheirNearSideWhicheverWayTheyWind) {
+    const char* ways[3] = {"as built", "mirrored", "inside out"};
+    for (int k = 0; k < 3; ++k) {
+        Scene scene = parseScene(R"({"camera": {"position": [0, 1, 8], "target": [0, 0, 0]},
+          "lights": [{"type": "point", "position": [0, 0, 0], "shadow": {"technique": "map", "map": {"size": 256}}}],
+          "nodes": [{"name": "floor", "shape": {"type": "plane", "size": [20, 20]}, "translation": [0, -2, 0]},
+                    {"name": "crate", "shape": {"type": "box", "size": [1, 1, 1]}, "translation": [3, 0, 0]},
+                    {"name": "under", "shape": {"type": "sphere", "radius": 0.3}, "translation": [1, -3, 0]}]})",
+                                 "winding", ".");
+        for (Node& node : scene.nodes)
+            if (node.name == "crate" && k == 1) node.scale = glm::vec3(-1.0f, 1.0f, 1.0f);
+        if (k == 2)
+            for (Mesh& mesh : scene.meshes)
+                if (mesh.triangleCount() == 12)  // the crate's box (the floor has two)
+                    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        RenderOptions options;
+        options.width = 160;
+        options.height = 120;
+        renderer.render(scene, options);
+        std::vector<float> cube;
+        for (DebugImage& image : renderer.debugImages(scene))
+            if (image.name == "light0-cube") cube = std::move(image.values);
+        ASSERT_EQ(cube.size(), 6u * 256u * 256u) << ways[k];
+        const std::size_t centre = 128u * 256u + 128u;
+        const float crate = cube[0 * 256u * 256u + centre], floor = cube[3 * 256u * 256u + centre];  // faces +X and -Y
+        ASSERT_LT(crate, 1.0f) << ways[k];
+        ASSERT_LT(floor, 1.0f) << ways[k];
+        EXPECT_NEAR(crate / floor, 1.25f, 0.05f) << ways[k] << ": the crate's near side, not its far side (1.75)";
+    }
+}
+
 // Point-light options that only make sense for 2D maps, and the reverse, are named errors.
 TEST_F(CubeMapGLTest, FiltersForTheOtherKindOfMapAreNamedErrors) {
     auto load = [](const std::string& type, const std::string& options) {

@@ -53,3 +53,29 @@ TEST(Adjacency, RoundShapesAreClosedAcrossTheirSeams) {
     const Mesh cone = shapes::cone(0.5f, 1.0f, 10);
     EXPECT_EQ(openEdges(cone.positions, cone.indices), 0u);
 }
+
+// Which way a closed mesh winds (closedWinding): the built-in solids wind
+// counter-clockwise outside; turned inside out they wind in; anything open
+// or enclosing nothing has no winding (a depth pass draws both its sides).
+TEST(Adjacency, ClosedShapesWindOutAndOpenOnesNotAtAll) {
+    const Mesh solids[] = {shapes::box(glm::vec3(1.0f, 0.02f, 2.0f)), shapes::sphere(1.0f, 12, 7), shapes::torus(1.0f, 0.3f, 16, 8),
+                           shapes::cylinder(0.5f, 1.0f, 10), shapes::cone(0.5f, 1.0f, 10), shapes::pyramid(1.0f, 1.0f)};
+    for (const Mesh& m : solids) {
+        EXPECT_EQ(closedWinding(m.positions, m.indices), 1);
+        std::vector<std::uint32_t> inside = m.indices;
+        for (std::size_t t = 0; t + 2 < inside.size(); t += 3) std::swap(inside[t + 1], inside[t + 2]);
+        EXPECT_EQ(closedWinding(m.positions, inside), -1) << "turned inside out";
+    }
+    // A box with one face (two triangles) left out is open.
+    const Mesh box = shapes::box(glm::vec3(1.0f));
+    std::vector<std::uint32_t> open(box.indices.begin() + 6, box.indices.end());
+    EXPECT_EQ(closedWinding(box.positions, open), 0);
+    // A square drawn from both sides: every edge walked both ways, no volume.
+    const std::vector<glm::vec3> p{{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
+    EXPECT_EQ(closedWinding(p, {0, 2, 1, 0, 3, 2, 0, 1, 2, 0, 2, 3}), 0);
+    // A plane, nothing, and indices past the vertices.
+    const Mesh plane = shapes::plane(2.0f, 2.0f);
+    EXPECT_EQ(closedWinding(plane.positions, plane.indices), 0);
+    EXPECT_EQ(closedWinding({}, {}), 0);
+    EXPECT_EQ(closedWinding(p, {0, 1, 7}), 0);
+}

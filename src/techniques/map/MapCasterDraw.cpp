@@ -20,13 +20,36 @@ bool hasCastersWithHoles(const FrameInfo& frame) {
     return false;
 }
 
-void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep) {
-    for (const bool withHoles : {false, true}) {
-        if (withHoles && !holes) break;
-        const gl::Program& p = program(withHoles);
-        const CasterSurface wanted = withHoles ? CasterSurface::Holes : CasterSurface::Opaque;
-        host.drawItems(ItemFilter::Casters, p, [&](std::size_t i) { return casterSurface(frame, i) == wanted && keep(i, p); });
+bool pastCubeNearPlane(const glm::vec3& light, float nearPlane, const Bounds& box) {
+    return !box.empty() && box.distanceTo(light) > 1.7320508f * nearPlane;
+}
+
+void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
+                      const gl::RenderState& state, const CasterSeenWhole& seenWhole) {
+    // The side of item i the pass leaves out: none (0), or its far sides, counter-clockwise (+1) or clockwise (-1) as seen.
+    const bool cullable = state.cull == gl::Cull::None && seenWhole;
+    const auto farSides = [&](std::size_t i) -> int {
+        const int winding = i < frame.itemWinding.size() ? frame.itemWinding[i] : 0;
+        return cullable && winding != 0 && seenWhole(i) ? winding : 0;
+    };
+    const gl::Program& opaque = program(false);
+    for (const int sides : {1, -1}) {
+        if (!cullable) break;
+        gl::RenderState culled = state;
+        culled.cull = sides > 0 ? gl::Cull::Back : gl::Cull::Front;
+        bool applied = false;
+        host.drawItems(ItemFilter::Casters, opaque, [&](std::size_t i) {
+            if (casterSurface(frame, i) != CasterSurface::Opaque || farSides(i) != sides || !keep(i, opaque)) return false;
+            if (!applied) host.apply(culled);
+            applied = true;
+            return true;
+        });
+        if (applied) host.apply(state);
     }
+    host.drawItems(ItemFilter::Casters, opaque, [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Opaque && farSides(i) == 0 && keep(i, opaque); });
+    if (!holes) return;
+    const gl::Program& cut = program(true);
+    host.drawItems(ItemFilter::Casters, cut, [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Holes && keep(i, cut); });
 }
 
 } // namespace shadowlab::map

@@ -77,8 +77,10 @@ gl::RenderState windowDepthState(gl::RenderState state, const MapOptions& o) {
 }
 
 // The casters into the cube: once through the geometry shader, or once per face they touch.
-void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const MapArray& g, const MapLight& p, const FaceUse& use) {
+void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const MapArray& g, const MapLight& p, const FaceUse& use,
+                 const gl::RenderState& state) {
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
+    const auto seenWhole = [&](std::size_t i) { return pastCubeNearPlane(p.cubeCamera.position, p.cubeCamera.nearPlane, frame.itemBounds[i]); };
     const auto defines = [&](bool holes) {
         return CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options), holes}.defines();
     };
@@ -91,11 +93,14 @@ void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const 
                                  defines(holes)});
         };
         glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
-        drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program& drawing) {
-            if (!p.faceMask(i)) return false;
-            glProgramUniform1ui(drawing.id(), 0, p.faceMask(i));
-            return true;
-        });
+        drawDepthCasters(
+            host, frame, holes, program,
+            [&](std::size_t i, const gl::Program& drawing) {
+                if (!p.faceMask(i)) return false;
+                glProgramUniform1ui(drawing.id(), 0, p.faceMask(i));
+                return true;
+            },
+            state, seenWhole);
         return;
     }
     const auto program = [&](bool holes) -> const gl::Program& {
@@ -106,7 +111,7 @@ void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const 
         glBindFramebuffer(GL_FRAMEBUFFER, p.faceFbos[static_cast<std::size_t>(f)].id());
         glProgramUniform1i(program(false).id(), 1, f);
         if (holes) glProgramUniform1i(program(true).id(), 1, f);
-        drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; });
+        drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state, seenWhole);
     }
 }
 
@@ -123,7 +128,7 @@ void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView
     state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
     if (cubeWindowDepth(p.options)) state = windowDepthState(state, p.options);
     host.apply(state);
-    drawCasters(host, frame, res.holes, g, p, use);
+    drawCasters(host, frame, res.holes, g, p, use, state);
     static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
     host.count("triangles", static_cast<double>(use.drawn));
     host.count("mapBytes", 6.0 * texelBytes(g.key) * static_cast<double>(g.size()) * static_cast<double>(g.size()));

@@ -2,6 +2,7 @@
 #include "techniques/map/MapFloors.h"
 
 #include "techniques/map/MapCameras.h"
+#include "techniques/map/MapCasterDraw.h"
 #include "techniques/map/MapVariants.h"
 
 namespace shadowlab::map {
@@ -54,8 +55,8 @@ const gl::Program& MapFloors::bind(TechniqueHost& host, const MapArray& g) {
         {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{}.defines()});
 }
 
-// Clears a floor's target `fbo` (all writes on), then leaves depth-only writes.
-void MapFloors::clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp) {
+// Clears a floor's target `fbo` (all writes on), then leaves depth-only writes (the state returned).
+gl::RenderState MapFloors::clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp) {
     gl::RenderState state;
     host.apply(state);
     const float one = 1.0f;
@@ -63,6 +64,7 @@ void MapFloors::clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool dept
     state.noColor();
     state.depthClamp = depthClamp;
     host.apply(state);
+    return state;
 }
 
 void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p) {
@@ -128,10 +130,14 @@ void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& 
             // reads what the others held: its cost is the same).
             if (!used[static_cast<std::size_t>(f)]) continue;
             glNamedFramebufferTextureLayer(cubeFbo_.id(), GL_DEPTH_ATTACHMENT, cube_.id(), 0, f);
-            clear(host, cubeFbo_, false);
+            const gl::RenderState state = clear(host, cubeFbo_, false);
             // The bare vertex shader reads map.lightClipFromWorld: this face's camera.
             block.writeWithLightClip(p.cubeCamera.faceClipFromWorld[static_cast<std::size_t>(f)]);
-            host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return (p.faceMask(i) & (1u << f)) != 0; });
+            // The casters the pass draws, without the far sides it leaves out.
+            drawDepthCasters(
+                host, frame, true, [&](bool) -> const gl::Program& { return bare; },
+                [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state,
+                [&](std::size_t i) { return pastCubeNearPlane(p.cubeCamera.position, p.cubeCamera.nearPlane, frame.itemBounds[i]); });
         }
         block.restore();
     }

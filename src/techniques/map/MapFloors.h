@@ -37,7 +37,8 @@ private:
     void ensureTarget(const MapArray& g);
     void ensureCube(const MapArray& g);
     const gl::Program& bind(TechniqueHost& host, const MapArray& g);
-    void clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp);
+    /// Clears `fbo` and leaves depth-only writes on: the state it returns.
+    gl::RenderState clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp);
 
     gl::Texture target_{gl::NoCreate};
     gl::Framebuffer fbo_{gl::NoCreate};

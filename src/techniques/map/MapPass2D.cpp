@@ -63,16 +63,21 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, g.size(), g.size());
         clearLayer(host, g, fbo);
-        host.apply(casterState(g, p.options, camera));
+        const gl::RenderState state = casterState(g, p.options, camera);
+        host.apply(state);
         // This cascade's camera for the depth pass (the block's first member).
         res.block.setCamera(p, c);
-        // Casters that cannot reach the light's frustum are not drawn.
+        // Casters that cannot reach the light's frustum are not drawn. Their
+        // far sides are (MapCasterDraw.h: a 2D pass writes no depth itself).
         std::size_t drawnHere = 0;
-        drawDepthCasters(host, frame, res.holes, program, [&](std::size_t i, const gl::Program&) {
-            const bool inside = castsInto(camera, frame, i, g.hasMoments());
-            if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
-            return inside;
-        });
+        drawDepthCasters(
+            host, frame, res.holes, program,
+            [&](std::size_t i, const gl::Program&) {
+                const bool inside = castsInto(camera, frame, i, g.hasMoments());
+                if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+                return inside;
+            },
+            state, nullptr);
         if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
         drawn += drawnHere;
         if (g.storesMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot);
