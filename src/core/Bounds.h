@@ -26,6 +26,8 @@ struct Bounds {
     glm::vec3 corner(int c) const { return glm::vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z); }
     /// The distance from `p` to the box (0 inside it).
     float distanceTo(const glm::vec3& p) const { return glm::length(glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f))); }
+    /// The distance from `p` to the farthest corner.
+    float farthestFrom(const glm::vec3& p) const { return glm::length(glm::max(glm::abs(lo - p), glm::abs(hi - p))); }
     glm::vec3 size() const { return hi - lo; }
     /// The bounds of this box's eight corners moved by an affine `to`.
     Bounds transformed(const glm::mat4& to) const {

@@ -62,9 +62,11 @@ LightImage imageOf(const Bounds& box, const glm::mat4& lightClip, bool perspecti
 struct Extent {
     glm::vec2 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
     bool behind = false;
+    std::vector<glm::vec3> world;  // the points in the world
     void add(const glm::vec3& ndc, const glm::mat4& worldFromLight, const glm::mat4& clipFromWorld) {
-        const glm::vec4 world = worldFromLight * glm::vec4(ndc, 1.0f);
-        const glm::vec4 seen = clipFromWorld * glm::vec4(glm::vec3(world) / world.w, 1.0f);
+        const glm::vec4 at = worldFromLight * glm::vec4(ndc, 1.0f);
+        world.push_back(glm::vec3(at) / at.w);
+        const glm::vec4 seen = clipFromWorld * glm::vec4(world.back(), 1.0f);
         if (!(seen.w > 1e-6f)) behind = true;
         lo = glm::min(lo, glm::vec2(seen) / seen.w);
         hi = glm::max(hi, glm::vec2(seen) / seen.w);
@@ -81,9 +83,31 @@ PixelRect pixelsOf(glm::vec2 lo, glm::vec2 hi, glm::ivec2 viewport) {
 
 } // namespace
 
-float TapReach::at(float distance) const {
-    if (!(distance > 0.0f)) return std::numeric_limits<float>::infinity();
-    return angle + world / distance + (pcssSize > 0.0f ? pcssSize * std::max(1.0f / pcssNearest - 1.0f / distance, 0.0f) : 0.0f);
+float TapReach::at(float distance) const { return within(distance, distance); }
+
+float TapReach::within(float nearest, float farthest) const {
+    if (!(nearest > 0.0f) || !(farthest >= nearest)) return std::numeric_limits<float>::infinity();
+    return angle + world / nearest + (pcssSize > 0.0f ? pcssSize * std::max(1.0f / pcssNearest - 1.0f / farthest, 0.0f) : 0.0f);
+}
+
+std::vector<Bounds> piecesSeenFrom(const Bounds& box, const glm::vec3& light, int most) {
+    if (box.empty()) return {};
+    const float step = 0.5f * box.distanceTo(light);
+    glm::ivec3 n(1);
+    for (int a = 0; a < 3; ++a)
+        if (step > 0.0f) n[a] = static_cast<int>(std::clamp(std::ceil((box.hi[a] - box.lo[a]) / step), 1.0f, static_cast<float>(std::max(most, 1))));
+    // Piece k's side along axis a runs from edge(a, k) to edge(a, k + 1): the same float on both sides of a cut.
+    const auto edge = [&](int a, int k) { return k == n[a] ? box.hi[a] : box.lo[a] + static_cast<float>(k) * (box.hi[a] - box.lo[a]) / static_cast<float>(n[a]); };
+    std::vector<Bounds> out;
+    for (int x = 0; x < n.x; ++x)
+        for (int y = 0; y < n.y; ++y)
+            for (int z = 0; z < n.z; ++z) {
+                Bounds piece;
+                piece.lo = glm::vec3(edge(0, x), edge(1, y), edge(2, z));
+                piece.hi = glm::vec3(edge(0, x + 1), edge(1, y + 1), edge(2, z + 1));
+                out.push_back(piece);
+            }
+    return out;
 }
 
 std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const TapReach& reach, const RegionScene& scene) {
@@ -98,31 +122,49 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
         PixelRect rect = own;
         if (scene.itemPlanes[i]) {
             // Rays from the light through the box's corners, each tilted by
-            // the taps' reach at the plane (no nearer the light than the
-            // plane's own distance) four ways across it, a square around the
-            // cone of the reach; where all meet the plane (t > 0) they bound
-            // the shadow there, else it is not bounded by them.
+            // the taps' reach on the receiver to the corners of an octagon
+            // around the cone of that reach; where all meet the plane (t >
+            // 0) they bound the shadow there, else it is not bounded by them.
             const glm::vec4 plane = *scene.itemPlanes[i];
             const glm::vec3 n(plane);
-            const float tilt = std::tan(std::min(reach.at(std::abs(glm::dot(n, light) + plane.w)), 1.4f));
-            Extent seen;
-            bool bounded = true;
-            for (int c = 0; c < 8 && bounded; ++c) {
-                const glm::vec3 u = box.corner(c) - light;
-                const glm::vec3 e1 = glm::normalize(std::abs(u.y) < 0.9f * glm::length(u) ? glm::cross(u, glm::vec3(0.0f, 1.0f, 0.0f)) : glm::cross(u, glm::vec3(1.0f, 0.0f, 0.0f)));
-                const glm::vec3 e2 = glm::normalize(glm::cross(u, e1));
-                const float across = tilt * glm::length(u);
-                for (int k = 0; k < (tilt > 0.0f ? 4 : 1) && bounded; ++k) {
-                    const glm::vec3 ray = tilt > 0.0f ? u + across * ((k & 1) ? 1.0f : -1.0f) * ((k & 2) ? e1 : e2) : u;
-                    const float along = glm::dot(n, ray);
-                    const float t = -(glm::dot(n, light) + plane.w) / along;
-                    bounded = std::abs(along) > 1e-12f && t > 0.0f && std::isfinite(t);
-                    if (bounded) seen.add(light + t * ray, glm::mat4(1.0f), scene.cameraClipFromWorld);
+            const float height = glm::dot(n, light) + plane.w;
+            const auto hits = [&](float angle) {
+                const float tilt = std::tan(std::min(angle, 1.4f));
+                std::optional<Extent> seen(std::in_place);
+                for (int c = 0; c < 8 && seen; ++c) {
+                    const glm::vec3 u = box.corner(c) - light;
+                    const glm::vec3 e1 = glm::normalize(std::abs(u.y) < 0.9f * glm::length(u) ? glm::cross(u, glm::vec3(0.0f, 1.0f, 0.0f)) : glm::cross(u, glm::vec3(1.0f, 0.0f, 0.0f)));
+                    const glm::vec3 e2 = glm::normalize(glm::cross(u, e1));
+                    // An octagon around the cone's circle: its corners 1 / cos(22.5 degrees) out.
+                    const float across = tilt * glm::length(u) * 1.0823922f;
+                    for (int k = 0; k < (tilt > 0.0f ? 8 : 1) && seen; ++k) {
+                        const float turn = 0.78539816f * static_cast<float>(k);
+                        const glm::vec3 ray = tilt > 0.0f ? u + across * (std::cos(turn) * e1 + std::sin(turn) * e2) : u;
+                        const float along = glm::dot(n, ray);
+                        const float t = -height / along;
+                        if (std::abs(along) > 1e-12f && t > 0.0f && std::isfinite(t))
+                            seen->add(light + t * ray, glm::mat4(1.0f), scene.cameraClipFromWorld);
+                        else
+                            seen.reset();
+                    }
                 }
-            }
-            if (bounded) {
-                if (seen.behind) return std::nullopt;
-                rect = intersection(own, pixelsOf(seen.lo, seen.hi, scene.viewport));
+                return seen;
+            };
+            // The reach grows with the receiver's distance (pcss's search
+            // and penumbra), which is no more than that of the plane's
+            // points within the greatest reach (when they are bounded) or
+            // of its box's farthest corner.
+            const float nearest = std::abs(height);
+            float farthest = r.farthestFrom(light);
+            if (reach.pcssSize > 0.0f)
+                if (const std::optional<Extent> widest = hits(reach.within(nearest, std::numeric_limits<float>::infinity())); widest && !widest->behind) {
+                    float most = nearest;
+                    for (const glm::vec3& p : widest->world) most = std::max(most, glm::length(p - light));
+                    farthest = std::min(farthest, most);
+                }
+            if (const std::optional<Extent> seen = hits(reach.within(nearest, farthest))) {
+                if (seen->behind) return std::nullopt;
+                rect = intersection(own, pixelsOf(seen->lo, seen->hi, scene.viewport));
             }
         } else {
             // Its bounding sphere against the box's widened by the reach, as angles from the light.
@@ -132,7 +174,7 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
             const bool around = d <= rr || distance <= radius || !(nearest > 0.0f);
             if (!around) {
                 const float apart = std::acos(std::clamp(glm::dot(to / d, (centre - light) / distance), -1.0f, 1.0f));
-                if (apart > std::asin(std::min(rr / d, 1.0f)) + std::asin(std::min(radius / distance, 1.0f)) + reach.at(nearest)) continue;
+                if (apart > std::asin(std::min(rr / d, 1.0f)) + std::asin(std::min(radius / distance, 1.0f)) + reach.within(nearest, r.farthestFrom(light))) continue;
             }
         }
         if (!isEmpty(rect)) rects.push_back(rect);

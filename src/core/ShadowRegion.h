@@ -50,12 +50,16 @@ std::optional<std::vector<PixelRect>> shadowRects(const glm::mat4& lightClipFrom
 /// light (radians) for a receiver `distance` from it: `angle`, plus `world`
 /// scene units at the receiver, plus for pcss (`pcssSize` > 0, the light's
 /// radius) its search and penumbra, size (1 / nearest caster - 1 / distance).
+/// The world part shrinks with the distance and pcss's grows: over
+/// receivers from `nearest` to `farthest`, within(nearest, farthest) bounds
+/// it.
 struct TapReach {
     float angle = 0.0f;
     float world = 0.0f;
     float pcssSize = 0.0f;
     float pcssNearest = 1.0f;
     float at(float distance) const;
+    float within(float nearest, float farthest) const;
 };
 
 /// The rectangles for one caster `box` (world) of a point light at
@@ -67,6 +71,13 @@ struct TapReach {
 /// for a perspective light space (pointCasterRects); receivers nearer the
 /// light than the box included. Nothing when a point lies behind the viewer.
 std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const Bounds& box, const TapReach& reach, const RegionScene& scene);
+
+/// `box` cut into pieces whose sides are at most half its distance from
+/// `light` (at most `most` along an axis; the whole box when the light is
+/// inside it): their shadows together are the box's, and each piece's
+/// lies within a narrower range of distances from the light, so the taps'
+/// reach there (TapReach) is bounded more tightly.
+std::vector<Bounds> piecesSeenFrom(const Bounds& box, const glm::vec3& light, int most = 4);
 
 /// The rectangles for one caster `box` (world) of a point light at
 /// `light`: the box widened by `widen` (the taps' reach where it lies

@@ -172,6 +172,31 @@ TEST_F(ShadowRegionGLTest, APointLightsBlurredShadowLooksTheSame) {
     }
 }
 
+// A lamp's pcss shadow of a sheet too wide for a view around it (its
+// rectangles then come from rays through its corners, tilted by the taps'
+// reach): the far edge of the shadow, 18 m from the lamp, where the search
+// and penumbra reach furthest (penumbra-step's sheet, seen from beyond that
+// edge, under the sheet).
+TEST_F(ShadowRegionGLTest, AWideCastersFarPenumbraLooksTheSame) {
+    for (const char* camera : {R"({"position": [-24, 1.0, 3], "target": [-11, 0, 0], "fovY": 40})",
+                               R"({"position": [-13, 8, 0.01], "target": [-13, 0, 0], "fovY": 30})"}) {
+        SCOPED_TRACE(camera);
+        const Scene scene = loadSceneFile(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes/penumbra-step.json", {std::string("camera=") + camera});
+        const std::optional<double> share = expectSameFrame(scene, "far-penumbra");
+        EXPECT_TRUE(share.has_value());
+    }
+    // A wall a metre from a lamp 3 m over the floor: the far edge of its
+    // shadow, 4.2 m from the lamp, is cast by the wall's top at 1.4 m, so
+    // its penumbra reaches 0.2 (1 / 1.4 - 1 / 4.2) radians, more than at the
+    // floor's nearest point (3 m); seen from above, the edge on the left.
+    const Scene wall = test::sceneOf(R"({"camera": {"position": [4, 8, 0.01], "target": [4, 0, 0], "fovY": 30},
+      "lights": [{"type": "point", "position": [0, 3, 0], "size": 0.2, "shadow": {"technique": "map", "map": {"filter": "pcss"}}}],
+      "nodes": [{"name": "floor", "shape": {"type": "plane", "size": [40, 40]}},
+                {"name": "wall", "shape": {"type": "box", "size": [0.02, 1.5, 6]}, "translation": [1.01, 1.25, 0], "receivesShadows": false}]})");
+    const std::optional<double> share = expectSameFrame(wall, "wall-far-penumbra");
+    EXPECT_TRUE(share.has_value());
+}
+
 // Technique "disc" under each light type: an orthographic light space for
 // the sun, a perspective one from the lamp around each disc.
 TEST_F(ShadowRegionGLTest, DiscsUnderEveryLightTypeLookTheSame) {

@@ -1,6 +1,11 @@
 // Rectangles of pixels (core/ScreenRect.h): what a box covers on the
 // screen, and the base pass's shadowed rectangles merged into few.
 #include "core/ScreenRect.h"
+#include "core/ShadowRegion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -75,4 +80,50 @@ TEST(ScreenRectTest, ManyRectanglesBecomeTheOneAroundThemAll) {
     std::vector<PixelRect> many;
     for (int i = 0; i <= static_cast<int>(kMergeAtMost); ++i) many.push_back({3 * i, 0, 3 * i + 1, 1});
     EXPECT_EQ(mergedRects(many, 8), std::vector<PixelRect>{PixelRect(0, 0, 3 * static_cast<int>(kMergeAtMost) + 1, 1)});
+}
+
+// A caster in pieces (core/ShadowRegion.h: piecesSeenFrom): sides at most
+// half its distance from the light, at most `most` a side, filling the box
+// exactly (each cut the same float on both sides, nothing between them).
+TEST(ShadowRegionTest, APieceOfACasterIsAtMostHalfItsDistanceWide) {
+    Bounds sheet;
+    sheet.add(glm::vec3(-8.0f, 1.98f, -8.0f));
+    sheet.add(glm::vec3(0.0f, 2.0f, 8.0f));
+    const glm::vec3 lamp(0.0f, 6.0f, 0.0f);  // 4 above the sheet's edge: pieces 2 wide at most
+    const std::vector<Bounds> pieces = piecesSeenFrom(sheet, lamp, 8);
+    ASSERT_EQ(pieces.size(), 4u * 1u * 8u);
+    double volume = 0.0;
+    for (const Bounds& p : pieces) {
+        EXPECT_LE(p.hi.x - p.lo.x, 2.0f + 1e-5f);
+        EXPECT_LE(p.hi.z - p.lo.z, 2.0f + 1e-5f);
+        EXPECT_EQ(p.lo.y, sheet.lo.y);
+        EXPECT_EQ(p.hi.y, sheet.hi.y);
+        volume += double(p.size().x) * p.size().y * p.size().z;
+        // Each face inside the sheet is another piece's face, exactly.
+        for (int a = 0; a < 3; ++a) {
+            if (p.hi[a] == sheet.hi[a]) continue;
+            const bool shared = std::any_of(pieces.begin(), pieces.end(), [&](const Bounds& q) { return q.lo[a] == p.hi[a]; });
+            EXPECT_TRUE(shared) << "a gap after a piece along axis " << a;
+        }
+    }
+    EXPECT_NEAR(volume, double(sheet.size().x) * sheet.size().y * sheet.size().z, 1e-3);
+    EXPECT_EQ(piecesSeenFrom(sheet, lamp, 2).size(), 2u * 2u) << "at most two a side";
+    EXPECT_EQ(piecesSeenFrom(sheet, glm::vec3(-4.0f, 2.0f, 0.0f)).size(), 1u) << "a light inside: the whole box";
+    EXPECT_TRUE(piecesSeenFrom(Bounds{}, lamp).empty());
+}
+
+// The taps' reach over receivers from `nearest` to `farthest` from the
+// light (TapReach::within): a world radius counts most on the nearest, a
+// pcss search and penumbra on the farthest, size (1 / nearest caster - 1 / d).
+TEST(ShadowRegionTest, TheTapsReachBoundsEveryDistanceBetween) {
+    const TapReach radial{0.01f, 0.5f, 0.0f, 1.0f}, pcss{0.01f, 0.0f, 0.5f, 4.0f};
+    EXPECT_FLOAT_EQ(radial.within(2.0f, 20.0f), 0.01f + 0.25f);
+    EXPECT_FLOAT_EQ(pcss.within(6.0f, 20.0f), 0.01f + 0.5f * (0.25f - 0.05f));
+    for (float d = 6.0f; d <= 20.0f; d += 0.5f) {
+        EXPECT_LE(radial.at(d), radial.within(6.0f, 20.0f));
+        EXPECT_LE(pcss.at(d), pcss.within(6.0f, 20.0f));
+    }
+    EXPECT_FLOAT_EQ(pcss.within(6.0f, std::numeric_limits<float>::infinity()), 0.01f + 0.5f * 0.25f);
+    EXPECT_FLOAT_EQ(pcss.within(2.0f, 3.0f), 0.01f) << "receivers nearer than the nearest caster: nothing of pcss";
+    EXPECT_TRUE(std::isinf(pcss.within(0.0f, 1.0f)));
 }

@@ -83,6 +83,18 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
     std::vector<PixelRect> rects;
     for (std::size_t i = 0; i < frame.items.size(); ++i) {
         if (!frame.items[i].castsShadows || p.faceMask(i) == 0) continue;
+        if (pcss) {
+            // Its search and penumbra reach furthest on the receivers
+            // farthest from the light: the caster in pieces, each with the
+            // receivers its shadow may fall on (centralRects bounds their
+            // distance), rays through their corners.
+            for (const Bounds& piece : piecesSeenFrom(frame.itemBounds[i], lamp, 8)) {
+                const auto some = centralRects(lamp, piece, taps, scene);
+                if (!some) return std::nullopt;
+                rects.insert(rects.end(), some->begin(), some->end());
+            }
+            continue;
+        }
         const Bounds& box = frame.itemBounds[i];
         float boxFar = 0.0f;
         for (int c = 0; c < 8; ++c) boxFar = std::max(boxFar, glm::length(box.corner(c) - lamp));
