@@ -389,7 +389,7 @@ std::vector<std::uint8_t> castersOverSlice(const LightCamera& cam, const glm::ve
 } // namespace
 
 LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in,
-                       float readFrom, const LightWarp* warp) {
+                       float readFrom, const LightWarp* warp, float castsFrom) {
     const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
     FitInput slice = in;
     slice.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, near, far) * camera.viewFromWorld();
@@ -442,7 +442,11 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     cam.clipFromView = glm::ortho(snapped.x - half, snapped.x + half, snapped.y - half, snapped.y + half, cam.nearPlane, cam.farPlane);
     cam.texelSize = texel;
     cam.perspective = false;
-    cam.casts = castersOverSlice(cam, direction, reads, (in.paddingTexels + 2.0f) * texel);
+    // The casters: over where the lookups of this cascade start, which may lie past readFrom.
+    FitInput looked = reads;
+    if (castsFrom > from)
+        looked.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, std::min(castsFrom, far), far) * camera.viewFromWorld();
+    cam.casts = castersOverSlice(cam, direction, looked, (in.paddingTexels + 2.0f) * texel);
     return cam;
 }
 

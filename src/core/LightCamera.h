@@ -179,14 +179,17 @@ float viewReach(const Camera& camera, const FitInput& in);
 /// orientation and origin, the box's centre snapped to whole texels and its
 /// depth over the whole scene, so the map's texel grid stays put in the world
 /// while the camera moves (no shimmer).
-/// `readFrom` (stabilised): the nearest depth along the view whose lookups
-/// read this cascade (the previous slice's blend zone; at most `near`, 0:
-/// `near`): only casters that can shadow a receiver seen between it and
+/// `readFrom` (stabilised): a depth along the view no farther than the
+/// nearest whose lookups read this cascade (at most `near`, 0: `near`): the
+/// map's depth range holds what the view's frustum holds from it to `far`.
+/// `castsFrom` (stabilised; 0: readFrom): the nearest depth whose lookups
+/// read this cascade (the previous slice's blend zone), no nearer than
+/// readFrom: only casters that can shadow a receiver seen between it and
 /// `far` are kept in `casts` (castersOverSlice).
 /// `warp` (tight cascades only, stabilize false): each slice's map warped
 /// as fitDirectional warps one.
 LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in,
-                       float readFrom = 0.0f, const LightWarp* warp = nullptr);
+                       float readFrom = 0.0f, const LightWarp* warp = nullptr, float castsFrom = 0.0f);
 
 /// Spot light: perspective along its axis, field of view just containing
 /// the outer cone (plus the padding), far at the farthest projection of the

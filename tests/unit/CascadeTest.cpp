@@ -283,3 +283,24 @@ TEST(Cascade, AStabilisedCascadeKeepsOnlyTheCastersOverItsSlice) {
     EXPECT_EQ(first.casts.back(), 0) << "the box behind the camera";
     EXPECT_EQ(last.casts.back(), 0) << "the box behind the camera";
 }
+
+// A cascade's casters are those over where its lookups start: the slice
+// before it reads it only in its blend share, at its far end
+// (MapCameras: castsFrom). The box 2 m ahead, whose shadow falls within
+// the first 10 m, is kept by the second slice (10 to 200 m) while that is
+// read from the near plane on, and dropped once it is read from 9 m (the
+// first slice's last tenth); the box 137 m ahead stays.
+TEST(Cascade, ACascadeKeepsTheCastersOverItsBlendShareNotTheSliceBefore) {
+    Field field;
+    const Camera camera = walker(glm::vec3(0.0f, 1.8f, 0.0f), 0.0f);
+    const FitInput in = field.input(camera, kAspect);
+    const LightCamera all = fitCascade(kSun, camera, kAspect, 10.0f, 200.0f, true, in, 0.1f);
+    const LightCamera banded = fitCascade(kSun, camera, kAspect, 10.0f, 200.0f, true, in, 0.1f, nullptr, 9.0f);
+    ASSERT_EQ(banded.casts.size(), field.items.size());
+    EXPECT_EQ(all.casts[1], 1) << "the box 2 m ahead, read from the near plane on";
+    EXPECT_EQ(banded.casts[1], 0) << "the box 2 m ahead, read from 9 m on";
+    EXPECT_EQ(banded.casts[30], 1) << "the box 137 m ahead";
+    // The map itself is the same: its box and depth range come from readFrom.
+    EXPECT_EQ(all.clipFromView, banded.clipFromView);
+    EXPECT_EQ(all.viewFromWorld, banded.viewFromWorld);
+}

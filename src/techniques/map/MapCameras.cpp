@@ -65,15 +65,20 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
     p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
     p.cascades.clear();
     // A slice's lookups reach into the next cascade over its far blend
-    // share: cascade c is read from slice c - 1's near end on (conservative).
+    // share: cascade c is read from slice c - 1's near end on for its depth
+    // range (conservative), and from where that share starts (the shader's
+    // cascadeBlend: that share of the slice, at its far end, the slice
+    // before it counted from 0), a thousandth nearer, for its casters.
     const LightWarp viewWarp = lightWarp(frame, p.options);
     for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) {
         const float sliceNear = c == 0 ? near : p.cascadeFar[c - 1];
+        const float blended = c == 0 ? near : sliceNear - std::max(p.options.cascadeBlend, 0.0f) * (sliceNear - (c < 2 ? 0.0f : p.cascadeFar[c - 2]));
         // A warped slice's near plane stands for the slice's own near end at the least.
         LightWarp warp = viewWarp;
         warp.nearDistance = std::max(warp.nearDistance, sliceNear);
         p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, in,
-                                        c < 2 ? near : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr));
+                                        c < 2 ? near : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr,
+                                        std::max(0.999f * blended, near)));
     }
     p.camera = p.cascades.front();
     const glm::mat4& v = frame.viewFromWorld;
