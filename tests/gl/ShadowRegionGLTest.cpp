@@ -197,6 +197,32 @@ TEST_F(ShadowRegionGLTest, AWideCastersFarPenumbraLooksTheSame) {
     EXPECT_TRUE(share.has_value());
 }
 
+// Cascades: a pixel is shadowed only by the casters of the cascades it
+// reads (its slice's, and the next one's where the slice fades into it),
+// so the rectangles of every cascade's casters together; over the field,
+// with the blend share wide, none and the default, two to eight slices,
+// and the filters that reach furthest.
+TEST_F(ShadowRegionGLTest, CascadesLookTheSame) {
+    // Whether the rectangles leave some of the frame out (pcss's, which
+    // count every receiver past a caster's nearest depth, cover it all).
+    const std::vector<std::pair<std::vector<std::string>, bool>> settings = {
+        {{}, true},
+        {{"lights[0].shadow.map.cascadeBlend=0.3"}, true},
+        {{"lights[0].shadow.map.cascadeBlend=0", "lights[0].shadow.map.cascades=2"}, true},
+        {{"lights[0].shadow.map.cascades=8", "lights[0].shadow.map.filter=grid", "lights[0].shadow.map.kernel=5"}, true},
+        {{"lights[0].shadow.map.filter=pcss", "lights[0].size=0.05"}, false},
+        {{"lights[0].shadow.map.stabilize=false"}, true},
+    };
+    for (const auto& [set, skips] : settings) {
+        std::string what = "cascades";
+        for (const std::string& s : set) what += " " + s;
+        SCOPED_TRACE(what);
+        const Scene scene = loadSceneFile(std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "scenes/cascades-field.json", set);
+        const std::optional<double> share = expectSameFrame(scene, what);
+        EXPECT_EQ(share.has_value(), skips);
+    }
+}
+
 // Technique "disc" under each light type: an orthographic light space for
 // the sun, a perspective one from the lamp around each disc.
 TEST_F(ShadowRegionGLTest, DiscsUnderEveryLightTypeLookTheSame) {

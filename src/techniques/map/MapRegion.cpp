@@ -108,46 +108,55 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
 std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const Light& light, const FrameInfo& frame, int size) {
     if (p.cube) return cubeShadowedPixels(p, light, frame, size);
     const MapOptions& o = p.options;
-    if (o.atlas || !p.cascades.empty() || p.gpuFit || p.camera.warped) return std::nullopt;
+    if (o.atlas || p.gpuFit) return std::nullopt;
     if (o.representation != MapRepresentation::Depth || o.filter == MapFilter::Dither4) return std::nullopt;
     if (o.slopeBias < 0.0f || o.offsetUnits < 0.0f) return std::nullopt;  // stored depths nearer than the casters
-    const LightCamera& camera = p.camera;
-    // How far nearer the light than a caster a receiver it shadows may
-    // be, in the light's clip depth (twice stored depth): a shadowed
-    // receiver's compared depth lies past the caster's stored one, and its
-    // own depth differs from that by the normal offset (up to normalBias
-    // texels; perspective: its change of stored depth is largest at the
-    // near plane) and the constant bias; biases that lower the compared
-    // depth (the presets', the receiver plane's) only keep it nearer. A
-    // quarter more for rounding.
-    const float range = camera.farPlane - camera.nearPlane;
-    const float offsetWorld = (std::max(o.normalBias, 0.0f) + 2.0f) * camera.texelSize;
-    const float offsetStored = (camera.perspective ? camera.farPlane : 1.0f) * offsetWorld / range;
-    // PCSS compares each tap with the receiver's plane extended to it, which
-    // may pass a caster farther from the light than the receiver itself:
-    // there the whole depth range counts.
-    const float depthSlack = o.filter == MapFilter::Pcss ? 4.0f : 1.25f * 2.0f * (std::abs(o.constantBias) + offsetStored) + 1e-4f;
-    // Each caster drawn into the map, its box widened by the margin (a
-    // texel's world size where the box lies farthest, for a perspective light).
-    const glm::vec3 axis = camera.axis();
-    const glm::vec3 lightPosition = glm::vec3(glm::inverse(camera.viewFromWorld)[3]);
-    std::vector<Bounds> casters;
-    for (std::size_t i = 0; i < frame.items.size(); ++i) {
-        if (!drawnInto(camera, frame, i)) continue;
-        Bounds box = frame.itemBounds[i];
-        float margin = marginTexels(o) * camera.texelSize;
-        if (camera.perspective) {
-            float farthest = camera.nearPlane;
-            for (int c = 0; c < 8; ++c)
-                farthest = std::max(farthest, glm::dot(box.corner(c) - lightPosition, axis));
-            margin *= farthest;
-        }
-        box.lo -= margin;
-        box.hi += margin;
-        casters.push_back(box);
-    }
     const RegionScene scene{frame.items, frame.itemBounds, frame.itemPlanes, frame.clipFromWorld, frame.viewport};
-    return shadowRects(camera.clipFromWorld(), camera.perspective, casters, depthSlack, scene, kMaxShadowRects);
+    // A pixel is shadowed only by the casters of the map it reads: each
+    // cascade's (a slice's lookups, and the slice before's where it fades
+    // into this one), so the rectangles of every cascade's casters together.
+    std::vector<PixelRect> rects;
+    for (const LightCamera& camera : p.cameras()) {
+        if (camera.warped) return std::nullopt;
+        // How far nearer the light than a caster a receiver it shadows may
+        // be, in the light's clip depth (twice stored depth): a shadowed
+        // receiver's compared depth lies past the caster's stored one, and its
+        // own depth differs from that by the normal offset (up to normalBias
+        // texels; perspective: its change of stored depth is largest at the
+        // near plane) and the constant bias; biases that lower the compared
+        // depth (the presets', the receiver plane's) only keep it nearer. A
+        // quarter more for rounding.
+        const float range = camera.farPlane - camera.nearPlane;
+        const float offsetWorld = (std::max(o.normalBias, 0.0f) + 2.0f) * camera.texelSize;
+        const float offsetStored = (camera.perspective ? camera.farPlane : 1.0f) * offsetWorld / range;
+        // PCSS compares each tap with the receiver's plane extended to it, which
+        // may pass a caster farther from the light than the receiver itself:
+        // there the whole depth range counts.
+        const float depthSlack = o.filter == MapFilter::Pcss ? 4.0f : 1.25f * 2.0f * (std::abs(o.constantBias) + offsetStored) + 1e-4f;
+        // Each caster drawn into the map, its box widened by the margin (a
+        // texel's world size where the box lies farthest, for a perspective light).
+        const glm::vec3 axis = camera.axis();
+        const glm::vec3 lightPosition = glm::vec3(glm::inverse(camera.viewFromWorld)[3]);
+        std::vector<Bounds> casters;
+        for (std::size_t i = 0; i < frame.items.size(); ++i) {
+            if (!drawnInto(camera, frame, i)) continue;
+            Bounds box = frame.itemBounds[i];
+            float margin = marginTexels(o) * camera.texelSize;
+            if (camera.perspective) {
+                float farthest = camera.nearPlane;
+                for (int c = 0; c < 8; ++c)
+                    farthest = std::max(farthest, glm::dot(box.corner(c) - lightPosition, axis));
+                margin *= farthest;
+            }
+            box.lo -= margin;
+            box.hi += margin;
+            casters.push_back(box);
+        }
+        const auto some = shadowRects(camera.clipFromWorld(), camera.perspective, casters, depthSlack, scene, kMaxShadowRects);
+        if (!some) return std::nullopt;
+        rects.insert(rects.end(), some->begin(), some->end());
+    }
+    return mergedRects(std::move(rects), kMaxShadowRects);
 }
 
 } // namespace shadowlab::map
