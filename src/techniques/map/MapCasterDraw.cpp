@@ -20,6 +20,15 @@ bool hasCastersWithHoles(const FrameInfo& frame) {
     return false;
 }
 
+bool pastNearPlane(const glm::mat4& clipFromWorld, const Bounds& box) {
+    if (box.empty()) return false;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 p = clipFromWorld * glm::vec4(box.corner(c), 1.0f);
+        if (!(p.w > 0.0f) || !(p.z + p.w > 0.0f)) return false;
+    }
+    return true;
+}
+
 bool pastCubeNearPlane(const glm::vec3& light, float nearPlane, const Bounds& box) {
     return !box.empty() && box.distanceTo(light) > 1.7320508f * nearPlane;
 }

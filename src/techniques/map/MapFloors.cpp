@@ -73,9 +73,14 @@ void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
         const gl::Program& bare = bind(host, g);
         for (std::size_t c = 0; c < p.cameras().size(); ++c) {
             const LightCamera& camera = p.cameras()[c];
-            clear(host, fbo_, !camera.perspective);
+            const gl::RenderState state = clear(host, fbo_, !camera.perspective);
             block.setCamera(p, c);
-            host.drawItems(ItemFilter::Casters, bare, [&](std::size_t i) { return castsInto(camera, frame, i, g.hasMoments()); });
+            // The casters the pass draws, without the far sides it leaves out.
+            const glm::mat4 clip = camera.clipFromWorld();
+            drawDepthCasters(
+                host, frame, true, [&](bool) -> const gl::Program& { return bare; },
+                [&](std::size_t i, const gl::Program&) { return castsInto(camera, frame, i, g.hasMoments()); }, state,
+                [&](std::size_t i) { return !camera.perspective || pastNearPlane(clip, frame.itemBounds[i]); });
         }
     }
     // The target holds the last camera's casters (a cascade's: the farthest),
