@@ -62,11 +62,9 @@ LightImage imageOf(const Bounds& box, const glm::mat4& lightClip, bool perspecti
 struct Extent {
     glm::vec2 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
     bool behind = false;
-    std::vector<glm::vec3> world;  // the points in the world
     void add(const glm::vec3& ndc, const glm::mat4& worldFromLight, const glm::mat4& clipFromWorld) {
-        const glm::vec4 at = worldFromLight * glm::vec4(ndc, 1.0f);
-        world.push_back(glm::vec3(at) / at.w);
-        const glm::vec4 seen = clipFromWorld * glm::vec4(world.back(), 1.0f);
+        const glm::vec4 world = worldFromLight * glm::vec4(ndc, 1.0f);
+        const glm::vec4 seen = clipFromWorld * glm::vec4(glm::vec3(world) / world.w, 1.0f);
         if (!(seen.w > 1e-6f)) behind = true;
         lo = glm::min(lo, glm::vec2(seen) / seen.w);
         hi = glm::max(hi, glm::vec2(seen) / seen.w);
@@ -128,8 +126,11 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
             const glm::vec4 plane = *scene.itemPlanes[i];
             const glm::vec3 n(plane);
             const float height = glm::dot(n, light) + plane.w;
+            // The hits' extent on the screen, and the farthest from the light.
+            float farthestHit = 0.0f;
             const auto hits = [&](float angle) {
                 const float tilt = std::tan(std::min(angle, 1.4f));
+                farthestHit = 0.0f;
                 std::optional<Extent> seen(std::in_place);
                 for (int c = 0; c < 8 && seen; ++c) {
                     const glm::vec3 u = box.corner(c) - light;
@@ -142,9 +143,11 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
                         const glm::vec3 ray = tilt > 0.0f ? u + across * (std::cos(turn) * e1 + std::sin(turn) * e2) : u;
                         const float along = glm::dot(n, ray);
                         const float t = -height / along;
-                        if (std::abs(along) > 1e-12f && t > 0.0f && std::isfinite(t))
-                            seen->add(light + t * ray, glm::mat4(1.0f), scene.cameraClipFromWorld);
-                        else
+                        if (std::abs(along) > 1e-12f && t > 0.0f && std::isfinite(t)) {
+                            const glm::vec3 hit = light + t * ray;
+                            seen->add(hit, glm::mat4(1.0f), scene.cameraClipFromWorld);
+                            farthestHit = std::max(farthestHit, glm::length(hit - light));
+                        } else
                             seen.reset();
                     }
                 }
@@ -157,11 +160,8 @@ std::optional<std::vector<PixelRect>> centralRects(const glm::vec3& light, const
             const float nearest = std::abs(height);
             float farthest = r.farthestFrom(light);
             if (reach.pcssSize > 0.0f)
-                if (const std::optional<Extent> widest = hits(reach.within(nearest, std::numeric_limits<float>::infinity())); widest && !widest->behind) {
-                    float most = nearest;
-                    for (const glm::vec3& p : widest->world) most = std::max(most, glm::length(p - light));
-                    farthest = std::min(farthest, most);
-                }
+                if (const std::optional<Extent> widest = hits(reach.within(nearest, std::numeric_limits<float>::infinity())); widest && !widest->behind)
+                    farthest = std::min(farthest, std::max(farthestHit, nearest));
             if (const std::optional<Extent> seen = hits(reach.within(nearest, farthest))) {
                 if (seen->behind) return std::nullopt;
                 rect = intersection(own, pixelsOf(seen->lo, seen->hi, scene.viewport));

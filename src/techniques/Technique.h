@@ -20,7 +20,6 @@
 #include <shadowlab/Scene.h>
 #include <shadowlab/Techniques.h>
 
-#include <cstdint>
 #include <optional>
 
 #include <cstdint>

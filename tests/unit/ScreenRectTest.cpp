@@ -93,6 +93,7 @@ TEST(ShadowRegionTest, APieceOfACasterIsAtMostHalfItsDistanceWide) {
     const std::vector<Bounds> pieces = piecesSeenFrom(sheet, lamp, 8);
     ASSERT_EQ(pieces.size(), 4u * 1u * 8u);
     double volume = 0.0;
+    // 1e-5: a float's rounding of the cuts (sides of 2 in a box of 16).
     for (const Bounds& p : pieces) {
         EXPECT_LE(p.hi.x - p.lo.x, 2.0f + 1e-5f);
         EXPECT_LE(p.hi.z - p.lo.z, 2.0f + 1e-5f);
@@ -106,6 +107,7 @@ TEST(ShadowRegionTest, APieceOfACasterIsAtMostHalfItsDistanceWide) {
             EXPECT_TRUE(shared) << "a gap after a piece along axis " << a;
         }
     }
+    // 1e-3 of 2.56: 32 pieces' float sides, each within a few ulps.
     EXPECT_NEAR(volume, double(sheet.size().x) * sheet.size().y * sheet.size().z, 1e-3);
     EXPECT_EQ(piecesSeenFrom(sheet, lamp, 2).size(), 2u * 2u) << "at most two a side";
     EXPECT_EQ(piecesSeenFrom(sheet, glm::vec3(-4.0f, 2.0f, 0.0f)).size(), 1u) << "a light inside: the whole box";

@@ -20,8 +20,10 @@ bool hasCastersWithHoles(const FrameInfo& frame) {
     return false;
 }
 
-bool pastNearPlane(const glm::mat4& clipFromWorld, const Bounds& box) {
+bool seesWhole(const LightCamera& camera, const Bounds& box) {
     if (box.empty()) return false;
+    if (!camera.perspective) return true;
+    const glm::mat4 clipFromWorld = camera.clipFromWorld();
     for (int c = 0; c < 8; ++c) {
         const glm::vec4 p = clipFromWorld * glm::vec4(box.corner(c), 1.0f);
         if (!(p.w > 0.0f) || !(p.z + p.w > 0.0f)) return false;
@@ -29,8 +31,8 @@ bool pastNearPlane(const glm::mat4& clipFromWorld, const Bounds& box) {
     return true;
 }
 
-bool pastCubeNearPlane(const glm::vec3& light, float nearPlane, const Bounds& box) {
-    return !box.empty() && box.distanceTo(light) > 1.7320508f * nearPlane;
+bool seesWhole(const CubeCamera& camera, const Bounds& box) {
+    return !box.empty() && box.distanceTo(camera.position) > 1.7320508f * camera.nearPlane;
 }
 
 void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,

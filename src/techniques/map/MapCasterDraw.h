@@ -20,6 +20,7 @@
 // a far side's slope bias (or polygon offset) put it nearer than the near
 // side's. The atlas draws both.
 #include "core/Bounds.h"
+#include "core/LightCamera.h"
 #include "techniques/Technique.h"
 
 #include <cstddef>
@@ -50,12 +51,13 @@ using CasterFilter = std::function<bool(std::size_t i, const gl::Program& progra
 /// near plane (so that its near sides hide its far ones).
 using CasterSeenWhole = std::function<bool(std::size_t i)>;
 
-/// Whether `box` lies wholly past the near plane of `clipFromWorld` (every
-/// corner with w > 0 and z > -w).
-bool pastNearPlane(const glm::mat4& clipFromWorld, const Bounds& box);
-/// Whether `box` lies past the near plane `nearPlane` of every face of a
-/// cube at `light`: farther than sqrt(3) times it from the light.
-bool pastCubeNearPlane(const glm::vec3& light, float nearPlane, const Bounds& box);
+/// Whether a 2D map's `camera` sees `box` whole: an orthographic one
+/// always (it clamps depth instead of clipping at its near plane), a
+/// perspective one when every corner lies past its near plane.
+bool seesWhole(const LightCamera& camera, const Bounds& box);
+/// Whether a cube's `camera` sees `box` whole: past every face's near
+/// plane, farther than sqrt(3) times it from the light.
+bool seesWhole(const CubeCamera& camera, const Bounds& box);
 
 /// The casters `keep` picks: first the opaque ones through program(false),
 /// then, when `holes` (the frame has such casters), those with holes

@@ -80,7 +80,7 @@ gl::RenderState windowDepthState(gl::RenderState state, const MapOptions& o) {
 void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const MapArray& g, const MapLight& p, const FaceUse& use,
                  const gl::RenderState& state) {
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
-    const auto seenWhole = [&](std::size_t i) { return pastCubeNearPlane(p.cubeCamera.position, p.cubeCamera.nearPlane, frame.itemBounds[i]); };
+    const auto seenWhole = [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); };
     const auto defines = [&](bool holes) {
         return CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options), holes}.defines();
     };

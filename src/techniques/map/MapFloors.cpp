@@ -76,11 +76,10 @@ void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
             const gl::RenderState state = clear(host, fbo_, !camera.perspective);
             block.setCamera(p, c);
             // The casters the pass draws, without the far sides it leaves out.
-            const glm::mat4 clip = camera.clipFromWorld();
             drawDepthCasters(
                 host, frame, true, [&](bool) -> const gl::Program& { return bare; },
                 [&](std::size_t i, const gl::Program&) { return castsInto(camera, frame, i, g.hasMoments()); }, state,
-                [&](std::size_t i) { return !camera.perspective || pastNearPlane(clip, frame.itemBounds[i]); });
+                [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); });
         }
     }
     // The target holds the last camera's casters (a cascade's: the farthest),
@@ -142,7 +141,7 @@ void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& 
             drawDepthCasters(
                 host, frame, true, [&](bool) -> const gl::Program& { return bare; },
                 [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state,
-                [&](std::size_t i) { return pastCubeNearPlane(p.cubeCamera.position, p.cubeCamera.nearPlane, frame.itemBounds[i]); });
+                [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); });
         }
         block.restore();
     }

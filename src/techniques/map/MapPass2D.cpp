@@ -68,11 +68,8 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         // This cascade's camera for the depth pass (the block's first member).
         res.block.setCamera(p, c);
         // Casters that cannot reach the light's frustum are not drawn, nor
-        // the far sides of closed ones it sees whole (MapCasterDraw.h; an
-        // orthographic camera clamps depth instead of clipping at its near
-        // plane: it sees every caster whole).
+        // the far sides of closed ones it sees whole (MapCasterDraw.h).
         std::size_t drawnHere = 0;
-        const glm::mat4 clip = camera.clipFromWorld();
         drawDepthCasters(
             host, frame, res.holes, program,
             [&](std::size_t i, const gl::Program&) {
@@ -80,7 +77,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
                 if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
                 return inside;
             },
-            state, [&](std::size_t i) { return !camera.perspective || pastNearPlane(clip, frame.itemBounds[i]); });
+            state, [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); });
         if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
         drawn += drawnHere;
         if (g.storesMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot);
