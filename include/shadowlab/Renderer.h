@@ -78,6 +78,10 @@ struct RenderOptions {
     /// share of the frame, when it used them: not over nine tenths of it).
     /// Items that receive no shadows are shaded without the test too. Off:
     /// the test at every pixel. Default on.
+    /// Likewise the shadow pass of stabilised cascades (technique "map")
+    /// clears and draws only the texels of each cascade that the frame's
+    /// lookups can read (around the receivers the view sees in its slice;
+    /// FrameStats counts "shadow[i].cascadeN.drawnShare"). Off: every texel.
     bool shadowRegions = true;
 };
 

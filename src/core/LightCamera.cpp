@@ -447,6 +447,18 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     if (castsFrom > from)
         looked.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, std::min(castsFrom, far), far) * camera.viewFromWorld();
     cam.casts = castersOverSlice(cam, direction, looked, (in.paddingTexels + 2.0f) * texel);
+    // What its lookups read: the receivers seen over the same depths, each
+    // within their part of the frustum. A low sun over a street sees its
+    // square mostly as sky and ground beyond the street's ends.
+    const Bounds frustum = frustumBounds(looked.cameraClipFromWorld, cam.viewFromWorld);
+    cam.lookups = Bounds{};
+    for (std::size_t i = 0; i < in.items.size(); ++i) {
+        if (!in.items[i].receivesShadows || !mayIntersect(looked.cameraClipFromWorld, in.itemBounds[i])) continue;
+        Bounds b = in.itemBounds[i].transformed(cam.viewFromWorld);
+        b.lo = glm::max(b.lo, frustum.lo);
+        b.hi = glm::min(b.hi, frustum.hi);
+        if (!b.empty()) cam.lookups->add(b);
+    }
     return cam;
 }
 

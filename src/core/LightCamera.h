@@ -36,6 +36,13 @@ struct LightCamera {
     bool warped = false;
     glm::vec4 warpPlane{0.0f};
     float warpU = 0.0f, warpV = 0.0f;
+    /// Light view space: a box around every point whose lookups may read
+    /// this map (the receivers the viewer may see where they read it, each
+    /// box within that part of the view's frustum), before the filter's
+    /// footprint and the offsets widen it; an empty box: none; nothing: not
+    /// known, the whole map (fitCascade knows it for stabilised cascades,
+    /// whose square is the slice's bounding sphere's).
+    std::optional<Bounds> lookups;
     glm::mat4 clipFromWorld() const { return clipFromView * viewFromWorld; }
     /// The unit direction the camera looks along: minus the view matrix's third row.
     glm::vec3 axis() const { return -glm::vec3(viewFromWorld[0][2], viewFromWorld[1][2], viewFromWorld[2][2]); }
@@ -188,6 +195,7 @@ float viewReach(const Camera& camera, const FitInput& in);
 /// `far` are kept in `casts` (castersOverSlice).
 /// `warp` (tight cascades only, stabilize false): each slice's map warped
 /// as fitDirectional warps one.
+/// Stabilised, `lookups` holds the receivers seen between castsFrom and `far`.
 LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float aspect, float near, float far, bool stabilize, const FitInput& in,
                        float readFrom = 0.0f, const LightWarp* warp = nullptr, float castsFrom = 0.0f);
 

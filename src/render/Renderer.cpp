@@ -186,6 +186,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     if (!targets || targets->size != size || (options.surfaces && !targets->surfaces)) targets.emplace(size, options.surfaces);
     beginFrame(s, size, options.timeSeconds);
     info->measureFloors = options.measureFloors;
+    info->shadowRegions = options.shadowRegions;
     info->reuseShadowMaps = options.reuseShadowMaps;
     info->cacheShadowMaps = options.cacheShadowMaps;
     info->sceneUpload = uploads;

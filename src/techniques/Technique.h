@@ -47,6 +47,7 @@ struct FrameInfo {
     bool measureFloors = false;              ///< RenderOptions::measureFloors: time a bare "floor" draw beside each pass
     bool reuseShadowMaps = false;            ///< RenderOptions::reuseShadowMaps: no shadow pass; keep the maps and their light cameras
     bool cacheShadowMaps = false;            ///< RenderOptions::cacheShadowMaps: keep the maps when their inputs did not change
+    bool shadowRegions = true;               ///< RenderOptions::shadowRegions: passes may draw only the parts of a map its lookups read
     std::uint64_t sceneUpload = 0;           ///< how many times Renderer::upload ran: a new upload is new geometry
 };
 

@@ -297,6 +297,28 @@ bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i,
     return !camera.perspective ? mayIntersectSides(lightClip, frame.itemBounds[i]) : mayIntersect(lightClip, frame.itemBounds[i]);
 }
 
+std::optional<TexelRect> lookupTexels(const LightCamera& camera, const MapOptions& o, int size) {
+    if (!camera.lookups || camera.perspective || camera.warped || o.preset != MapPreset::Default) return std::nullopt;
+    if (camera.lookups->empty()) return TexelRect{};
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 clip = camera.clipFromView * glm::vec4(camera.lookups->corner(c), 1.0f);  // w = 1
+        const glm::vec2 texel = (glm::vec2(clip) * 0.5f + 0.5f) * static_cast<float>(size);
+        lo = glm::min(lo, texel);
+        hi = glm::max(hi, texel);
+    }
+    if (!std::isfinite(lo.x + lo.y + hi.x + hi.y)) return std::nullopt;
+    const float margin = marginTexels(o), n = static_cast<float>(size);
+    const glm::vec2 first = glm::clamp(glm::floor(lo - margin), 0.0f, n), last = glm::clamp(glm::ceil(hi + margin), 0.0f, n);
+    if (!(first.x < last.x && first.y < last.y)) return TexelRect{};  // the box lies off the map
+    return TexelRect{static_cast<int>(first.x), static_cast<int>(first.y), static_cast<int>(last.x), static_cast<int>(last.y)};
+}
+
+std::optional<TexelRect> drawnTexels(const FrameInfo& frame, const MapArray& g, const MapLight& p, const LightCamera& camera) {
+    if (!frame.shadowRegions || g.hasMoments() || g.mipmaps() || isPacked(g.format()) || p.gpuFit) return std::nullopt;
+    return lookupTexels(camera, p.options, g.size());
+}
+
 TexelRect projectedRect(const glm::mat4& clipFromWorld, const Bounds& box, int size) {
     float lo[2] = {1.0f, 1.0f}, hi[2] = {-1.0f, -1.0f};
     for (int c = 0; c < 8; ++c) {

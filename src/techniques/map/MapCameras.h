@@ -2,8 +2,11 @@
 // Technique "map": each light's cameras for the frame (core/LightCamera
 // fits them; the presets fix theirs) and which casters each camera draws.
 #include "techniques/Technique.h"
+#include "techniques/map/MapArrays.h"
 #include "techniques/map/MapLight.h"
 #include "techniques/map/MapSdsm.h"
+
+#include <optional>
 
 namespace shadowlab::map {
 
@@ -61,6 +64,22 @@ float nearestCaster(const MapLight& p, const Light& light, const FrameInfo& fram
 /// occluders', or an edge's blur would mix the occluder with the empty far
 /// plane and light the receiver under it.
 bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i, bool moments);
+
+/// The texels of `camera`'s `size`-texel map that its lookups may read:
+/// the box of its lookups (LightCamera::lookups: an orthographic camera's)
+/// widened by what a lookup reads around its point (marginTexels of `o`);
+/// nothing when that is not known, or under a preset (the lecture's dither
+/// spreads with the map's size), where the whole map may be read.
+std::optional<TexelRect> lookupTexels(const LightCamera& camera, const MapOptions& o, int size);
+
+/// The texels of `camera`'s layer that light `p`'s pass clears and draws:
+/// those its lookups may read (lookupTexels), where that is known and no
+/// other pass reads around every texel (moments' blur, mipmaps, the packed
+/// colour's scratch depth) and the camera is the CPU's own (not fitted on
+/// the GPU) and the frame allows it (FrameInfo::shadowRegions); nothing:
+/// the whole layer. A stabilised cascade's square holds its slice's
+/// bounding sphere, most of it sky or past the receivers' ends.
+std::optional<TexelRect> drawnTexels(const FrameInfo& frame, const MapArray& g, const MapLight& p, const LightCamera& camera);
 
 /// The texels of a `size`-texel map that `box` may cover through the
 /// perspective `clipFromWorld` (a texel of margin; the whole map when a

@@ -1,6 +1,7 @@
 // Technique "map": its debug images (MapDebugImages.h).
 #include "techniques/map/MapDebugImages.h"
 
+#include "techniques/map/MapCameras.h"
 #include "techniques/map/MapSettings.h"
 #include "techniques/map/MapVariants.h"
 
@@ -142,8 +143,10 @@ ImageRGBA8 frameView(TechniqueHost& host, const FrameInfo& frame, const LightVie
 }
 
 // Layer `layer` of `g`, drawn from `camera`, as a grey image: stored
-// depth (perspective depth linearised), near black, far white.
-ImageRGBA8 mapImage(const MapArray& g, int layer, const LightCamera& camera) {
+// depth (perspective depth linearised), near black, far white; texels
+// outside `drawn` (the pass's part of the layer, drawnTexels), which no
+// lookup reads and the pass neither clears nor draws, pale blue.
+ImageRGBA8 mapImage(const MapArray& g, int layer, const LightCamera& camera, const std::optional<TexelRect>& drawn) {
     const std::size_t n = static_cast<std::size_t>(g.size()) * static_cast<std::size_t>(g.size());
     const std::vector<float> depth = readLayer(g, layer);
     ImageRGBA8 image{g.size(), g.size(), std::vector<std::uint8_t>(n * 4, 255)};
@@ -161,6 +164,11 @@ ImageRGBA8 mapImage(const MapArray& g, int layer, const LightCamera& camera) {
             // Rows top to bottom: the map's v = 1 at the top.
             std::uint8_t* px = &image.pixels[(static_cast<std::size_t>(g.size() - 1 - y) * g.size() + x) * 4];
             px[0] = px[1] = px[2] = v;
+            if (drawn && !(x >= drawn->x0 && x < drawn->x1 && y >= drawn->y0 && y < drawn->y1)) {
+                px[0] = 190;
+                px[1] = 210;
+                px[2] = 240;
+            }
         }
     return image;
 }
@@ -178,7 +186,7 @@ void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& v
     }
     if (!p.cube && kinds.wants(DebugImageKind::ShadowMap))
         for (std::size_t c = 0; c < cameras.size(); ++c)
-            out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), mapImage(g, p.layer + static_cast<int>(c), cameras[c]), {}, DebugImageKind::ShadowMap});
+            out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), mapImage(g, p.layer + static_cast<int>(c), cameras[c], drawnTexels(frame, g, p, cameras[c])), {}, DebugImageKind::ShadowMap});
     if (kinds.wants(DebugImageKind::TexelDensity)) {
         std::vector<float> footprint;
         ImageRGBA8 density = frameView(host, frame, view, res, p, "shadow_map_density.frag", &footprint);

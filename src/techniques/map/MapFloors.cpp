@@ -55,14 +55,20 @@ const gl::Program& MapFloors::bind(TechniqueHost& host, const MapArray& g) {
         {{{GL_VERTEX_SHADER, "shadow_map_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{}.defines()});
 }
 
-// Clears a floor's target `fbo` (all writes on), then leaves depth-only writes (the state returned).
-gl::RenderState MapFloors::clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp) {
+// Clears a floor's target `fbo` (all writes on), or only texels `part` of
+// the 2D target, then leaves depth-only writes there (the state returned).
+gl::RenderState MapFloors::clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp, const std::optional<TexelRect>& part) {
     gl::RenderState state;
     host.apply(state);
     const float one = 1.0f;
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+    if (!part) {
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+    } else if (!part->empty()) {
+        glClearTexSubImage(target_.id(), 0, part->x0, part->y0, 0, part->x1 - part->x0, part->y1 - part->y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+    }
     state.noColor();
     state.depthClamp = depthClamp;
+    if (part) state.scissor = std::array<GLint, 4>{part->x0, part->y0, part->x1 - part->x0, part->y1 - part->y0};
     host.apply(state);
     return state;
 }
@@ -73,7 +79,10 @@ void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
         const gl::Program& bare = bind(host, g);
         for (std::size_t c = 0; c < p.cameras().size(); ++c) {
             const LightCamera& camera = p.cameras()[c];
-            const gl::RenderState state = clear(host, fbo_, !camera.perspective);
+            // The texels the pass draws, as it does (MapCameras: drawnTexels).
+            const std::optional<TexelRect> part = drawnTexels(frame, g, p, camera);
+            const gl::RenderState state = clear(host, fbo_, !camera.perspective, part);
+            if (part && part->empty()) continue;
             block.setCamera(p, c);
             // The casters the pass draws, without the far sides it leaves out.
             drawDepthCasters(

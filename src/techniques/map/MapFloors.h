@@ -37,8 +37,9 @@ private:
     void ensureTarget(const MapArray& g);
     void ensureCube(const MapArray& g);
     const gl::Program& bind(TechniqueHost& host, const MapArray& g);
-    /// Clears `fbo` and leaves depth-only writes on: the state it returns.
-    gl::RenderState clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp);
+    /// Clears `fbo` (or only the 2D target's texels `part`, then scissored to
+    /// them) and leaves depth-only writes on: the state it returns.
+    gl::RenderState clear(TechniqueHost& host, const gl::Framebuffer& fbo, bool depthClamp, const std::optional<TexelRect>& part = std::nullopt);
 
     gl::Texture target_{gl::NoCreate};
     gl::Framebuffer fbo_{gl::NoCreate};

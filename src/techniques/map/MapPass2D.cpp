@@ -45,6 +45,13 @@ gl::RenderState casterState(const MapArray& g, const MapOptions& o, const LightC
     return state;
 }
 
+// Clears texels `r` of layer `layer` (depth 1) with no framebuffer, which
+// neither scissor nor masks touch: a clear of only those texels.
+void clearTexels(const MapArray& g, int layer, const TexelRect& r) {
+    const float one = 1.0f;
+    if (!r.empty()) glClearTexSubImage(g.depth.id(), 0, r.x0, r.y0, layer, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+}
+
 } // namespace
 
 void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView& view, MapResources& res, MapLight& p) {
@@ -62,14 +69,20 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         const gl::Framebuffer& fbo = p.cascades.empty() ? p.fbo : p.cascadeFbos[c];
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, g.size(), g.size());
-        clearLayer(host, g, fbo);
-        const gl::RenderState state = casterState(g, p.options, camera);
+        const std::optional<TexelRect> part = drawnTexels(frame, g, p, camera);
+        if (part)
+            clearTexels(g, p.layer + static_cast<int>(c), *part);
+        else
+            clearLayer(host, g, fbo);
+        gl::RenderState state = casterState(g, p.options, camera);
+        if (part) state.scissor = std::array<GLint, 4>{part->x0, part->y0, part->x1 - part->x0, part->y1 - part->y0};
         host.apply(state);
         // This cascade's camera for the depth pass (the block's first member).
         res.block.setCamera(p, c);
         // Casters that cannot reach the light's frustum are not drawn, nor
         // the far sides of closed ones it sees whole (MapCasterDraw.h).
         std::size_t drawnHere = 0;
+        if (!part || !part->empty())
         drawDepthCasters(
             host, frame, res.holes, program,
             [&](std::size_t i, const gl::Program&) {
@@ -78,7 +91,12 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
                 return inside;
             },
             state, [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); });
-        if (cameras.size() > 1) host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
+        if (cameras.size() > 1) {
+            host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
+            // The share of the layer's texels the pass cleared and drew.
+            const double texels = part ? static_cast<double>(part->x1 - part->x0) * static_cast<double>(part->y1 - part->y0) : static_cast<double>(g.size()) * g.size();
+            host.count("cascade" + std::to_string(c) + ".drawnShare", texels / (static_cast<double>(g.size()) * g.size()));
+        }
         drawn += drawnHere;
         if (g.storesMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot);
         if (res.translucent) drawTranslucent(host, res.block, frame, g, p, c);

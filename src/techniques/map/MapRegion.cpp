@@ -17,12 +17,6 @@ namespace shadowlab::map {
 
 namespace {
 
-// Texels around a caster's image that a shadowed receiver's own image may
-// lie within: the filter's footprint (what it may read around the point),
-// the normal offset's reach (normalBias texels at most), and two for the
-// rounding of the box's corners and the rasteriser's coverage.
-float marginTexels(const MapOptions& o) { return filterInfo(o.filter).footprint(o) + std::max(o.normalBias, 0.0f) + 2.0f; }
-
 // Whether item i is drawn into the map of `camera` (MapPass2D, MapTranslucent).
 bool drawnInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i) {
     if (!frame.items[i].castsShadows) return false;
@@ -141,7 +135,7 @@ std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const Li
         for (std::size_t i = 0; i < frame.items.size(); ++i) {
             if (!drawnInto(camera, frame, i)) continue;
             Bounds box = frame.itemBounds[i];
-            float margin = marginTexels(o) * camera.texelSize;
+            float margin = marginTexels(o) * camera.texelSize;  // a shadowed receiver's image lies this near a caster's
             if (camera.perspective) {
                 float farthest = camera.nearPlane;
                 for (int c = 0; c < 8; ++c)

@@ -121,6 +121,8 @@ float footprint(const MapOptions& o) {
     return filterInfo(o.filter).footprint(o);
 }
 
+float marginTexels(const MapOptions& o) { return filterInfo(o.filter).footprint(o) + std::max(o.normalBias, 0.0f) + 2.0f; }
+
 // Texels from a filter's centre to its farthest tap (the receiver-plane
 // bias covers that distance; the presets keep their own biases instead).
 float reach(const MapOptions& o) {

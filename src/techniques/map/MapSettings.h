@@ -104,6 +104,11 @@ std::string unsupported(const Light& light);
 
 /// Texels around the fitted region that the filter may read.
 float footprint(const MapOptions& o);
+/// Texels around a receiver's image in a 2D map that its lookup may read:
+/// the filter's footprint (what it may read around the point), the normal
+/// offset's reach (normalBias texels at most), and two for the rounding of
+/// a box's corners and the rasteriser's coverage (a depth map's filters).
+float marginTexels(const MapOptions& o);
 /// Texels from a filter's centre to its farthest tap (the receiver-plane
 /// bias covers that distance; the presets keep their own biases instead).
 float reach(const MapOptions& o);
