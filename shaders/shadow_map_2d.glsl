@@ -8,9 +8,11 @@
 // through a sampler2DArrayShadow, or unpacked from RGBA8 and compared here
 // (MAP_RGBA8), or bounded from moments (shadow_map_moments.glsl).
 // Cascades (MAP_CASCADES > 1, directional lights): the fragment's view
-// depth picks a cascade, each a layer of the array with its own matrix,
-// offsets applied per fragment; the far share cascade.w of each slice
-// fades into the next.
+// depth picks a cascade, each a layer of the array: its point scaled and
+// offset from the first cascade's, taken per vertex with its offsets
+// (MAP_CASCADE_AXES), or, warped or fitted on the GPU, its own matrix with
+// the offsets per fragment; the far cascadeBlend share of each slice fades
+// into the next.
 
 #if MAP_MOMENTS > 0
 // The moments, or the depth they are taken from (MAP_MOMENTS_FROM_DEPTH).
@@ -120,10 +122,31 @@ float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
 
 #if MAP_CASCADES > 1
 // Cascade c's test: the offsets of shadow_map_vertex.glsl, here per
-// fragment with the cascade's own texel size.
+// fragment with the cascade's own texel size; or, where the cascades share
+// one light view (MAP_CASCADE_AXES), the point and its offsets per texel
+// taken per vertex in the first cascade's texture space
+// (shadow_map_vertex.glsl), scaled and offset to cascade c's
+// (MapBlock: cascadeScale, cascadeOffset, whose w is c's texel).
 // `quad`: every fragment of the quad runs this test (the slice's own, not
-// the fade into the next).
-float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 worldDx, vec3 worldDy, inout vec3 transmit) {
+// the fade into the next). `dx`, `dy`: the point's change per pixel, in
+// the world (MAP_CASCADE_AXES: in the first cascade's texture space).
+#if MAP_CASCADE_AXES
+in vec3 vCascadePoint;
+in vec3 vCascadeOffset;
+#endif
+float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 dx, vec3 dy, inout vec3 transmit) {
+#if MAP_CASCADE_AXES
+    vec4 scale = map.cascadeScale[c], offset = map.cascadeOffset[c];
+    MapLookup m = mapLookup(map.layer + float(c));
+    m.quad = quad;
+#if MAP_FILTER == SL_MAP_FILTER_PCSS
+    m.texelWorld = offset.w;
+    m.planes = map.cascadeRange[c].xy;
+    m.dx = scale.xyz * dx;
+    m.dy = scale.xyz * dy;
+#endif
+    return mapTest(m, vec4(scale.xyz * (vCascadePoint + offset.w * vCascadeOffset) + offset.xyz, 1.0), NdotL, transmit);
+#else
     float texel = map.cascadeTexel[c >> 2][c & 3];
 #if MAP_WARP
     if (map.warpU > 0.0) texel = mapWarpedTexel(map.cascadeWarpPlane[c], map.cascadeWarp[c].xy, worldPosition, n);  // warped cascades
@@ -135,10 +158,11 @@ float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, flo
     m.texelWorld = texel;
     m.planes = map.cascadeRange[c].xy;
     mat3 affine = mat3(map.cascadeShadowFromWorld[c]);  // orthographic: the point's change is linear
-    m.dx = affine * worldDx;
-    m.dy = affine * worldDy;
+    m.dx = affine * dx;
+    m.dy = affine * dy;
 #endif
     return mapTest(m, map.cascadeShadowFromWorld[c] * vec4(p, 1.0), NdotL, transmit);
+#endif
 }
 
 // The shadow test's visibility, 0 (shadowed) to 1 (lit): the slice's
@@ -149,7 +173,11 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     vec3 n = worldNormal;
     float NdotL = clamp(dot(n, map.towardsLight), 0.0, 1.0);
     float tanTheta = mapTanTheta(n, map.towardsLight, NdotL);
-    vec3 worldDx = dFdx(worldPosition), worldDy = dFdy(worldPosition);
+#if MAP_CASCADE_AXES
+    vec3 dx = dFdx(vCascadePoint), dy = dFdy(vCascadePoint);
+#else
+    vec3 dx = dFdx(worldPosition), dy = dFdy(worldPosition);
+#endif
     float depth = cascadeDepth(worldPosition);
     int c = cascadeOf(depth);
     float t = c < MAP_CASCADES - 1 ? cascadeBlend(depth, c) : 0.0;
@@ -161,7 +189,7 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     float v = 1.0, next = 1.0;
     int rounds = int(map.cascadeRounds);
     for (int r = 0; r < rounds; ++r) {
-        float tested = cascadeTest(min(c + r, MAP_CASCADES - 1), r == 0, worldPosition, n, NdotL, tanTheta, worldDx, worldDy, transmit);
+        float tested = cascadeTest(min(c + r, MAP_CASCADES - 1), r == 0, worldPosition, n, NdotL, tanTheta, dx, dy, transmit);
         if (r == 0) v = tested;
         else next = tested;
         if (t <= 0.0) break;

@@ -7,11 +7,26 @@
 #include "shadow_map_bias.glsl"
 #define SHADOW_VERTEX_HOOK 1
 
-#if MAP_CUBE || MAP_CASCADES > 1 || MAP_ATLAS
+#if MAP_CASCADE_AXES
+// Cascades that share one light view (LightPassVariant::cascadeAxes): the
+// point in the first cascade's texture space, and its offsets there per
+// world unit of a texel; the fragment's depth picks the cascade, whose
+// coordinates are a scale and an offset of these (shadow_map_2d.glsl).
+out vec3 vCascadePoint;
+out vec3 vCascadeOffset;
+
+void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
+    vec3 n = worldNormal;  // as modelled (see below)
+    float NdotL = clamp(dot(n, map.towardsLight), 0.0, 1.0);
+    vec3 perTexel = mapReceiverPlaneOffset(mapNormalOffset(vec3(0.0), n, NdotL, 1.0), map.towardsLight, 1.0, mapTanTheta(n, map.towardsLight, NdotL));
+    vCascadePoint = (map.shadowFromWorld * vec4(worldPosition, 1.0)).xyz;
+    vCascadeOffset = mat3(map.shadowFromWorld) * perTexel;
+}
+#elif MAP_CUBE || MAP_CASCADES > 1 || MAP_ATLAS
 // Cube maps work per fragment (shadow_map.glsl): a point light's texel size
 // and N.L change too much across a wall-sized triangle to interpolate.
-// Cascades too: the fragment's depth picks the cascade. The atlas's tiles:
-// shadow_atlas.glsl, per fragment.
+// Warped cascades too, and those fitted on the GPU: the fragment's depth
+// picks the cascade. The atlas's tiles: shadow_atlas.glsl, per fragment.
 void shadowVertex(vec3 worldPosition, vec3 worldNormal) {}
 #else
 

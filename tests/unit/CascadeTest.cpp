@@ -142,6 +142,39 @@ TEST(CascadeTest, EachCascadeHoldsItsSliceOfTheView) {
     }
 }
 
+// The light pass takes a fragment's point in the first cascade's texture
+// space and each cascade's from it by a scale and an offset per axis
+// (LightPassVariant::cascadeAxes, MapBlock's cascadeScale): so every
+// unwarped cascade, stabilised or tight, must share the first one's light
+// view, its projection differing only by scale and offset. Tolerance: the
+// off-diagonal terms of M_c M_0^-1 at most 1e-5 of the diagonal's (float
+// matrices; a turned view would put terms of order 1 there).
+TEST(CascadeTest, UnwarpedCascadesShareOneLightViewUpToScaleAndOffset) {
+    const Field field;
+    for (const float yaw : {10.0f, 75.0f, 200.0f})
+        for (const bool stabilize : {true, false}) {
+            const Camera camera = walker(glm::vec3(3.0f, 1.8f, 5.0f), yaw);
+            const std::vector<float> far = cascadeSplits(camera.nearPlane, camera.farPlane, 4, 0.75f);
+            glm::dmat4 first(1.0);
+            for (std::size_t c = 0; c < far.size(); ++c) {
+                SCOPED_TRACE(std::string(stabilize ? "stabilised" : "tight") + ", yaw " + std::to_string(yaw) + ", cascade " + std::to_string(c));
+                const float near = c == 0 ? camera.nearPlane : far[c - 1];
+                const LightCamera cam = fitCascade(kSun, camera, kAspect, near, far[c], stabilize, field.input(camera, kAspect));
+                const glm::dmat4 m(cam.clipFromWorld());
+                if (c == 0) first = m;
+                const glm::dmat4 fromFirst = m * glm::inverse(first);
+                // Each row's terms off its diagonal against the diagonal (w's row: against 1).
+                for (int row = 0; row < 4; ++row) {
+                    const double diagonal = row < 3 ? std::abs(fromFirst[row][row]) : 1.0;
+                    EXPECT_GT(diagonal, 0.0);
+                    for (int col = 0; col < 3; ++col)
+                        if (col != row) EXPECT_LE(std::abs(fromFirst[col][row]), 1e-5 * diagonal) << "column " << col << ", row " << row;
+                }
+                EXPECT_NEAR(fromFirst[3][3], 1.0, 1e-6);
+            }
+        }
+}
+
 TEST(CascadeTest, AStabilisedCascadeKeepsItsTexelGridWhileTheCameraMovesAndTurns) {
     const Field field;
     const Camera start = walker(glm::vec3(0.0f, 1.8f, 5.0f), 0.0f);

@@ -69,6 +69,13 @@ void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
             u.cascadeWarpPlane[c] = p.cascades[c].warpPlane;
             u.cascadeWarp[c] = glm::vec4(p.cascades[c].warpU, p.cascades[c].warpV, 0.0f, 0.0f);
         }
+        // Its texture space from the first cascade's (shadowFromWorld: p.camera
+        // is the first): the diagonal and the translation of M_c M_0^-1, in
+        // double; the cascades share a light view (MAP_CASCADE_AXES), so the
+        // rest is 0 (CascadeTest.UnwarpedCascadesShareOneLightViewUpToScaleAndOffset).
+        const glm::dmat4 fromFirst = glm::dmat4(u.cascadeShadowFromWorld[c]) * glm::inverse(glm::dmat4(u.cascadeShadowFromWorld[0]));
+        u.cascadeScale[c] = glm::vec4(fromFirst[0][0], fromFirst[1][1], fromFirst[2][2], 0.0f);
+        u.cascadeOffset[c] = glm::vec4(glm::dvec3(fromFirst[3]), p.cascades[c].texelSize);
         u.cascadeFar[c / 4][static_cast<int>(c % 4)] = p.cascadeFar[c];
         u.cascadeTexel[c / 4][static_cast<int>(c % 4)] = p.cascades[c].texelSize;
     }

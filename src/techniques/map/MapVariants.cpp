@@ -75,6 +75,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.quadShared = o.filter == MapFilter::Pcss && v.representation == MapRepresentation::Depth && !o.atlas;
     v.earlyOut = map::earlyOut(o, v.cube, softwareRasterizer);
     v.warped = !v.cube && o.warp == MapWarp::Lispsm;
+    v.cascadeAxes = v.cascades > 1 && !v.warped && o.fit != MapFit::Sdsm;
     v.atlas = o.atlas;
     v.presetBias = !o.atlas && usesPresetBias(o, v.cube);
     v.momentsFromDepth = !v.cube && !o.atlas && map::momentsFromDepth(o);
@@ -98,6 +99,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_QUAD_SHARED", quadShared)
         .set("MAP_EARLY_OUT", earlyOut)
         .set("MAP_WARP", warped)
+        .set("MAP_CASCADE_AXES", cascadeAxes)
         .set("MAP_CUBE_WINDOW", cube && cubeWindowDepth(format, filter))
         .set("MAP_ATLAS", atlas)
         .set("MAP_PRESET_BIAS", presetBias)

@@ -44,6 +44,12 @@ struct LightPassVariant {
     /// warp lispsm: the offsets take the warped texel's size per point (a
     /// define, so that unwarped maps do not pay for it on llvmpipe)
     bool warped = false;
+    /// cascades fitted on the CPU and not warped: they share one light view,
+    /// each only scaled and offset from the first, so the point and its
+    /// offsets go to the first cascade's texture space per vertex and each
+    /// cascade's coordinates come from there by a scale and an offset
+    /// (MapBlock: cascadeScale; llvmpipe: about half the lookup's cost)
+    bool cascadeAxes = false;
     /// atlas: the light's tiles of the shadow atlas (shadow_map_atlas.glsl), not a map of its own
     bool atlas = false;
     /// A preset's own bias in place of the normal and receiver-plane
