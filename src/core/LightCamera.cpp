@@ -450,11 +450,19 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     // What its lookups read: the receivers seen over the same depths, each
     // within their part of the frustum. A low sun over a street sees its
     // square mostly as sky and ground beyond the street's ends.
+    // The box is cut to the frustum's box in the world first, then in the
+    // light's view: a ground under a low sun is a thin strip of the light's
+    // view, not the frustum's height.
     const Bounds frustum = frustumBounds(looked.cameraClipFromWorld, cam.viewFromWorld);
+    const Bounds frustumWorld = frustumBounds(looked.cameraClipFromWorld, glm::mat4(1.0f));
     cam.lookups = Bounds{};
     for (std::size_t i = 0; i < in.items.size(); ++i) {
         if (!in.items[i].receivesShadows || !mayIntersect(looked.cameraClipFromWorld, in.itemBounds[i])) continue;
-        Bounds b = in.itemBounds[i].transformed(cam.viewFromWorld);
+        Bounds world = in.itemBounds[i];
+        world.lo = glm::max(world.lo, frustumWorld.lo);
+        world.hi = glm::min(world.hi, frustumWorld.hi);
+        if (world.empty()) continue;
+        Bounds b = world.transformed(cam.viewFromWorld);
         b.lo = glm::max(b.lo, frustum.lo);
         b.hi = glm::min(b.hi, frustum.hi);
         if (!b.empty()) cam.lookups->add(b);
