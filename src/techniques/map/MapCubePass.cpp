@@ -81,16 +81,16 @@ void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const 
                  const gl::RenderState& state) {
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
     const auto seenWhole = [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); };
-    const auto defines = [&](bool holes) {
-        return CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options), holes}.defines();
+    const auto defines = [&](bool cut) {
+        return CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options), cut}.defines();
     };
     glViewport(0, 0, g.size(), g.size());
     if (onePass) {
-        const auto program = [&](bool holes) -> const gl::Program& {
+        const auto program = [&](bool cut) -> const gl::Program& {
             return host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"},
                                   {GL_GEOMETRY_SHADER, "shadow_map_cube.geom"},
                                   {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}},
-                                 defines(holes)});
+                                 defines(cut)});
         };
         glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
         drawDepthCasters(
@@ -103,8 +103,8 @@ void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const 
             state, seenWhole);
         return;
     }
-    const auto program = [&](bool holes) -> const gl::Program& {
-        return host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}}, defines(holes)});
+    const auto program = [&](bool cut) -> const gl::Program& {
+        return host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}}, defines(cut)});
     };
     for (int f = 0; f < 6; ++f) {
         if (!use.used[static_cast<std::size_t>(f)]) continue;
