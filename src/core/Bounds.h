@@ -29,6 +29,13 @@ struct Bounds {
     /// The distance from `p` to the farthest corner.
     float farthestFrom(const glm::vec3& p) const { return glm::length(glm::max(glm::abs(lo - p), glm::abs(hi - p))); }
     glm::vec3 size() const { return hi - lo; }
+    /// The part of this box inside `o` (empty when they do not overlap).
+    Bounds cutTo(const Bounds& o) const {
+        Bounds out;
+        out.lo = glm::max(lo, o.lo);
+        out.hi = glm::min(hi, o.hi);
+        return out;
+    }
     /// The bounds of this box's eight corners moved by an affine `to`.
     Bounds transformed(const glm::mat4& to) const {
         Bounds out;

@@ -277,10 +277,7 @@ LightCamera fitDirectional(const glm::vec3& direction, LightFit fit, const FitIn
             // The receivers the camera may see, clipped to its frustum.
             const Bounds frustum = frustumBounds(in.cameraClipFromWorld, cam.viewFromWorld);
             region = visibleReceivers(in, cam.viewFromWorld);
-            if (!region.empty()) {
-                region.lo = glm::max(region.lo, frustum.lo);
-                region.hi = glm::min(region.hi, frustum.hi);
-            }
+            if (!region.empty()) region = region.cutTo(frustum);
         }
         if (region.empty()) {  // nothing visible receives: any small valid box
             region = Bounds{};
@@ -426,9 +423,7 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     // out to 1/32 of the slice's box so that they move by steps, rarely.
     Bounds depth = scene.transformed(cam.viewFromWorld);
     if (!scene.empty()) {
-        Bounds world = frustumBounds(reads.cameraClipFromWorld, glm::mat4(1.0f));
-        world.lo = glm::max(world.lo, scene.lo);
-        world.hi = glm::min(world.hi, scene.hi);
+        const Bounds world = frustumBounds(reads.cameraClipFromWorld, glm::mat4(1.0f)).cutTo(scene);
         const Bounds reach = world.transformed(cam.viewFromWorld);
         const float step = 0.0625f * half;
         if (!world.empty() && step > 0.0f) {
@@ -447,25 +442,18 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     if (castsFrom > from)
         looked.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, std::min(castsFrom, far), far) * camera.viewFromWorld();
     cam.casts = castersOverSlice(cam, direction, looked, (in.paddingTexels + 2.0f) * texel);
-    // What its lookups read: the receivers seen over the same depths, each
-    // within their part of the frustum. A low sun over a street sees its
-    // square mostly as sky and ground beyond the street's ends.
-    // The box is cut to the frustum's box in the world first, then in the
-    // light's view: a ground under a low sun is a thin strip of the light's
-    // view, not the frustum's height.
+    // What its lookups read (a low sun over a street sees its square mostly
+    // as sky and ground past the street's ends): the receivers seen over the
+    // same depths, each box cut to the frustum's box in the world, then in
+    // the light's view (a ground under a low sun is a thin strip of the
+    // light's view, not the frustum's height).
     const Bounds frustum = frustumBounds(looked.cameraClipFromWorld, cam.viewFromWorld);
     const Bounds frustumWorld = frustumBounds(looked.cameraClipFromWorld, glm::mat4(1.0f));
     cam.lookups = Bounds{};
     for (std::size_t i = 0; i < in.items.size(); ++i) {
         if (!in.items[i].receivesShadows || !mayIntersect(looked.cameraClipFromWorld, in.itemBounds[i])) continue;
-        Bounds world = in.itemBounds[i];
-        world.lo = glm::max(world.lo, frustumWorld.lo);
-        world.hi = glm::min(world.hi, frustumWorld.hi);
-        if (world.empty()) continue;
-        Bounds b = world.transformed(cam.viewFromWorld);
-        b.lo = glm::max(b.lo, frustum.lo);
-        b.hi = glm::min(b.hi, frustum.hi);
-        if (!b.empty()) cam.lookups->add(b);
+        const Bounds world = in.itemBounds[i].cutTo(frustumWorld);
+        if (!world.empty()) cam.lookups->add(world.transformed(cam.viewFromWorld).cutTo(frustum));
     }
     return cam;
 }

@@ -256,8 +256,11 @@ TEST_F(ShadowRegionGLTest, CascadesDrawOnlyWhatTheirLookupsRead) {
         const Scene scene = loadSceneFile(scenes / c.scene, c.set);
         expectSameFrame(scene, what);
     }
-    // As shipped, the street's farthest cascade draws less than a tenth of
-    // its square (measured: 0.03 at 800x600), and none draws all of it.
+    // As shipped, the street's cascades draw 0.15, 0.26, 0.08 and 0.02 of
+    // their squares (measured, at 320x240 as at 800x600: the fit does not
+    // depend on the frame's size). Bounds: the farthest under a tenth, the
+    // others under half, which the boxes cut in the light's view alone
+    // (0.51, 0.32, 0.17, 0.03) would fail; off, every texel (1).
     Renderer renderer(test::glContext());
     const Scene street = loadSceneFile(scenes / "long-view.json");
     renderer.upload(street);
@@ -274,7 +277,7 @@ TEST_F(ShadowRegionGLTest, CascadesDrawOnlyWhatTheirLookupsRead) {
             else if (name.find("cascade3.") != std::string::npos)
                 EXPECT_LT(value, 0.1) << name;
             else
-                EXPECT_LT(value, 0.9) << name;
+                EXPECT_LT(value, 0.5) << name;
         }
         EXPECT_EQ(counted, 4) << "one share per cascade";
     }

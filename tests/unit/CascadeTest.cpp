@@ -167,8 +167,11 @@ TEST(CascadeTest, UnwarpedCascadesShareOneLightViewUpToScaleAndOffset) {
                 for (int row = 0; row < 4; ++row) {
                     const double diagonal = row < 3 ? std::abs(fromFirst[row][row]) : 1.0;
                     EXPECT_GT(diagonal, 0.0);
-                    for (int col = 0; col < 3; ++col)
-                        if (col != row) EXPECT_LE(std::abs(fromFirst[col][row]), 1e-5 * diagonal) << "column " << col << ", row " << row;
+                    for (int col = 0; col < 3; ++col) {
+                        if (col != row) {
+                            EXPECT_LE(std::abs(fromFirst[col][row]), 1e-5 * diagonal) << "column " << col << ", row " << row;
+                        }
+                    }
                 }
                 EXPECT_NEAR(fromFirst[3][3], 1.0, 1e-6);
             }

@@ -61,6 +61,7 @@ void cubeMembers(shared::MapUniforms& u, const MapLight& p, const MapArray& g) {
 
 // The cascades' members: each one's texture-space matrix, far end, texel and planes.
 void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
+    const glm::dmat4 worldFromFirst = p.cascades.empty() ? glm::dmat4(1.0) : glm::inverse(glm::dmat4(kBias * p.cascades.front().clipFromWorld()));
     for (std::size_t c = 0; c < p.cascades.size(); ++c) {
         u.cascadeShadowFromWorld[c] = kBias * p.cascades[c].clipFromWorld();
         // Warped: its texel's size per point (shadow_map_bias.glsl: mapWarpedTexel). The
@@ -73,7 +74,7 @@ void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
         // is the first): the diagonal and the translation of M_c M_0^-1, in
         // double; the cascades share a light view (MAP_CASCADE_AXES), so the
         // rest is 0 (CascadeTest.UnwarpedCascadesShareOneLightViewUpToScaleAndOffset).
-        const glm::dmat4 fromFirst = glm::dmat4(u.cascadeShadowFromWorld[c]) * glm::inverse(glm::dmat4(u.cascadeShadowFromWorld[0]));
+        const glm::dmat4 fromFirst = glm::dmat4(u.cascadeShadowFromWorld[c]) * worldFromFirst;
         u.cascadeScale[c] = glm::vec4(fromFirst[0][0], fromFirst[1][1], fromFirst[2][2], 0.0f);
         u.cascadeOffset[c] = glm::vec4(glm::dvec3(fromFirst[3]), p.cascades[c].texelSize);
         u.cascadeFar[c / 4][static_cast<int>(c % 4)] = p.cascadeFar[c];

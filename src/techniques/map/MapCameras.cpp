@@ -38,8 +38,7 @@ float stableReach(const Camera& camera, const FitInput& in) {
     Bounds scene;
     for (const Bounds& b : in.itemBounds) scene.add(b);
     if (scene.empty()) return camera.farPlane;
-    const glm::vec3 farthest = glm::max(glm::abs(scene.lo - camera.position), glm::abs(scene.hi - camera.position));
-    const float reach = glm::length(farthest);
+    const float reach = scene.farthestFrom(camera.position);
     if (!(reach > camera.nearPlane)) return camera.farPlane;
     const float stepped = std::exp2(std::ceil(4.0f * std::log2(reach)) / 4.0f);
     return std::clamp(stepped, camera.nearPlane * 2.0f, camera.farPlane);
@@ -173,8 +172,7 @@ Bounds sdsmReach(const Light& light, const FrameInfo& frame, const glm::mat4& cl
     Bounds seen;
     for (std::size_t i = 0; i < frame.items.size(); ++i)
         if (mayIntersect(clipFromWorld, frame.itemBounds[i])) seen.add(frame.itemBounds[i].transformed(view));
-    seen.lo = glm::max(seen.lo, frustum.lo);
-    seen.hi = glm::min(seen.hi, frustum.hi);
+    seen = seen.cutTo(frustum);
     if (seen.empty()) return Bounds{};
     // The reduction's margin (MapSdsm), at least as wide as the points' own.
     const glm::vec3 margin(1e-4f * glm::length(seen.size()));

@@ -250,10 +250,7 @@ void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& 
     if (boxed_.empty()) return;
     const Bounds view = frustumBounds(frame.clipFromWorld, lightFromWorld);
     for (const std::size_t i : boxed_) {
-        Bounds box = frame.itemBounds[i].transformed(lightFromWorld);
-        box.lo = glm::max(box.lo, view.lo);
-        box.hi = glm::min(box.hi, view.hi);
-        if (!box.empty()) b.add(box);
+        b.add(frame.itemBounds[i].transformed(lightFromWorld).cutTo(view));  // add() skips an empty box
     }
 }
 
