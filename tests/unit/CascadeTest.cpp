@@ -231,7 +231,7 @@ TEST(CascadeTest, AStabilisedCascadesDepthRangeIsItsSlices) {
     Bounds scene;
     for (const Bounds& b : field.bounds) scene.add(b);
     const LightCamera whole = fitDirectional(kSun, LightFit::Scene, in);
-    for (const auto [near, far] : {std::pair{0.1f, 20.0f}, std::pair{20.0f, 100.0f}, std::pair{100.0f, 400.0f}}) {
+    for (const auto& [near, far] : {std::pair{0.1f, 20.0f}, std::pair{20.0f, 100.0f}, std::pair{100.0f, 400.0f}}) {
         SCOPED_TRACE("slice " + std::to_string(near) + " to " + std::to_string(far));
         const LightCamera cam = fitCascade(kSun, camera, kAspect, near, far, true, in);
         const glm::mat4 worldFromClip = glm::inverse(glm::perspective(glm::radians(camera.fovYDeg), kAspect, near, far) * camera.viewFromWorld());
@@ -239,7 +239,8 @@ TEST(CascadeTest, AStabilisedCascadesDepthRangeIsItsSlices) {
         for (int i = 0; i <= 10; ++i)
             for (int j = 0; j <= 10; ++j)
                 for (int k = 0; k <= 10; ++k) {
-                    const glm::vec4 h = worldFromClip * glm::vec4(0.2f * i - 1.0f, 0.2f * j - 1.0f, 0.2f * k - 1.0f, 1.0f);
+                    const glm::vec3 ndc = 0.2f * glm::vec3(glm::ivec3(i, j, k)) - 1.0f;  // a grid over the clip cube
+                    const glm::vec4 h = worldFromClip * glm::vec4(ndc, 1.0f);
                     const glm::vec3 p = glm::vec3(h) / h.w;
                     if (glm::any(glm::lessThan(p, scene.lo)) || glm::any(glm::greaterThan(p, scene.hi))) continue;
                     ++inside;
