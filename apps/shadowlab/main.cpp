@@ -492,8 +492,11 @@ int main(int argc, char** argv) {
     // Keep the heap glibc would hand back to the system after every frame:
     // Mesa's software rasteriser frees its per-frame memory at the heap's
     // top, and taking those pages again the next frame costs page faults
-    // (bench on learnopengl-shadow-mapping, the shadowed frame 6.9-7.2
-    // against 4.6-5.9 ms; docs/techniques.md "The heap between frames").
+    // (docs/techniques.md, "The heap between frames"). Setting the trim
+    // threshold fixes glibc's mmap threshold too, which would then map and
+    // unmap every block over 128 KiB each frame: keep blocks up to the
+    // largest threshold glibc takes (32 MiB) in the heap as well.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
 #endif
     CLI::App app{"shadowlab: real-time shadows on OpenGL 4.5, measured against exact ray-traced shadows"};
