@@ -120,9 +120,9 @@ LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& view
     for (std::uint32_t s = 0; s < out.slices; ++s)
         depths[s] = {s == 0 ? 0.0f : out.sliceNear * std::exp(static_cast<float>(s) / out.sliceScale) * (1.0f - 1e-3f),
                      (s + 1 == out.slices ? far : out.sliceNear * std::exp(static_cast<float>(s + 1) / out.sliceScale)) * (1.0f + 1e-3f)};
-    const auto slopes = [&](int edges, int extent, int axis) {
-        std::vector<float> s(static_cast<std::size_t>(edges) + 1);
-        for (int tile = 0; tile <= edges; ++tile) {
+    const auto slopes = [&](int across, int extent, int axis) {  // `across` tiles: across + 1 edges
+        std::vector<float> s(static_cast<std::size_t>(across) + 1);
+        for (int tile = 0; tile <= across; ++tile) {
             const float ndc = 2.0f * static_cast<float>(std::min(tile * static_cast<int>(out.tileSize), extent)) / static_cast<float>(extent) - 1.0f;
             s[static_cast<std::size_t>(tile)] = (ndc + clipFromView[2][axis]) / clipFromView[axis][axis];
         }
