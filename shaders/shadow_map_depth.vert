@@ -5,7 +5,19 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
 out vec2 vUv;
 
+// A caster drawn from a coarser level of its mesh (MapCasterDraw.h): its
+// vertices moved this far away from the light, world units; 0 for a mesh's
+// own triangles.
+layout(location = 4) uniform float casterPush = 0.0;
+
 void main() {
     vUv = inUv;
-    gl_Position = map.lightClipFromWorld * draw.worldFromObject * vec4(inPosition, 1.0);
+    if (casterPush > 0.0) {
+        vec4 world = draw.worldFromObject * vec4(inPosition, 1.0);
+        // Away from the light: along the rays from a spot's position, against a directional light's direction.
+        world.xyz += casterPush * (map.perspective > 0.5 ? normalize(world.xyz - map.lightPosition) : -map.towardsLight);
+        gl_Position = map.lightClipFromWorld * world;
+    } else {
+        gl_Position = map.lightClipFromWorld * draw.worldFromObject * vec4(inPosition, 1.0);
+    }
 }

@@ -99,6 +99,12 @@ struct MapOptions {
     float offsetUnits = 8.0f;            ///< glPolygonOffset units in the shadow pass; default 8
     float normalBias = 1.0f;             ///< receiver moved along its normal by this many map texels (world size) times (1 - N.L); default 1
     bool cullFront = false;              ///< draw back faces only into the map (closed meshes; 002 §8.4.1.1); default false
+    /// Directional and spot lights (2D maps, cascades): a dense caster
+    /// (4096 triangles or more) is drawn from the coarsest simplified level
+    /// of its mesh whose surface lies within this many of the map's texels
+    /// (their world size at the caster) of the mesh's, pushed that far away
+    /// from the light; 0: every caster's own triangles; 0..4 texels, default 0
+    float lodTexels = 0.0f;
     float shadowedLight = 0.0f;          ///< share of the light's diffuse and specular a shadowed point keeps (a look; compare judges the test); default 0
     bool mipmaps = false;                ///< mipmap the map and sample it with mipmapping (002 exercise 8.6.1-4); default false
     MapPreset preset = MapPreset::Default;

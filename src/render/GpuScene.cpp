@@ -1,6 +1,7 @@
 #include "render/GpuScene.h"
 
 #include "core/Adjacency.h"
+#include "core/MeshLevels.h"
 #include "core/Plane.h"
 
 #include <shadowlab/Error.h>
@@ -98,6 +99,45 @@ void GpuScene::drawAdjacency(int mesh, const Mesh& source) {
     const GpuMesh& m = meshes_[static_cast<std::size_t>(mesh)];
     glBindVertexArray(m.adjacencyArray.id());
     glDrawElements(GL_TRIANGLES_ADJACENCY, m.indexCount * 2, GL_UNSIGNED_INT, nullptr);
+}
+
+const std::vector<DetailLevel>& GpuScene::levels(int mesh, const Scene& scene) {
+    GpuMesh& m = meshes_[static_cast<std::size_t>(mesh)];
+    if (m.levelsBuilt) return m.levels;
+    m.levelsBuilt = true;
+    const Mesh& source = scene.meshes[static_cast<std::size_t>(mesh)];
+    const GpuMesh* twin = nullptr;
+    for (std::size_t j = 0; j < meshes_.size() && !twin; ++j) {
+        const Mesh& other = scene.meshes[j];
+        if (static_cast<int>(j) != mesh && meshes_[j].levelsBuilt && other.indices == source.indices && other.positions == source.positions) twin = &meshes_[j];
+    }
+    if (twin) {
+        m.levels = twin->levels;
+        m.levelFirst = twin->levelFirst;
+        m.levelData = twin->levelData;
+    } else {
+        for (const MeshLevel& level : meshLevels(source.positions, source.indices)) {
+            m.levelFirst.push_back(static_cast<GLsizei>(m.levelData.size()));
+            m.levels.push_back({level.error, level.indices.size() / 3});
+            m.levelData.insert(m.levelData.end(), level.indices.begin(), level.indices.end());
+        }
+    }
+    if (!m.levelData.empty()) {
+        m.levelIndices = gl::Buffer();
+        glNamedBufferStorage(m.levelIndices.id(), static_cast<GLsizeiptr>(m.levelData.size() * 4), m.levelData.data(), 0);
+        m.levelArray = gl::VertexArray();
+        describeVertices(m.levelArray, m.vertices, m.levelIndices);
+    }
+    return m.levels;
+}
+
+void GpuScene::drawLevel(int mesh, int level) const {
+    if (level <= 0) return draw(mesh);
+    const GpuMesh& m = meshes_[static_cast<std::size_t>(mesh)];
+    const auto k = static_cast<std::size_t>(level - 1);
+    glBindVertexArray(m.levelArray.id());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.levels[k].triangles * 3), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(m.levelFirst[k]) * 4u));
 }
 
 void GpuScene::draw(int mesh) const {

@@ -1,6 +1,7 @@
 #pragma once
 // The scene's meshes and textures on the GPU.
 #include "core/Bounds.h"
+#include "core/MeshLevels.h"
 #include "gl/Object.h"
 
 #include <shadowlab/Scene.h>
@@ -21,6 +22,15 @@ struct GpuMesh {
     int winding = 0;                ///< closed: +1, counter-clockwise sides out; -1, in; open: 0 (core/Adjacency.h: closedWinding)
     gl::Buffer adjacency{gl::NoCreate}; ///< GL_TRIANGLES_ADJACENCY indices, built on first use
     gl::VertexArray adjacencyArray{gl::NoCreate};
+    /// Coarser levels for depth passes (core/MeshLevels.h), built on first use:
+    /// their indices one after another in `levelIndices` (the CPU copy in
+    /// `levelData`, for an identical mesh to share), drawn through `levelArray`.
+    bool levelsBuilt = false;
+    std::vector<DetailLevel> levels;
+    std::vector<GLsizei> levelFirst; ///< each level's first index in levelIndices
+    std::vector<std::uint32_t> levelData;
+    gl::Buffer levelIndices{gl::NoCreate};
+    gl::VertexArray levelArray{gl::NoCreate};
 };
 
 class GpuScene {
@@ -33,6 +43,13 @@ public:
     void drawAdjacency(int mesh, const Mesh& source);
     /// The mesh's GL_TRIANGLES_ADJACENCY index buffer (built on first use).
     const gl::Buffer& adjacencyIndices(int mesh, const Mesh& source);
+    /// The coarser levels of Scene::meshes[mesh] for depth passes, finest
+    /// first (core/MeshLevels.h: none for a small mesh), built on first use,
+    /// or taken from an earlier mesh of `scene` with the same positions and
+    /// indices (a file's mesh loaded for several nodes).
+    const std::vector<DetailLevel>& levels(int mesh, const Scene& scene);
+    /// Draws level `level` of the mesh (0: the mesh itself; k: levels()[k - 1], built by then).
+    void drawLevel(int mesh, int level) const;
     /// Object-space bounds of Scene::meshes[mesh].
     const Bounds& bounds(int mesh) const { return meshes_[static_cast<std::size_t>(mesh)].bounds; }
     /// Object-space plane of Scene::meshes[mesh] when it is planar.

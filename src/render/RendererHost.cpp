@@ -31,7 +31,7 @@ shared::LightUniforms lightUniforms(const Light& light) {
 }
 
 void Renderer::Impl::drawItems(ItemFilter filter, const gl::Program& prog, const std::function<bool(std::size_t)>& perItem,
-                               Topology topology) {
+                               Topology topology, const std::function<int(std::size_t)>& level) {
     bindOwnBlocks();
     prog.use();
     for (std::size_t i = 0; i < items.size(); ++i) {
@@ -48,6 +48,8 @@ void Renderer::Impl::drawItems(ItemFilter filter, const gl::Program& prog, const
         }
         if (topology == Topology::TrianglesAdjacency)
             gpu->drawAdjacency(item.mesh, scene->meshes[static_cast<std::size_t>(item.mesh)]);
+        else if (level)
+            gpu->drawLevel(item.mesh, level(i));
         else
             gpu->draw(item.mesh);
     }

@@ -82,7 +82,7 @@ struct Renderer::Impl final : TechniqueHost {
     void apply(const gl::RenderState& state) override { gl::apply(state); }
 
     void drawItems(ItemFilter filter, const gl::Program& prog, const std::function<bool(std::size_t)>& perItem,
-                   Topology topology) override;
+                   Topology topology, const std::function<int(std::size_t)>& level) override;
 
     void bindItem(std::size_t i) override {
         bindOwnBlocks();
@@ -107,6 +107,8 @@ struct Renderer::Impl final : TechniqueHost {
         if (!visibility) targets->drawBuffers(false);
         glViewport(0, 0, targets->size.x, targets->size.y);
     }
+
+    const std::vector<DetailLevel>& detailLevels(std::size_t item) override { return gpu->levels(items[item].mesh, *scene); }
 
     const gl::Buffer& adjacencyIndices(int mesh) override {
         return gpu->adjacencyIndices(mesh, scene->meshes[static_cast<std::size_t>(mesh)]);

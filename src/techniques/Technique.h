@@ -10,6 +10,7 @@
 // array, an atlas). It only ever talks to the renderer through
 // TechniqueHost; nothing here includes src/render/.
 #include "core/Bounds.h"
+#include "core/MeshLevels.h"
 #include "gl/PassClock.h"
 #include "gl/Program.h"
 #include "gl/RenderState.h"
@@ -86,10 +87,16 @@ public:
     /// the caller or not: it is made current), each with its transforms and
     /// material in the draw block (SL_BINDING_DRAW: worldFromObject,
     /// normalFromObject). `perItem(i)` runs before item i's draw and skips
-    /// it by returning false (culling per light or per face).
+    /// it by returning false (culling per light or per face). `level(i)`,
+    /// when given, runs after it and picks the triangles drawn: 0 the
+    /// mesh's own, k its detailLevels(i)[k - 1] (Topology::Triangles only).
     virtual void drawItems(ItemFilter filter, const gl::Program& program,
                            const std::function<bool(std::size_t item)>& perItem = {},
-                           Topology topology = Topology::Triangles) = 0;
+                           Topology topology = Topology::Triangles,
+                           const std::function<int(std::size_t item)>& level = {}) = 0;
+    /// The coarser levels of item i's mesh for depth passes, finest first
+    /// (core/MeshLevels.h; built on first use): empty for a small mesh.
+    virtual const std::vector<DetailLevel>& detailLevels(std::size_t item) = 0;
     /// A triangle covering the viewport (fullscreen.vert, no vertex input).
     virtual void drawFullscreenTriangle() = 0;
     /// Binds the renderer's blocks and item i's own (its transforms at

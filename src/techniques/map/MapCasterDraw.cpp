@@ -1,6 +1,9 @@
 // Technique "map": the casters of a depth-only pass by surface (MapCasterDraw.h).
 #include "techniques/map/MapCasterDraw.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace shadowlab::map {
 
 CasterSurface casterSurface(const FrameInfo& frame, std::size_t i) {
@@ -35,8 +38,23 @@ bool seesWhole(const CubeCamera& camera, const Bounds& box) {
     return !box.empty() && box.distanceTo(camera.position) > 1.7320508f * camera.nearPlane;
 }
 
-void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
-                      const gl::RenderState& state, const CasterSeenWhole& seenWhole) {
+float texelAt(const LightCamera& camera, const Bounds& box) {
+    if (!camera.perspective || camera.warped || box.empty()) return camera.texelSize;
+    const glm::mat4 worldFromView = glm::inverse(camera.viewFromWorld);
+    const glm::vec3 eye(worldFromView[3]);
+    const glm::vec3 axis = camera.axis();
+    float nearest = INFINITY;
+    for (int c = 0; c < 8; ++c) nearest = std::min(nearest, glm::dot(box.corner(c) - eye, axis));
+    return camera.texelSize * std::max(nearest, camera.nearPlane);
+}
+
+CasterDetail casterDetail(float lodTexels, const LightCamera& camera, const FrameInfo& frame) {
+    if (!(lodTexels > 0.0f)) return {};
+    return [lodTexels, &camera, &frame](std::size_t i) { return lodTexels * texelAt(camera, frame.itemBounds[i]); };
+}
+
+std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
+                             const gl::RenderState& state, const CasterSeenWhole& seenWhole, const CasterDetail& detail) {
     // The side of item i the pass leaves out: none (0), or its far sides, counter-clockwise (+1) or clockwise (-1) as seen.
     const bool cullable = state.cull == gl::Cull::None && seenWhole;
     const auto farSides = [&](std::size_t i) -> int {
@@ -44,6 +62,26 @@ void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, c
         return cullable && winding != 0 && seenWhole(i) ? winding : 0;
     };
     const gl::Program& opaque = program(false);
+    std::size_t drawn = 0;
+    // Item i's level (0: its mesh), its push set, its triangles counted.
+    const auto level = [&](std::size_t i) -> int {
+        int chosen = 0;
+        float push = 0.0f;
+        const std::size_t mesh = static_cast<std::size_t>(frame.items[i].mesh);
+        std::size_t triangles = frame.scene.meshes[mesh].triangleCount();
+        const float allowed = detail ? detail(i) : 0.0f;
+        if (allowed > 0.0f) {
+            // The levels' errors are the mesh's: scaled by the item's largest stretch.
+            const glm::mat3 m(frame.items[i].worldFromObject);
+            const float scale = std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
+            const std::vector<DetailLevel>& levels = host.detailLevels(i);
+            for (std::size_t k = 0; k < levels.size(); ++k)
+                if (levels[k].error * scale <= allowed) chosen = static_cast<int>(k + 1), push = levels[k].error * scale, triangles = levels[k].triangles;
+        }
+        if (detail) glProgramUniform1f(opaque.id(), kCasterPushLocation, push);
+        drawn += triangles;
+        return chosen;
+    };
     for (const int sides : {1, -1}) {
         if (!cullable) break;
         gl::RenderState culled = state;
@@ -54,13 +92,20 @@ void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, c
             if (!applied) host.apply(culled);
             applied = true;
             return true;
-        });
+        }, Topology::Triangles, level);
         if (applied) host.apply(state);
     }
-    host.drawItems(ItemFilter::Casters, opaque, [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Opaque && farSides(i) == 0 && keep(i, opaque); });
-    if (!holes) return;
+    host.drawItems(
+        ItemFilter::Casters, opaque, [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Opaque && farSides(i) == 0 && keep(i, opaque); },
+        Topology::Triangles, level);
+    if (!holes) return drawn;
     const gl::Program& cut = program(true);
-    host.drawItems(ItemFilter::Casters, cut, [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Holes && keep(i, cut); });
+    host.drawItems(ItemFilter::Casters, cut, [&](std::size_t i) {
+        if (casterSurface(frame, i) != CasterSurface::Holes || !keep(i, cut)) return false;
+        drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+        return true;
+    });
+    return drawn;
 }
 
 } // namespace shadowlab::map

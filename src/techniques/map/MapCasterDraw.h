@@ -19,6 +19,17 @@
 // triangles, about 10 ms). The map changes only at the silhouettes, where
 // a far side's slope bias (or polygon offset) put it nearer than the near
 // side's. The atlas draws both.
+//
+// A dense caster whose triangles are far smaller than the map's texels is
+// drawn, where the pass allows (CasterDetail: map option lodTexels), from a
+// coarser level of its mesh (core/MeshLevels.h), the coarsest whose surface
+// lies within the allowed world error of the mesh's. Those levels' vertices
+// are the mesh's own, so their triangles lie on or within that error of
+// its surface, either side; the pass's vertex stage moves them that far
+// away from the light (shadow_map_depth.vert: casterPush), so that the
+// level is nowhere nearer the light than the surface it stands for, and no
+// lit point of it comes out shadowed. cascades-field's bunnies, 70k
+// triangles each, are 20-130 texels across in its cascades.
 #include "core/Bounds.h"
 #include "core/LightCamera.h"
 #include "techniques/Technique.h"
@@ -51,6 +62,24 @@ using CasterFilter = std::function<bool(std::size_t i, const gl::Program& progra
 /// near plane (so that its near sides hide its far ones).
 using CasterSeenWhole = std::function<bool(std::size_t i)>;
 
+/// The world-space error a pass accepts in item i's surface (its mesh may
+/// be drawn from a coarser level within it, pushed that far from the
+/// light); 0: the mesh's own triangles.
+using CasterDetail = std::function<float(std::size_t i)>;
+
+/// The world size of one of a 2D map's texels at `box`: an orthographic
+/// camera's texelSize; a perspective one's at the box's nearest point along
+/// its axis (not nearer than its near plane); a warped one's smallest.
+float texelAt(const LightCamera& camera, const Bounds& box);
+
+/// The detail a 2D map's pass through `camera` allows: `lodTexels` of its
+/// texels at each caster (texelAt); none (an empty function) at 0.
+CasterDetail casterDetail(float lodTexels, const LightCamera& camera, const FrameInfo& frame);
+
+/// The uniform location of the push in the depth programs drawDepthCasters
+/// draws levels with (shadow_map_depth.vert: casterPush, world units).
+inline constexpr int kCasterPushLocation = 4;
+
 /// Whether a 2D map's `camera` sees `box` whole: an orthographic one
 /// always (it clamps depth instead of clipping at its near plane), a
 /// perspective one when every corner lies past its near plane.
@@ -65,8 +94,11 @@ bool seesWhole(const CubeCamera& camera, const Bounds& box);
 /// return; where it culls nothing, the opaque closed casters `seenWhole`
 /// accepts (none when it is empty) are drawn first with their far sides
 /// culled (gl::Cull::Back, or Front where their winding is mirrored:
-/// FrameInfo::itemWinding).
-void drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
-                      const gl::RenderState& state, const CasterSeenWhole& seenWhole);
+/// FrameInfo::itemWinding). Where `detail` is given, each opaque caster is
+/// drawn from the coarsest level of its mesh within detail(i), its push set
+/// at kCasterPushLocation of program(false) (which must have it). Returns
+/// the triangles drawn.
+std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
+                             const gl::RenderState& state, const CasterSeenWhole& seenWhole, const CasterDetail& detail = {});
 
 } // namespace shadowlab::map

@@ -84,11 +84,11 @@ void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
             const gl::RenderState state = clear(host, fbo_, !camera.perspective, part);
             if (part && part->empty()) continue;
             block.setCamera(p, c);
-            // The casters the pass draws, without the far sides it leaves out.
+            // The casters the pass draws, without the far sides it leaves out, at its levels.
             drawDepthCasters(
                 host, frame, true, [&](bool) -> const gl::Program& { return bare; },
                 [&](std::size_t i, const gl::Program&) { return castsInto(camera, frame, i, g.hasMoments()); }, state,
-                [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); });
+                [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); }, casterDetail(p.gpuFit ? 0.0f : p.options.lodTexels, camera, frame));
         }
     }
     // The target holds the last camera's casters (a cascade's: the farthest),

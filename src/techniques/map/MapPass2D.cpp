@@ -80,17 +80,14 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         // This cascade's camera for the depth pass (the block's first member).
         res.block.setCamera(p, c);
         // Casters that cannot reach the light's frustum are not drawn, nor
-        // the far sides of closed ones it sees whole (MapCasterDraw.h).
+        // the far sides of closed ones it sees whole, and dense ones are
+        // drawn from a coarser level within lodTexels (MapCasterDraw.h; not
+        // for a map fitted on the GPU, whose texels are not known here).
         std::size_t drawnHere = 0;
         if (!part || !part->empty())
-        drawDepthCasters(
-            host, frame, res.holes, program,
-            [&](std::size_t i, const gl::Program&) {
-                const bool inside = castsInto(camera, frame, i, g.hasMoments());
-                if (inside) drawnHere += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
-                return inside;
-            },
-            state, [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); });
+            drawnHere = drawDepthCasters(
+                host, frame, res.holes, program, [&](std::size_t i, const gl::Program&) { return castsInto(camera, frame, i, g.hasMoments()); },
+                state, [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); }, casterDetail(p.gpuFit ? 0.0f : p.options.lodTexels, camera, frame));
         if (cameras.size() > 1) {
             host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
             // The share of the layer's texels the pass cleared and drew.

@@ -1,0 +1,50 @@
+#pragma once
+// Coarser versions of a dense triangle mesh for depth-only passes (a shadow
+// map's casters): where a map texel covers many of a caster's triangles,
+// drawing them all costs the rasteriser its setup per triangle for depths a
+// few larger triangles give within a fraction of a texel. GPU-free.
+//
+// Each level is made by edge collapses onto one of the edge's own vertices
+// (a half-edge collapse, ordered by Garland and Heckbert's quadric error),
+// so a level is an index list over the mesh's own vertices: the vertex
+// buffer is shared, and every vertex of a level lies on the mesh's surface.
+// Vertices are welded by position first (a mesh splits them for normals and
+// uvs); those on an open or non-manifold edge never move, and a collapse
+// that would turn a triangle over or pinch the surface is refused.
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace shadowlab {
+
+struct MeshLevel {
+    std::vector<std::uint32_t> indices; ///< triangles over the mesh's own vertices, winding kept
+    /// Object space: no vertex of the mesh lies farther than this from the
+    /// level's surface (measured against the level's triangles around the
+    /// vertex each one was collapsed into, so an upper bound).
+    float error = 0.0f;
+};
+
+/// A level as a draw chooses it (GpuScene::levels, TechniqueHost::detailLevels).
+struct DetailLevel {
+    float error = 0.0f;        ///< MeshLevel::error
+    std::size_t triangles = 0; ///< the level's triangles
+};
+
+struct MeshLevelOptions {
+    std::size_t minTriangles = 4096;   ///< meshes with fewer triangles get no levels
+    double reduction = 0.5;            ///< each level keeps at most this share of the triangles of the one before (0.1..0.9)
+    std::size_t fewestTriangles = 256; ///< no level is made below this many triangles
+};
+
+/// The coarser levels of the triangle mesh (`indices` over `positions`),
+/// finest first; none for a small mesh or one that cannot be reduced.
+std::vector<MeshLevel> meshLevels(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices,
+                                  const MeshLevelOptions& options = {});
+
+/// The distance from `p` to the triangle (a, b, c).
+float pointTriangleDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
+} // namespace shadowlab
