@@ -103,8 +103,10 @@ struct MapOptions {
     /// (4096 triangles or more) is drawn from the coarsest simplified level
     /// of its mesh whose surface lies within this many of the map's texels
     /// (their world size at the caster) of the mesh's, pushed that far away
-    /// from the light; 0: every caster's own triangles; 0..4 texels, default 0
-    float lodTexels = 0.0f;
+    /// from the light; 0: every caster's own triangles; 0..4 texels, default
+    /// 0.5 (its shadow's outline moves by at most a texel, the map's own
+    /// resolution; docs/techniques.md)
+    float lodTexels = 0.5f;
     float shadowedLight = 0.0f;          ///< share of the light's diffuse and specular a shadowed point keeps (a look; compare judges the test); default 0
     bool mipmaps = false;                ///< mipmap the map and sample it with mipmapping (002 exercise 8.6.1-4); default false
     MapPreset preset = MapPreset::Default;

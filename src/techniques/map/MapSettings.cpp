@@ -20,10 +20,11 @@ namespace shadowlab::map {
 
 namespace {
 
-// What the lecture's and LearnOpenGL's presets share: a depth32f map and no
-// bias but the one they set themselves.
+// What the lecture's and LearnOpenGL's presets share: a depth32f map, no
+// bias but the one they set themselves, and every caster's every triangle.
 void presetBase(MapOptions& o) {
     o.format = MapFormat::Depth32F;
+    o.lodTexels = 0.0f;
     o.slopeBias = 0.0f;
     o.offsetUnits = 0.0f;
     o.normalBias = 0.0f;
