@@ -13,6 +13,10 @@ layout(location = 1) uniform int face;
 out vec3 gCubeWorld;
 out vec2 gCubeUv;
 #endif
+// A caster drawn from a coarser level of its mesh (MapCasterDraw.h): its
+// vertices moved this far away from the light, world units; 0 for a mesh's
+// own triangles.
+layout(location = 4) uniform float casterPush = 0.0;
 
 void main() {
 #if MAP_CUBE_ONE_PASS
@@ -21,6 +25,7 @@ void main() {
     gCubeUv = inUv;
 #endif
     vec4 world = draw.worldFromObject * vec4(inPosition, 1.0);
+    if (casterPush > 0.0) world.xyz += casterPush * normalize(world.xyz - map.lightPosition);
 #if MAP_CUBE_ONE_PASS
     vCubeWorld = world.xyz;
     gl_Position = world;

@@ -14,8 +14,9 @@ void main() {
     vUv = inUv;
     if (casterPush > 0.0) {
         vec4 world = draw.worldFromObject * vec4(inPosition, 1.0);
-        // Away from the light: along the rays from a spot's position, against a directional light's direction.
-        world.xyz += casterPush * (map.perspective > 0.5 ? normalize(world.xyz - map.lightPosition) : -map.towardsLight);
+        // Away from the light: against a directional light's direction, else
+        // along the rays from the light's position (a spot; a cube's floor, MapFloors).
+        world.xyz += casterPush * (dot(map.towardsLight, map.towardsLight) > 0.0 ? -map.towardsLight : normalize(world.xyz - map.lightPosition));
         gl_Position = map.lightClipFromWorld * world;
     } else {
         gl_Position = map.lightClipFromWorld * draw.worldFromObject * vec4(inPosition, 1.0);

@@ -99,8 +99,8 @@ struct MapOptions {
     float offsetUnits = 8.0f;            ///< glPolygonOffset units in the shadow pass; default 8
     float normalBias = 1.0f;             ///< receiver moved along its normal by this many map texels (world size) times (1 - N.L); default 1
     bool cullFront = false;              ///< draw back faces only into the map (closed meshes; 002 §8.4.1.1); default false
-    /// Directional and spot lights (2D maps, cascades): a dense caster
-    /// (4096 triangles or more) is drawn from the coarsest simplified level
+    /// Every map but the atlas's and fit sdsm's: a dense caster (4096
+    /// triangles or more) is drawn from the coarsest simplified level
     /// of its mesh whose surface lies within this many of the map's texels
     /// (their world size at the caster) of the mesh's, pushed that far away
     /// from the light; 0: every caster's own triangles; 0..4 texels, default

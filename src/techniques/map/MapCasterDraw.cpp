@@ -53,6 +53,16 @@ CasterDetail casterDetail(float lodTexels, const LightCamera& camera, const Fram
     return [lodTexels, &camera, &frame](std::size_t i) { return lodTexels * texelAt(camera, frame.itemBounds[i]); };
 }
 
+CasterDetail casterDetail(float lodTexels, const CubeCamera& camera, int size, const FrameInfo& frame) {
+    if (!(lodTexels > 0.0f)) return {};
+    const float perDistance = 2.0f / static_cast<float>(size);
+    return [lodTexels, perDistance, &camera, &frame](std::size_t i) {
+        const Bounds& box = frame.itemBounds[i];
+        if (box.empty()) return 0.0f;
+        return lodTexels * perDistance * std::max(box.distanceTo(camera.position) / 1.7320508f, camera.nearPlane);
+    };
+}
+
 std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
                              const gl::RenderState& state, const CasterSeenWhole& seenWhole, const CasterDetail& detail) {
     // The side of item i the pass leaves out: none (0), or its far sides, counter-clockwise (+1) or clockwise (-1) as seen.

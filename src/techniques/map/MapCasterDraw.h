@@ -21,7 +21,8 @@
 // side's. The atlas draws both.
 //
 // A dense caster whose triangles are far smaller than the map's texels is
-// drawn, where the pass allows (CasterDetail: map option lodTexels), from a
+// drawn, where the pass allows (CasterDetail: map option lodTexels; a 2D
+// map's, a cascade's or a cube's pass, not the atlas's), from a
 // coarser level of its mesh (core/MeshLevels.h), the coarsest whose surface
 // lies within the allowed world error of the mesh's. Those levels' vertices
 // are the mesh's own, so their triangles lie on or within that error of
@@ -76,8 +77,15 @@ float texelAt(const LightCamera& camera, const Bounds& box);
 /// texels at each caster (texelAt); none (an empty function) at 0.
 CasterDetail casterDetail(float lodTexels, const LightCamera& camera, const FrameInfo& frame);
 
+/// A cube's: `lodTexels` of its face texels at each caster, at the
+/// caster's nearest point to the light over sqrt(3) (a face's texel grows
+/// with the distance along its axis, at least that), not nearer than its
+/// near plane.
+CasterDetail casterDetail(float lodTexels, const CubeCamera& camera, int size, const FrameInfo& frame);
+
 /// The uniform location of the push in the depth programs drawDepthCasters
-/// draws levels with (shadow_map_depth.vert: casterPush, world units).
+/// draws levels with (shadow_map_depth.vert and shadow_map_cube.vert:
+/// casterPush, world units).
 inline constexpr int kCasterPushLocation = 4;
 
 /// Whether a 2D map's `camera` sees `box` whole: an orthographic one

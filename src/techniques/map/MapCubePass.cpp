@@ -22,8 +22,7 @@ namespace {
 struct FaceUse {
     std::array<bool, 6> used{};
     std::array<TexelRect, 6> covered{};
-    std::array<double, 6> triangles{};
-    std::size_t drawn = 0;  ///< triangles drawn, each once
+    std::array<double, 6> triangles{};  ///< the meshes' own, whatever level the pass draws (lodTexels)
 };
 
 FaceUse faceUse(const FrameInfo& frame, const MapLight& p, int size) {
@@ -32,7 +31,6 @@ FaceUse faceUse(const FrameInfo& frame, const MapLight& p, int size) {
         const std::uint8_t mask = p.faceMask(i);
         if (!mask || !frame.items[i].castsShadows) continue;
         const auto triangles = static_cast<double>(frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount());
-        use.drawn += static_cast<std::size_t>(triangles);
         for (std::size_t f = 0; f < 6; ++f)
             if (mask & (1u << f)) {
                 use.used[f] = true;
@@ -77,10 +75,13 @@ gl::RenderState windowDepthState(gl::RenderState state, const MapOptions& o) {
 }
 
 // The casters into the cube: once through the geometry shader, or once per face they touch.
-void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const MapArray& g, const MapLight& p, const FaceUse& use,
-                 const gl::RenderState& state) {
+// Returns the triangles drawn (each caster once in one pass; once per
+// face in six).
+std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const MapArray& g, const MapLight& p, const FaceUse& use,
+                        const gl::RenderState& state) {
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
     const auto seenWhole = [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); };
+    const CasterDetail detail = casterDetail(p.options.lodTexels, p.cubeCamera, g.size(), frame);
     const auto defines = [&](bool cut) {
         return CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options), cut}.defines();
     };
@@ -93,26 +94,28 @@ void drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const 
                                  defines(cut)});
         };
         glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
-        drawDepthCasters(
+        return drawDepthCasters(
             host, frame, holes, program,
             [&](std::size_t i, const gl::Program& drawing) {
                 if (!p.faceMask(i)) return false;
                 glProgramUniform1ui(drawing.id(), 0, p.faceMask(i));
                 return true;
             },
-            state, seenWhole);
-        return;
+            state, seenWhole, detail);
     }
     const auto program = [&](bool cut) -> const gl::Program& {
         return host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}}, defines(cut)});
     };
+    std::size_t drawn = 0;
     for (int f = 0; f < 6; ++f) {
         if (!use.used[static_cast<std::size_t>(f)]) continue;
         glBindFramebuffer(GL_FRAMEBUFFER, p.faceFbos[static_cast<std::size_t>(f)].id());
         glProgramUniform1i(program(false).id(), 1, f);
         if (holes) glProgramUniform1i(program(true).id(), 1, f);
-        drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state, seenWhole);
+        drawn += drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state,
+                                  seenWhole, detail);
     }
+    return drawn;
 }
 
 } // namespace
@@ -128,9 +131,9 @@ void renderCubePass(TechniqueHost& host, const FrameInfo& frame, const LightView
     state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
     if (cubeWindowDepth(p.options)) state = windowDepthState(state, p.options);
     host.apply(state);
-    drawCasters(host, frame, res.holes, g, p, use, state);
+    const std::size_t drawn = drawCasters(host, frame, res.holes, g, p, use, state);
     static const char* faceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
-    host.count("triangles", static_cast<double>(use.drawn));
+    host.count("triangles", static_cast<double>(drawn));
     host.count("mapBytes", 6.0 * texelBytes(g.key) * static_cast<double>(g.size()) * static_cast<double>(g.size()));
     for (std::size_t f = 0; f < 6; ++f) host.count(std::string("faceTriangles.") + faceNames[f], use.triangles[f]);
     if (res.translucent) drawCubeTranslucent(host, frame, g, p);

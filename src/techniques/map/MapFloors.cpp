@@ -150,7 +150,7 @@ void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& 
             drawDepthCasters(
                 host, frame, true, [&](bool) -> const gl::Program& { return bare; },
                 [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state,
-                [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); });
+                [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); }, casterDetail(p.options.lodTexels, p.cubeCamera, g.size(), frame));
         }
         block.restore();
     }

@@ -54,7 +54,7 @@ const OptionTable& mapOptionTable() {
                     "receiver moved along its normal by this many map texels (their world size) times 1 - N.L")
             .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws back faces only, without the polygon offset (slopeBias, offsetUnits), which the far side needs not and which would lift it off the receivers at a caster's foot (closed meshes; lecture 002 §8.4.1.1)")
             .number(&MapOptions::lodTexels, "lodTexels", 0.0, 4.0, "texels",
-                    "directional and spot lights: a dense caster (4096 triangles or more) is drawn into the map from the coarsest simplified level of its mesh whose surface lies within this many map texels of the mesh's, pushed that far away from the light; 0: every triangle (docs/techniques.md)")
+                    "a dense caster (4096 triangles or more) is drawn into the map (a cube's faces too) from the coarsest simplified level of its mesh whose surface lies within this many map texels of the mesh's, pushed that far away from the light; 0: every triangle; not in the shadow atlas or with fit sdsm (docs/techniques.md)")
             .number(&MapOptions::shadowedLight, "shadowedLight", 0.0, 1.0, "share of the light",
                     "what a shadowed point keeps of the light (lecture 002 listing 8.4: 0.6); compare judges the shadow test, not this look")
             .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (lecture 002 exercise 8.6.1-4; docs/techniques.md says what it does)")
