@@ -3,6 +3,7 @@
 #include "core/Adjacency.h"
 #include "core/MeshLevels.h"
 #include "core/Plane.h"
+#include "core/TriangleOrder.h"
 
 #include <shadowlab/Error.h>
 
@@ -13,6 +14,9 @@
 namespace shadowlab {
 
 namespace {
+// Meshes with at least this many triangles are drawn in spatial order.
+constexpr std::size_t kSpatialOrderTriangles = 1024;
+
 struct Vertex {
     glm::vec3 position;
     glm::vec3 normal;
@@ -35,19 +39,31 @@ void describeVertices(const gl::VertexArray& array, const gl::Buffer& vertices, 
 
 GpuScene::GpuScene(const Scene& scene) {
     for (const Mesh& mesh : scene.meshes) {
+        GpuMesh gpu;
+        // A dense mesh's triangles in spatial order over its vertices
+        // renumbered as they are first used, for the vertex stage's cache
+        // (core/TriangleOrder.h: the same triangles, the same image).
+        DrawOrder order;
+        if (mesh.triangleCount() >= kSpatialOrderTriangles) {
+            order = spatialDrawOrder(mesh.positions, mesh.indices);
+            gpu.remap = order.remap;
+        } else {
+            order.indices = mesh.indices;
+        }
         std::vector<Vertex> vertices(mesh.positions.size());
         for (std::size_t i = 0; i < vertices.size(); ++i) {
-            vertices[i].position = mesh.positions[i];
-            vertices[i].normal = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0);
-            vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
+            Vertex& v = vertices[gpu.remap.empty() ? i : gpu.remap[i]];
+            v.position = mesh.positions[i];
+            v.normal = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0);
+            v.uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
         }
-        GpuMesh gpu;
         glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
                              vertices.empty() ? nullptr : vertices.data(), 0);
-        glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, mesh.indices.size()) * 4),
-                             mesh.indices.empty() ? nullptr : mesh.indices.data(), 0);
+        const std::vector<std::uint32_t>& ordered = order.indices;
+        glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, ordered.size()) * 4),
+                             ordered.empty() ? nullptr : ordered.data(), 0);
         describeVertices(gpu.vao, gpu.vertices, gpu.indices);
-        gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+        gpu.indexCount = static_cast<GLsizei>(ordered.size());
         for (const glm::vec3& p : mesh.positions) gpu.bounds.add(p);
         gpu.plane = meshPlane(mesh);
         gpu.convex = convexPlanes(mesh);
@@ -83,7 +99,9 @@ GpuScene::GpuScene(const Scene& scene) {
 const gl::Buffer& GpuScene::adjacencyIndices(int mesh, const Mesh& source) {
     GpuMesh& m = meshes_[static_cast<std::size_t>(mesh)];
     if (!m.adjacency) {
-        const std::vector<std::uint32_t> indices = shadowlab::adjacencyIndices(source.positions, source.indices);
+        std::vector<std::uint32_t> indices = shadowlab::adjacencyIndices(source.positions, source.indices);
+        for (std::uint32_t& i : indices)
+            if (!m.remap.empty()) i = m.remap[i];  // the buffer's vertex numbers
         m.adjacency = gl::Buffer();
         glNamedBufferStorage(m.adjacency.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, indices.size()) * 4),
                              indices.empty() ? nullptr : indices.data(), 0);
@@ -123,8 +141,12 @@ const std::vector<DetailLevel>& GpuScene::levels(int mesh, const Scene& scene) {
         }
     }
     if (!m.levelData.empty()) {
+        // The levels number the mesh's vertices as the scene does; the buffer's are m.remap's.
+        std::vector<std::uint32_t> data = m.levelData;
+        if (!m.remap.empty())
+            for (std::uint32_t& i : data) i = m.remap[i];
         m.levelIndices = gl::Buffer();
-        glNamedBufferStorage(m.levelIndices.id(), static_cast<GLsizeiptr>(m.levelData.size() * 4), m.levelData.data(), 0);
+        glNamedBufferStorage(m.levelIndices.id(), static_cast<GLsizeiptr>(data.size() * 4), data.data(), 0);
         m.levelArray = gl::VertexArray();
         describeVertices(m.levelArray, m.vertices, m.levelIndices);
     }

@@ -2,6 +2,7 @@
 // The scene's meshes and textures on the GPU.
 #include "core/Bounds.h"
 #include "core/MeshLevels.h"
+#include "core/TriangleOrder.h"
 #include "gl/Object.h"
 
 #include <shadowlab/Scene.h>
@@ -12,10 +13,14 @@
 namespace shadowlab {
 
 struct GpuMesh {
-    gl::Buffer vertices;   ///< interleaved position, normal, uv
+    gl::Buffer vertices;   ///< interleaved position, normal, uv (in remap's order)
     gl::Buffer indices;
     gl::VertexArray vao;
     GLsizei indexCount = 0;
+    /// A dense mesh's vertices are numbered in the buffers as its triangles,
+    /// in spatial order, first use them (core/TriangleOrder.h): per vertex of
+    /// Scene::meshes[mesh], its number here; empty: the scene's own numbers.
+    std::vector<std::uint32_t> remap;
     Bounds bounds;                 ///< object space
     std::optional<glm::vec4> plane; ///< object space, when the mesh is planar (core/Plane.h)
     std::vector<glm::vec4> convex;  ///< object space, the planes of a convex mesh (core/Plane.h); empty otherwise

@@ -1,0 +1,60 @@
+// Triangles in Morton order of their centroids (TriangleOrder.h).
+#include "core/TriangleOrder.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace shadowlab {
+
+namespace {
+// x's low 10 bits spread to every third bit.
+std::uint32_t spread(std::uint32_t x) {
+    x &= 0x3ffu;
+    x = (x | (x << 16)) & 0x030000ffu;
+    x = (x | (x << 8)) & 0x0300f00fu;
+    x = (x | (x << 4)) & 0x030c30c3u;
+    x = (x | (x << 2)) & 0x09249249u;
+    return x;
+}
+} // namespace
+
+std::vector<std::uint32_t> spatialTriangleOrder(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
+    const std::size_t triangles = indices.size() / 3;
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const std::uint32_t i : indices) {
+        lo = glm::min(lo, positions[i]);
+        hi = glm::max(hi, positions[i]);
+    }
+    const glm::vec3 extent = glm::max(hi - lo, glm::vec3(1e-30f));
+    std::vector<std::uint32_t> key(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const glm::vec3 centre = (positions[indices[3 * t]] + positions[indices[3 * t + 1]] + positions[indices[3 * t + 2]]) / 3.0f;
+        const glm::vec3 unit = glm::clamp((centre - lo) / extent, 0.0f, 1.0f) * 1023.0f;
+        key[t] = spread(static_cast<std::uint32_t>(unit.x)) | (spread(static_cast<std::uint32_t>(unit.y)) << 1) |
+                 (spread(static_cast<std::uint32_t>(unit.z)) << 2);
+    }
+    std::vector<std::uint32_t> order(triangles);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    std::vector<std::uint32_t> out;
+    out.reserve(triangles * 3);
+    for (const std::uint32_t t : order) out.insert(out.end(), {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]});
+    return out;
+}
+
+DrawOrder spatialDrawOrder(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
+    constexpr std::uint32_t kUnused = 0xffffffffu;
+    DrawOrder out;
+    out.indices = spatialTriangleOrder(positions, indices);
+    out.remap.assign(positions.size(), kUnused);
+    std::uint32_t next = 0;
+    for (std::uint32_t& i : out.indices) {
+        if (out.remap[i] == kUnused) out.remap[i] = next++;
+        i = out.remap[i];
+    }
+    for (std::uint32_t& r : out.remap)
+        if (r == kUnused) r = next++;
+    return out;
+}
+
+} // namespace shadowlab
