@@ -8,6 +8,7 @@
 #include "GLTestContext.h"
 
 #include <shadowlab/Renderer.h>
+#include <epoxy/gl.h>
 #include <shadowlab/SceneFile.h>
 
 #include <filesystem>
@@ -90,4 +91,39 @@ TEST_F(CasterLodGLTest, ADenseSphereKeepsItsLitSideAndItsShadow) {
         EXPECT_LE(coarse.lights[0].falseShadowAwayFromEdges, full.lights[0].falseShadowAwayFromEdges + 1e-4) << "lit points turned dark";
         EXPECT_LE(awayFromEdges(half.lights[0]), awayFromEdges(full.lights[0]) + 1e-4);
     }
+}
+
+// The push is a uniform of the depth programs, which every light of the
+// same map variant shares, and every renderer on the context: a pass that
+// draws levels must leave no push behind for the next light's full
+// meshes (a push left behind is along the rays and moves no outline, so
+// this asks the programs themselves: before the fix, 0.027 was left in
+// the sphere's program for the second sun's pass here).
+TEST_F(CasterLodGLTest, APassLeavesNoPushBehind) {
+    const Scene scene = sceneOf(R"({"camera": {"position": [3, 3.5, 7], "target": [0, 0.8, 0], "fovY": 45},
+      "lights": [{"type": "directional", "direction": [0.4, -0.8, -0.3], "shadow": {"technique": "map", "map": {"size": 128, "lodTexels": 4}}},
+                 {"type": "point", "position": [-2, 4, 2], "range": 30, "shadow": {"technique": "map", "map": {"size": 64, "lodTexels": 4}}}],
+      "nodes": [{"name": "ground", "shape": {"type": "plane", "size": [30, 30]}},
+                {"name": "ball", "shape": {"type": "sphere", "radius": 1, "segments": 128, "rings": 64}, "translation": [0, 1.3, 0]}]})");
+    Renderer renderer(test::glContext());
+    renderer.upload(scene);
+    RenderOptions options;
+    options.width = 320;
+    options.height = 240;
+    const FrameStats stats = renderer.render(scene, options);
+    double triangles = 0.0;
+    for (const auto& [name, value] : stats.counters)
+        if (name.ends_with(".triangles") && (name.starts_with("shadow[0].") || name.starts_with("shadow[1]."))) triangles += value;
+    EXPECT_LT(triangles, 2.0 * 16128.0 * 0.25) << "both lights drew levels";
+    int programs = 0;
+    for (GLuint id = 1; id < 4096; ++id) {
+        if (!glIsProgram(id)) continue;
+        const GLint location = glGetUniformLocation(id, "casterPush");
+        if (location < 0) continue;
+        ++programs;
+        GLfloat push = -1.0f;
+        glGetUniformfv(id, location, &push);
+        EXPECT_EQ(push, 0.0f) << "program " << id;
+    }
+    EXPECT_GE(programs, 2) << "the 2D and the cube depth programs";
 }

@@ -73,6 +73,16 @@ std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool h
     };
     const gl::Program& opaque = program(false);
     std::size_t drawn = 0;
+    // The push is the program's own uniform, shared by every pass that
+    // draws with it: each call finds it 0 and leaves it 0, so that no other
+    // light's casters (nor the casters with holes, which a floor draws
+    // through the same program) inherit one.
+    float pushed = 0.0f;
+    const auto setPush = [&](float push) {
+        if (push == pushed) return;
+        glProgramUniform1f(opaque.id(), kCasterPushLocation, push);
+        pushed = push;
+    };
     // Item i's level (0: its mesh), its push set, its triangles counted.
     const auto level = [&](std::size_t i) -> int {
         int chosen = 0;
@@ -88,7 +98,7 @@ std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool h
             for (std::size_t k = 0; k < levels.size(); ++k)
                 if (levels[k].error * scale <= allowed) chosen = static_cast<int>(k + 1), push = levels[k].error * scale, triangles = levels[k].triangles;
         }
-        if (detail) glProgramUniform1f(opaque.id(), kCasterPushLocation, push);
+        setPush(push);
         drawn += triangles;
         return chosen;
     };
@@ -108,6 +118,7 @@ std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool h
     host.drawItems(
         ItemFilter::Casters, opaque, [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Opaque && farSides(i) == 0 && keep(i, opaque); },
         Topology::Triangles, level);
+    setPush(0.0f);
     if (!holes) return drawn;
     const gl::Program& cut = program(true);
     host.drawItems(ItemFilter::Casters, cut, [&](std::size_t i) {
