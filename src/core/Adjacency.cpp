@@ -8,22 +8,6 @@ namespace shadowlab {
 
 namespace {
 
-// Canonical vertex id per index: the first vertex with the same position.
-std::vector<std::uint32_t> weld(const std::vector<glm::vec3>& positions) {
-    struct Hash {
-        std::size_t operator()(const glm::vec3& p) const {
-            std::uint32_t b[3];
-            std::memcpy(b, &p, sizeof b);
-            return (std::size_t(b[0]) * 73856093u) ^ (std::size_t(b[1]) * 19349663u) ^ (std::size_t(b[2]) * 83492791u);
-        }
-    };
-    std::unordered_map<glm::vec3, std::uint32_t, Hash> first;
-    std::vector<std::uint32_t> id(positions.size());
-    for (std::size_t i = 0; i < positions.size(); ++i)
-        id[i] = first.emplace(positions[i], static_cast<std::uint32_t>(i)).first->second;
-    return id;
-}
-
 std::uint64_t edgeKey(std::uint32_t from, std::uint32_t to) { return (std::uint64_t(from) << 32) | to; }
 
 struct EdgeUse {
@@ -46,8 +30,23 @@ std::unordered_map<std::uint64_t, EdgeUse> directedEdges(const std::vector<std::
 
 } // namespace
 
+std::vector<std::uint32_t> weldByPosition(const std::vector<glm::vec3>& positions) {
+    struct Hash {
+        std::size_t operator()(const glm::vec3& p) const {
+            std::uint32_t b[3];
+            std::memcpy(b, &p, sizeof b);
+            return (std::size_t(b[0]) * 73856093u) ^ (std::size_t(b[1]) * 19349663u) ^ (std::size_t(b[2]) * 83492791u);
+        }
+    };
+    std::unordered_map<glm::vec3, std::uint32_t, Hash> first;
+    std::vector<std::uint32_t> id(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        id[i] = first.emplace(positions[i], static_cast<std::uint32_t>(i)).first->second;
+    return id;
+}
+
 std::vector<std::uint32_t> adjacencyIndices(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
-    const std::vector<std::uint32_t> id = weld(positions);
+    const std::vector<std::uint32_t> id = weldByPosition(positions);
     const auto edges = directedEdges(id, indices);
     std::vector<std::uint32_t> out;
     out.reserve(indices.size() * 2);
@@ -64,7 +63,7 @@ std::vector<std::uint32_t> adjacencyIndices(const std::vector<glm::vec3>& positi
 }
 
 std::size_t openEdges(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) {
-    const std::vector<std::uint32_t> id = weld(positions);
+    const std::vector<std::uint32_t> id = weldByPosition(positions);
     const auto edges = directedEdges(id, indices);
     std::size_t open = 0;
     for (const auto& [key, use] : edges) {

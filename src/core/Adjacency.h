@@ -8,6 +8,10 @@
 
 namespace shadowlab {
 
+/// Per vertex, the first vertex with the same position (meshes split
+/// vertices for normals and uvs; welding finds the surface's own).
+std::vector<std::uint32_t> weldByPosition(const std::vector<glm::vec3>& positions);
+
 /// For each triangle (a, b, c) of `indices` the six indices
 /// a, n(ab), b, n(bc), c, n(ca) in GL_TRIANGLES_ADJACENCY order, where n(xy)
 /// is the vertex opposite edge xy in the triangle across that edge.

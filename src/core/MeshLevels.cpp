@@ -1,10 +1,11 @@
 // Coarser levels of a dense mesh by quadric-ordered half-edge collapses (MeshLevels.h).
 #include "core/MeshLevels.h"
 
+#include "core/Adjacency.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <queue>
 #include <unordered_map>
 
@@ -33,23 +34,6 @@ struct Quadric {
     }
 };
 
-struct PositionKey {
-    std::uint32_t x, y, z;
-    bool operator==(const PositionKey&) const = default;
-};
-struct PositionHash {
-    std::size_t operator()(const PositionKey& k) const {
-        return (static_cast<std::size_t>(k.x) * 73856093u) ^ (static_cast<std::size_t>(k.y) * 19349663u) ^ (static_cast<std::size_t>(k.z) * 83492791u);
-    }
-};
-PositionKey keyOf(const glm::vec3& p) {
-    PositionKey k{};
-    std::memcpy(&k.x, &p.x, 4);
-    std::memcpy(&k.y, &p.y, 4);
-    std::memcpy(&k.z, &p.z, 4);
-    return k;
-}
-
 std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
     if (a > b) std::swap(a, b);
     return (static_cast<std::uint64_t>(a) << 32) | b;
@@ -66,10 +50,7 @@ class Collapser {
 public:
     Collapser(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices) : p_(positions) {
         const std::size_t n = positions.size();
-        weld_.resize(n);
-        std::unordered_map<PositionKey, std::uint32_t, PositionHash> first;
-        first.reserve(n);
-        for (std::uint32_t v = 0; v < n; ++v) weld_[v] = first.emplace(keyOf(positions[v]), v).first->second;
+        weld_ = weldByPosition(positions);
         for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
             const std::array<std::uint32_t, 3> tri{weld_[indices[t]], weld_[indices[t + 1]], weld_[indices[t + 2]]};
             if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;

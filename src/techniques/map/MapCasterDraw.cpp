@@ -38,19 +38,20 @@ bool seesWhole(const CubeCamera& camera, const Bounds& box) {
     return !box.empty() && box.distanceTo(camera.position) > 1.7320508f * camera.nearPlane;
 }
 
-float texelAt(const LightCamera& camera, const Bounds& box) {
-    if (!camera.perspective || camera.warped || box.empty()) return camera.texelSize;
-    const glm::mat4 worldFromView = glm::inverse(camera.viewFromWorld);
-    const glm::vec3 eye(worldFromView[3]);
-    const glm::vec3 axis = camera.axis();
-    float nearest = INFINITY;
-    for (int c = 0; c < 8; ++c) nearest = std::min(nearest, glm::dot(box.corner(c) - eye, axis));
-    return camera.texelSize * std::max(nearest, camera.nearPlane);
-}
-
 CasterDetail casterDetail(float lodTexels, const LightCamera& camera, const FrameInfo& frame) {
     if (!(lodTexels > 0.0f)) return {};
-    return [lodTexels, &camera, &frame](std::size_t i) { return lodTexels * texelAt(camera, frame.itemBounds[i]); };
+    const float fixed = lodTexels * camera.texelSize;
+    if (!camera.perspective || camera.warped) return [fixed](std::size_t) { return fixed; };
+    // A perspective camera's texel grows along its axis: taken at the box's nearest corner.
+    const glm::vec3 eye(glm::inverse(camera.viewFromWorld)[3]);
+    const glm::vec3 axis = camera.axis();
+    return [lodTexels, fixed, eye, axis, &camera, &frame](std::size_t i) {
+        const Bounds& box = frame.itemBounds[i];
+        if (box.empty()) return fixed;
+        float nearest = INFINITY;
+        for (int c = 0; c < 8; ++c) nearest = std::min(nearest, glm::dot(box.corner(c) - eye, axis));
+        return lodTexels * (camera.texelSize * std::max(nearest, camera.nearPlane));
+    };
 }
 
 CasterDetail casterDetail(float lodTexels, const CubeCamera& camera, int size, const FrameInfo& frame) {

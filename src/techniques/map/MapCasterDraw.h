@@ -68,13 +68,11 @@ using CasterSeenWhole = std::function<bool(std::size_t i)>;
 /// light); 0: the mesh's own triangles.
 using CasterDetail = std::function<float(std::size_t i)>;
 
-/// The world size of one of a 2D map's texels at `box`: an orthographic
-/// camera's texelSize; a perspective one's at the box's nearest point along
-/// its axis (not nearer than its near plane); a warped one's smallest.
-float texelAt(const LightCamera& camera, const Bounds& box);
-
 /// The detail a 2D map's pass through `camera` allows: `lodTexels` of its
-/// texels at each caster (texelAt); none (an empty function) at 0.
+/// texels at each caster, their world size there (an orthographic
+/// camera's texelSize; a perspective one's at the caster's nearest point
+/// along its axis, not nearer than its near plane; a warped one's
+/// smallest); none (an empty function) at 0.
 CasterDetail casterDetail(float lodTexels, const LightCamera& camera, const FrameInfo& frame);
 
 /// A cube's: `lodTexels` of its face texels at each caster, at the
