@@ -59,6 +59,8 @@ bool castsIntoTile(const FrameInfo& frame, const MapLight& p, int t, std::size_t
     return p.cube ? (p.faceMask(i) & (1u << t)) != 0 : castsInto(p.camera, frame, i, false);
 }
 
+constexpr float kFar = 1.0f;  // the depth a cleared texel holds: no caster before the far plane
+
 gl::Sampler makeSampler(bool compare) {
     gl::Sampler s;
     const GLenum filter = compare ? GL_LINEAR : GL_NEAREST;
@@ -204,6 +206,17 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
             host.note("shadowAtlas.updateBudget: " + std::to_string(mustDraw) + " tiles were new to their place in the atlas and drawn, more than the budget of " +
                       std::to_string(budget) + " a frame (a tile's place changes when a light's size on screen does)");
     }
+    // Where this frame's drawn tiles are cleared (draw, with the first light):
+    // only the texels their casters may cover; the lookup finds the rest lit.
+    clears_.clear();
+    for (const auto& [index, p] : lights)
+        for (int t = 0; t < p->atlasTiles; ++t) {
+            const auto f = static_cast<std::size_t>(t);
+            const TexelRect& c = p->atlasCovered[f];
+            if (!p->atlasDraw[f] || c.empty()) continue;
+            const glm::ivec2 o = p->atlasOrigins[f];
+            clears_.emplace_back(o.x + c.x0, o.y + c.y0, c.x1 - c.x0, c.y1 - c.y0);
+        }
     if (shrunkCount > 0)
         host.note("shadowAtlas: " + std::to_string(shrunkCount) + " light(s) got smaller tiles than their size on screen asks for, to fit " +
                   std::to_string(size_) + "^2 texels (" + shrunk + (shrunkCount > 8 ? ", and " + std::to_string(shrunkCount - 8) + " more" : "") +
@@ -228,19 +241,16 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     state.offsetUnits = p.options.offsetUnits;
     state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
     state.clipDistances = 4;  // each tile's sides (shadow_atlas_depth.vert)
-    // The clears: depth 1 written everywhere in the tile, whatever was there.
-    gl::RenderState clearing;
-    clearing.noColor();
-    clearing.depthFunc = GL_ALWAYS;
-    const gl::Program& clear = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_clear.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
+    // The clears of every light's tiles, with the first light drawn this
+    // frame: glClearTexSubImage before any caster is queued (llvmpipe fills
+    // the texels on the CPU; after a draw into the atlas it would first
+    // wait for the rasteriser, once per call). Then this light's share of
+    // them, kept or drawn.
+    for (const glm::ivec4& r : clears_) glClearTexSubImage(depth_.id(), 0, r.x, r.y, 0, r.z, r.w, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &kFar);
+    clears_.clear();
     std::size_t drawn = 0;
     double cleared = 0.0;
     int kept = 0, redrawn = 0;
-    // First every tile's clear, then every tile's casters: two render
-    // states a light, not two a tile (llvmpipe checks its whole state again
-    // at the first draw after a change).
-    host.apply(clearing);
-    clear.use();
     for (int t = 0; t < p.atlasTiles; ++t) {
         const auto f = static_cast<std::size_t>(t);
         if (!p.atlasDraw[f]) {
@@ -250,11 +260,7 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         drawn_[index][f] = {true, p.atlasKey[f], frame.frameIndex, pending_[static_cast<std::size_t>(p.atlasFirst + t)], p.atlasCovered[f]};
         ++redrawn;
         const TexelRect& c = p.atlasCovered[f];
-        if (c.empty()) continue;  // no caster: the lookup reads no texel of it
-        const glm::ivec2 o = p.atlasOrigins[f];
-        glViewport(o.x + c.x0, o.y + c.y0, c.x1 - c.x0, c.y1 - c.y0);
-        host.drawFullscreenTriangle();
-        cleared += static_cast<double>(c.x1 - c.x0) * static_cast<double>(c.y1 - c.y0);
+        if (!c.empty()) cleared += static_cast<double>(c.x1 - c.x0) * static_cast<double>(c.y1 - c.y0);
     }
     host.apply(state);
     for (int t = 0; t < p.atlasTiles; ++t) {

@@ -32,7 +32,9 @@ public:
     /// and the camera it was drawn from (the placement is kept while every
     /// light asks for the same tiles, so that there are maps to keep).
     void layout(TechniqueHost& host, const FrameInfo& frame, std::map<int, MapLight*>& lights);
-    /// Clears light `p` (scene light `index`)'s tiles that this frame draws and draws its casters into them.
+    /// Draws light `p` (scene light `index`)'s casters into its tiles that
+    /// this frame draws; the first call after a layout clears every light's
+    /// tiles to be drawn first.
     void draw(TechniqueHost& host, const FrameInfo& frame, const MapLight& p, int index);
     /// Whether the last layout left changed tiles undrawn (past the update
     /// budget): the maps do not hold that frame's inputs yet.
@@ -78,6 +80,7 @@ private:
     std::vector<std::pair<int, AtlasRequest>> lastRequests_;  ///< the last layout's lights and requests
     AtlasLayout lastLayout_;
     bool behind_ = false;
+    std::vector<glm::ivec4> clears_;  ///< the texels (x, y, width, height) the next draw clears first: every drawn tile's covered rectangle
     std::vector<shared::AtlasTile> pending_;  ///< this frame's records of the tiles it draws (tiles_ holds a kept tile's old one)
     std::vector<shared::AtlasTile> tiles_;
 };
