@@ -22,7 +22,7 @@
 #define SL_STORAGE_LIGHT_LIST 0    // ListedLight[]: each light's terms, as LightUniforms without the projector
 #define SL_STORAGE_LIGHT_TILES 1   // uvec4 (tile size px, tiles across, tiles down, slices), vec4 (slices' near, scale), then per cluster (first, count), then light indices
 #define SL_LIGHT_TILE_SIZE 16      // pixels per side of a tile
-#define SL_LIGHT_SLICES 16         // depth slices a tile (core/LightTiles.h)
+#define SL_LIGHT_SLICES 32         // depth slices a tile (core/LightTiles.h)
 #define SL_STORAGE_ATLAS_TILES 2   // AtlasTile[]: the shadow atlas's tiles (technique map, atlas: shadow_atlas.glsl)
 #define SL_STORAGE_SDSM_CASTERS 3  // technique map, fit sdsm on the GPU: the casters' boxes in the light's view (shadow_map_sdsm_fit.comp)
 #define SL_STORAGE_SDSM_FIT 4      // and the camera it fits (MapSdsm.h: SdsmFit)

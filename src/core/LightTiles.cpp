@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadowlab {
 
@@ -34,6 +35,21 @@ TileRect rectOf(const LightReach& r, const glm::mat4& viewFromWorld, const glm::
         return std::clamp(static_cast<int>(std::floor(pixel / static_cast<float>(tileSize))), 0, count - 1);
     };
     return {tile(ndc->x, pixels.x, tiles.x), tile(ndc->y, pixels.y, tiles.y), tile(ndc->z, pixels.x, tiles.x), tile(ndc->w, pixels.y, tiles.y)};
+}
+
+// Whether the sphere (centre, radius) may meet r's cone with its apex
+// and unit axis in the same coordinates: the sphere's centre is off the
+// cone's side by less than its radius (measured across the side, which
+// is within the radius of the nearest point of the cone when it is
+// nearer than the radius), and neither wholly behind the apex nor past
+// the range along the axis. Widened by 10^-3 of the radius and 10^-5.
+bool sphereMeetsCone(const glm::vec3& centre, float radius, const glm::vec3& apex, const glm::vec3& axis, const LightReach& r) {
+    const float margin = radius * 1.001f + 1e-5f;
+    const glm::vec3 v = centre - apex;
+    const float along = glm::dot(v, axis);
+    const float across = std::sqrt(std::max(glm::dot(v, v) - along * along, 0.0f));
+    if (r.cosAngle * across - r.sinAngle * along > margin) return false;  // off the side
+    return along >= -margin && along <= r.range + margin;
 }
 
 } // namespace
@@ -79,6 +95,14 @@ LightReach reachOf(const Light& light) {
         const float radius = angle < glm::radians(45.0f) ? along : light.range * std::sin(angle);
         r.centre = light.position + axis * along;
         r.radius = radius * 1.001f;  // rounding: never smaller than the cone
+        if (angle < glm::radians(89.0f)) {
+            r.cone = true;
+            r.apex = light.position;
+            r.axis = axis;
+            r.cosAngle = std::cos(angle);
+            r.sinAngle = std::sin(angle);
+            r.range = light.range;
+        }
     }
     return r;
 }
@@ -106,12 +130,18 @@ LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& view
     out.sliceNear = near > 0.0f && std::isfinite(near) ? near : 0.1f;
     std::vector<TileRect> rects;
     rects.reserve(reach.size());
-    float far = 2.0f * out.sliceNear;
+    float far = 2.0f * out.sliceNear, nearest = std::numeric_limits<float>::infinity();
     for (const LightReach& r : reach) {
         rects.push_back(rectOf(r, viewFromWorld, clipFromView, size, out.tileSize, tiles));
-        if (rects.back().x0 <= rects.back().x1 && !r.everywhere)
-            far = std::max(far, -(viewFromWorld * glm::vec4(r.centre, 1.0f)).z + r.radius);
+        if (rects.back().x0 <= rects.back().x1 && !r.everywhere) {
+            const float d = -(viewFromWorld * glm::vec4(r.centre, 1.0f)).z;
+            far = std::max(far, d + r.radius);
+            nearest = std::min(nearest, d - r.radius);
+        }
     }
+    // No sphere reaches nearer than `nearest`: the slices start there.
+    if (std::isfinite(nearest) && nearest * 0.99f > out.sliceNear) out.sliceNear = nearest * 0.99f;
+    far = std::max(far, 2.0f * out.sliceNear);
     out.sliceScale = static_cast<float>(out.slices) / std::log(far / out.sliceNear);
     // Each slice's depths, widened by 10^-3 each way (the first from the eye,
     // the last to the farthest sphere's end); each tile's slopes x / d, y / d
@@ -139,6 +169,9 @@ LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& view
             continue;
         }
         const LightReach& r = reach[k];
+        // The cone in the clusters' coordinates (view x, y and depth -z).
+        const glm::vec3 apex = glm::vec3(viewFromWorld * glm::vec4(r.apex, 1.0f)) * glm::vec3(1.0f, 1.0f, -1.0f);
+        const glm::vec3 axis = glm::mat3(viewFromWorld) * r.axis * glm::vec3(1.0f, 1.0f, -1.0f);
         const glm::vec3 c = glm::vec3(viewFromWorld * glm::vec4(r.centre, 1.0f));
         const float d = -c.z;
         const std::uint32_t s0 = r.everywhere ? 0 : out.sliceOf((d - r.radius) * (1.0f - 2e-3f));
@@ -157,6 +190,7 @@ LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& view
                         const glm::vec3 p(c.x, c.y, d);
                         const glm::vec3 outside = glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f));
                         if (glm::dot(outside, outside) > radius * radius) continue;
+                        if (r.cone && !sphereMeetsCone(0.5f * (lo + hi), 0.5f * glm::length(hi - lo), apex, axis, r)) continue;
                     }
                     const std::uint32_t cluster = (s * static_cast<std::uint32_t>(tiles.y) + static_cast<std::uint32_t>(y)) * static_cast<std::uint32_t>(tiles.x) +
                                                   static_cast<std::uint32_t>(x);

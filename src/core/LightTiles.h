@@ -20,12 +20,19 @@ struct LightReach {
     bool everywhere = true;
     glm::vec3 centre{0.0f};
     float radius = 0.0f;  ///< scene units, > 0 unless everywhere
+    /// A spot's cone inside the sphere (outer half-angle under 90 degrees):
+    /// the points within `range` of `apex` at most the half-angle off
+    /// `axis` (unit). Binning keeps a cluster only where both may reach.
+    bool cone = false;
+    glm::vec3 apex{0.0f}, axis{0.0f, 0.0f, -1.0f};
+    float cosAngle = 1.0f, sinAngle = 0.0f, range = 0.0f;
 };
 
 /// A sphere around what `light` reaches: its range, or for a spot the
 /// smallest sphere around the cone cut off at the range (through the apex
 /// and the rim for an outer half-angle under 45 degrees, around the rim
-/// above it); everywhere for a directional light or a range of 0.
+/// above it) and, under 90 degrees, the cone itself; everywhere for a
+/// directional light or a range of 0.
 LightReach reachOf(const Light& light);
 
 /// The screen rectangle (ndc: lo.x, lo.y, hi.x, hi.y, within -1..1) that
@@ -37,8 +44,9 @@ std::optional<glm::vec4> screenRectOf(const LightReach& r, const glm::mat4& view
 
 /// The clusters of a `size` frame: tiles `tileSize` pixels a side (the
 /// last row and column may be partial), each cut along the view into
-/// `slices` depth slices, spaced evenly in log(depth) from the near plane
-/// (slice 0 also holds what is nearer) to where the farthest sphere ends
+/// `slices` depth slices, spaced evenly in log(depth) from where the
+/// nearest sphere in view begins (the camera's near plane at the least;
+/// slice 0 also holds what is nearer) to where the farthest sphere ends
 /// (the last slice also holds what is farther): a pixel at view depth d
 /// (its clip w) is in slice clamp(floor(log(d / sliceNear) * sliceScale),
 /// 0, slices - 1). For each cluster, the lights whose reach may overlap
@@ -46,12 +54,13 @@ std::optional<glm::vec4> screenRectOf(const LightReach& r, const glm::mat4& view
 /// cluster (each slice's depths widened by 10^-3 each way, so that the
 /// shader's rounding never puts a pixel in a slice that leaves it out); a
 /// light may be listed where it reaches nothing (the box of the cluster's
-/// frustum overlaps its sphere, or everywhere for a directional light).
+/// frustum overlaps its sphere, and the sphere around that box its cone,
+/// or everywhere for a directional light).
 struct LightTiles {
     glm::uvec2 tiles{0};               ///< across, down (from the bottom row: GL's window origin)
     std::uint32_t tileSize = 16;       ///< pixels
     std::uint32_t slices = 1;          ///< depth slices a tile
-    float sliceNear = 1.0f;            ///< view depth where slice 1 would start at the least (the camera's near plane)
+    float sliceNear = 1.0f;            ///< view depth where the slices start (slice 0 also holds what is nearer)
     float sliceScale = 0.0f;           ///< slices per unit of log(depth / sliceNear)
     /// Per cluster (index (slice * tiles.y + row) * tiles.x + column, rows
     /// from the bottom-left), its first index into `cells` and its count,
