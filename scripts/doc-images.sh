@@ -103,6 +103,7 @@ compare pcss-spot-objects technique.png scenes/spot-objects.json --width 480 --h
 compare pcss-spot-objects-reference reference.png scenes/spot-objects.json --width 480 --height 270 --samples 1024 --set "$L.size=0.3" --set "$L.shadow.technique=map" --set "$MAP.filter=pcss"   # techniques "Soft shadows": the reference
 render  light-leak-vsm          scenes/light-leak.json --width 480 --height 270 --set "$MAP.size=2048" --set "$MAP.representation=vsm" --set "$MAP.blur=6"   # techniques "Filterable maps" (2048^2)
 render  light-leak-evsm4        scenes/light-leak.json --width 480 --height 270 --set "$MAP.size=2048" --set "$MAP.representation=evsm4" --set "$MAP.blur=6"   # techniques "Filterable maps" (2048^2)
+debug   atlas-many-lights       light0-atlas.png scenes/many-lights.json --width 800 --height 600   # techniques "shadow atlas": its tiles (the first light's debug images hold the atlas)
 
 compare long-view-tight-error error-0.png scenes/long-view.json --width 480 --height 270 --set "$MAP.cascades=1" --set "$MAP.warp=none"   # techniques "Warped maps": one 2048^2 map, unwarped, its errors
 compare long-view-lispsm-error error-0.png scenes/long-view.json --width 480 --height 270 --set "$MAP.cascades=1" --set "$MAP.warp=lispsm"   # techniques "Warped maps": the same map warped

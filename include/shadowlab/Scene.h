@@ -226,7 +226,7 @@ struct DrawItem {
 /// frame from how large the light's reach is on screen.
 struct ShadowAtlasSettings {
     int size = 8192;              ///< texels per side of the atlas (depth32f: 256 MiB at 8192), 256..16384 and at most the GPU's limit; default 8192
-    float texelsPerPixel = 1.0f;  ///< a tile's side: the light's reach's extent on screen, pixels, times this, rounded up to a power of two; 0.0625..16, default 1
+    float texelsPerPixel = 1.0f;  ///< a tile's side: the extent on screen, pixels, of what it sees of the light's reach (a spot: its reach; a cube face: its part of it), times this, rounded up to a power of two; 0.0625..16, default 1
     int minTile = 32;             ///< the least tile side, texels (a power of two, 8..maxTile); default 32
     int maxTile = 1024;           ///< the largest tile side, texels (a power of two, minTile..size); default 1024
     /// With RenderOptions::cacheShadowMaps: at most this many tiles whose

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 
 namespace shadowlab {
@@ -75,6 +76,53 @@ int tileSideFor(float extentPixels, float texelsPerPixel, int minSide, int maxSi
     int side = minSide;
     while (side < maxSide && static_cast<float>(side) < want) side *= 2;
     return std::min(side, maxSide);
+}
+
+int tileSideKeeping(float extentPixels, float texelsPerPixel, int minSide, int maxSide, int previous) {
+    const int fresh = tileSideFor(extentPixels, texelsPerPixel, minSide, maxSide);
+    if (previous < minSide || previous > maxSide || fresh == previous) return fresh;
+    const float want = std::max(extentPixels * texelsPerPixel, 1.0f), kept = static_cast<float>(previous);
+    return want >= kShrinkBelow * kept && want <= kGrowAbove * kept ? previous : fresh;
+}
+
+Bounds cubeFaceReach(const glm::vec3& position, float range, int face, const Bounds& receivers) {
+    const int axis = face / 2;
+    const bool positive = face % 2 == 0;
+    Bounds box;
+    box.lo = position - glm::vec3(range);
+    box.hi = position + glm::vec3(range);
+    if (positive)
+        box.lo[axis] = position[axis];
+    else
+        box.hi[axis] = position[axis];
+    box = box.cutTo(receivers);
+    if (box.empty()) return box;
+    // Off the axis by at most the distance along it (90 degrees across), and
+    // by at most range / sqrt(2) (where that distance meets the sphere).
+    const float along = positive ? box.hi[axis] - position[axis] : position[axis] - box.lo[axis];
+    const float across = std::min(along, range * 0.70710678f);
+    for (int u = 0; u < 3; ++u) {
+        if (u == axis) continue;
+        box.lo[u] = std::max(box.lo[u], position[u] - across);
+        box.hi[u] = std::min(box.hi[u], position[u] + across);
+    }
+    return box;
+}
+
+std::optional<float> screenExtentOf(const Bounds& box, const glm::mat4& clipFromWorld, glm::ivec2 viewport) {
+    if (box.empty()) return 0.0f;
+    glm::vec2 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 q = clipFromWorld * glm::vec4(box.corner(c), 1.0f);
+        if (!(q.w > 1e-6f)) return std::nullopt;
+        lo = glm::min(lo, glm::vec2(q) / q.w);
+        hi = glm::max(hi, glm::vec2(q) / q.w);
+    }
+    lo = glm::max(lo, glm::vec2(-1.0f));
+    hi = glm::min(hi, glm::vec2(1.0f));
+    if (!(lo.x < hi.x && lo.y < hi.y)) return 0.0f;
+    const glm::vec2 pixels = (hi - lo) * 0.5f * glm::vec2(viewport);
+    return std::max(pixels.x, pixels.y);
 }
 
 } // namespace shadowlab

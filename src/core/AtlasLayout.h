@@ -2,8 +2,11 @@
 // Where the shadow atlas's tiles go (technique map with `atlas`): square
 // tiles of power-of-two sides packed into one square texture, shrunk, the
 // largest first, until they fit. GPU-free, so it is tested on its own.
+#include "core/Bounds.h"
+
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -41,5 +44,29 @@ AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int m
 /// across on screen: extent x texelsPerPixel rounded up to a power of two,
 /// within [minSide, maxSide].
 int tileSideFor(float extentPixels, float texelsPerPixel, int minSide, int maxSide);
+
+/// tileSideFor with hysteresis: a tile that had side `previous` (0: none)
+/// keeps it while extent x texelsPerPixel stays within
+/// [kShrinkBelow, kGrowAbove] x previous and previous is within
+/// [minSide, maxSide], so that a light moving a little does not move every
+/// tile of the atlas (a changed side packs the atlas again: every tile is
+/// new to its place and drawn, whatever the update budget).
+int tileSideKeeping(float extentPixels, float texelsPerPixel, int minSide, int maxSide, int previous);
+inline constexpr float kShrinkBelow = 0.45f;  ///< a kept side halves when the want falls below this share of it (tileSideFor would at 0.5)
+inline constexpr float kGrowAbove = 1.1f;     ///< and doubles when the want rises above this share (tileSideFor would at 1)
+
+/// The part of a point light's reach (the sphere of `range` around
+/// `position`) that cube face `face` (0..5: +X, -X, +Y, -Y, +Z, -Z) sees,
+/// cut to `receivers` (where lookups can land): a world box around it. The
+/// face's pyramid within the range lies at most `range` along the face's
+/// axis and at most min(that, range / sqrt(2)) off it. Empty when no
+/// receiver is there.
+Bounds cubeFaceReach(const glm::vec3& position, float range, int face, const Bounds& receivers);
+
+/// How many pixels across (the larger side of its screen rectangle, cut
+/// to the frame) a world box covers through `clipFromWorld` on a frame of
+/// `viewport` pixels: 0 when it is outside the frame; none when a corner
+/// lies behind the eye (its projection is unbounded).
+std::optional<float> screenExtentOf(const Bounds& box, const glm::mat4& clipFromWorld, glm::ivec2 viewport);
 
 } // namespace shadowlab

@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <array>
 #include <random>
 
 using namespace shadowlab;
@@ -85,6 +88,84 @@ TEST(AtlasLayout, TileSideFollowsTheScreen) {
     EXPECT_EQ(tileSideFor(3.0f, 1.0f, 32, 1024), 32);
     EXPECT_EQ(tileSideFor(5000.0f, 1.0f, 32, 1024), 1024);
     EXPECT_EQ(tileSideFor(100.0f, 0.25f, 8, 1024), 32);
+}
+
+// A side kept while the want stays within [0.45, 1.1] of it: a light
+// moving a little keeps its tiles (and the atlas its packing).
+TEST(AtlasLayout, TileSideKeepsItsSideWithinTheBand) {
+    EXPECT_EQ(tileSideKeeping(100.0f, 1.0f, 32, 1024, 0), 128);      // none before: tileSideFor's
+    EXPECT_EQ(tileSideKeeping(130.0f, 1.0f, 32, 1024, 128), 128);    // 1.02x: kept (tileSideFor: 256)
+    EXPECT_EQ(tileSideKeeping(141.0f, 1.0f, 32, 1024, 128), 256);    // 1.10x: past the band
+    EXPECT_EQ(tileSideKeeping(60.0f, 1.0f, 32, 1024, 128), 128);     // 0.47x: kept (tileSideFor: 64)
+    EXPECT_EQ(tileSideKeeping(57.0f, 1.0f, 32, 1024, 128), 64);      // 0.45x: below the band
+    EXPECT_EQ(tileSideKeeping(250.0f, 1.0f, 32, 128, 256), 128);     // a side past maxSide is not kept
+    EXPECT_EQ(tileSideKeeping(10.0f, 1.0f, 64, 1024, 32), 64);       // nor one under minSide
+}
+
+// What a point light's cube face sees of its reach, cut to the receivers:
+// every point of the sphere in the face's pyramid and in the receivers'
+// box lies in the face's box (20 lights, 4000 points each, fixed seed),
+// and above a floor the face looking down sees a square as wide as the
+// light is high, not the sphere's width.
+TEST(AtlasLayout, ACubeFaceReachHoldsWhatTheFaceSees) {
+    std::mt19937 rng(5);
+    const auto unit = [&] { return static_cast<float>(rng() >> 8) * (1.0f / 16777216.0f); };
+    Bounds receivers;
+    receivers.lo = {-6.0f, 0.0f, -4.0f};
+    receivers.hi = {6.0f, 3.0f, 4.0f};
+    int checked = 0;
+    for (int k = 0; k < 20; ++k) {
+        const glm::vec3 light(unit() * 14.0f - 7.0f, unit() * 4.0f - 0.5f, unit() * 10.0f - 5.0f);
+        const float range = 0.5f + 6.0f * unit();
+        std::array<Bounds, 6> boxes;
+        for (int f = 0; f < 6; ++f) boxes[static_cast<std::size_t>(f)] = cubeFaceReach(light, range, f, receivers);
+        for (int n = 0; n < 4000; ++n) {
+            const glm::vec3 d = glm::vec3(unit(), unit(), unit()) * 2.0f - 1.0f;
+            if (glm::length(d) > 1.0f) continue;
+            const glm::vec3 p = light + d * range;
+            if (glm::any(glm::lessThan(p, receivers.lo)) || glm::any(glm::greaterThan(p, receivers.hi))) continue;
+            // The face a cube map picks for direction d (as shadow_atlas.glsl's atlasFace).
+            const glm::vec3 a = glm::abs(d);
+            const int face = a.x >= a.y && a.x >= a.z ? (d.x > 0.0f ? 0 : 1) : a.y >= a.z ? (d.y > 0.0f ? 2 : 3) : (d.z > 0.0f ? 4 : 5);
+            const Bounds& b = boxes[static_cast<std::size_t>(face)];
+            ASSERT_FALSE(b.empty()) << "light " << k << " face " << face;
+            ASSERT_TRUE(glm::all(glm::greaterThanEqual(p, b.lo - 1e-5f)) && glm::all(glm::lessThanEqual(p, b.hi + 1e-5f)))
+                << "light " << k << " face " << face << " point " << p.x << ", " << p.y << ", " << p.z;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 10000);  // measured: 12666
+    // A lamp 2.5 m over a floor, reaching 5 m: its face down sees the floor
+    // within 2.5 m each way; a face to the side reaches 5 m out and 3.54 m across.
+    Bounds floor;
+    floor.lo = {-20.0f, 0.0f, -20.0f};
+    floor.hi = {20.0f, 0.0f, 20.0f};
+    const Bounds down = cubeFaceReach({0.0f, 2.5f, 0.0f}, 5.0f, 3, floor);
+    EXPECT_NEAR(down.lo.x, -2.5f, 1e-5f);
+    EXPECT_NEAR(down.hi.z, 2.5f, 1e-5f);
+    const Bounds side = cubeFaceReach({0.0f, 2.5f, 0.0f}, 5.0f, 0, floor);
+    EXPECT_NEAR(side.hi.x, 5.0f, 1e-5f);
+    EXPECT_NEAR(side.hi.z, 3.5355f, 1e-3f);
+    EXPECT_TRUE(cubeFaceReach({0.0f, 2.5f, 0.0f}, 5.0f, 2, floor).empty());  // the face up sees no floor
+}
+
+// A box's extent on screen: its rectangle's larger side in pixels, cut to
+// the frame; 0 outside it; none with a corner behind the eye.
+TEST(AtlasLayout, ScreenExtentOfABox) {
+    const glm::mat4 clip = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f);  // looking down -z
+    Bounds box;
+    box.lo = {-1.0f, -0.5f, -11.0f};
+    box.hi = {1.0f, 0.5f, -10.0f};
+    const std::optional<float> e = screenExtentOf(box, clip, {400, 400});
+    ASSERT_TRUE(e.has_value());
+    EXPECT_NEAR(*e, 40.0f, 1e-3f);  // 2 m across at 10 m, 90 degrees over 400 pixels: 2 / 20 x 400
+    Bounds aside = box;
+    aside.lo.x += 30.0f;
+    aside.hi.x += 30.0f;
+    EXPECT_EQ(screenExtentOf(aside, clip, {400, 400}), std::optional<float>(0.0f));
+    Bounds behind = box;
+    behind.hi.z = 1.0f;
+    EXPECT_FALSE(screenExtentOf(behind, clip, {400, 400}).has_value());
 }
 
 // The scene file's `shadowAtlas` and the map's `atlas` option: each bad

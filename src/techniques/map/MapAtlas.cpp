@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 
 namespace shadowlab::map {
@@ -98,21 +100,53 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
         nearest_ = makeSampler(false);
         compare_ = makeSampler(true);
     }
-    // Each light's request: its tiles at the side its reach on screen asks for.
+    // Each light's requests: a spot's tile at the side its reach on screen
+    // asks for; each face of a point light's cube at the side of what that
+    // face sees of its reach (the receivers within it) on screen, at most
+    // the whole reach's. A light out of view asks for none.
+    Bounds receivers;
+    for (std::size_t i = 0; i < frame.items.size(); ++i)
+        if (frame.items[i].receivesShadows) receivers.add(frame.itemBounds[i]);
+    // The sides asked for last frame hold while the atlas's sizing settings do.
+    const glm::vec3 sizing(settings.texelsPerPixel, static_cast<float>(settings.minTile), static_cast<float>(settings.maxTile));
+    if (sizing != lastSizing_) lastSides_.clear();
+    lastSizing_ = sizing;
     std::vector<AtlasRequest> requests;
     std::vector<int> order;
+    std::vector<std::size_t> firstRequest;  // per light (in order): its first request; a cube's six are one a face
     for (auto& [index, p] : lights) {
         const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
         const float extent = screenExtent(light, frame);
         const int maxSide = std::min(settings.maxTile, p->options.size);
         const int minSide = std::min(settings.minTile, maxSide);
-        requests.push_back({extent > 0.0f ? (p->cube ? 6 : 1) : 0, tileSideFor(extent, settings.texelsPerPixel, minSide, maxSide)});
         order.push_back(index);
+        firstRequest.push_back(requests.size());
+        std::array<int, 6>& last = lastSides_[index];  // the sides it asked for last frame (0: none)
+        if (!(extent > 0.0f)) {
+            requests.push_back({0, minSide});
+            last.fill(0);
+            continue;
+        }
+        if (!p->cube) {
+            last[0] = tileSideKeeping(extent, settings.texelsPerPixel, minSide, maxSide, last[0]);
+            requests.push_back({1, last[0]});
+            continue;
+        }
+        const float range = light.range > 0.0f ? light.range : std::numeric_limits<float>::infinity();
+        for (std::size_t f = 0; f < 6; ++f) {
+            const std::optional<float> seen =
+                screenExtentOf(cubeFaceReach(light.position, range, static_cast<int>(f), receivers), frame.clipFromWorld, frame.viewport);
+            last[f] = tileSideKeeping(seen ? std::min(*seen, extent) : extent, settings.texelsPerPixel, minSide, maxSide, last[f]);
+            requests.push_back({1, last[f]});
+        }
     }
+    for (auto it = lastSides_.begin(); it != lastSides_.end();)  // lights gone from the atlas
+        it = lights.count(it->first) ? std::next(it) : lastSides_.erase(it);
     // The same lights asking for the same tiles: the same places, so that
     // kept maps stay where their records say.
     std::vector<std::pair<int, AtlasRequest>> asked;
-    for (std::size_t k = 0; k < order.size(); ++k) asked.emplace_back(order[k], requests[k]);
+    for (std::size_t k = 0; k < order.size(); ++k)
+        for (std::size_t r = firstRequest[k]; r < (k + 1 < order.size() ? firstRequest[k + 1] : requests.size()); ++r) asked.emplace_back(order[k], requests[r]);
     const bool samePlaces = asked.size() == lastRequests_.size() &&
                             std::equal(asked.begin(), asked.end(), lastRequests_.begin(), [](const auto& a, const auto& b) {
                                 return a.first == b.first && a.second.tiles == b.second.tiles && a.second.side == b.second.side;
@@ -141,18 +175,23 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
     int mustDraw = 0;
     for (std::size_t k = 0; k < order.size(); ++k) {
         MapLight& p = *lights.at(order[k]);
-        const AtlasPlacement& place = layout.placed[k];
+        const std::size_t r0 = firstRequest[k];
         p.atlasFirst = static_cast<int>(tiles_.size());
-        p.atlasTiles = requests[k].tiles;
-        p.atlasSide = place.side;
+        p.atlasTiles = requests[r0].tiles == 0 ? 0 : (p.cube ? 6 : 1);
+        p.atlasSides.fill(0);
+        int asked = 0, given = 0;  // its largest tile's side, asked for and placed
         for (int t = 0; t < p.atlasTiles; ++t) {
             const auto f = static_cast<std::size_t>(t);
-            p.atlasOrigins[f] = place.origins[f];
+            const AtlasPlacement& place = layout.placed[r0 + f];  // one request a tile
+            asked = std::max(asked, place.shrunkFrom);
+            given = std::max(given, place.side);
+            p.atlasSides[f] = place.side;
+            p.atlasOrigins[f] = place.origins[0];
             // The texels its casters may cover: only those are cleared and drawn.
             const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
             TexelRect covered{};
             Hash key;
-            key.value(clip).value(casters).value(p.options.slopeBias).value(p.options.offsetUnits).value(p.options.cullFront).value(place.side).value(place.origins[f]);
+            key.value(clip).value(casters).value(p.options.slopeBias).value(p.options.offsetUnits).value(p.options.cullFront).value(place.side).value(place.origins[0]);
             std::vector<std::size_t>& seen = p.atlasCasters[f];
             seen.clear();
             for (std::size_t i = 0; i < frame.items.size(); ++i)
@@ -163,7 +202,7 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
                 }
             p.atlasCovered[f] = covered;
             p.atlasKey[f] = key.h;
-            const shared::AtlasTile record = tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[f], place.side, size_, covered);
+            const shared::AtlasTile record = tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[0], place.side, size_, covered);
             pending_.push_back(record);
             tiles_.push_back(record);
             // Kept, drawn again, or drawn again if the budget allows.
@@ -177,10 +216,9 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
                 changed.push_back({&p, order[k], t, before.frame});
             }
         }
-        if (place.shrunk() && p.atlasTiles > 0) {
+        if (given < asked) {
             if (++shrunkCount <= 8)
-                shrunk += (shrunk.empty() ? "" : ", ") + std::string("lights[") + std::to_string(order[k]) + "] " + std::to_string(place.shrunkFrom) + " -> " +
-                          std::to_string(place.side);
+                shrunk += (shrunk.empty() ? "" : ", ") + std::string("lights[") + std::to_string(order[k]) + "] " + std::to_string(asked) + " -> " + std::to_string(given);
         }
     }
     // The budget: the changed tiles undrawn longest first, the rest keep
@@ -267,7 +305,7 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         const auto f = static_cast<std::size_t>(t);
         if (!p.atlasDraw[f] || p.atlasCovered[f].empty()) continue;
         const glm::ivec2 o = p.atlasOrigins[f];
-        glViewport(o.x, o.y, p.atlasSide, p.atlasSide);
+        glViewport(o.x, o.y, p.atlasSides[f], p.atlasSides[f]);
         const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
         // The casters this tile's camera can see (layout found them).
         const std::vector<std::size_t>& wanted = p.atlasCasters[f];
@@ -284,7 +322,10 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     }
     host.count("triangles", static_cast<double>(drawn));
     host.count("atlasTiles", static_cast<double>(p.atlasTiles));
-    host.count("tileSide", static_cast<double>(p.atlasSide));
+    double texels = 0.0;
+    for (int t = 0; t < p.atlasTiles; ++t) texels += static_cast<double>(p.atlasSides[static_cast<std::size_t>(t)]) * p.atlasSides[static_cast<std::size_t>(t)];
+    host.count("tileSide", static_cast<double>(*std::max_element(p.atlasSides.begin(), p.atlasSides.end())));  // its largest
+    host.count("tileTexels", texels);
     host.count("clearedTexels", cleared);
     host.count("tilesDrawn", redrawn);
     host.count("tilesKept", kept);

@@ -13,6 +13,7 @@
 
 #include "shadowlab_shared.h"
 
+#include <array>
 #include <map>
 #include <vector>
 
@@ -48,9 +49,11 @@ public:
     /// depths stretched over their own range, near dark, and each light's
     /// tiles (`lights`: index -> state) outlined in a hue of its own.
     DebugImage debugImage(const std::map<int, const MapLight*>& lights, int maxSide = 1024) const;
-    /// One light's own tiles (DebugImageKind::ShadowMap: its map) side by side (a spot's one, a cube's six in
-    /// face order +X..-Z), each stretched over its own depths, near dark;
-    /// values: their depths, tile after tile, rows as GL stores them.
+    /// One light's own tiles (DebugImageKind::ShadowMap: its map) side by
+    /// side, bottom-aligned (a spot's one, a cube's six in face order
+    /// +X..-Z, each face at its own side), each stretched over its own
+    /// depths, near dark; values: their depths, tile after tile, rows as GL
+    /// stores them.
     DebugImage lightTiles(const MapLight& p) const;
     /// The atlas's texture (debug views), its side in texels (0: none yet).
     const gl::Texture& texture() const { return depth_; }
@@ -80,6 +83,8 @@ private:
     std::vector<std::pair<int, AtlasRequest>> lastRequests_;  ///< the last layout's lights and requests
     AtlasLayout lastLayout_;
     bool behind_ = false;
+    std::map<int, std::array<int, 6>> lastSides_;  ///< per light, the sides its tiles asked for last frame (tileSideKeeping)
+    glm::vec3 lastSizing_{0.0f};                     ///< the texelsPerPixel, minTile and maxTile they were asked with
     std::vector<glm::ivec4> clears_;  ///< the texels (x, y, width, height) the next draw clears first: every drawn tile's covered rectangle
     std::vector<shared::AtlasTile> pending_;  ///< this frame's records of the tiles it draws (tiles_ holds a kept tile's old one)
     std::vector<shared::AtlasTile> tiles_;

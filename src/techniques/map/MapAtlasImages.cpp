@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace shadowlab::map {
 
@@ -12,7 +13,8 @@ DebugImage MapAtlas::debugImage(const std::map<int, const MapLight*>& lights, in
     // The used part: the tiles' bounding rectangle (Z-order keeps them near the origin).
     glm::ivec2 used(1);
     for (const auto& [index, p] : lights)
-        for (int t = 0; t < p->atlasTiles; ++t) used = glm::max(used, p->atlasOrigins[static_cast<std::size_t>(t)] + glm::ivec2(p->atlasSide));
+        for (int t = 0; t < p->atlasTiles; ++t)
+            used = glm::max(used, p->atlasOrigins[static_cast<std::size_t>(t)] + glm::ivec2(p->atlasSides[static_cast<std::size_t>(t)]));
     used = glm::min(used, glm::ivec2(std::max(size_, 1)));
     DebugImage out;
     out.name = "atlas";
@@ -43,7 +45,8 @@ DebugImage MapAtlas::debugImage(const std::map<int, const MapLight*>& lights, in
             const TexelRect& cover = p->atlasCovered[static_cast<std::size_t>(t)];
             for (int y = o.y + cover.y0; y < o.y + cover.y1; y += step)
                 for (int x = o.x + cover.x0; x < o.x + cover.x1; x += step) lo = std::min(lo, at(x, y));
-            const int x0 = (o.x + step - 1) / step, y0 = (o.y + step - 1) / step, x1 = (o.x + p->atlasSide) / step, y1 = (o.y + p->atlasSide) / step;
+            const int x0 = (o.x + step - 1) / step, y0 = (o.y + step - 1) / step, x1 = (o.x + p->atlasSides[static_cast<std::size_t>(t)]) / step,
+                      y1 = (o.y + p->atlasSides[static_cast<std::size_t>(t)]) / step;
             const TexelRect& c = p->atlasCovered[static_cast<std::size_t>(t)];
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
@@ -63,21 +66,34 @@ DebugImage MapAtlas::lightTiles(const MapLight& p) const {
     DebugImage out;
     out.name = "atlas-tiles";
     out.kind = DebugImageKind::ShadowMap;  // the light's map: its tiles
-    const int side = p.atlasSide, tiles = p.atlasTiles;
-    if (tiles == 0 || side == 0 || size_ == 0) return out;
-    const std::size_t area = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
-    out.values.resize(area * static_cast<std::size_t>(tiles));
+    const int tiles = p.atlasTiles;
+    if (tiles == 0 || size_ == 0) return out;
+    // Each tile's first value and its column in the image: side by side, bottom-aligned.
+    std::vector<std::size_t> first(static_cast<std::size_t>(tiles) + 1, 0);
+    std::vector<int> column(static_cast<std::size_t>(tiles), 0);
+    int height = 0;
+    const int gap = 2;
+    for (int t = 0; t < tiles; ++t) {
+        const int side = p.atlasSides[static_cast<std::size_t>(t)];
+        first[static_cast<std::size_t>(t) + 1] = first[static_cast<std::size_t>(t)] + static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+        if (t > 0) column[static_cast<std::size_t>(t)] = column[static_cast<std::size_t>(t) - 1] + p.atlasSides[static_cast<std::size_t>(t) - 1] + gap;
+        height = std::max(height, side);
+    }
+    out.values.resize(first.back());
     for (int t = 0; t < tiles; ++t) {
         const glm::ivec2 o = p.atlasOrigins[static_cast<std::size_t>(t)];
+        const int side = p.atlasSides[static_cast<std::size_t>(t)];
+        const std::size_t area = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
         glGetTextureSubImage(depth_.id(), 0, o.x, o.y, 0, side, side, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(area * sizeof(float)),
-                             out.values.data() + area * static_cast<std::size_t>(t));
+                             out.values.data() + first[static_cast<std::size_t>(t)]);
     }
-    const int gap = 2;
-    out.image.width = tiles * side + (tiles - 1) * gap;
-    out.image.height = side;
-    out.image.pixels.assign(static_cast<std::size_t>(out.image.width) * static_cast<std::size_t>(side) * 4, 255);
+    out.image.width = column.back() + p.atlasSides[static_cast<std::size_t>(tiles) - 1];
+    out.image.height = height;
+    out.image.pixels.assign(static_cast<std::size_t>(out.image.width) * static_cast<std::size_t>(height) * 4, 255);
     for (int t = 0; t < tiles; ++t) {
-        float* d = out.values.data() + area * static_cast<std::size_t>(t);
+        const int side = p.atlasSides[static_cast<std::size_t>(t)];
+        const std::size_t area = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+        float* d = out.values.data() + first[static_cast<std::size_t>(t)];
         // Outside what was cleared and drawn this frame: the far plane (nothing there).
         const TexelRect& c = p.atlasCovered[static_cast<std::size_t>(t)];
         for (int y = 0; y < side; ++y)
@@ -89,8 +105,8 @@ DebugImage MapAtlas::lightTiles(const MapLight& p) const {
             for (int x = 0; x < side; ++x) {
                 const float v = d[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)];
                 const float grey = v >= 1.0f || lo >= 1.0f ? 1.0f : 0.15f + 0.8f * (v - lo) / (1.0f - lo);
-                const std::size_t i = (static_cast<std::size_t>(side - 1 - y) * static_cast<std::size_t>(out.image.width) +
-                                       static_cast<std::size_t>(t * (side + gap) + x)) * 4;
+                const std::size_t i = (static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(out.image.width) +
+                                       static_cast<std::size_t>(column[static_cast<std::size_t>(t)] + x)) * 4;
                 const auto g = static_cast<std::uint8_t>(std::clamp(grey, 0.0f, 1.0f) * 255.0f + 0.5f);
                 out.image.pixels[i] = out.image.pixels[i + 1] = out.image.pixels[i + 2] = g;
             }

@@ -75,12 +75,13 @@ struct MapLight {
     std::vector<gl::Framebuffer> cascadeFbos;
     /// atlas: its tiles in the shadow atlas (MapAtlas): the first's index
     /// among the atlas's tiles, how many (0 when culled: its reach is out
-    /// of view), their side in texels, each one's lower-left texel and the
-    /// texels of each that its casters may cover (tile-local, with a texel
-    /// of margin: what is cleared and drawn; empty: no caster).
+    /// of view), each one's side in texels (a cube's faces each their
+    /// own), lower-left texel and the texels its casters may cover
+    /// (tile-local, with a texel of margin: what is cleared and drawn;
+    /// empty: no caster).
     int atlasFirst = 0;
     int atlasTiles = 0;
-    int atlasSide = 0;
+    std::array<int, 6> atlasSides{};
     std::array<glm::ivec2, 6> atlasOrigins{};
     std::array<TexelRect, 6> atlasCovered{};
     /// Whether this frame's shadow pass draws each tile (RenderOptions::
