@@ -28,6 +28,14 @@ glm::vec3 hue(float h) {
     return glm::mix(glm::vec3(1.0f), glm::clamp(k - 1.0f, 0.0f, 1.0f), 0.6f);
 }
 
+// k's digits in `base` mirrored about the point: 0.d0 d1 d2... (the van der
+// Corput sequence; Halton's in two bases).
+double radicalInverse(int k, int base) {
+    double result = 0.0, scale = 1.0 / base;
+    for (; k > 0; k /= base, scale /= base) result += scale * (k % base);
+    return result;
+}
+
 glm::vec2 corner(const Reader& r, const char* key, glm::vec2 def) {
     if (!r.has(key)) return def;
     const Reader c = r.child(key);
@@ -63,27 +71,30 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
     }
     if (!base.contains("range")) base["range"] = 4.0;
 
-    // Stratified: the rectangle in cells about as square as it allows, one
-    // light in each of `count` cells picked in a seeded order, at a seeded
-    // place inside its cell.
+    // Nested and even: light k at the k-th point of the Halton sequence in
+    // bases 3 (along x) and 5 (along z), moved by a seeded offset (modulo
+    // the rectangle). Light k's place, kind and colour depend on k and the
+    // seed alone, so that a count's lights are the first of twice as many:
+    // doubling the count adds lights between them, and every count covers
+    // the rectangle about evenly (no cell of a grid left empty). Not base 2:
+    // its first digit is k's parity, which alternates the kinds below, and
+    // would put every spot in one half of the rectangle.
     std::mt19937 rng(static_cast<std::mt19937::result_type>(seed));
     const glm::vec2 extent = hi - lo;
-    const int across = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<float>(count) * extent.x / extent.y))));
-    const int down = std::max(1, (count + across - 1) / across);
-    std::vector<int> cells(static_cast<std::size_t>(across * down));
-    for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = static_cast<int>(i);
-    for (std::size_t i = cells.size(); i > 1; --i) std::swap(cells[i - 1], cells[rng() % i]);
-    const int spotCount = static_cast<int>(std::lround(spots * static_cast<float>(count)));
+    const double offsetU = unit(rng), offsetV = unit(rng), offsetHue = unit(rng);
+    // Spots interleaved with the points (k is a spot when the rounded count
+    // of spots among the first k + 1 grows), round(spots x n) of the first n.
+    const auto spotsAmong = [&](int n) { return static_cast<int>(std::floor(static_cast<double>(spots) * n + 0.5)); };
 
     std::vector<Light> out;
     out.reserve(static_cast<std::size_t>(count));
     for (int k = 0; k < count; ++k) {
-        const int cell = cells[static_cast<std::size_t>(k)];
-        const float u = (static_cast<float>(cell % across) + unit(rng)) / static_cast<float>(across);
-        const float v = (static_cast<float>(cell / across) + unit(rng)) / static_cast<float>(down);
-        const float h = unit(rng);
+        const double n = static_cast<double>(k);
+        const float u = static_cast<float>(std::fmod(offsetU + radicalInverse(k, 3), 1.0));
+        const float v = static_cast<float>(std::fmod(offsetV + radicalInverse(k, 5), 1.0));
+        const float h = static_cast<float>(std::fmod(offsetHue + n * 0.6180339887498949, 1.0));
         json light = base;
-        const bool spot = k < spotCount;
+        const bool spot = spotsAmong(k + 1) > spotsAmong(k);
         light["type"] = spot ? "spot" : "point";
         light["position"] = {lo.x + u * extent.x, height, lo.y + v * extent.y};
         if (!light.contains("name")) light["name"] = std::string(spot ? "spot " : "point ") + std::to_string(k);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 using namespace shadowlab;
@@ -57,10 +58,46 @@ TEST(LightGrid, PlacesCountLightsOverTheRectangle) {
         }
     }
     EXPECT_EQ(spots, 9);  // round(0.25 * 37)
-    // Spread over the whole rectangle (stratified), not bunched: the
-    // lights reach within 5 m of both ends of its 40 m.
+    // Spread over the whole rectangle, not bunched: the lights reach
+    // within 5 m of both ends of its 40 m.
     EXPECT_LT(left, -5.0f);
     EXPECT_GT(right, 25.0f);
+}
+
+// Nested: a count's lights are the first lights of any larger count (the
+// same places, kinds and colours), so doubling the count adds lights and
+// moves none. And even at every count from 16 on: cut the rectangle into
+// count / 4 cells, 8 across and as many down as fit, and no cell is empty
+// or holds more than twice its share (4 lights). Each of the seeds 1..5.
+TEST(LightGrid, EveryCountIsTheFirstLightsOfALargerOneAndCoversTheFloor) {
+    for (int seed = 1; seed <= 5; ++seed) {
+        const std::string text = withGrid(R"({"count": 256, "seed": )" + std::to_string(seed) + R"(, "min": [-24, -12], "max": [24, 12]})");
+        const Scene all = parse(text);
+        for (int count : {16, 32, 64, 128}) {
+            const Scene some = parse(text, {"lightGrid.count=" + std::to_string(count)});
+            ASSERT_EQ(some.lights.size(), static_cast<std::size_t>(count));
+            for (std::size_t i = 0; i < some.lights.size(); ++i) {
+                EXPECT_EQ(some.lights[i].position, all.lights[i].position) << "seed " << seed << " count " << count << " light " << i;
+                EXPECT_EQ(some.lights[i].type, all.lights[i].type);
+                EXPECT_EQ(some.lights[i].color, all.lights[i].color);
+            }
+            int spots = 0;
+            for (const Light& l : some.lights) spots += l.type == LightType::Spot ? 1 : 0;
+            EXPECT_EQ(spots, count / 2) << "seed " << seed << " count " << count;  // the default share, 0.5
+            const int across = 8, down = count / 4 / across == 0 ? 1 : count / 4 / across;
+            std::vector<int> cells(static_cast<std::size_t>(across * down), 0);
+            for (const Light& l : some.lights) {
+                const int x = std::min(static_cast<int>((l.position.x + 24.0f) / 48.0f * across), across - 1);
+                const int y = std::min(static_cast<int>((l.position.z + 12.0f) / 24.0f * down), down - 1);
+                ++cells[static_cast<std::size_t>(y * across + x)];
+            }
+            const double share = static_cast<double>(count) / static_cast<double>(cells.size());
+            for (std::size_t c = 0; c < cells.size(); ++c) {
+                EXPECT_GE(cells[c], 1) << "seed " << seed << " count " << count << ": cell " << c << " empty";
+                EXPECT_LE(cells[c], 2.0 * share) << "seed " << seed << " count " << count << ": cell " << c;
+            }
+        }
+    }
 }
 
 // The same seed gives the same lights (positions and colours), another
