@@ -229,6 +229,11 @@ struct ShadowAtlasSettings {
     float texelsPerPixel = 1.0f;  ///< a tile's side: the extent on screen, pixels, of what it sees of the light's reach (a spot: its reach; a cube face: its part of it), times this, rounded up to a power of two; 0.0625..16, default 1
     int minTile = 32;             ///< the least tile side, texels (a power of two, 8..maxTile); default 32
     int maxTile = 1024;           ///< the largest tile side, texels (a power of two, minTile..size); default 1024
+    /// The most texels the tiles take together, per pixel of the frame
+    /// (the largest tiles are halved until they fit, as when they exceed
+    /// the atlas; never below minTile): the shadow passes' cost then stops
+    /// growing with the lights. 0: the atlas's size alone; 0..4096, default 32
+    float budgetPerPixel = 32.0f;
     /// With RenderOptions::cacheShadowMaps: at most this many tiles whose
     /// light or casters changed are drawn again per frame, the longest
     /// undrawn first (the rest keep their last map); tiles new to their

@@ -22,7 +22,7 @@ glm::ivec2 mortonPoint(std::uint64_t i) {
 
 } // namespace
 
-AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int minSide) {
+AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int minSide, double budget) {
     AtlasLayout out;
     std::vector<int> side(requests.size());
     for (std::size_t i = 0; i < requests.size(); ++i) side[i] = std::max(requests[i].side, 1);
@@ -31,13 +31,16 @@ AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int m
         for (std::size_t i = 0; i < requests.size(); ++i) a += static_cast<double>(requests[i].tiles) * side[i] * side[i];
         return a;
     };
-    const double capacity = static_cast<double>(size) * size;
+    const double atlas = static_cast<double>(size) * size;
+    const double capacity = budget > 0.0 ? std::min(budget, atlas) : atlas;
     double used = area();
     while (used > capacity) {
         int largest = 0;
         for (std::size_t i = 0; i < side.size(); ++i)
             if (side[i] > minSide && requests[i].tiles > 0) largest = std::max(largest, side[i]);
         if (largest == 0) {
+            out.overBudget = true;
+            if (used <= atlas) break;  // over the budget, within the atlas
             out.fits = false;
             out.texelsUsed = used;
             return out;

@@ -30,15 +30,18 @@ struct AtlasLayout {
     std::vector<AtlasPlacement> placed; ///< per request, in order
     double texelsUsed = 0.0;            ///< sum of the tiles' areas
     bool fits = true;                   ///< false: even at `minSide` the tiles exceed the atlas (placed is then empty)
+    bool overBudget = false;            ///< the tiles at `minSide` alone exceed the budget (they fit the atlas)
 };
 
 /// Packs `requests` into an atlas of `size` texels a side (a power of
-/// two). While their area exceeds the atlas's, every tile of the largest
-/// side above `minSide` is halved (the lights nearest the camera give up
-/// texels first, and no light drops below `minSide`). Tiles are placed in
+/// two). While their area exceeds `budget` texels (0: the atlas's area;
+/// at most it), every tile of the largest side above `minSide` is halved
+/// (the lights nearest the camera give up texels first, and no light
+/// drops below `minSide`); tiles at `minSide` past the budget still fit
+/// when the atlas holds them (AtlasLayout::overBudget). Tiles are placed in
 /// decreasing size along a Z-order curve, which keeps each power-of-two
 /// square whole and aligned: any set of such tiles whose area fits, fits.
-AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int minSide);
+AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int minSide, double budget = 0.0);
 
 /// A tile's side for a light whose reach covers `extentPixels` pixels
 /// across on screen: extent x texelsPerPixel rounded up to a power of two,

@@ -19,7 +19,7 @@ int powerOfTwoAt(const Reader& r, const char* key, int def, int minimum, int max
 
 ShadowAtlasSettings readShadowAtlas(const Reader& r) {
     r.requireObject();
-    r.checkKeys({"size", "texelsPerPixel", "minTile", "maxTile", "updateBudget"});
+    r.checkKeys({"size", "texelsPerPixel", "minTile", "maxTile", "budgetPerPixel", "updateBudget"});
     ShadowAtlasSettings s;
     s.size = powerOfTwoAt(r, "size", s.size, 256, 16384);
     s.texelsPerPixel = r.number("texelsPerPixel", s.texelsPerPixel);
@@ -27,6 +27,9 @@ ShadowAtlasSettings readShadowAtlas(const Reader& r) {
         r.child("texelsPerPixel").fail("expected 0.0625..16, got " + Reader::fmt(s.texelsPerPixel));
     s.maxTile = powerOfTwoAt(r, "maxTile", std::min(s.maxTile, s.size), 8, s.size);
     s.minTile = powerOfTwoAt(r, "minTile", std::min(s.minTile, s.maxTile), 8, s.maxTile);
+    s.budgetPerPixel = r.number("budgetPerPixel", s.budgetPerPixel);
+    if (!(s.budgetPerPixel >= 0.0f && s.budgetPerPixel <= 4096.0f))
+        r.child("budgetPerPixel").fail("expected 0..4096 texels a pixel of the frame, got " + Reader::fmt(s.budgetPerPixel));
     s.updateBudget = r.integer("updateBudget", s.updateBudget, 0, 65536);
     return s;
 }

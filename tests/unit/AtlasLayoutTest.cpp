@@ -82,6 +82,29 @@ TEST(AtlasLayout, ShrinksTheLargestFirstAndStopsAtTheLeast) {
     EXPECT_FALSE(full.fits);
 }
 
+// A texel budget under the atlas's area: the largest tiles halve until the
+// tiles take at most the budget; tiles already at the least side past the
+// budget still fit the atlas, and the layout says it is over the budget.
+TEST(AtlasLayout, ShrinksToTheBudgetAndFitsPastItAtTheLeast) {
+    // 4 x 256^2 + 8 x 64^2 = 294912 texels in a 1024^2 atlas, a budget of
+    // 100000: the 256s halve to 128 (98304 in all).
+    const std::vector<AtlasRequest> requests{{4, 256}, {8, 64}};
+    const AtlasLayout layout = packAtlas(requests, 1024, 32, 100000.0);
+    ASSERT_TRUE(layout.fits);
+    EXPECT_FALSE(layout.overBudget);
+    EXPECT_EQ(layout.placed[0].side, 128);
+    EXPECT_EQ(layout.placed[1].side, 64);
+    EXPECT_LE(layout.texelsUsed, 100000.0);
+    EXPECT_EQ(coverage(layout, requests, 1024).overlapping, 0u);
+    // The same with no budget (0): the sizes asked for.
+    EXPECT_EQ(packAtlas(requests, 1024, 32, 0.0).placed[0].side, 256);
+    // 200 tiles of 32^2 (204800 texels) past a budget of 100000: at the least side, over the budget, in the atlas.
+    const AtlasLayout least = packAtlas({{200, 64}}, 1024, 32, 100000.0);
+    ASSERT_TRUE(least.fits);
+    EXPECT_TRUE(least.overBudget);
+    EXPECT_EQ(least.placed[0].side, 32);
+}
+
 TEST(AtlasLayout, TileSideFollowsTheScreen) {
     EXPECT_EQ(tileSideFor(100.0f, 1.0f, 32, 1024), 128);
     EXPECT_EQ(tileSideFor(128.0f, 1.0f, 32, 1024), 128);
@@ -194,6 +217,9 @@ INSTANTIATE_TEST_SUITE_P(
         SceneErrorCase{"MinTileOverMax", withAtlas(R"({"minTile": 2048})"), {}, "shadowAtlas.minTile: expected an integer in 8..1024, got 2048"},
         SceneErrorCase{"MinTileNotPowerOfTwo", withAtlas(R"({"minTile": 48})"), {}, "shadowAtlas.minTile: expected a power of two, got 48"},
         SceneErrorCase{"UpdateBudget", withAtlas(R"({"updateBudget": -1})"), {}, "shadowAtlas.updateBudget: expected an integer in 0..65536, got -1"},
+        SceneErrorCase{"BudgetPerPixel", withAtlas(R"({"budgetPerPixel": -1})"), {}, "shadowAtlas.budgetPerPixel: expected 0..4096 texels a pixel of the frame, got -1"},
+        SceneErrorCase{"BudgetPerPixelSet", withAtlas("{}"), {"shadowAtlas.budgetPerPixel=5000"},
+                       "--set shadowAtlas.budgetPerPixel=5000: shadowAtlas.budgetPerPixel: expected 0..4096 texels a pixel of the frame, got 5000"},
         SceneErrorCase{"AtlasOnADirectionalLight", withAtlas("{}", R"({"type": "directional", "shadow": {"technique": "map", "map": {"atlas": true}}})"), {},
                        "scene.json: lights[0].shadow.map.atlas: map: atlas is for spot and point lights"},
         SceneErrorCase{"AtlasWithPcf", withAtlas("{}", kAtlasSpot), {"lights[0].shadow.map.filter=grid"},

@@ -8,6 +8,7 @@
 #include "techniques/map/MapVariants.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/Text.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -147,14 +148,16 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
     std::vector<std::pair<int, AtlasRequest>> asked;
     for (std::size_t k = 0; k < order.size(); ++k)
         for (std::size_t r = firstRequest[k]; r < (k + 1 < order.size() ? firstRequest[k + 1] : requests.size()); ++r) asked.emplace_back(order[k], requests[r]);
-    const bool samePlaces = asked.size() == lastRequests_.size() &&
+    const double texelBudget = settings.budgetPerPixel > 0.0f ? static_cast<double>(settings.budgetPerPixel) * frame.viewport.x * frame.viewport.y : 0.0;
+    const bool samePlaces = texelBudget == lastBudget_ && asked.size() == lastRequests_.size() &&
                             std::equal(asked.begin(), asked.end(), lastRequests_.begin(), [](const auto& a, const auto& b) {
                                 return a.first == b.first && a.second.tiles == b.second.tiles && a.second.side == b.second.side;
                             });
-    const AtlasLayout layout = samePlaces ? lastLayout_ : packAtlas(requests, settings.size, settings.minTile);
+    const AtlasLayout layout = samePlaces ? lastLayout_ : packAtlas(requests, settings.size, settings.minTile, texelBudget);
     if (!samePlaces) drawn_.clear();  // the tiles moved: nothing is where it was
     lastRequests_ = asked;
     lastLayout_ = layout;
+    lastBudget_ = texelBudget;
     if (!layout.fits) {
         std::size_t tiles = 0;
         for (const AtlasRequest& r : requests) tiles += static_cast<std::size_t>(r.tiles);
@@ -255,10 +258,18 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
             const glm::ivec2 o = p->atlasOrigins[f];
             clears_.emplace_back(o.x + c.x0, o.y + c.y0, c.x1 - c.x0, c.y1 - c.y0);
         }
+    const bool byBudget = texelBudget > 0.0 && texelBudget < static_cast<double>(size_) * size_;
+    const std::string fitTo = byBudget ? "the budget of " + std::to_string(static_cast<long long>(texelBudget)) + " texels (shadowAtlas.budgetPerPixel " +
+                                             text::numberText(settings.budgetPerPixel) + " x " + std::to_string(frame.viewport.x) + "x" +
+                                             std::to_string(frame.viewport.y) + " pixels)"
+                                       : std::to_string(size_) + "^2 texels";
     if (shrunkCount > 0)
-        host.note("shadowAtlas: " + std::to_string(shrunkCount) + " light(s) got smaller tiles than their size on screen asks for, to fit " +
-                  std::to_string(size_) + "^2 texels (" + shrunk + (shrunkCount > 8 ? ", and " + std::to_string(shrunkCount - 8) + " more" : "") +
-                  "); raise shadowAtlas.size or lower shadowAtlas.texelsPerPixel");
+        host.note("shadowAtlas: " + std::to_string(shrunkCount) + " light(s) got smaller tiles than their size on screen asks for, to fit " + fitTo + " (" +
+                  shrunk + (shrunkCount > 8 ? ", and " + std::to_string(shrunkCount - 8) + " more" : "") + "); raise " +
+                  (byBudget ? "shadowAtlas.budgetPerPixel" : "shadowAtlas.size") + " or lower shadowAtlas.texelsPerPixel");
+    if (layout.overBudget)
+        host.note("shadowAtlas: the tiles at shadowAtlas.minTile (" + std::to_string(settings.minTile) + ") alone take " +
+                  std::to_string(static_cast<long long>(layout.texelsUsed)) + " texels, more than " + fitTo + "; lower shadowAtlas.minTile");
     gl::reserveBuffer(tileBuffer_, tileBytes_, std::max<std::size_t>(tiles_.size(), 1) * sizeof(shared::AtlasTile));
     if (!tiles_.empty())
         glNamedBufferSubData(tileBuffer_.id(), 0, static_cast<GLsizeiptr>(tiles_.size() * sizeof(shared::AtlasTile)), tiles_.data());

@@ -82,6 +82,7 @@ private:
     std::map<int, std::array<Drawn, 6>> drawn_;
     std::vector<std::pair<int, AtlasRequest>> lastRequests_;  ///< the last layout's lights and requests
     AtlasLayout lastLayout_;
+    double lastBudget_ = 0.0;  ///< the texel budget the last layout was packed to
     bool behind_ = false;
     std::map<int, std::array<int, 6>> lastSides_;  ///< per light, the sides its tiles asked for last frame (tileSideKeeping)
     glm::vec3 lastSizing_{0.0f};                     ///< the texelsPerPixel, minTile and maxTile they were asked with
