@@ -45,9 +45,13 @@ AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int m
             out.texelsUsed = used;
             return out;
         }
-        for (int& s : side)
-            if (s == largest) s /= 2;
-        used = area();
+        // One request at a time (a light's tile, or one face), in order:
+        // no more texels given up than the budget asks.
+        for (std::size_t i = 0; i < side.size() && used > capacity; ++i) {
+            if (side[i] != largest || requests[i].tiles <= 0) continue;
+            used -= static_cast<double>(requests[i].tiles) * 0.75 * side[i] * side[i];
+            side[i] /= 2;
+        }
     }
     out.texelsUsed = used;
     // Every tile, largest first (then in request order), along the Z-order curve.

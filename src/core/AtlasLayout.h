@@ -35,9 +35,10 @@ struct AtlasLayout {
 
 /// Packs `requests` into an atlas of `size` texels a side (a power of
 /// two). While their area exceeds `budget` texels (0: the atlas's area;
-/// at most it), every tile of the largest side above `minSide` is halved
-/// (the lights nearest the camera give up texels first, and no light
-/// drops below `minSide`); tiles at `minSide` past the budget still fit
+/// at most it), the requests whose tiles have the largest side above
+/// `minSide` are halved one after another in order until the area fits
+/// (the lights nearest the camera give up texels first, no more are given
+/// up than needed, and no light drops below `minSide`); tiles at `minSide` past the budget still fit
 /// when the atlas holds them (AtlasLayout::overBudget). Tiles are placed in
 /// decreasing size along a Z-order curve, which keeps each power-of-two
 /// square whole and aligned: any set of such tiles whose area fits, fits.

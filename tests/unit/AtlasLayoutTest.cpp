@@ -98,6 +98,11 @@ TEST(AtlasLayout, ShrinksToTheBudgetAndFitsPastItAtTheLeast) {
     EXPECT_EQ(coverage(layout, requests, 1024).overlapping, 0u);
     // The same with no budget (0): the sizes asked for.
     EXPECT_EQ(packAtlas(requests, 1024, 32, 0.0).placed[0].side, 256);
+    // No more given up than the budget asks: four 512^2 tiles (1048576
+    // texels) in a budget of 900000: the first alone halves (851968).
+    const AtlasLayout one = packAtlas({{1, 512}, {1, 512}, {1, 512}, {1, 512}}, 2048, 32, 900000.0);
+    EXPECT_EQ(one.placed[0].side, 256);
+    for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(one.placed[i].side, 512) << "tile " << i;
     // 200 tiles of 32^2 (204800 texels) past a budget of 100000: at the least side, over the budget, in the atlas.
     const AtlasLayout least = packAtlas({{200, 64}}, 1024, 32, 100000.0);
     ASSERT_TRUE(least.fits);
