@@ -87,8 +87,8 @@ TEST(LightGrid, EveryCountIsTheFirstLightsOfALargerOneAndCoversTheFloor) {
             const int across = 8, down = count / 4 / across == 0 ? 1 : count / 4 / across;
             std::vector<int> cells(static_cast<std::size_t>(across * down), 0);
             for (const Light& l : some.lights) {
-                const int x = std::min(static_cast<int>((l.position.x + 24.0f) / 48.0f * across), across - 1);
-                const int y = std::min(static_cast<int>((l.position.z + 12.0f) / 24.0f * down), down - 1);
+                const int x = std::min(static_cast<int>((l.position.x + 24.0f) / 48.0f * static_cast<float>(across)), across - 1);
+                const int y = std::min(static_cast<int>((l.position.z + 12.0f) / 24.0f * static_cast<float>(down)), down - 1);
                 ++cells[static_cast<std::size_t>(y * across + x)];
             }
             const double share = static_cast<double>(count) / static_cast<double>(cells.size());

@@ -182,11 +182,11 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
         p.atlasFirst = static_cast<int>(tiles_.size());
         p.atlasTiles = requests[r0].tiles == 0 ? 0 : (p.cube ? 6 : 1);
         p.atlasSides.fill(0);
-        int asked = 0, given = 0;  // its largest tile's side, asked for and placed
+        int largestAsked = 0, given = 0;  // its largest tile's side, asked for and placed
         for (int t = 0; t < p.atlasTiles; ++t) {
             const auto f = static_cast<std::size_t>(t);
             const AtlasPlacement& place = layout.placed[r0 + f];  // one request a tile
-            asked = std::max(asked, place.shrunkFrom);
+            largestAsked = std::max(largestAsked, place.shrunkFrom);
             given = std::max(given, place.side);
             p.atlasSides[f] = place.side;
             p.atlasOrigins[f] = place.origins[0];
@@ -219,9 +219,9 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
                 changed.push_back({&p, order[k], t, before.frame});
             }
         }
-        if (given < asked) {
+        if (given < largestAsked) {
             if (++shrunkCount <= 8)
-                shrunk += (shrunk.empty() ? "" : ", ") + std::string("lights[") + std::to_string(order[k]) + "] " + std::to_string(asked) + " -> " + std::to_string(given);
+                shrunk += (shrunk.empty() ? "" : ", ") + std::string("lights[") + std::to_string(order[k]) + "] " + std::to_string(largestAsked) + " -> " + std::to_string(given);
         }
     }
     // The budget: the changed tiles undrawn longest first, the rest keep
