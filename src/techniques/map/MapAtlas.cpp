@@ -113,6 +113,7 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
     if (sizing != lastSizing_) lastSides_.clear();
     lastSizing_ = sizing;
     std::vector<AtlasRequest> requests;
+    std::vector<std::pair<int, AtlasRequest>> asked;  // each request with its light's index
     std::vector<int> order;
     std::vector<std::size_t> firstRequest;  // per light (in order): its first request; a cube's six are one a face
     for (auto& [index, p] : lights) {
@@ -123,14 +124,18 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
         order.push_back(index);
         firstRequest.push_back(requests.size());
         std::array<int, 6>& last = lastSides_[index];  // the sides it asked for last frame (0: none)
+        const auto ask = [&](AtlasRequest r) {
+            requests.push_back(r);
+            asked.emplace_back(index, r);
+        };
         if (!(extent > 0.0f)) {
-            requests.push_back({0, minSide});
+            ask({0, minSide});
             last.fill(0);
             continue;
         }
         if (!p->cube) {
             last[0] = tileSideKeeping(extent, settings.texelsPerPixel, minSide, maxSide, last[0]);
-            requests.push_back({1, last[0]});
+            ask({1, last[0]});
             continue;
         }
         const float range = light.range > 0.0f ? light.range : std::numeric_limits<float>::infinity();
@@ -138,16 +143,13 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
             const std::optional<float> seen =
                 screenExtentOf(cubeFaceReach(light.position, range, static_cast<int>(f), receivers), frame.clipFromWorld, frame.viewport);
             last[f] = tileSideKeeping(seen ? std::min(*seen, extent) : extent, settings.texelsPerPixel, minSide, maxSide, last[f]);
-            requests.push_back({1, last[f]});
+            ask({1, last[f]});
         }
     }
     for (auto it = lastSides_.begin(); it != lastSides_.end();)  // lights gone from the atlas
         it = lights.count(it->first) ? std::next(it) : lastSides_.erase(it);
     // The same lights asking for the same tiles: the same places, so that
     // kept maps stay where their records say.
-    std::vector<std::pair<int, AtlasRequest>> asked;
-    for (std::size_t k = 0; k < order.size(); ++k)
-        for (std::size_t r = firstRequest[k]; r < (k + 1 < order.size() ? firstRequest[k + 1] : requests.size()); ++r) asked.emplace_back(order[k], requests[r]);
     const double texelBudget = settings.budgetPerPixel > 0.0f ? static_cast<double>(settings.budgetPerPixel) * frame.viewport.x * frame.viewport.y : 0.0;
     const bool samePlaces = texelBudget == lastBudget_ && asked.size() == lastRequests_.size() &&
                             std::equal(asked.begin(), asked.end(), lastRequests_.begin(), [](const auto& a, const auto& b) {

@@ -1,8 +1,10 @@
 #pragma once
 // Technique "map": the shadow atlas that the lights with `atlas` share
 // (Scene::shadowAtlas). Each frame every such light's tiles are sized
-// from how large its reach is on screen (core/AtlasLayout: a far or small
-// light gets few texels, a near one many, all shrunk together to fit),
+// from how large on screen what each sees of its reach is (a spot's one
+// tile, each face of a point light's cube; core/AtlasLayout: a far or
+// small light gets few texels, a near one many, the largest halved first
+// to fit the texel budget and the atlas),
 // placed, and described for the lookups (shared::AtlasTile, one per spot
 // map or cube face, in a shader storage buffer); each light's shadow pass
 // draws its casters into its own tiles, culled per tile.
