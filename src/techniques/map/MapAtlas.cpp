@@ -124,9 +124,9 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
         order.push_back(index);
         firstRequest.push_back(requests.size());
         std::array<int, 6>& last = lastSides_[index];  // the sides it asked for last frame (0: none)
-        const auto ask = [&](AtlasRequest r) {
+        const auto ask = [&requests, &asked, owner = index](AtlasRequest r) {  // (clang cannot capture the binding itself)
             requests.push_back(r);
-            asked.emplace_back(index, r);
+            asked.emplace_back(owner, r);
         };
         if (!(extent > 0.0f)) {
             ask({0, minSide});
