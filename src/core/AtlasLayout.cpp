@@ -1,6 +1,7 @@
 #include "core/AtlasLayout.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -25,7 +26,13 @@ glm::ivec2 mortonPoint(std::uint64_t i) {
 AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int minSide, double budget) {
     AtlasLayout out;
     std::vector<int> side(requests.size());
-    for (std::size_t i = 0; i < requests.size(); ++i) side[i] = std::max(requests[i].side, 1);
+    // Z-order placement keeps power-of-two squares whole and aligned, and
+    // only them: any other side is taken as the power of two below it
+    // (a 768 tile took its Z-order cell of 768^2 texels, and the next tile
+    // began inside it).
+    const auto asked = [&](std::size_t i) { return static_cast<int>(std::bit_floor(static_cast<unsigned>(std::max(requests[i].side, 1)))); };
+    minSide = static_cast<int>(std::bit_floor(static_cast<unsigned>(std::max(minSide, 1))));
+    for (std::size_t i = 0; i < requests.size(); ++i) side[i] = asked(i);
     const auto area = [&] {
         double a = 0.0;
         for (std::size_t i = 0; i < requests.size(); ++i) a += static_cast<double>(requests[i].tiles) * side[i] * side[i];
@@ -66,13 +73,23 @@ AtlasLayout packAtlas(const std::vector<AtlasRequest>& requests, int size, int m
     out.placed.resize(requests.size());
     for (std::size_t i = 0; i < requests.size(); ++i) {
         out.placed[i].side = side[i];
-        out.placed[i].shrunkFrom = std::max(requests[i].side, 1);
+        out.placed[i].shrunkFrom = asked(i);
         out.placed[i].origins.resize(static_cast<std::size_t>(std::max(requests[i].tiles, 0)));
     }
     std::uint64_t next = 0;
     for (const Tile& t : tiles) {
         const auto s = static_cast<std::uint64_t>(side[t.request]);
-        out.placed[t.request].origins[static_cast<std::size_t>(t.index)] = mortonPoint(next);
+        const glm::ivec2 origin = mortonPoint(next);
+        // Within the atlas by construction (power-of-two squares whose area
+        // fits a power-of-two atlas, largest first); said again so that a
+        // broken invariant is an error here, not a draw past the texture.
+        if (origin.x + side[t.request] > size || origin.y + side[t.request] > size) {
+            out = AtlasLayout{};
+            out.fits = false;
+            out.texelsUsed = used;
+            return out;
+        }
+        out.placed[t.request].origins[static_cast<std::size_t>(t.index)] = origin;
         next += s * s;
     }
     return out;

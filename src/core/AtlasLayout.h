@@ -12,7 +12,8 @@
 namespace shadowlab {
 
 /// What one light asks of the atlas: `tiles` tiles (a spot 1, a point
-/// light's cube 6) of `side` texels each (a power of two).
+/// light's cube 6) of `side` texels each (a power of two; any other side
+/// is taken as the largest power of two below it).
 struct AtlasRequest {
     int tiles = 1;
     int side = 0;
@@ -34,7 +35,8 @@ struct AtlasLayout {
 };
 
 /// Packs `requests` into an atlas of `size` texels a side (a power of
-/// two). While their area exceeds `budget` texels (0: the atlas's area;
+/// two; the sides asked for and `minSide` are rounded down to powers of
+/// two first). While their area exceeds `budget` texels (0: the atlas's area;
 /// at most it), the requests whose tiles have the largest side above
 /// `minSide` are halved one after another in order until the area fits
 /// (the lights nearest the camera give up texels first, no more are given

@@ -58,6 +58,38 @@ TEST(AtlasLayout, RandomRequestsNeitherOverlapNorLeave) {
     }
 }
 
+// Sides that are not powers of two (a map.size of 768 or 17 reached the
+// packer as tile sides before 2026-12-07): each is taken as the power of
+// two below it, and no two tiles overlap or leave the atlas. Before, six
+// faces of 768 in a 4096 atlas overlapped (the Z-order cell of a 768^2
+// tile is not a square), and 768s with their halves in many-lights at
+// 1920x1080 ran past the 8192^2 atlas.
+TEST(AtlasLayout, SidesThatAreNotPowersOfTwoNeitherOverlapNorLeave) {
+    const std::vector<AtlasRequest> cube{{1, 768}, {1, 768}, {1, 768}, {1, 768}, {1, 768}, {1, 768}};
+    const AtlasLayout six = packAtlas(cube, 4096, 32);
+    ASSERT_TRUE(six.fits);
+    const Coverage c6 = coverage(six, cube, 4096);
+    EXPECT_EQ(c6.overlapping, 0u);
+    EXPECT_EQ(c6.outside, 0u);
+    for (const AtlasPlacement& p : six.placed) {
+        EXPECT_EQ(p.side, 512);
+        EXPECT_FALSE(p.shrunk());  // rounding is not shrinking: nothing to note
+    }
+    std::mt19937 rng(11);
+    for (int round = 0; round < 40; ++round) {
+        std::vector<AtlasRequest> requests;
+        const int lights = 1 + static_cast<int>(rng() % 80);
+        for (int i = 0; i < lights; ++i) requests.push_back({rng() % 2 ? 6 : 1, 17 + static_cast<int>(rng() % 1000)});
+        const int size = 2048;
+        const AtlasLayout layout = packAtlas(requests, size, 24, 0.0);
+        ASSERT_TRUE(layout.fits) << "round " << round;
+        const Coverage c = coverage(layout, requests, size);
+        EXPECT_EQ(c.overlapping, 0u) << "round " << round;
+        EXPECT_EQ(c.outside, 0u) << "round " << round;
+        for (const AtlasPlacement& p : layout.placed) EXPECT_EQ(p.side & (p.side - 1), 0) << "round " << round << ": side " << p.side;
+    }
+}
+
 TEST(AtlasLayout, KeepsTheSizesAskedForWhenTheyFit) {
     const std::vector<AtlasRequest> requests{{6, 256}, {1, 512}, {1, 64}, {6, 128}};
     const AtlasLayout layout = packAtlas(requests, 1024, 16);

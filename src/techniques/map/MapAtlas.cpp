@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -119,7 +120,9 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
     for (auto& [index, p] : lights) {
         const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
         const float extent = screenExtent(light, frame);
-        const int maxSide = std::min(settings.maxTile, p->options.size);
+        // Tiles are powers of two (core/AtlasLayout): map.size caps them at
+        // the power of two within it (a 768 map's tiles are at most 512).
+        const int maxSide = static_cast<int>(std::bit_floor(static_cast<unsigned>(std::min(settings.maxTile, p->options.size))));
         const int minSide = std::min(settings.minTile, maxSide);
         order.push_back(index);
         firstRequest.push_back(requests.size());
