@@ -133,6 +133,7 @@ float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
 #if MAP_CASCADE_AXES
 in vec3 vCascadePoint;
 in vec3 vCascadeOffset;
+in vec2 vCascadeAxes;
 #endif
 float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, float tanTheta, vec3 dx, vec3 dy, inout vec3 transmit) {
 #if MAP_CASCADE_AXES
@@ -140,16 +141,24 @@ float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, flo
     MapLookup m = mapLookup(map.layer + float(c));
     m.quad = quad;
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
-    m.texelWorld = offset.w;
+    m.texelWorld = max(offset.w, scale.w);
     m.planes = map.cascadeRange[c].xy;
     m.dx = scale.xyz * dx;
     m.dy = scale.xyz * dy;
 #endif
-    return mapTest(m, vec4(scale.xyz * (vCascadePoint + offset.w * vCascadeOffset) + offset.xyz, 1.0), NdotL, transmit);
+    float texel = dot(vec2(offset.w, scale.w), vCascadeAxes);  // the x and y texels, weighed by the normal
+#if MAP_MIPMAPS
+    texel *= mapLevelScale(scale.xy * dx.xy, scale.xy * dy.xy);
+#endif
+    return mapTest(m, vec4(scale.xyz * (vCascadePoint + texel * vCascadeOffset) + offset.xyz, 1.0), NdotL, transmit);
 #else
-    float texel = map.cascadeTexel[c >> 2][c & 3];
+    float texel = mapAxesTexel(map.cascadeShadowFromWorld[c], n);  // its x and y texels weighed by the normal
 #if MAP_WARP
     if (map.warpU > 0.0) texel = mapWarpedTexel(map.cascadeWarpPlane[c], map.cascadeWarp[c].xy, worldPosition, n);  // warped cascades
+#endif
+#if MAP_MIPMAPS
+    mat3 toUv = mat3(map.cascadeShadowFromWorld[c]);
+    texel *= mapLevelScale((toUv * dx).xy, (toUv * dy).xy);
 #endif
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), map.towardsLight, texel, tanTheta);
     MapLookup m = mapLookup(map.layer + float(c));
@@ -198,6 +207,9 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
 }
 #else
 in vec4 vShadowCoord;   // from shadow_map_vertex.glsl: the offset point in texture space
+#if MAP_MIPMAPS
+in vec4 vShadowOffset;  // and the offsets in it, at level 0's texel
+#endif
 #if MAP_PRESET_BIAS
 in float vShadowNdotL;  // N.L at the vertex, for the preset's slope-scaled bias
 #endif
@@ -216,10 +228,16 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     m.dx = dFdx(q);
     m.dy = dFdy(q);
 #endif
+    vec4 coord = vShadowCoord;
+#if MAP_MIPMAPS
+    // The offsets reach the texel of the level read (shadow_map_bias.glsl).
+    vec2 uv = vShadowCoord.xy / vShadowCoord.w;
+    coord += (mapLevelScale(dFdx(uv), dFdy(uv)) - 1.0) * vShadowOffset;
+#endif
 #if MAP_PRESET_BIAS
-    return mapTest(m, vShadowCoord, vShadowNdotL, transmit);
+    return mapTest(m, coord, vShadowNdotL, transmit);
 #else
-    return mapTest(m, vShadowCoord, 1.0, transmit);
+    return mapTest(m, coord, 1.0, transmit);
 #endif
 }
 #endif

@@ -33,4 +33,30 @@ float mapWarpedTexel(vec4 plane, vec2 uv, vec3 p, vec3 n) {
     return lg > 1e-4 ? dot(extent, g) / lg : max(extent.x, extent.y);
 }
 
+// An orthographic map's texel for the offsets at a point of normal n:
+// its texels along the light view's x and y (1 / (size |row|) for the
+// texture-space matrix's first two rows), weighed by how much the normal
+// tilts along each across the light, where a texel's depth changes.
+// Stabilised cascades may have them differ (core/LightCamera: fitCascade).
+float mapAxesTexel(mat4 shadowFromWorld, vec3 n) {
+    vec3 r0 = vec3(shadowFromWorld[0][0], shadowFromWorld[1][0], shadowFromWorld[2][0]);
+    vec3 r1 = vec3(shadowFromWorld[0][1], shadowFromWorld[1][1], shadowFromWorld[2][1]);
+    vec2 lengths = vec2(length(r0), length(r1));
+    vec2 g = abs(vec2(dot(r0, n), dot(r1, n))) / lengths;
+    vec2 texels = map.texelUv / lengths;
+    float s = g.x + g.y;
+    return s > 1e-4 ? dot(g, texels) / s : max(texels.x, texels.y);
+}
+
+// A mipmapped map (MAP_MIPMAPS): how many level-0 texels a texel of the
+// level the lookup reads spans, 2^level, for a point whose map uv changes
+// by duvdx, duvdy per pixel. The level as a NEAREST_MIPMAP sampler picks
+// it, from the larger footprint (level 0 where a texel covers a pixel or
+// more). Averaged depths are the depth at the coarse texel's centre, so the
+// offsets against acne must reach that texel's size, not level 0's.
+float mapLevelScale(vec2 duvdx, vec2 duvdy) {
+    float rho = max(length(duvdx), length(duvdy)) / map.texelUv;
+    return exp2(max(floor(log2(max(rho, 1e-8)) + 0.5), 0.0));
+}
+
 #endif

@@ -61,6 +61,10 @@ float windowDepthAt(float distance) {
     return 0.5 * clip.z / clip.w + 0.5;
 }
 #endif
+// Stabilised: the receivers' box in lightView (core/LightCamera:
+// receiversWindow): half widths, stepped (xy), and centre (zw); the window
+// on an axis where it is narrower than a slice's sphere, as fitCascade's.
+layout(location = 28) uniform vec4 receiversWindow;
 
 // The view depths seen, [near, far] along the view, within the camera's
 // planes. Stabilised: in whole steps of 2^(1/4) with headroom (near two
@@ -161,8 +165,15 @@ void main() {
         radius = ceil(radius * 64.0) / 64.0;
         vec3 sphere = (lightView * vec4(eye + forward * along, 1.0)).xyz;
         float half_ = radius * size / max(size - 2.0 * padding, 1.0);
-        float texel = 2.0 * half_ / size;
-        vec2 snapped = floor(sphere.xy / texel + 0.5) * texel;
+        vec2 halves = vec2(half_), centre = sphere.xy;
+        for (int a = 0; a < 2; ++a)
+            if (receiversWindow[a] > 0.0 && receiversWindow[a] < half_) {
+                halves[a] = receiversWindow[a];
+                centre[a] = receiversWindow[a + 2];
+            }
+        vec2 texels = 2.0 * halves / size;
+        float texel = max(texels.x, texels.y);
+        vec2 snapped = floor(centre / texels + 0.5) * texels;
         // Depth: the scene's along the light, cut to what the slice's lookups reach, in steps of 1/32 of the box.
         float from = readFrom > 0.0 ? min(readFrom, n) : n;
         vec3 wlo, whi;
@@ -178,7 +189,7 @@ void main() {
         }
         float depthPad = 1e-3 * diagonal;
         float nearPlane = -dhi.z - depthPad, farPlane = -dlo.z + depthPad;
-        mat4 clip = sdsmOrtho(snapped.x - half_, snapped.x + half_, snapped.y - half_, snapped.y + half_, nearPlane, farPlane) * lightView;
+        mat4 clip = sdsmOrtho(snapped.x - halves.x, snapped.x + halves.x, snapped.y - halves.y, snapped.y + halves.y, nearPlane, farPlane) * lightView;
         fit.cascadeClip[c] = clip;
         fit.cascadeShadowFromWorld[c] = kSdsmBias * clip;
         fit.cascadeFar[c >> 2][c & 3] = f;

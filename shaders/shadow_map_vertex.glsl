@@ -14,6 +14,7 @@
 // coordinates are a scale and an offset of these (shadow_map_2d.glsl).
 out vec3 vCascadePoint;
 out vec3 vCascadeOffset;
+out vec2 vCascadeAxes;  // how much of the offsets' texel is the light view's x texel, and how much its y's
 
 void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     vec3 n = worldNormal;  // as modelled (see below)
@@ -21,6 +22,12 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     vec3 perTexel = mapReceiverPlaneOffset(mapNormalOffset(vec3(0.0), n, NdotL, 1.0), map.towardsLight, 1.0, mapTanTheta(n, map.towardsLight, NdotL));
     vCascadePoint = (map.shadowFromWorld * vec4(worldPosition, 1.0)).xyz;
     vCascadeOffset = mat3(map.shadowFromWorld) * perTexel;
+    // A texel's depth change runs along the normal's direction across the
+    // light: its size that way weighs the two axes' texels (a ground under a
+    // low sun: the y texel, which a stabilised cascade may have finer).
+    mat3 toMap = transpose(mat3(map.shadowFromWorld));  // columns: the map's x, y and depth axes in the world
+    vec2 g = abs(vec2(dot(normalize(toMap[0]), n), dot(normalize(toMap[1]), n)));
+    vCascadeAxes = g.x + g.y > 1e-4 ? g / (g.x + g.y) : vec2(0.5);
 }
 #elif MAP_CUBE || MAP_CASCADES > 1 || MAP_ATLAS
 // Cube maps work per fragment (shadow_map.glsl): a point light's texel size
@@ -31,6 +38,9 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {}
 #else
 
 out vec4 vShadowCoord;  // map.shadowFromWorld times the offset point
+#if MAP_MIPMAPS
+out vec4 vShadowOffset; // the offsets in texture space (the fragment scales them to its level)
+#endif
 #if MAP_PRESET_BIAS
 out float vShadowNdotL; // N.L at the vertex, for the learnopengl preset's bias
 #endif
@@ -56,6 +66,9 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     // The normal offset, then the receiver-plane bias for the filter's reach (shadow_map_bias.glsl).
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), toLight, texel, mapTanTheta(n, toLight, NdotL));
     vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);
+#if MAP_MIPMAPS
+    vShadowOffset = map.shadowFromWorld * vec4(p - worldPosition, 0.0);
+#endif
 #if MAP_PRESET_BIAS
     vShadowNdotL = NdotL;
 #endif

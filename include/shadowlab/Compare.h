@@ -31,6 +31,11 @@ struct CompareOptions {
     /// evaluated at this time (sceneAtTime), so both sides see the same
     /// light positions. Default 0.
     double timeSeconds = 0.0;
+    /// Pixels: receivers within this many pixels of a true shadow edge form
+    /// the edge band (LightComparison::edgePixels, the *AwayFromEdges
+    /// shares), 1..64. A filter meant to soften is judged outside a band of
+    /// its own reach on screen. Default 1
+    int edgeBand = 1;
 };
 
 struct LightComparison {

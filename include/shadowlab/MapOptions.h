@@ -10,6 +10,7 @@
 #include <shadowlab/Options.h>
 
 #include <string>
+#include <vector>
 
 namespace shadowlab {
 
@@ -76,7 +77,13 @@ enum class MapCubePasses {
 
 struct MapOptions {
     static constexpr const char* kTechnique = "map";
-    int size = 768;                      ///< texels per side of the map (a cube: of each face), 16..16384; default 768
+    /// texels per side of the map (a cube: of each face), 16..16384; 0
+    /// (the default): follows the frame, kFrameMapMinimum or
+    /// kFrameMapTexelsPerPixel texels per pixel of the frame's larger side,
+    /// whichever is more (rounded up to a multiple of 16), at most
+    /// kFrameMapMaximum and the GPU's limit: 768 up to 800 pixels across,
+    /// 1856 at 1920x1080 (preset "lecture" on a 2D map: the frame's larger side)
+    int size = 0;
     MapFormat format = MapFormat::Depth32F;
     MapFit fit = MapFit::Tight;
     MapWarp warp = MapWarp::None;
@@ -109,6 +116,10 @@ struct MapOptions {
     float lodTexels = 0.5f;
     float shadowedLight = 0.0f;          ///< share of the light's diffuse and specular a shadowed point keeps (a look; compare judges the test); default 0
     bool mipmaps = false;                ///< mipmap the map and sample it with mipmapping (002 exercise 8.6.1-4); default false
+    /// A set of option defaults (docs/techniques.md): every field the scene
+    /// does not write takes the preset's value. Scene files, `--set` and
+    /// `bench --vary` resolve it as they are read (withPreset); code that
+    /// sets it on MapOptions itself calls withPreset. Default "default"
     MapPreset preset = MapPreset::Default;
     // Directional lights: cascaded shadow maps (one layer per cascade).
     int cascades = 1;                    ///< maps along the view, 1..8 (1: one map over the whole view); default 1
@@ -132,6 +143,19 @@ struct MapOptions {
     /// the one pass over the tiled light list; default false
     bool atlas = false;
 };
+
+/// MapOptions::size 0: the map's side for a frame of `width` x `height` pixels.
+inline constexpr int kFrameMapMinimum = 768;             ///< texels: the least side that follows the frame (what 800x600 takes)
+inline constexpr float kFrameMapTexelsPerPixel = 0.96f;  ///< texels per pixel of the frame's larger side (768 at 800)
+inline constexpr int kFrameMapMaximum = 4096;            ///< texels: the most (a 4096^2 depth32f map is 64 MiB; a cube six times that)
+SHADOWLAB_API int frameMapSize(int width, int height);
+
+/// `o` with its preset's values in every field whose JSON key is not in
+/// `written` (the keys the scene gave, `--set` included): a preset is a set
+/// of option defaults under the user's keys. `pointLight`: the light is a
+/// point light (lecture 001's and LearnOpenGL's cube presets). Preset
+/// "default" changes nothing.
+SHADOWLAB_API MapOptions withPreset(const MapOptions& o, bool pointLight, const std::vector<std::string>& written = {});
 
 /// The options table of "map" (JSON keys, units, ranges, defaults, docs).
 SHADOWLAB_API const OptionTable& mapOptionTable();

@@ -5,10 +5,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace shadowlab {
 
@@ -352,6 +354,32 @@ float viewReach(const Camera& camera, const FitInput& in) {
     return std::clamp(reach, camera.nearPlane * 1.001f, camera.farPlane);
 }
 
+glm::vec4 receiversWindow(const FitInput& in, const glm::mat4& lightView, float grow) {
+    Bounds receivers;
+    for (std::size_t i = 0; i < in.items.size(); ++i)
+        if (in.items[i].receivesShadows) receivers.add(in.itemBounds[i]);
+    if (receivers.empty()) return glm::vec4(0.0f);
+    const Bounds seen = receivers.transformed(lightView);
+    glm::vec4 out(0.0f);
+    for (int a = 0; a < 2; ++a) {
+        const float want = 0.5f * (seen.hi[a] - seen.lo[a]) * grow;
+        out[a] = want > 0.0f ? std::exp2(std::ceil(8.0f * std::log2(want)) / 8.0f) : 0.0f;
+        out[a + 2] = 0.5f * (seen.hi[a] + seen.lo[a]);
+    }
+    return out;
+}
+
+float viewNearest(const Camera& camera, const FitInput& in) {
+    const glm::mat4 view = camera.viewFromWorld();
+    float nearest = camera.farPlane;
+    for (std::size_t i = 0; i < in.items.size(); ++i) {
+        if (!in.items[i].receivesShadows || !mayIntersect(in.cameraClipFromWorld, in.itemBounds[i])) continue;
+        const Bounds b = in.itemBounds[i].transformed(view);
+        nearest = std::min(nearest, -b.hi.z);
+    }
+    return std::clamp(nearest, camera.nearPlane, camera.farPlane);
+}
+
 namespace {
 
 // A stabilised cascade's casters (its box holds the slice's whole sphere
@@ -408,9 +436,26 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     const glm::vec3 sphere = glm::vec3(cam.viewFromWorld * glm::vec4(eye + forward * along, 1.0f));
     // The box: the sphere plus the filter's footprint, its centre on the texel grid.
     const float size = static_cast<float>(std::max(in.size, 1));
-    const float half = radius * size / std::max(size - 2.0f * in.paddingTexels, 1.0f);
-    const float texel = 2.0f * half / size;
-    const glm::vec2 snapped = glm::floor(glm::vec2(sphere) / texel + 0.5f) * texel;
+    const float grow = size / std::max(size - 2.0f * in.paddingTexels, 1.0f);
+    const float half = radius * grow;
+    // Per axis of the light's view, where every receiver's box (the scene's,
+    // not the slice's: it does not move with the camera) is narrower than
+    // the sphere, the window is that box instead, centred on it: a ground
+    // under a low sun is a strip of the light's view a sixth as tall as
+    // wide at 10 degrees, and a sphere's square gave its texels six times
+    // the size along the light that the strip needs. Its half width rounded
+    // up to a power of 2^(1/8), so that receivers that move change it by
+    // steps, rarely; otherwise fixed as the camera moves, like the sphere's.
+    const glm::vec4 window = receiversWindow(in, cam.viewFromWorld, grow);
+    glm::vec2 halves(half), centre(sphere);
+    for (int a = 0; a < 2; ++a)
+        if (window[a] > 0.0f && window[a] < half) {
+            halves[a] = window[a];
+            centre[a] = window[a + 2];
+        }
+    const glm::vec2 texels = 2.0f * halves / size;
+    const float texel = std::max(texels.x, texels.y);
+    const glm::vec2 snapped = glm::floor(centre / texels + 0.5f) * texels;
     FitInput reads = in;
     const float from = readFrom > 0.0f ? std::min(readFrom, near) : near;
     reads.cameraClipFromWorld = glm::perspective(glm::radians(camera.fovYDeg), aspect, from, far) * camera.viewFromWorld();
@@ -434,8 +479,9 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     const float depthPad = 1e-3f * diagonal;
     cam.nearPlane = scene.empty() ? 0.0f : -depth.hi.z - depthPad;
     cam.farPlane = scene.empty() ? 2.0f * diagonal : -depth.lo.z + depthPad;
-    cam.clipFromView = glm::ortho(snapped.x - half, snapped.x + half, snapped.y - half, snapped.y + half, cam.nearPlane, cam.farPlane);
+    cam.clipFromView = glm::ortho(snapped.x - halves.x, snapped.x + halves.x, snapped.y - halves.y, snapped.y + halves.y, cam.nearPlane, cam.farPlane);
     cam.texelSize = texel;
+    cam.texelAxes = texels;
     cam.perspective = false;
     // The casters: over where the lookups of this cascade start, which may lie past readFrom.
     FitInput looked = reads;
@@ -457,6 +503,43 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     }
     return cam;
 }
+
+namespace {
+
+// The nearest distance along a camera's axis (-z of `view`) of the part of
+// world box `box` inside the square pyramid |x|, |y| <= tanHalf (-z) of
+// that view; infinity when none of it is inside. Exact: a vertex of the
+// box cut by the pyramid is a vertex of a box face clipped by the
+// pyramid's four sides (or the apex, inside the box).
+float nearestInPyramid(const Bounds& box, const glm::mat4& view, float tanHalf) {
+    if (box.distanceTo(glm::vec3(glm::inverse(view)[3])) <= 0.0f) return 0.0f;  // the apex is inside
+    std::array<glm::vec3, 8> corner;
+    for (int c = 0; c < 8; ++c) corner[static_cast<std::size_t>(c)] = glm::vec3(view * glm::vec4(box.corner(c), 1.0f));
+    static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+    // Inside where side(p, k) <= 0: +-x or +-y against tanHalf (-z).
+    const auto side = [tanHalf](const glm::vec3& p, int k) { return (k < 2 ? (k == 0 ? p.x : -p.x) : (k == 2 ? p.y : -p.y)) + tanHalf * p.z; };
+    float nearest = std::numeric_limits<float>::infinity();
+    std::vector<glm::vec3> polygon, clipped;
+    for (const auto& face : kFaces) {
+        polygon.assign({corner[static_cast<std::size_t>(face[0])], corner[static_cast<std::size_t>(face[1])], corner[static_cast<std::size_t>(face[2])],
+                        corner[static_cast<std::size_t>(face[3])]});
+        for (int k = 0; k < 4 && !polygon.empty(); ++k) {  // Sutherland-Hodgman against side k
+            clipped.clear();
+            for (std::size_t v = 0; v < polygon.size(); ++v) {
+                const glm::vec3 &a = polygon[v], &b = polygon[(v + 1) % polygon.size()];
+                const float fa = side(a, k), fb = side(b, k);
+                if (fa <= 0.0f) clipped.push_back(a);
+                if ((fa < 0.0f) != (fb < 0.0f) && fa != fb) clipped.push_back(a + (b - a) * (fa / (fa - fb)));
+            }
+            polygon.swap(clipped);
+        }
+        for (const glm::vec3& p : polygon)
+            if (p.z < 0.0f) nearest = std::min(nearest, -p.z);
+    }
+    return nearest;
+}
+
+} // namespace
 
 LightCamera fitSpot(const Light& light, LightFit fit, const FitInput& in) {
     LightCamera cam;
@@ -481,15 +564,17 @@ LightCamera fitSpot(const Light& light, LightFit fit, const FitInput& in) {
     const float halfAngle = glm::radians(light.outerConeDeg);
     const float tanHalf = std::tan(halfAngle) * (1.0f + 2.0f * in.paddingTexels / static_cast<float>(std::max(in.size, 1)));
     const float fovY = 2.0f * std::atan(tanHalf);
-    // Near: as far out as the casters inside the cone allow.
+    // Near: as far out as the casters inside the map's pyramid allow: the
+    // nearest point of each caster's box within it (a floor under a
+    // horizontal spot reaches under the light, but the pyramid meets it
+    // metres out; its box's nearest corner put the near plane at far / 10^4,
+    // where 16 bits of depth held nothing: glass-panel with depth16 lost
+    // every shadow).
     float near = far;
     const glm::mat4 probe = glm::perspective(fovY, 1.0f, far * 1e-4f, far) * cam.viewFromWorld;
     for (std::size_t i = 0; i < in.items.size(); ++i) {
         if (!cam.casts[i] || !mayIntersect(probe, in.itemBounds[i])) continue;
-        const Bounds& b = in.itemBounds[i];
-        const glm::vec3 c = b.centre(), e = 0.5f * b.size();
-        const float nearest = glm::dot(c - light.position, axis) - glm::dot(e, glm::abs(axis));
-        near = std::min(near, nearest);
+        near = std::min(near, nearestInPyramid(in.itemBounds[i], cam.viewFromWorld, tanHalf));
     }
     near = std::clamp(near * 0.99f, far * 1e-4f, far * 0.999f);
     cam.nearPlane = near;

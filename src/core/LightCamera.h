@@ -27,6 +27,11 @@ struct LightCamera {
     /// Orthographic: world size of one texel. Perspective: world size of one
     /// texel per unit of distance along the light's axis.
     float texelSize = 0.0f;
+    /// Orthographic: a texel's world size along the light view's x and y,
+    /// which differ where a stabilised cascade's window is the receivers'
+    /// box on one axis (fitCascade); 0: texelSize both ways. texelSize is
+    /// then the larger.
+    glm::vec2 texelAxes{0.0f};
     /// Per item: 1 when it may shadow a receiver the camera sees (drawn into
     /// the map), 0 when it cannot; empty: every caster is drawn.
     std::vector<std::uint8_t> casts;
@@ -177,6 +182,18 @@ std::vector<float> cascadeSplits(float near, float far, int count, float lambda,
 /// farthest corner of their bounds within the frustum, at most the camera's
 /// far plane and at least just past its near one.
 float viewReach(const Camera& camera, const FitInput& in);
+/// Stabilised cascades: the box of every receiver (the scene's, fixed as
+/// the camera moves) in light view `lightView`: per axis its half width
+/// times `grow` (the filter's padding) rounded up to a power of 2^(1/8),
+/// so that receivers that move change it by steps (xy), and its centre
+/// (zw); all 0 without receivers. fitCascade (and the GPU's fit) take it
+/// as the window on an axis where it is narrower than the slice's sphere.
+glm::vec4 receiversWindow(const FitInput& in, const glm::mat4& lightView, float grow);
+/// The nearest view depth (along the view, scene units) of the receivers'
+/// boxes that may be in view: where the receivers the camera sees may
+/// start, never farther than the nearest of them (a box reaching behind
+/// the near plane gives the near plane); the far plane when none is in view.
+float viewNearest(const Camera& camera, const FitInput& in);
 
 /// One cascade: an orthographic light camera for the slice [near, far] of
 /// `camera`'s view (aspect: width / height) along `direction`.

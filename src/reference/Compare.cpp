@@ -130,6 +130,27 @@ void markEdgeBand(PixelClasses& classes, const std::vector<Extension>& extension
             edge[e.pixel] = 1;
 }
 
+// The band widened to `band` pixels (CompareOptions::edgeBand): a receiver
+// within band - 1 pixels (Chebyshev distance) of one in the 1-pixel band
+// joins it; each pass grows it by one pixel.
+void widenEdgeBand(PixelClasses& classes, int band) {
+    const int w = classes.w, h = classes.h;
+    for (int pass = 1; pass < band; ++pass) {
+        const std::vector<std::uint8_t> before = classes.edge;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y) * w + x;
+                if (!classes.receiver[i] || before[i]) continue;
+                for (int dy = -1; dy <= 1 && !classes.edge[i]; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int nx = x + dx, ny = y + dy;
+                        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                        if (before[static_cast<std::size_t>(ny) * w + nx]) { classes.edge[i] = 1; break; }
+                    }
+            }
+    }
+}
+
 // One light's counts and sums over its receivers, made rates by summarise().
 struct Tally {
     std::size_t falseShadow = 0, falseLit = 0, falseShadowAway = 0, falseLitAway = 0;
@@ -274,6 +295,7 @@ Comparison ComparisonJob::finish(Renderer&) { return {}; }
 ComparisonJob::ComparisonJob(Renderer& renderer, const Scene& scene, const CompareOptions& options) : impl_(std::make_unique<Impl>()) {
     if (options.softSamples < 1 || options.softSamples > kMaxSoftSamples)
         throw Error("compare: softSamples must be in 1.." + std::to_string(kMaxSoftSamples) + ", got " + std::to_string(options.softSamples));
+    if (options.edgeBand < 1 || options.edgeBand > 64) throw Error("compare: edgeBand must be in 1..64 pixels, got " + std::to_string(options.edgeBand));
     if (!(options.litThreshold > 0.0f && options.litThreshold <= 1.0f))
         throw Error("compare: litThreshold must be in (0, 1]");
     Impl& d = *impl_;
@@ -376,6 +398,7 @@ Comparison ComparisonJob::finish(Renderer& renderer) {
         c.soft = light.size > 0.0f;
         PixelClasses classes = classify(light, d.samples, surfaces, vis.exact, options.litThreshold, c.reach);
         markEdgeBand(classes, d.extensions, vis.extensionExact, options.litThreshold);
+        widenEdgeBand(classes, options.edgeBand);
         summarise(c, measure(c, classes, vis, out.reference, options.litThreshold));
         footprintPercentiles(c, d.footprints[l]);
         out.lights.push_back(std::move(c));

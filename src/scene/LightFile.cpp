@@ -3,6 +3,8 @@
 // the technique and every technique's options read through its table.
 #include "scene/SceneParts.h"
 
+#include "techniques/Registry.h"
+
 #include <shadowlab/Techniques.h>
 
 #include <algorithm>
@@ -74,8 +76,18 @@ void readShadow(const Reader& r, ShadowSettings& shadow, const Light& light) {
     }
     // Every block is read and checked, the chosen technique's or not, so a
     // scene can carry several and switch between them.
-    for (const TechniqueInfo& t : all)
-        if (r.has(t.name)) shadow.options[t.name] = readOptions(r.child(t.name), *t.options);
+    for (const TechniqueInfo& t : all) {
+        if (!r.has(t.name)) continue;
+        const Reader block = r.child(t.name);
+        std::any options = readOptions(block, *t.options);
+        // Options that are others' defaults (map's preset), under the keys the block wrote.
+        if (const TechniqueEntry* entry = findTechniqueEntry(t.name); entry && entry->resolve) {
+            std::vector<std::string> written;
+            for (const auto& item : block.value().items()) written.push_back(item.key());
+            entry->resolve(options, written, light);
+        }
+        shadow.options[t.name] = std::move(options);
+    }
     // Whether the technique can shadow this light may depend on its options
     // (a preset), so this comes after the blocks.
     const std::string reason = unsupportedReason(shadow.technique, light);

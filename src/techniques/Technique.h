@@ -216,6 +216,11 @@ struct TechniqueEntry {
     /// it that bench times its variants against (shadowBaseline(),
     /// Techniques.h); default: the light is its own baseline.
     std::function<ShadowBaseline(const Light&)> baseline = {};
+    /// Called as a scene is read, after the block `lights[i].shadow.<name>`
+    /// (`options`): options that set others' defaults (map's preset) set
+    /// every field but those the block wrote (`written`, its keys, `--set`
+    /// included), for `light`; default: nothing to resolve.
+    std::function<void(std::any& options, const std::vector<std::string>& written, const Light& light)> resolve = {};
 };
 
 /// The registry row of technique class T: its name (`lights[i].shadow.technique`),

@@ -78,7 +78,7 @@ expect_error set-light-after-intensity "--set lights[0]={\"type\":\"directional\
        || { echo "FAIL set-inner-after-block: $(cat "$work/refined.txt")"; failures=$((failures + 1)); }; }
 expect_error set-no-value "--set camera: expected key=value" render -o out.png --set camera
 expect_error map-past-budget "lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB, more than the budget of 1 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set 'lights[0].shadow.map.format="rgba8"'
-expect_error map-size-range "--set lights[0].shadow.map.size=16385: lights[0].shadow.map.size: expected an integer in 16..16384, got 16385" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16385
+expect_error map-size-range "--set lights[0].shadow.map.size=16385: lights[0].shadow.map.size: expected an integer in 0..16384, got 16385" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16385
 # The names come from the filters' table (src/techniques/map/MapFilters.cpp): the list's start, and what was given.
 expect_error map-bad-filter "--set lights[0].shadow.map.filter=pcf: lights[0].shadow.map.filter: expected one of \"none\", \"hardware\", \"grid\"" render -o out.png --set lights[0].shadow.map.filter=pcf
 expect_error map-bad-filter-names-it "\", got \"pcf\"" render -o out.png --set lights[0].shadow.map.filter=pcf

@@ -96,7 +96,9 @@ TEST_F(DiscGLTest, AnEightBitMapSufficesForCastersNearerTheLight) {
             if (name == "shadow[0].mapBytes") bytes[k] = value;
         ++k;
     }
-    const double texels = static_cast<double>(MapOptions{}.size) * MapOptions{}.size;  // the default size
+    const RenderOptions defaults;
+    const double side = frameMapSize(defaults.width, defaults.height);  // the default size (size 0: the frame's)
+    const double texels = side * side;
     EXPECT_EQ(bytes[0], 4.0 * texels);
     EXPECT_EQ(bytes[1], 1.0 * texels);
 }

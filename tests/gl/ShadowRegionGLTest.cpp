@@ -256,11 +256,13 @@ TEST_F(ShadowRegionGLTest, CascadesDrawOnlyWhatTheirLookupsRead) {
         const Scene scene = loadSceneFile(scenes / c.scene, c.set);
         expectSameFrame(scene, what);
     }
-    // As shipped, the street's cascades draw 0.15, 0.26, 0.08 and 0.02 of
-    // their squares (measured, at 320x240 as at 800x600: the fit does not
-    // depend on the frame's size). Bounds: the farthest under a tenth, the
-    // others under half, which the boxes cut in the light's view alone
-    // (0.51, 0.32, 0.17, 0.03) would fail; off, every texel (1).
+    // As shipped, the street's cascades draw 0.15, 0.26, 0.19 and 0.54 of
+    // their windows (measured, at 320x240 as at 800x600: the fit does not
+    // depend on the frame's size). The last slice's window is the street's
+    // own width across the light (core/LightCamera: receiversWindow), most
+    // of which it reads; the nearer ones' are their spheres', of which the
+    // lookups read little. Bounds: the three nearer under 0.3, the last
+    // under 0.6; off, every texel (1).
     Renderer renderer(test::glContext());
     const Scene street = loadSceneFile(scenes / "long-view.json");
     renderer.upload(street);
@@ -275,9 +277,9 @@ TEST_F(ShadowRegionGLTest, CascadesDrawOnlyWhatTheirLookupsRead) {
             if (!regions)
                 EXPECT_EQ(value, 1.0) << name << ": off, every texel";
             else if (name.find("cascade3.") != std::string::npos)
-                EXPECT_LT(value, 0.1) << name;
+                EXPECT_LT(value, 0.6) << name;
             else
-                EXPECT_LT(value, 0.5) << name;
+                EXPECT_LT(value, 0.3) << name;
         }
         EXPECT_EQ(counted, 4) << "one share per cascade";
     }

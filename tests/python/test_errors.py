@@ -35,7 +35,7 @@ CASES = [
     ("bench-past-gpu", lambda: sl.bench(None, 100000, 24, frames=1, warmup=0), r"^width 100000: exceeds this GPU's limit"),
     # Overrides: keys are paths without '=' or NUL, values JSON; messages name the key, not a JSON value's colons.
     ("override-object-value", lambda: D({"lights[0].shadow.map": {"size": 7}}),
-     r"^overrides\[lights\[0\]\.shadow\.map\]: lights\[0\]\.shadow\.map\.size: expected an integer in 16\.\.16384, got 7$"),
+     r"^overrides\[lights\[0\]\.shadow\.map\]: lights\[0\]\.shadow\.map\.size: map: size: expected 0 \(follow the frame\) or 16\.\.16384 texels, got 7$"),
     ("override-list-value", lambda: D({"lights[0].color": [1, {"a": 2}, 3]}), r"^overrides\[lights\[0\]\.color\]: lights\[0\]\.color\[1\]: expected a number"),
     ("override-key-with-equals", lambda: D({"lights[0].intensity=5": 1}), r"^overrides\[lights\[0\]\.intensity=5\]: a key may not contain '=' or NUL$"),
     ("override-key-not-str", lambda: D({3: 1}), r"^overrides: keys are scene paths as strings"),

@@ -50,7 +50,7 @@ def test_arrays_own_their_memory():
 
 
 def test_bad_input_is_a_value_error_naming_the_key():
-    with pytest.raises(ValueError, match=r"^overrides\[lights\[0\]\.shadow\.map\.size\]: lights\[0\]\.shadow\.map\.size: expected an integer in 16\.\.16384, got 7$"):
+    with pytest.raises(ValueError, match=r"^overrides\[lights\[0\]\.shadow\.map\.size\]: lights\[0\]\.shadow\.map\.size: map: size: expected 0 \(follow the frame\) or 16\.\.16384 texels, got 7$"):
         shadowlab.load_scene(SCENE, {"lights[0].shadow.map.size": 7})
     with pytest.raises(ValueError, match="file not found"):
         shadowlab.load_scene(os.path.join(SOURCE, "scenes", "no-such-scene.json"))
@@ -71,7 +71,7 @@ def test_techniques_table():
     tables = shadowlab.techniques()
     assert list(tables)[:2] == ["none", "map"]
     size = tables["map"]["options"]["size"]
-    assert size["default"] == "768" and size["unit"] == "texels" and size["range"] == "16..16384"
+    assert size["default"] == "0" and size["unit"] == "texels" and size["range"] == "0..16384"
     assert '"hardware"' in tables["map"]["options"]["filter"]["range"]
 
 
@@ -210,7 +210,7 @@ def test_bench_rounds_keep_each_rows_fastest_round():
 
 def test_bench_errors_name_the_argument(tmp_path):
     cases = [
-        (dict(vary={BENCH_VARY: [7]}), ValueError, r"^vary\[lights\[0\]\.shadow\.map\.size\]=7: lights\[0\]\.shadow\.map\.size: expected an integer in 16\.\.16384, got 7"),
+        (dict(vary={BENCH_VARY: [7]}), ValueError, r"^vary\[lights\[0\]\.shadow\.map\.size\]=7: lights\[0\]\.shadow\.map\.size: map: size: expected 0 \(follow the frame\) or 16\.\.16384 texels, got 7"),
         (dict(overrides={BENCH_VARY: 7}), ValueError, r"^overrides\[lights\[0\]\.shadow\.map\.size\]: .*got 7"),
         (dict(overrides={BENCH_VARY: 256}, vary={BENCH_VARY: [128, 512]}), ValueError, r"is also set by overrides\["),
         (dict(vary={BENCH_VARY: []}), ValueError, r"^vary\[lights\[0\]\.shadow\.map\.size\]: no values$"),

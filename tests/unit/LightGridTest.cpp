@@ -143,5 +143,5 @@ INSTANTIATE_TEST_SUITE_P(
         SceneErrorCase{"TemplateKeyframes", withGrid(R"({"light": {"path": {"type": "keyframes", "times": [0], "positions": [[0, 1, 0]]}}})"), {},
                        "lightGrid.light.path: expected a path of type \"sine\""},
         SceneErrorCase{"TemplateShadowSet", withGrid(R"({"count": 2})"), {"lightGrid.light.shadow.map.size=7"},
-                       "--set lightGrid.light.shadow.map.size=7: lightGrid.light.shadow.map.size: expected"}),
+                       "--set lightGrid.light.shadow.map.size=7: lightGrid.light.shadow.map.size: map: size: expected 0 (follow the frame) or 16..16384 texels, got 7"}),
     sceneErrorCaseName);

@@ -70,6 +70,7 @@ public:
         const std::uint64_t inputs = mapInputs(frame, lights);
         cached_ = frame.cacheShadowMaps && drawnFrom_ && *drawnFrom_ == inputs && lights_.size() == lights.size();
         noteHardPcss(host, frame, lights);
+        noteOpenCastersCulled(host, frame, lights);
         if (cached_) return;
         // The maps are refitted now and hold these inputs once a shadow pass
         // draws them (a frame lit by the reference's visibility draws none).
@@ -251,7 +252,6 @@ public:
     }
 
 private:
-    // The light's options with its preset, and lecture 000's map of the window's size.
     // PCSS on a light of size 0 stays hard: said every frame, kept maps or not.
     static void noteHardPcss(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) {
         for (int index : lights) {
@@ -262,9 +262,36 @@ private:
         }
     }
 
+    // cullFront draws back faces only; an open caster (a plane, a ceiling,
+    // any mesh that is not closed) has no back face behind the front the
+    // light sees, so its shadow is lost there: said every frame, by name.
+    static void noteOpenCastersCulled(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) {
+        for (int index : lights) {
+            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+            if (!effective(light).cullFront) continue;
+            std::string names;
+            int open = 0;
+            for (std::size_t i = 0; i < frame.items.size(); ++i) {
+                if (!frame.items[i].castsShadows || frame.itemWinding[i] != 0) continue;
+                if (++open > 4) continue;
+                const int node = frame.items[i].node;
+                const std::string name = node >= 0 && static_cast<std::size_t>(node) < frame.scene.nodes.size() ? frame.scene.nodes[static_cast<std::size_t>(node)].name : "";
+                names += (names.empty() ? "" : ", ") + (name.empty() ? "nodes[" + std::to_string(node) + "]" : "'" + name + "'");
+            }
+            if (open == 0) continue;
+            host.note("lights[" + std::to_string(index) + "].shadow.map.cullFront: " + std::to_string(open) + " open caster(s) (" + names +
+                      (open > 4 ? ", and " + std::to_string(open - 4) + " more" : "") +
+                      ") have no back face where the light sees their front, so they cast no shadow there (set cullFront false, or close their meshes)");
+        }
+    }
+
+    // The light's options, and a size that follows the frame (size 0) resolved.
     static MapOptions effectiveHere(TechniqueHost& host, const FrameInfo& frame, const Light& light) {
         MapOptions o = effective(light);
-        if (isLecture2D(o, light)) o.size = std::clamp(std::max(frame.viewport.x, frame.viewport.y), 16, host.glInfo().maxTextureSize);
+        // size 0: the frame's (lecture 000: the window's own size; otherwise frameMapSize's texels per pixel).
+        if (o.size == 0)
+            o.size = std::clamp(isLecture2D(o, light) ? std::max(frame.viewport.x, frame.viewport.y) : frameMapSize(frame.viewport.x, frame.viewport.y), 16,
+                                host.glInfo().maxTextureSize);
         return o;
     }
 
@@ -297,6 +324,9 @@ TechniqueEntry mapTechnique() {
     entry.unsupported = &map::unsupported;
     entry.vertexShaderFile = "shadow_map_vertex.glsl";
     entry.baseline = &plainestMap;
+    entry.resolve = [](std::any& options, const std::vector<std::string>& written, const Light& light) {
+        options = withPreset(std::any_cast<const MapOptions&>(options), light.type == LightType::Point, written);
+    };
     return entry;
 }
 

@@ -75,8 +75,10 @@ void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
         // double; the cascades share a light view (MAP_CASCADE_AXES), so the
         // rest is 0 (CascadeTest.UnwarpedCascadesShareOneLightViewUpToScaleAndOffset).
         const glm::dmat4 fromFirst = glm::dmat4(u.cascadeShadowFromWorld[c]) * worldFromFirst;
-        u.cascadeScale[c] = glm::vec4(fromFirst[0][0], fromFirst[1][1], fromFirst[2][2], 0.0f);
-        u.cascadeOffset[c] = glm::vec4(glm::dvec3(fromFirst[3]), p.cascades[c].texelSize);
+        // w: its texel along the light view's y (offset's w: along x; shadow_map_2d.glsl weighs them by the normal).
+        const glm::vec2 axes = p.cascades[c].texelAxes.x > 0.0f ? p.cascades[c].texelAxes : glm::vec2(p.cascades[c].texelSize);
+        u.cascadeScale[c] = glm::vec4(fromFirst[0][0], fromFirst[1][1], fromFirst[2][2], axes.y);
+        u.cascadeOffset[c] = glm::vec4(glm::dvec3(fromFirst[3]), axes.x);
         u.cascadeFar[c / 4][static_cast<int>(c % 4)] = p.cascadeFar[c];
         u.cascadeTexel[c / 4][static_cast<int>(c % 4)] = p.cascades[c].texelSize;
     }

@@ -44,6 +44,18 @@ float stableReach(const Camera& camera, const FitInput& in) {
     return std::clamp(stepped, camera.nearPlane * 2.0f, camera.farPlane);
 }
 
+// Where the slices start: the nearest receiver the view may see
+// (viewNearest: its box), not the camera's near plane, so that the first
+// slice holds receivers (a near plane of 0.05 m over receivers from 5.8 m
+// on left slice 0 empty and the whole frame on slice 1's coarse texels);
+// at most half the splits' far end. Stabilised: stepped down to a power
+// of 2^(1/4), so that it stays put while the camera moves (as stableReach).
+float cascadeStart(const Camera& camera, const FitInput& in, bool stabilize, float far) {
+    float start = std::min(viewNearest(camera, in), 0.5f * far);
+    if (stabilize && start > camera.nearPlane) start = std::exp2(std::floor(4.0f * std::log2(start)) / 4.0f);
+    return std::max(start, camera.nearPlane);
+}
+
 // The view a warped map is warped for: the frame's camera and warpNear.
 LightWarp lightWarp(const FrameInfo& frame, const MapOptions& o) {
     const glm::mat4 worldFromView = glm::inverse(frame.viewFromWorld);
@@ -57,10 +69,11 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
     // that changes by steps (stableReach); tight ones at the farthest
     // receiver it sees. (Fit "sdsm" splits over the depths the camera
     // sees, on the GPU: shadow_map_sdsm_cascades.comp.)
-    const float near = camera.nearPlane;
     const float far = p.options.stabilize ? stableReach(camera, in) : viewReach(camera, in);
     std::string problem;  // checked when the scene was read (the registry's unsupported())
     const std::vector<float> given = parseSplits(p.options, problem);
+    const float near = cascadeStart(camera, in, p.options.stabilize, given.empty() ? far : given.front());
+    p.cascadeStart = near;
     p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
     p.cascades.clear();
     // A slice's lookups reach into the next cascade over its far blend
@@ -113,7 +126,7 @@ void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame,
     const FitInput in = fitInputOf(p, frame);
     const Camera& camera = frame.scene.camera;
     const float aspect = aspectOf(frame);
-    const float near = camera.nearPlane;
+    const float near = p.cascadeStart;  // fitCascades' (the GPU's camera.x: gpuFitInput)
     // The GPU splits over seenFar when it is known (its far end a frame
     // before), and its last slice ends anywhere up to the reach; not known,
     // over this frame's far end, anywhere up to the reach (the splits above).
@@ -217,18 +230,20 @@ GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& 
     const Camera& camera = frame.scene.camera;
     for (const Bounds& b : frame.itemBounds) g.scene.add(b);
     const float aspect = aspectOf(frame);
-    g.camera = glm::vec4(camera.nearPlane, camera.farPlane, std::tan(glm::radians(camera.fovYDeg) * 0.5f), aspect);
+    g.reach = p.options.stabilize ? stableReach(camera, in) : viewReach(camera, in);
+    // The splits start where the receivers in view may (cascadeStart), as the CPU's do.
+    std::string problem;  // checked when the scene was read
+    g.given = parseSplits(p.options, problem);
+    g.camera = glm::vec4(cascadeStart(camera, in, p.options.stabilize, g.given.empty() ? g.reach : g.given.front()), camera.farPlane, std::tan(glm::radians(camera.fovYDeg) * 0.5f), aspect);
     g.eye = camera.position;
     g.forward = glm::normalize(camera.target - camera.position);
     const glm::mat4 view = camera.viewFromWorld();
     g.right = glm::vec3(view[0][0], view[1][0], view[2][0]);
     g.up = glm::vec3(view[0][1], view[1][1], view[2][1]);
     g.stabilize = p.options.stabilize;
-    g.reach = g.stabilize ? stableReach(camera, in) : viewReach(camera, in);
+    if (g.stabilize) g.receiversWindow = receiversWindow(in, g.lightView, g.size / std::max(g.size - 2.0f * g.padding, 1.0f));
     g.lambda = p.options.cascadeLambda;
     g.blend = p.options.cascadeBlend;
-    std::string problem;  // checked when the scene was read
-    g.given = parseSplits(p.options, problem);
     if (g.stabilize) return g;
     // Not stabilised: each slice fitted as fitDirectional fits one map, in
     // the light's view (warped: the turned view of cascade 0's CPU camera,

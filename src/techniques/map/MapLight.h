@@ -59,6 +59,7 @@ struct MapLight {
     // a cascade by the depth along it).
     std::vector<LightCamera> cascades;
     std::vector<float> cascadeFar;
+    float cascadeStart = 0.0f;  ///< where the first slice starts along the view (the nearest receiver in view; MapCameras: cascadeStart)
     glm::vec3 viewForward{0.0f, 0.0f, -1.0f};
     /// Fit "sdsm" (fitted on the GPU: MapSdsm): the buffer its last
     /// shadow pass fitted the cameras into (an SdsmFit, kept by the
@@ -109,6 +110,7 @@ struct MapLight {
         camera = old.camera;
         cascades = old.cascades;
         cascadeFar = old.cascadeFar;
+        cascadeStart = old.cascadeStart;
         viewForward = old.viewForward;
         gpuFit = old.gpuFit;
     }

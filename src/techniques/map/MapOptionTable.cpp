@@ -29,7 +29,8 @@ std::string filterDoc() {
 const OptionTable& mapOptionTable() {
     static const OptionTable table =
         OptionTableFor<MapOptions>("map")
-            .integer(&MapOptions::size, "size", 16, 16384, "texels", "side of the square shadow map (a cube map: of each face); 768 by default, which keeps every bundled scene but the 400 m field and the 300 m street (which ship cascades) within 0.05 % misclassified at 800x600; larger views want more (glass-panel at 1920x1080 wants 1024; docs/techniques.md)")
+            .integer(&MapOptions::size, "size", 0, 16384, "texels",
+                     "side of the square shadow map (a cube map: of each face), 16..16384; 0 (the default): follows the frame, 0.96 texels per pixel of its larger side and at least 768 (768 up to 800 pixels across, 1856 at 1920x1080, at most 4096), which keeps every bundled scene but the 400 m field and the 300 m street (which ship cascades) within 0.05 % misclassified (docs/techniques.md)")
             .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
                     "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
@@ -59,7 +60,7 @@ const OptionTable& mapOptionTable() {
                     "what a shadowed point keeps of the light (lecture 002 listing 8.4: 0.6); compare judges the shadow test, not this look")
             .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (lecture 002 exercise 8.6.1-4; docs/techniques.md says what it does)")
             .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl", "lecture-000"},
-                    "replace the settings with the lecture's or LearnOpenGL's (docs/techniques.md); lecture-000: a point light through lecture 000's one 60-degree map")
+                    "the lecture's or LearnOpenGL's settings as the defaults of every option the scene does not write (docs/techniques.md); lecture-000: a point light through lecture 000's one 60-degree map")
             .integer(&MapOptions::cascades, "cascades", 1, 8, "maps",
                      "directional lights: cascaded shadow maps, one per slice of the view's depth (layers of one array); 1: one map")
             .number(&MapOptions::cascadeLambda, "cascadeLambda", 0.0, 1.0, "0 uniform .. 1 logarithmic",
@@ -95,6 +96,7 @@ namespace map {
 
 std::string unsupported(const Light& light) {
     const MapOptions& o = light.shadow.get<MapOptions>();
+    if (o.size > 0 && o.size < 16) return "map: size: expected 0 (follow the frame) or 16..16384 texels, got " + std::to_string(o.size);
     if (isCube(light)) {
         if (o.filter == MapFilter::Dither4)
             return std::string("map: filter \"dither4\" is for 2D maps (directional and spot lights); a point light's cube takes none, hardware, grid, poisson or pcf20");
@@ -128,16 +130,18 @@ std::string unsupported(const Light& light) {
                    "\": a moment map is filtered by its blur and bilinear lookups; filter must be \"hardware\" (the default)";
         if (o.preset != MapPreset::Default) return std::string("map: preset: moment maps do not combine with a preset; use preset \"default\"");
     }
-    if (o.fit == MapFit::Sdsm && o.preset == MapPreset::Default) {
+    if (o.fit == MapFit::Sdsm) {
         if (light.type != LightType::Directional)
             return std::string("map: fit \"sdsm\" is for directional lights (a spot or point light takes \"tight\" or \"scene\")");
+        if (o.preset != MapPreset::Default)
+            return std::string("map: fit \"sdsm\" does not combine with a preset (its fit is the preset's own); use fit \"tight\" or preset \"default\"");
     }
     if (o.warp == MapWarp::Lispsm) {
         if (light.type != LightType::Directional)
             return std::string("map: warp \"lispsm\" is for directional lights (a spot's map is a perspective already; a point light's cube takes \"none\")");
         if (o.cascades > 1 && o.stabilize)
             return std::string("map: warp \"lispsm\" with cascades takes stabilize false (a warped map cannot be snapped to whole texels); or use warp \"none\"");
-        if (o.preset != MapPreset::Default) return std::string("map: preset: the presets' fixed cameras take no warp; use warp \"none\"");
+        if (o.preset != MapPreset::Default) return std::string("map: warp \"lispsm\" does not combine with a preset (the presets' cameras are their own); use warp \"none\" or preset \"default\"");
         if (o.filter == MapFilter::Pcss)
             return std::string("map: filter \"pcss\" takes distances along the light from an unwarped map; with warp \"lispsm\" use another filter");
         if (o.representation != MapRepresentation::Depth)
@@ -147,7 +151,7 @@ std::string unsupported(const Light& light) {
         if (light.type != LightType::Directional)
             return std::string("map: cascades are for directional lights; a spot or point light takes one map (cascades 1)");
         if (o.preset != MapPreset::Default)
-            return std::string("map: preset: cascades do not combine with a preset (each preset is one map); use preset \"default\"");
+            return std::string("map: cascades do not combine with a preset (each preset is one map); use cascades 1 or preset \"default\"");
         if (o.fit == MapFit::Scene)
             return std::string("map: fit \"scene\": cascades fit each slice of the view; fit \"scene\" is one map around the whole scene");
         std::string problem;

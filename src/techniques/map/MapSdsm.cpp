@@ -197,6 +197,7 @@ void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const G
         if (!in.given.empty()) glProgramUniform1fv(id, 17, static_cast<GLsizei>(in.given.size()), in.given.data());
         glProgramUniform1i(id, 24, static_cast<GLint>(in.given.size()));
         glProgramUniform2f(id, 25, in.splitRange.x, in.splitRange.y);
+        if (in.stabilize) glProgramUniform4fv(id, 28, 1, &in.receiversWindow.x);
         if (!in.stabilize) {
             glProgramUniformMatrix4fv(id, 26, 1, GL_FALSE, &frame.clipFromView[0][0]);
             glProgramUniform1f(id, 27, in.blend);

@@ -50,6 +50,8 @@ struct GpuFitInput {
     float reach = 100.0f;   ///< where slices end at the farthest (stabilised: MapCameras' stableReach; else viewReach)
     float blend = 0.1f;     ///< cascades not stabilised: cascadeBlend (the slices' windows)
     float lambda = 0.75f;   ///< cascadeLambda
+    /// Stabilised cascades: the receivers' window in lightView (core/LightCamera: receiversWindow)
+    glm::vec4 receiversWindow{0.0f};
     std::vector<float> given;  ///< cascadeSplits (empty: by lambda)
     /// Cascades: the range the far end the slices are split over is
     /// clamped to (GpuFit::seenFar's both ends; no clamp before it is known).

@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <any>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -131,10 +132,12 @@ float reach(const MapOptions& o) {
     return filterInfo(o.filter).reach(o);
 }
 
-// The light's options with its preset applied (docs/techniques.md cites each value).
-MapOptions effective(const Light& light) {
-    MapOptions o = light.shadow.get<MapOptions>();
-    const bool cube = light.type == LightType::Point && o.preset != MapPreset::Lecture000;
+namespace {
+
+// Every field `o`'s preset sets, set (docs/techniques.md cites each value);
+// withPreset keeps the fields the scene wrote.
+MapOptions presetValues(MapOptions o, bool pointLight) {
+    const bool cube = pointLight && o.preset != MapPreset::Lecture000;
     if (cube && o.preset == MapPreset::Lecture) {
         // Lecture 001's cube: near 1, far 25 (cubeNearFar), no bias but a
         // constant one in world units (upload() turns it into stored depth),
@@ -170,12 +173,12 @@ MapOptions effective(const Light& light) {
     }
     if (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000) {
         // Lecture 000: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map
-        // of the window's size (prepare() sets it), the 4-sample dithered
-        // PCF; no normal offset, no constant bias.
+        // of the window's size (size 0: the frame's larger side), the
+        // 4-sample dithered PCF; no normal offset, no constant bias.
         presetBase(o);
+        o.size = 0;
         o.slopeBias = 2.0f;
         o.offsetUnits = 4.0f;
-        o.cullFront = light.shadow.get<MapOptions>().cullFront;  // 000 says nothing of it
         o.filter = MapFilter::Dither4;
         o.fit = MapFit::Scene;
         // Lecture 002 listing 8.4: a shadowed point keeps 60 % (color *= 0.6).
@@ -191,6 +194,41 @@ MapOptions effective(const Light& light) {
     }
     return o;
 }
+
+} // namespace
+
+} // namespace shadowlab::map
+
+namespace shadowlab {
+
+int frameMapSize(int width, int height) {
+    const float want = kFrameMapTexelsPerPixel * static_cast<float>(std::max(width, height));
+    const int side = (static_cast<int>(std::ceil(want)) + 15) / 16 * 16;
+    return std::clamp(side, kFrameMapMinimum, kFrameMapMaximum);
+}
+
+MapOptions withPreset(const MapOptions& o, bool pointLight, const std::vector<std::string>& written) {
+    if (o.preset == MapPreset::Default) return o;
+    std::any out = map::presetValues(o, pointLight);
+    const std::any given = o;
+    const OptionTable& table = mapOptionTable();
+    for (const std::string& key : written) {
+        const OptionField* f = table.find(key);
+        if (!f || key == "preset") continue;
+        if (f->kind == OptionKind::Text)
+            f->setText(out, f->getText(given));
+        else
+            f->set(out, f->get(given));
+    }
+    return std::any_cast<MapOptions>(out);
+}
+
+} // namespace shadowlab
+
+namespace shadowlab::map {
+
+// The light's options: its preset was resolved when the scene was read (withPreset).
+MapOptions effective(const Light& light) { return light.shadow.get<MapOptions>(); }
 
 // LearnOpenGL's light camera: lookAt((-2, 4, -1), origin, +Y) with
 // ortho(-10, 10, -10, 10, 1, 7.5). Its light position is minus the light's

@@ -13,7 +13,7 @@
 
 namespace shadowlab::map {
 
-/// The light's options with its preset applied (docs/techniques.md cites each value).
+/// The light's options (its preset was resolved as the scene was read: withPreset).
 MapOptions effective(const Light& light);
 
 /// A point light's map is a cube unless preset lecture-000 asks for 000's single map.

@@ -80,6 +80,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.presetBias = !o.atlas && usesPresetBias(o, v.cube);
     v.momentsFromDepth = !v.cube && !o.atlas && map::momentsFromDepth(o);
     v.layerView = map::layerView(o, v.cube, v.cascades);
+    v.mipmaps = !v.cube && !o.atlas && o.mipmaps && v.representation == MapRepresentation::Depth && !v.presetBias;
     return v;
 }
 
@@ -105,6 +106,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_PRESET_BIAS", presetBias)
         .set("MAP_MOMENTS_FROM_DEPTH", momentsFromDepth)
         .set("MAP_LAYER_VIEW", layerView)
+        .set("MAP_MIPMAPS", mipmaps)
         .str();
 }
 

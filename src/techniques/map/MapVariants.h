@@ -60,6 +60,10 @@ struct LightPassVariant {
     bool presetBias = false;
     /// The map through a 2D view of its layer (MapSettings: layerView)
     bool layerView = false;
+    /// A mipmapped depth map (2D): the normal and receiver-plane offsets
+    /// scaled per fragment to the texel of the level the lookup reads
+    /// (2^level texels of level 0), against the acne of averaged depths
+    bool mipmaps = false;
     /// A moment map whose moments the light pass takes from the depth
     /// (MapArrays.h: momentsFromDepth), not from a texture of moments
     bool momentsFromDepth = false;
