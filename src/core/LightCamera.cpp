@@ -369,6 +369,43 @@ glm::vec4 receiversWindow(const FitInput& in, const glm::mat4& lightView, float 
     return out;
 }
 
+namespace {
+
+// The nearest distance along a camera's axis (-z of `view`) of the part of
+// world box `box` inside the pyramid |x| <= tanX (-z), |y| <= tanY (-z) of
+// that view; infinity when none of it is inside. Exact: a vertex of the
+// box cut by the pyramid is a vertex of a box face clipped by the
+// pyramid's four sides (or the apex, inside the box).
+float nearestInPyramid(const Bounds& box, const glm::mat4& view, float tanX, float tanY) {
+    if (box.distanceTo(glm::vec3(glm::inverse(view)[3])) <= 0.0f) return 0.0f;  // the apex is inside
+    std::array<glm::vec3, 8> corner;
+    for (int c = 0; c < 8; ++c) corner[static_cast<std::size_t>(c)] = glm::vec3(view * glm::vec4(box.corner(c), 1.0f));
+    static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+    // Inside where side(p, k) <= 0: +-x or +-y against tanHalf (-z).
+    const auto side = [tanX, tanY](const glm::vec3& p, int k) { return k < 2 ? (k == 0 ? p.x : -p.x) + tanX * p.z : (k == 2 ? p.y : -p.y) + tanY * p.z; };
+    float nearest = std::numeric_limits<float>::infinity();
+    std::vector<glm::vec3> polygon, clipped;
+    for (const auto& face : kFaces) {
+        polygon.assign({corner[static_cast<std::size_t>(face[0])], corner[static_cast<std::size_t>(face[1])], corner[static_cast<std::size_t>(face[2])],
+                        corner[static_cast<std::size_t>(face[3])]});
+        for (int k = 0; k < 4 && !polygon.empty(); ++k) {  // Sutherland-Hodgman against side k
+            clipped.clear();
+            for (std::size_t v = 0; v < polygon.size(); ++v) {
+                const glm::vec3 &a = polygon[v], &b = polygon[(v + 1) % polygon.size()];
+                const float fa = side(a, k), fb = side(b, k);
+                if (fa <= 0.0f) clipped.push_back(a);
+                if ((fa < 0.0f) != (fb < 0.0f) && fa != fb) clipped.push_back(a + (b - a) * (fa / (fa - fb)));
+            }
+            polygon.swap(clipped);
+        }
+        for (const glm::vec3& p : polygon)
+            if (p.z < 0.0f) nearest = std::min(nearest, -p.z);
+    }
+    return nearest;
+}
+
+} // namespace
+
 float viewNearest(const Camera& camera, const FitInput& in) {
     const glm::mat4 view = camera.viewFromWorld();
     float nearest = camera.farPlane;
@@ -504,43 +541,6 @@ LightCamera fitCascade(const glm::vec3& direction, const Camera& camera, float a
     return cam;
 }
 
-namespace {
-
-// The nearest distance along a camera's axis (-z of `view`) of the part of
-// world box `box` inside the square pyramid |x|, |y| <= tanHalf (-z) of
-// that view; infinity when none of it is inside. Exact: a vertex of the
-// box cut by the pyramid is a vertex of a box face clipped by the
-// pyramid's four sides (or the apex, inside the box).
-float nearestInPyramid(const Bounds& box, const glm::mat4& view, float tanHalf) {
-    if (box.distanceTo(glm::vec3(glm::inverse(view)[3])) <= 0.0f) return 0.0f;  // the apex is inside
-    std::array<glm::vec3, 8> corner;
-    for (int c = 0; c < 8; ++c) corner[static_cast<std::size_t>(c)] = glm::vec3(view * glm::vec4(box.corner(c), 1.0f));
-    static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
-    // Inside where side(p, k) <= 0: +-x or +-y against tanHalf (-z).
-    const auto side = [tanHalf](const glm::vec3& p, int k) { return (k < 2 ? (k == 0 ? p.x : -p.x) : (k == 2 ? p.y : -p.y)) + tanHalf * p.z; };
-    float nearest = std::numeric_limits<float>::infinity();
-    std::vector<glm::vec3> polygon, clipped;
-    for (const auto& face : kFaces) {
-        polygon.assign({corner[static_cast<std::size_t>(face[0])], corner[static_cast<std::size_t>(face[1])], corner[static_cast<std::size_t>(face[2])],
-                        corner[static_cast<std::size_t>(face[3])]});
-        for (int k = 0; k < 4 && !polygon.empty(); ++k) {  // Sutherland-Hodgman against side k
-            clipped.clear();
-            for (std::size_t v = 0; v < polygon.size(); ++v) {
-                const glm::vec3 &a = polygon[v], &b = polygon[(v + 1) % polygon.size()];
-                const float fa = side(a, k), fb = side(b, k);
-                if (fa <= 0.0f) clipped.push_back(a);
-                if ((fa < 0.0f) != (fb < 0.0f) && fa != fb) clipped.push_back(a + (b - a) * (fa / (fa - fb)));
-            }
-            polygon.swap(clipped);
-        }
-        for (const glm::vec3& p : polygon)
-            if (p.z < 0.0f) nearest = std::min(nearest, -p.z);
-    }
-    return nearest;
-}
-
-} // namespace
-
 LightCamera fitSpot(const Light& light, LightFit fit, const FitInput& in) {
     LightCamera cam;
     const glm::vec3 axis = glm::normalize(light.direction);
@@ -574,7 +574,7 @@ LightCamera fitSpot(const Light& light, LightFit fit, const FitInput& in) {
     const glm::mat4 probe = glm::perspective(fovY, 1.0f, far * 1e-4f, far) * cam.viewFromWorld;
     for (std::size_t i = 0; i < in.items.size(); ++i) {
         if (!cam.casts[i] || !mayIntersect(probe, in.itemBounds[i])) continue;
-        near = std::min(near, nearestInPyramid(in.itemBounds[i], cam.viewFromWorld, tanHalf));
+        near = std::min(near, nearestInPyramid(in.itemBounds[i], cam.viewFromWorld, tanHalf, tanHalf));
     }
     near = std::clamp(near * 0.99f, far * 1e-4f, far * 0.999f);
     cam.nearPlane = near;

@@ -19,15 +19,31 @@
 //   screen: the filter's footprint in texels times the scene's p95 texel
 //   footprint in pixels (at least 1 pixel, at most 64), where a soft edge
 //   is meant to differ from the hard truth.
+// - Exempt beyond the issue's list, said in its closing note: fit "scene"
+//   (lecture 002's box around the whole scene, kept as the lecture draws
+//   it: its texels are as coarse as the scene is wide; 0.05-0.08 % here),
+//   cullFront where the frame's notes name open casters it cannot draw (a
+//   plane or a disc has no back face: its shadow is lost), and mipmaps
+//   (lecture 002 exercise 8.6.1-4: averaged depths are not a prefiltered
+//   shadow; a coarse level blends a caster's edge with the depth behind
+//   it, and shadows shrink by its texels, 0.05-1.7 % false lit here; the
+//   acne of an unscaled bias is gone, MapDefectsGLTest).
 // - A value the scene refuses (a cube's dither4, cascades on a spot) is
 //   counted as refused: the loader's one-line error is the answer.
 // - Scenes that ship cascades (cascades-field, long-view) are not judged
-//   with fewer cascades or a smaller map than they ship, nor with fit
-//   "scene" (one map over a 400 m field misclassifies 1.1 %: why they ship
-//   cascades).
+//   with fewer cascades, a smaller map or another cascadeLambda than they
+//   ship, nor with fit "scene" (one map over a 400 m field misclassifies
+//   1.1 %; uniform splits give its first slice 112 m, logarithmic ones its
+//   last 395 m: why they ship four cascades at lambda 0.9).
+//
+// At 800x600 (SHADOWLAB_MATRIX_SIZE=800x600) the bar is missed on two
+// kinds of row, measured 2026-12-07 and left in the issue: the bunny's
+// stabilised cascades (2-8: 0.09-0.14 %; one tight map 0.024 %: the
+// slices' spheres are coarse on a scene 8 m across) and glass-panel at
+// 512^2 (0.061 %). CI's 320x240 holds them (0.046 % the worst).
 //
 // CI runs it at 320x240 (SHADOWLAB_MATRIX_SIZE=WxH for another size, e.g.
-// 800x600: about ten minutes here); SHADOWLAB_MATRIX_OUT=FILE writes every
+// 800x600: two and a half minutes here); SHADOWLAB_MATRIX_OUT=FILE writes every
 // row as a Markdown table.
 #include "CheckerScenes.h"
 #include "Comparisons.h"
@@ -113,6 +129,8 @@ bool heldAtDefault(const std::string& key) {
 // Why a variant is exempt from the bar, or "".
 std::string exemptWhy(const MapOptions& o) {
     if (o.preset != MapPreset::Default) return "preset: copies a tutorial's flaws";
+    if (o.fit == MapFit::Scene) return "fit scene: the lecture's box around the whole scene";
+    if (o.mipmaps) return "mipmaps: averaged depths blur a caster's edge into what lies behind it";
     if (o.format == MapFormat::R8) return "r8: 8 bits of depth";
     if (o.representation != MapRepresentation::Depth && o.momentFormat == MapMomentFormat::Rgba16f) return "16-bit moments";
     return "";
@@ -180,8 +198,19 @@ TEST_F(MapMatrixGLTest, EveryOptionOneAtATimeHoldsTheBar) {
                 const MapOptions o = scene.lights[0].shadow.get<MapOptions>();
                 if (table.valueText(f, std::any(o)) == table.valueText(f, std::any(shipped)) && f.key != "preset") continue;  // the shipped row
                 row.exempt = exemptWhy(o);
-                if (shipped.cascades > 1 && (o.cascades < shipped.cascades || (o.size != 0 && o.size < shipped.size) || o.fit == MapFit::Scene))
-                    row.exempt = "the scene ships " + std::to_string(shipped.cascades) + " cascades of " + std::to_string(shipped.size) + "^2";
+                if (shipped.cascades > 1 && (o.cascades < shipped.cascades || (o.size != 0 && o.size < shipped.size) || o.fit == MapFit::Scene ||
+                                             o.cascadeLambda != shipped.cascadeLambda))
+                    row.exempt = "the scene ships " + std::to_string(shipped.cascades) + " cascades of " + std::to_string(shipped.size) + "^2, lambda " +
+                                 table.valueText(*table.find("cascadeLambda"), std::any(shipped));
+                if (o.cullFront) {
+                    // The frame says which open casters it cannot draw (cullFront's note): the user is told.
+                    RenderOptions look;
+                    look.width = width;
+                    look.height = height;
+                    const FrameStats stats = renderer.render(scene, look);
+                    for (const std::string& note : stats.notes)
+                        if (note.find("cullFront: ") != std::string::npos) row.exempt = "cullFront with open casters, which the frame's notes name";
+                }
                 const float reach = softeningTexels(o);
                 options.edgeBand = std::clamp(static_cast<int>(std::ceil(reach * p95)), 1, 64);
                 row.band = options.edgeBand;
