@@ -359,7 +359,34 @@ glm::vec4 receiversWindow(const FitInput& in, const glm::mat4& lightView, float 
     for (std::size_t i = 0; i < in.items.size(); ++i)
         if (in.items[i].receivesShadows) receivers.add(in.itemBounds[i]);
     if (receivers.empty()) return glm::vec4(0.0f);
-    const Bounds seen = receivers.transformed(lightView);
+    // The casters that can shadow a receiver: not a plane with every
+    // receiver on its lit side or in it (a ground under the scene).
+    const glm::vec3 towards = glm::vec3(lightView[0][2], lightView[1][2], lightView[2][2]);  // the view's +z: towards the light
+    Bounds casters;
+    for (std::size_t i = 0; i < in.items.size(); ++i) {
+        if (!in.items[i].castsShadows) continue;
+        if (i < in.itemPlanes.size() && in.itemPlanes[i]) {
+            const glm::vec4 plane = *in.itemPlanes[i];
+            const float lit = glm::dot(glm::vec3(plane), towards) >= 0.0f ? 1.0f : -1.0f;  // the sign of the lit side
+            const float slack = 1e-4f * glm::length(receivers.size());
+            bool shadowsNone = true;
+            for (int c = 0; c < 8 && shadowsNone; ++c) shadowsNone = lit * (glm::dot(glm::vec3(plane), receivers.corner(c)) + plane.w) >= -slack;
+            if (shadowsNone) continue;
+        }
+        casters.add(in.itemBounds[i]);
+    }
+    // Texels off every caster's footprint across the light are lit, and a
+    // lookup past the window reads the lit border: the window need only
+    // hold the receivers under the casters (a 1.5 m bunny on an 8 m
+    // ground: the bunny's footprint).
+    Bounds seen = receivers.transformed(lightView);
+    if (casters.empty()) return glm::vec4(0.0f);
+    const Bounds shadowing = casters.transformed(lightView);
+    for (int a = 0; a < 2; ++a) {
+        seen.lo[a] = std::max(seen.lo[a], shadowing.lo[a]);
+        seen.hi[a] = std::min(seen.hi[a], shadowing.hi[a]);
+        if (!(seen.lo[a] <= seen.hi[a])) return glm::vec4(0.0f);  // no caster over any receiver: the sphere's window
+    }
     glm::vec4 out(0.0f);
     for (int a = 0; a < 2; ++a) {
         const float want = 0.5f * (seen.hi[a] - seen.lo[a]) * grow;

@@ -183,10 +183,12 @@ std::vector<float> cascadeSplits(float near, float far, int count, float lambda,
 /// far plane and at least just past its near one.
 float viewReach(const Camera& camera, const FitInput& in);
 /// Stabilised cascades: the box of every receiver (the scene's, fixed as
-/// the camera moves) in light view `lightView`: per axis its half width
-/// times `grow` (the filter's padding) rounded up to a power of 2^(1/8),
-/// so that receivers that move change it by steps (xy), and its centre
-/// (zw); all 0 without receivers. fitCascade (and the GPU's fit) take it
+/// the camera moves) in light view `lightView`, cut across the light to
+/// the box of the casters that can shadow one (a plane with every receiver
+/// on its lit side cannot): per axis its half width times `grow` (the
+/// filter's padding) rounded up to a power of 2^(1/8), so that items that
+/// move change it by steps (xy), and its centre (zw); all 0 without
+/// receivers or casters over them. fitCascade (and the GPU's fit) take it
 /// as the window on an axis where it is narrower than the slice's sphere.
 glm::vec4 receiversWindow(const FitInput& in, const glm::mat4& lightView, float grow);
 /// The nearest view depth (along the view, scene units) of the receivers'

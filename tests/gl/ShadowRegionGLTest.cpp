@@ -256,13 +256,13 @@ TEST_F(ShadowRegionGLTest, CascadesDrawOnlyWhatTheirLookupsRead) {
         const Scene scene = loadSceneFile(scenes / c.scene, c.set);
         expectSameFrame(scene, what);
     }
-    // As shipped, the street's cascades draw 0.15, 0.26, 0.19 and 0.54 of
+    // As shipped, the street's cascades draw 0.15, 0.26, 0.21 and 0.62 of
     // their windows (measured, at 320x240 as at 800x600: the fit does not
     // depend on the frame's size). The last slice's window is the street's
-    // own width across the light (core/LightCamera: receiversWindow), most
-    // of which it reads; the nearer ones' are their spheres', of which the
-    // lookups read little. Bounds: the three nearer under 0.3, the last
-    // under 0.6; off, every texel (1).
+    // width under its casters across the light (core/LightCamera:
+    // receiversWindow), most of which it reads; the nearer ones' are their
+    // spheres', of which the lookups read little. Bounds: the three nearer
+    // under 0.3, the last under 0.7; off, every texel (1).
     Renderer renderer(test::glContext());
     const Scene street = loadSceneFile(scenes / "long-view.json");
     renderer.upload(street);
@@ -277,7 +277,7 @@ TEST_F(ShadowRegionGLTest, CascadesDrawOnlyWhatTheirLookupsRead) {
             if (!regions)
                 EXPECT_EQ(value, 1.0) << name << ": off, every texel";
             else if (name.find("cascade3.") != std::string::npos)
-                EXPECT_LT(value, 0.6) << name;
+                EXPECT_LT(value, 0.7) << name;
             else
                 EXPECT_LT(value, 0.3) << name;
         }
