@@ -58,6 +58,10 @@ struct BenchOptions {
 constexpr std::size_t kMaxBenchRuns = 10000;
 /// At most this many rounds (BenchOptions::rounds).
 constexpr int kMaxBenchRounds = 100;
+/// At most this many timed frames a run (BenchOptions::frames), as the CLI's --frames.
+constexpr int kMaxBenchFrames = 100000;
+/// At most this many warm-up frames a run (BenchOptions::warmup), as the CLI's --warmup.
+constexpr int kMaxBenchWarmup = 1000;
 
 /// The image files a run's row names (paths relative to results.json); an
 /// empty name leaves its key out of the row.

@@ -19,8 +19,11 @@ void checkArgs(const BenchOptions& args) {
         throw Error("--width, --height: expected at least 1 pixel, got " + std::to_string(args.width) + "x" + std::to_string(args.height));
     if (args.softSamples < 1 || args.softSamples > kMaxSoftSamples)
         throw Error("--samples " + std::to_string(args.softSamples) + ": expected 1.." + std::to_string(kMaxSoftSamples));
-    if (args.frames < 1) throw Error("--frames " + std::to_string(args.frames) + ": expected at least 1");
-    if (args.warmup < 0) throw Error("--warmup " + std::to_string(args.warmup) + ": expected 0 or more");
+    // Bounded as the CLI's flags are (Python's bench ran 10^6 frames or 10^7 warm-ups for ever).
+    if (args.frames < 1 || args.frames > kMaxBenchFrames)
+        throw Error("--frames " + std::to_string(args.frames) + ": expected 1.." + std::to_string(kMaxBenchFrames));
+    if (args.warmup < 0 || args.warmup > kMaxBenchWarmup)
+        throw Error("--warmup " + std::to_string(args.warmup) + ": expected 0.." + std::to_string(kMaxBenchWarmup));
     if (args.rounds < 1 || args.rounds > kMaxBenchRounds)
         throw Error("--rounds " + std::to_string(args.rounds) + ": expected 1.." + std::to_string(kMaxBenchRounds));
     if (!std::isfinite(args.timeSeconds)) throw Error("--time: expected a finite number of seconds");

@@ -61,10 +61,17 @@ void checkGltfTypes(std::string_view text, const std::string& file) {
         }
     }
     if (const auto nodes = root.find("nodes"); nodes != root.end() && nodes->is_array()) {
+        const auto cameras = root.find("cameras");
+        const std::size_t cameraCount = cameras != root.end() && cameras->is_array() ? cameras->size() : 0;
         for (std::size_t i = 0; i < nodes->size(); ++i) {
             const json& n = (*nodes)[i];
             if (!n.is_object()) continue;
             const std::string at = file + ": nodes[" + std::to_string(i) + "]";
+            // A node's camera must exist (it loaded silently, pointing at nothing).
+            if (const auto camera = n.find("camera"); camera != n.end())
+                if (!camera->is_number_integer() || camera->get<long long>() < 0 || static_cast<std::size_t>(camera->get<long long>()) >= cameraCount)
+                    throw Error(at + ".camera: expected an index into cameras (" + (cameraCount ? "0.." + std::to_string(cameraCount - 1) : std::string("none")) +
+                                "), got " + text::clipMiddle(camera->dump(), 80));
             for (const auto& [key, count] : {std::pair{"matrix", 16u}, std::pair{"translation", 3u}, std::pair{"rotation", 4u}, std::pair{"scale", 3u}})
                 if (const auto value = n.find(key); value != n.end()) requireNumbers(*value, count, at + "." + key);
         }

@@ -33,6 +33,9 @@ CASES = [
      r"^soft_samples 65536 at 320x180: .* rays for each soft light's reference, more than the limit of 2\^31 \(lower soft_samples, width or height\)$"),
     ("bench-samples-huge", lambda: sl.bench(SCENE, 32, 24, soft_samples=10**6), r"^soft_samples 1000000: expected 1\.\.65536$"),
     ("bench-past-gpu", lambda: sl.bench(None, 100000, 24, frames=1, warmup=0), r"^width 100000: exceeds this GPU's limit"),
+    # frames and warmup: the CLI's ranges (issue 59: 10**6 frames ran for ever).
+    ("bench-frames-huge", lambda: sl.bench(SCENE, 32, 24, frames=10**6), r"^frames 1000000: expected 1\.\.100000$"),
+    ("bench-warmup-huge", lambda: sl.bench(SCENE, 32, 24, warmup=10**7), r"^warmup 10000000: expected 0\.\.1000$"),
     # Overrides: keys are paths without '=' or NUL, values JSON; messages name the key, not a JSON value's colons.
     ("override-object-value", lambda: D({"lights[0].shadow.map": {"size": 7}}),
      r"^overrides\[lights\[0\]\.shadow\.map\]: lights\[0\]\.shadow\.map\.size: map: size: expected 0 \(follow the frame\) or 16\.\.16384 texels, got 7$"),

@@ -738,6 +738,9 @@ TEST_F(MeshFileTest, GltfHeaderErrors) {
     expectError([&] { shadowlab::loadMeshFile(write("scene.gltf", triangleGltf(uri, R"("nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 5)"))); },
                 {"scene.gltf: scene: expected an index into scenes (0..0), got 5"});
     expectError([&] { shadowlab::loadMeshFile(write("v3.glb", std::string("glTF\x03\0\0\0\x0c\0\0\0", 12))); }, {"v3.glb: binary glTF version 3 (expected 2)"});
+    // A node's camera that does not exist (issue 59: it loaded silently).
+    expectError([&] { shadowlab::loadMeshFile(write("camera.gltf", triangleGltf(uri, R"("nodes": [{"mesh": 0}, {"camera": 3}])"))); },
+                {"camera.gltf: nodes[1].camera: expected an index into cameras (none), got 3"});
     // A file that uses the header as it should loads.
     EXPECT_NO_THROW(shadowlab::loadMeshFile(write("ok.gltf", triangleGltf(uri, R"("nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0)"))));
 }

@@ -343,7 +343,11 @@ TexelRect projectedRect(const glm::mat4& clipFromWorld, const Bounds& box, int s
             hi[a] = std::max(hi[a], clip[a] / clip.w);
         }
     }
-    auto texel = [&](float ndc) { return static_cast<int>(std::floor((ndc * 0.5f + 0.5f) * static_cast<float>(size))); };
+    // A huge box (a plane of size 1e20) projects far past an int's range,
+    // or to no number at all: the rectangle is the map's clamped to a
+    // texel past its sides before the conversion (it was INT_MIN - 1).
+    if (!std::isfinite(lo[0]) || !std::isfinite(lo[1]) || !std::isfinite(hi[0]) || !std::isfinite(hi[1])) return TexelRect::whole().clamped(size);
+    auto texel = [&](float ndc) { return static_cast<int>(std::floor((std::clamp(ndc, -2.0f, 2.0f) * 0.5f + 0.5f) * static_cast<float>(size))); };
     return TexelRect{texel(lo[0]) - 1, texel(lo[1]) - 1, texel(hi[0]) + 2, texel(hi[1]) + 2}.clamped(size);
 }
 
