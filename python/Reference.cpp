@@ -4,6 +4,9 @@
 #include "Module.h"
 
 #include <shadowlab/Compare.h>
+#include <shadowlab/Limits.h>
+
+#include <algorithm>
 
 namespace shadowlab::python {
 
@@ -47,6 +50,12 @@ py::array_t<float> reference(const PyScene& s, int light, int width, int height,
 // visibility and techniqueVisibility in 0..1, reach as a mask).
 py::dict compare(const PyScene& s, int width, int height, int softSamples, double time) {
     const CompareOptions options = compareOptions(width, height, softSamples, time);
+    try {
+        checkSceneReferenceRays(width, height, softSamples,
+                                static_cast<std::size_t>(std::count_if(s.scene->lights.begin(), s.scene->lights.end(), [](const Light& l) { return l.size > 0.0f; })));
+    } catch (const Error& e) {
+        raiseInput(e);
+    }
     Comparison c;
     std::string metrics;
     drawn(s, width, height, time, [&](Renderer& renderer, const Scene& at) {

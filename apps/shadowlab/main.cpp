@@ -211,6 +211,8 @@ int runCompare(const CompareArgs& args) {
     const fs::path dir = tool::checkOutputDirectory(args.output);
     checkMemory(args.width, args.height);
     checkReferenceRays(args.width, args.height, args.softSamples);
+    checkSceneReferenceRays(args.width, args.height, args.softSamples,
+                            static_cast<std::size_t>(std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.size > 0.0f; })));
     Context context = Context::createHeadless();
     checkSize(args.width, args.height, context.info());
     Renderer renderer(context);

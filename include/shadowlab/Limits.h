@@ -6,6 +6,8 @@
 /// line. The messages name the CLI's flags (--width, --height, --samples),
 /// which the Python module says as its arguments.
 #include <shadowlab/Context.h>
+
+#include <cstddef>
 #include <shadowlab/Export.h>
 
 namespace shadowlab {
@@ -19,6 +21,11 @@ SHADOWLAB_API void checkMemory(int width, int height);
 /// Refuses a reference of more than 2^31 rays per soft light (--samples
 /// rays a pixel at width x height; about two minutes here), naming --samples.
 SHADOWLAB_API void checkReferenceRays(int width, int height, int samples);
+/// Refuses a whole reference of more than 2^32 rays: checkReferenceRays
+/// for each of `softLights` soft lights together (about four minutes
+/// here; 64 soft lights at --samples 65536 would trace 6e10), naming
+/// --samples.
+SHADOWLAB_API void checkSceneReferenceRays(int width, int height, int samples, std::size_t softLights);
 
 /// Refuses a frame past GL's limits (texture and viewport size) or whose
 /// estimated memory exceeds the device memory the driver reports

@@ -72,6 +72,17 @@ void checkReferenceRays(int width, int height, int samples) {
     }
 }
 
+void checkSceneReferenceRays(int width, int height, int samples, std::size_t softLights) {
+    constexpr double kMaxSceneRays = 4294967296.0;  // 2^32: about four minutes of tracing on two cores
+    const double rays = static_cast<double>(width) * static_cast<double>(height) * static_cast<double>(samples) * static_cast<double>(softLights);
+    if (rays > kMaxSceneRays) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%.3g rays for the reference of %zu soft lights, more than the limit of 2^32 for a scene (lower --samples, --width or --height)",
+                      rays, softLights);
+        throw Error("--samples " + std::to_string(samples) + " at " + std::to_string(width) + "x" + std::to_string(height) + ": " + text);
+    }
+}
+
 void checkSize(int width, int height, const GlInfo& info) {
     const int limit = std::min({info.maxTextureSize, info.maxViewportWidth, info.maxViewportHeight});
     if (width > limit) throw Error("--width " + std::to_string(width) + ": exceeds this GPU's limit of " + std::to_string(limit) + " pixels");

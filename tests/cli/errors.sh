@@ -346,6 +346,8 @@ printf '{"camera":{"far":50},"lights":[{"type":"directional","shadow":{"techniqu
 expect_error splits-round-onto-far "split-far.json: lights[0].shadow.map.cascadeSplits: \"49.99999999\": the last split must lie before the camera's far plane (camera.far 50); as a 32-bit float it is 50" render split-far.json -o out.png
 # The reference's rays are bounded: --samples 65536 at 1920x1080 traced for many minutes.
 expect_error compare-too-many-rays "--samples 65536 at 1920x1080: 1.36e+11 rays for each soft light's reference, more than the limit of 2^31" compare -o cmpdir --samples 65536 --width 1920 --height 1080
+# And the scene's: each of 5 soft lights within the limit, together past 2^32 (issue 59: 64 lights at 65536 traced 6e10 rays).
+expect_error compare-scene-too-many-rays "--samples 16384 at 256x256: 5.37e+09 rays for the reference of 5 soft lights, more than the limit of 2^32 for a scene" compare -o cmpdir --samples 16384 --width 256 --height 256 --set 'lights=[{"type":"point","position":[0,3,0],"size":0.2},{"type":"point","position":[0,3,0],"size":0.2},{"type":"point","position":[0,3,0],"size":0.2},{"type":"point","position":[0,3,0],"size":0.2},{"type":"point","position":[0,3,0],"size":0.2}]'
 expect_error bench-too-many-rays "--samples 65536 at 512x512: 1.72e+10 rays" bench -o outdir --samples 65536 --width 512 --height 512
 expect_error bench-output-cannot-be-made "-o /proc/shadowlab-bench: cannot create the directory" bench -o /proc/shadowlab-bench "${bench_small[@]}"
 # bench says what the techniques noticed (a planar light with nothing planar to fall on) and keeps it in the row.

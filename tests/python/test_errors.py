@@ -31,6 +31,8 @@ CASES = [
     ("reference-samples-huge", lambda: sl.reference(sl.load_scene(SCENE), 0, 1, 1, soft_samples=2**31 - 1), r"^soft_samples 2147483647: expected 1\.\.65536$"),
     ("compare-rays-past-limit", lambda: sl.compare(D(), 320, 180, soft_samples=65536),
      r"^soft_samples 65536 at 320x180: .* rays for each soft light's reference, more than the limit of 2\^31 \(lower soft_samples, width or height\)$"),
+    ("compare-scene-rays-past-limit", lambda: sl.compare(sl.default_scene({"lights": [{"type": "point", "position": [0, 3, 0], "size": 0.2}] * 5}), 256, 256, soft_samples=16384),
+     r"^soft_samples 16384 at 256x256: 5\.37e\+09 rays for the reference of 5 soft lights, more than the limit of 2\^32 for a scene"),
     ("bench-samples-huge", lambda: sl.bench(SCENE, 32, 24, soft_samples=10**6), r"^soft_samples 1000000: expected 1\.\.65536$"),
     ("bench-past-gpu", lambda: sl.bench(None, 100000, 24, frames=1, warmup=0), r"^width 100000: exceeds this GPU's limit"),
     # frames and warmup: the CLI's ranges (issue 59: 10**6 frames ran for ever).
