@@ -2,6 +2,7 @@
 #include "core/TriangleOrder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace shadowlab {
@@ -25,11 +26,15 @@ std::vector<std::uint32_t> spatialTriangleOrder(const std::vector<glm::vec3>& po
         lo = glm::min(lo, positions[i]);
         hi = glm::max(hi, positions[i]);
     }
-    const glm::vec3 extent = glm::max(hi - lo, glm::vec3(1e-30f));
+    // In double: a mesh spanning +-3e38 has an extent (and centroid sums)
+    // past a float's range, which made the key a NaN cast to an integer.
+    const glm::dvec3 low(lo), extent = glm::max(glm::dvec3(hi) - low, glm::dvec3(1e-30));
     std::vector<std::uint32_t> key(triangles);
     for (std::size_t t = 0; t < triangles; ++t) {
-        const glm::vec3 centre = (positions[indices[3 * t]] + positions[indices[3 * t + 1]] + positions[indices[3 * t + 2]]) / 3.0f;
-        const glm::vec3 unit = glm::clamp((centre - lo) / extent, 0.0f, 1.0f) * 1023.0f;
+        const glm::dvec3 centre =
+            (glm::dvec3(positions[indices[3 * t]]) + glm::dvec3(positions[indices[3 * t + 1]]) + glm::dvec3(positions[indices[3 * t + 2]])) / 3.0;
+        glm::dvec3 unit = (centre - low) / extent;
+        for (int a = 0; a < 3; ++a) unit[a] = std::isfinite(unit[a]) ? std::clamp(unit[a], 0.0, 1.0) * 1023.0 : 0.0;
         key[t] = spread(static_cast<std::uint32_t>(unit.x)) | (spread(static_cast<std::uint32_t>(unit.y)) << 1) |
                  (spread(static_cast<std::uint32_t>(unit.z)) << 2);
     }

@@ -84,3 +84,19 @@ TEST(TriangleOrder, NoTrianglesNoneOut) {
     const std::vector<glm::vec3> one{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     EXPECT_EQ(spatialTriangleOrder(one, {0, 1, 2}), (std::vector<std::uint32_t>{0, 1, 2}));
 }
+
+// A mesh spanning +-3e38: its extent and its centroids' sums are past a
+// float's range. The keys are taken in double, so the triangles still go
+// in spatial order (issue 59: the key was a NaN cast to an integer, which
+// UBSan's float-cast-overflow reports).
+TEST(TriangleOrder, AMeshSpanningTheFloatRangeKeepsItsOrder) {
+    const std::vector<glm::vec3> positions{{3e38f, 0, 0}, {3e38f, 1, 0}, {3e38f, 0, 1},    // far +x
+                                           {0, 0, 0},     {0, 1, 0},     {0, 0, 1},        // the middle
+                                           {-3e38f, 0, 0}, {-3e38f, 1, 0}, {-3e38f, 0, 1}};  // far -x
+    const std::vector<std::uint32_t> indices{0, 1, 2, 3, 4, 5, 6, 7, 8};
+    const std::vector<std::uint32_t> sorted = spatialTriangleOrder(positions, indices);
+    ASSERT_EQ(sorted.size(), 9u);
+    EXPECT_EQ(sorted[0], 6u) << "the -x triangle first";
+    EXPECT_EQ(sorted[3], 3u) << "then the middle";
+    EXPECT_EQ(sorted[6], 0u) << "then +x";
+}
