@@ -172,7 +172,9 @@ int ViewerSession::run() {
         // The comparison: started from the last frame drawn, finished here
         // when the worker is done (per light the misclassified shares and the
         // error image, docs/metrics.md).
-        if (referenceAsked && frame > 0 && !tracing) startComparison(width, height);
+        // From a frame drawn after it was asked: a script's `set` then
+        // `compare` in one turn measured the frame before the change.
+        if (referenceAsked && frame > referenceAskedAt && !tracing) startComparison(width, height);
         if (tracing && tracing->done) finishComparison();
         // The techniques' debug images of the last frame drawn, before this
         // frame's panel names their textures.

@@ -83,7 +83,10 @@ bool ViewerSession::handleKeys() {
         }
     }
     bool screenshotKey = pressed(GLFW_KEY_F12);
-    if (pressed(GLFW_KEY_C) && !tracing) referenceAsked = true;
+    if (pressed(GLFW_KEY_C) && !tracing) {
+        referenceAsked = true;
+        referenceAskedAt = frame;
+    }
     return screenshotKey;
 }
 

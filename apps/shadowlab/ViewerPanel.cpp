@@ -67,7 +67,10 @@ void ViewerSession::drawPanel(int height, bool& screenshotKey) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The selected light's shadow-map texels per screen pixel over the picture: green about one, red blocky (a texel over many pixels), blue wasted; grey outside the map");
     ImGui::SameLine();
-    if (ImGui::Button("compare (C)") && !tracing) referenceAsked = true;
+    if (ImGui::Button("compare (C)") && !tracing) {
+        referenceAsked = true;
+        referenceAskedAt = frame;
+    }
     drawComparison();
     // The shadow atlas (technique map, atlas), which its lights share: shown
     // here once, each light's own tiles under the light.

@@ -140,6 +140,7 @@ void ViewerSession::runScript() {
             showDensity = true;
         } else if (a.verb == "compare") {
             referenceAsked = true;
+            referenceAskedAt = frame;
             compareDirectory = a.argument;
             compareLabel = args.script + ":" + std::to_string(a.line) + ": compare " + a.argument;
             break;

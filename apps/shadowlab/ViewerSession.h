@@ -185,6 +185,7 @@ private:
     // The error image against the ray-traced reference: asked for (C, the
     // button or the script), traced on a worker thread, then shown.
     bool referenceAsked = false;
+    int referenceAskedAt = 0;            // the frame count when it was asked: traced from a frame drawn after that (a script's set then compare)
     std::unique_ptr<ReferenceRun> tracing;
     std::vector<std::string> referenceLines;
     std::vector<ImageTexture> referenceTextures;

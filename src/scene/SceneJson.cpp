@@ -50,9 +50,9 @@ int Reader::integer() const {
     if (!value_.is_number_integer()) fail(std::string("expected an integer, got ") + typeName(value_));
     // Unsigned values past 2^63 would wrap to negative as long long.
     if (value_.is_number_unsigned() && value_.get<unsigned long long>() > 1000000000ULL)
-        fail("integer out of range, got " + std::to_string(value_.get<unsigned long long>()));
+        fail("expected an integer in -1000000000..1000000000, got " + std::to_string(value_.get<unsigned long long>()));
     const auto v = value_.get<long long>();
-    if (v < -1000000000LL || v > 1000000000LL) fail("integer out of range, got " + std::to_string(v));
+    if (v < -1000000000LL || v > 1000000000LL) fail("expected an integer in -1000000000..1000000000, got " + std::to_string(v));
     return static_cast<int>(v);
 }
 
@@ -90,11 +90,17 @@ float Reader::nonNegative(const std::string& key, float def) const {
 
 int Reader::integer(const std::string& key, int def, int minimum, int maximum) const {
     if (!has(key)) return def;
-    const int v = child(key).integer();
-    if (v < minimum || v > maximum)
-        child(key).fail("expected an integer in " + std::to_string(minimum) + ".." + std::to_string(maximum) + ", got " +
-                        std::to_string(v));
-    return v;
+    // Checked against the key's own range, not integer()'s +-10^9: a seed's
+    // documented 2147483647 was refused as "out of range".
+    const Reader c = child(key);
+    const nlohmann::json& value = c.value();
+    if (!value.is_number_integer()) c.fail(std::string("expected an integer, got ") + typeName(value));
+    const std::string range = "expected an integer in " + std::to_string(minimum) + ".." + std::to_string(maximum) + ", got ";
+    if (value.is_number_unsigned() && value.get<unsigned long long>() > static_cast<unsigned long long>(std::max(maximum, 0)))
+        c.fail(range + std::to_string(value.get<unsigned long long>()));
+    const long long v = value.get<long long>();
+    if (v < minimum || v > maximum) c.fail(range + std::to_string(v));
+    return static_cast<int>(v);
 }
 
 glm::vec3 Reader::color(const std::string& key, glm::vec3 def) const {

@@ -241,7 +241,7 @@ expect_error gltf-texture-past-gpu-limit "gltf-wide-texture.json: nodes[0].mesh:
 expect_error texture-past-gpu-limit "wide-texture.json: materials.m.baseColorTexture (" render wide-texture.json -o out.png
 expect_error children-nested-10000 "repro-children-nested-10000.json: JSON nested deeper than 200 levels" render repro-children-nested-10000.json -o out.png
 expect_error lights-past-limit "repro-lights-300.json: lights: expected at most 256 lights, got 300" render repro-lights-300.json -o out.png
-expect_error segments-2-64 "majorSegments: integer out of range, got 18446744073709551615" render 'repro-segments-2^64-1.json' -o out.png
+expect_error segments-2-64 "majorSegments: expected an integer in 3..1024, got 18446744073709551615" render 'repro-segments-2^64-1.json' -o out.png
 expect_error camera-3e38 "camera: camera position and target are too far apart" render repro-camera-3e38.json -o out.png
 expect_error texture-is-directory "materials.m.baseColorTexture: texture . is not a regular file" render repro-texture-is-directory.json -o out.png
 expect_error transform-overflows "nodes[0].children[0]: world transform is not finite" render repro-translation-overflows-composed.json -o out.png

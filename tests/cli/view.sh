@@ -45,6 +45,14 @@ printf 'set lights[0].shadow.technique="map"\ncompare cmp\nshow-density\nshow-li
 grep -q "^compare: light 0 " out4.txt && [[ -s cmp/error-0.png && -s e.png ]] || { echo "no comparison from the viewer: $(cat out4.txt err.txt)"; exit 1; }
 "$tool" compare "$src/scenes/spot-objects.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' -o cli >/dev/null || exit 1
 cmp -s cmp/error-0.png cli/error-0.png || { echo "the viewer's error image differs from compare's"; exit 1; }
+# A `set` then `compare` measures the changed frame (issue 59: the
+# comparison started from the frame drawn before the set): technique none
+# shadows nothing, its error image is compare's with technique none.
+mkdir cmp3
+printf 'wait 2\nset lights[0].shadow.technique="none"\ncompare cmp3\nquit\n' > steps6.txt
+"$tool" view "$src/scenes/spot-objects.json" --width 320 --height 180 --script steps6.txt >out6.txt 2>err.txt || { echo "set then compare in the viewer: $(cat err.txt)"; exit 1; }
+"$tool" compare "$src/scenes/spot-objects.json" --width 320 --height 180 --set 'lights[0].shadow.technique="none"' -o cli3 >/dev/null || exit 1
+cmp -s cmp3/error-0.png cli3/error-0.png || { echo "set then compare: the viewer measured another frame than the one the set made: $(cat out6.txt)"; exit 1; }
 # --frames ends the run only once the comparison the script asked for is written.
 mkdir cmp2
 printf 'compare cmp2\n' > steps5.txt

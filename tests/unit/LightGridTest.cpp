@@ -116,6 +116,9 @@ TEST(LightGrid, TheSeedDecidesAndTheCountCanBeSet) {
     EXPECT_TRUE(differs);
     EXPECT_EQ(parse(text, {"lightGrid.count=256"}).lights.size(), 256u);
     EXPECT_EQ(parse(text, {"lightGrid.count=0"}).lights.size(), 0u);
+    // The documented seeds, both ends (2147483647 was refused as out of range).
+    EXPECT_EQ(parse(text, {"lightGrid.seed=2147483647"}).lights.size(), 16u);
+    EXPECT_EQ(parse(text, {"lightGrid.seed=0"}).lights.size(), 16u);
 }
 
 class LightGridErrors : public ::testing::TestWithParam<SceneErrorCase> {};
@@ -133,6 +136,8 @@ INSTANTIATE_TEST_SUITE_P(
         SceneErrorCase{"TooManySet", withGrid(R"({"count": 3})"), {"lightGrid.count=1000"}, "--set lightGrid.count=1000: lightGrid.count: expected at most 256"},
         SceneErrorCase{"NegativeCount", withGrid(R"({"count": -1})"), {}, "lightGrid.count: expected an integer in 0..256, got -1"},
         SceneErrorCase{"FractionalCount", withGrid(R"({"count": 2.5})"), {}, "lightGrid.count: expected an integer"},
+        // A seed past its documented range names the range (issue 59: 2147483647, the maximum, was "integer out of range").
+        SceneErrorCase{"SeedPastItsRange", withGrid(R"({"seed": 2147483648})"), {}, "lightGrid.seed: expected an integer in 0..2147483647, got 2147483648"},
         SceneErrorCase{"EmptyRectangle", withGrid(R"({"min": [0, 0], "max": [0, 5]})"), {}, "lightGrid.max: expected max > min in x and z"},
         SceneErrorCase{"CornerNotAPair", withGrid(R"({"min": [0, 0, 0]})"), {}, "lightGrid.min: expected [x, z]"},
         SceneErrorCase{"SpotShare", withGrid(R"({"spots": 1.5})"), {}, "lightGrid.spots: expected a share in 0..1, got 1.5"},
