@@ -83,9 +83,10 @@ std::vector<Action> readScript(const std::string& path) {
             if (!a.argument.empty() && !std::filesystem::is_directory(tool::pathStatus(a.argument, where + "compare " + a.argument)))
                 throw Error(where + "compare " + a.argument + ": not a directory (the error images go there; create it first)");
         } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "show-light" &&
-                   a.verb != "show-density" && a.verb != "uploads") {
+                   a.verb != "show-density" && a.verb != "hide-maps" && a.verb != "hide-light" && a.verb != "hide-density" && a.verb != "uploads") {
             throw Error(where + "unknown action '" + a.verb +
-                        "' (expected set, wait, screenshot, save, show-maps, show-light, show-density, compare, uploads, resize, minimize, restore or quit)");
+                        "' (expected set, wait, screenshot, save, show-maps, show-light, show-density, hide-maps, hide-light, hide-density, compare, uploads, "
+                        "resize, minimize, restore or quit)");
         } else if (!a.argument.empty()) {
             throw Error(where + a.verb + ": expected nothing after it, got '" + a.argument + "'");
         }
@@ -138,6 +139,12 @@ void ViewerSession::runScript() {
             showLight = true;
         } else if (a.verb == "show-density") {
             showDensity = true;
+        } else if (a.verb == "hide-maps") {  // each view off again (a script could turn them on only)
+            showDebug = false;
+        } else if (a.verb == "hide-light") {
+            showLight = false;
+        } else if (a.verb == "hide-density") {
+            showDensity = false;
         } else if (a.verb == "compare") {
             referenceAsked = true;
             referenceAskedAt = frame;

@@ -53,6 +53,10 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
         r.child("count").fail("expected at most " + std::to_string(room) + " lights (at most " + std::to_string(kMaxLights) +
                               " in a scene, " + std::to_string(lightsBefore) + " in `lights`), got " + Reader::fmt(r.child("count").value().get<double>()));
     const int count = r.integer("count", 64, 0, room);
+    // Unwritten, the default must fit too (64 grid lights beside 256 in `lights` made 320).
+    if (!r.has("count") && count > room)
+        r.fail("count: not given, and its default " + std::to_string(count) + " is more than the " + std::to_string(room) + " lights left (at most " +
+               std::to_string(kMaxLights) + " in a scene, " + std::to_string(lightsBefore) + " in `lights`); give lightGrid.count");
     const int seed = r.integer("seed", 1, 0, 2147483647);
     const glm::vec2 lo = corner(r, "min", {-10.0f, -10.0f}), hi = corner(r, "max", {10.0f, 10.0f});
     if (!(hi.x > lo.x && hi.y > lo.y)) (r.has("max") ? r.child("max") : r).fail("expected max > min in x and z");
@@ -88,13 +92,14 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
 
     std::vector<Light> out;
     out.reserve(static_cast<std::size_t>(count));
-    for (int k = 0; k < count; ++k) {
+    bool madeSpot = false, madePoint = false;
+    // Light k of the grid (k past the count: a probe of the template, checked and dropped).
+    const auto make = [&](int k, bool spot) {
         const double n = static_cast<double>(k);
         const float u = static_cast<float>(std::fmod(offsetU + radicalInverse(k, 3), 1.0));
         const float v = static_cast<float>(std::fmod(offsetV + radicalInverse(k, 5), 1.0));
         const float h = static_cast<float>(std::fmod(offsetHue + n * 0.6180339887498949, 1.0));
         json light = base;
-        const bool spot = spotsAmong(k + 1) > spotsAmong(k);
         light["type"] = spot ? "spot" : "point";
         light["position"] = {lo.x + u * extent.x, height, lo.y + v * extent.y};
         if (!light.contains("name")) light["name"] = std::string(spot ? "spot " : "point ") + std::to_string(k);
@@ -108,8 +113,18 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
             light.erase("innerCone");
             light.erase("outerCone");
         }
-        out.push_back(readLight(Reader(r.context(), light, r.path() + ".light")));
+        return readLight(Reader(r.context(), light, r.path() + ".light"));
+    };
+    for (int k = 0; k < count; ++k) {
+        const bool spot = spotsAmong(k + 1) > spotsAmong(k);
+        (spot ? madeSpot : madePoint) = true;
+        out.push_back(make(k, spot));
     }
+    // The template is checked as each kind it would make even when the
+    // count (or the spots' share) makes none of it: a file that is fine at
+    // count 0 and fails at count 1 hid its error (technique "bogus", size 7).
+    if (!madeSpot) make(count, true);
+    if (!madePoint) make(count, false);
     return out;
 }
 

@@ -53,6 +53,14 @@ printf 'wait 2\nset lights[0].shadow.technique="none"\ncompare cmp3\nquit\n' > s
 "$tool" view "$src/scenes/spot-objects.json" --width 320 --height 180 --script steps6.txt >out6.txt 2>err.txt || { echo "set then compare in the viewer: $(cat err.txt)"; exit 1; }
 "$tool" compare "$src/scenes/spot-objects.json" --width 320 --height 180 --set 'lights[0].shadow.technique="none"' -o cli3 >/dev/null || exit 1
 cmp -s cmp3/error-0.png cli3/error-0.png || { echo "set then compare: the viewer measured another frame than the one the set made: $(cat out6.txt)"; exit 1; }
+# The debug views turn off again (issue 59: a script could turn them on
+# only): after show-density, show-light and their hide-, the frame right
+# of the panel is render's again.
+printf 'set lights[0].shadow.technique="map"\nshow-density\nshow-light\nwait 2\nscreenshot on.png\nhide-density\nhide-light\nwait 2\nscreenshot off.png\nquit\n' > steps7.txt
+"$tool" view "$src/scenes/spot-objects.json" --width 640 --height 360 --script steps7.txt >out7.txt 2>err.txt || { echo "hide in the viewer: $(cat err.txt)"; exit 1; }
+"$tool" render "$src/scenes/spot-objects.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' -o re0.png >/dev/null || exit 1
+(( $("$diff" on.png re0.png --from-x $panel) > 10000 )) || { echo "show-density and show-light changed too little"; exit 1; }
+[[ $("$diff" off.png re0.png --from-x $panel) == 0 ]] || { echo "after hide-density and hide-light the view differs from render: $("$diff" off.png re0.png --from-x $panel) pixels"; exit 1; }
 # --frames ends the run only once the comparison the script asked for is written.
 mkdir cmp2
 printf 'compare cmp2\n' > steps5.txt

@@ -136,6 +136,19 @@ INSTANTIATE_TEST_SUITE_P(
         SceneErrorCase{"TooManySet", withGrid(R"({"count": 3})"), {"lightGrid.count=1000"}, "--set lightGrid.count=1000: lightGrid.count: expected at most 256"},
         SceneErrorCase{"NegativeCount", withGrid(R"({"count": -1})"), {}, "lightGrid.count: expected an integer in 0..256, got -1"},
         SceneErrorCase{"FractionalCount", withGrid(R"({"count": 2.5})"), {}, "lightGrid.count: expected an integer"},
+        // Issue 59: the default count counts against the room too (it made 320
+        // lights beside 256), and the template is checked as a spot and as a
+        // point light even when the count or the spots' share makes none.
+        SceneErrorCase{"DefaultCountPastTheRoom", withGrid(R"({})", "[" + [] {
+                           std::string many;
+                           for (int i = 0; i < 200; ++i) many += std::string(i ? "," : "") + R"({"type": "directional", "shadow": {"technique": "none"}})";
+                           return many;
+                       }() + "]"),
+                       {}, "lightGrid: count: not given, and its default 64 is more than the 56 lights left (at most 256 in a scene, 200 in `lights`)"},
+        SceneErrorCase{"TemplateCheckedAtCountZero", withGrid(R"({"count": 0, "light": {"shadow": {"technique": "bogus"}}})"), {},
+                       "lightGrid.light.shadow.technique: unknown technique 'bogus'"},
+        SceneErrorCase{"SpotTemplateCheckedWithoutSpots", withGrid(R"({"count": 4, "spots": 0, "light": {"outerCone": 600}})"), {},
+                       "lightGrid.light.outerCone: expected degrees in (0, 90), got 600"},
         // A seed past its documented range names the range (issue 59: 2147483647, the maximum, was "integer out of range").
         SceneErrorCase{"SeedPastItsRange", withGrid(R"({"seed": 2147483648})"), {}, "lightGrid.seed: expected an integer in 0..2147483647, got 2147483648"},
         SceneErrorCase{"EmptyRectangle", withGrid(R"({"min": [0, 0], "max": [0, 5]})"), {}, "lightGrid.max: expected max > min in x and z"},
