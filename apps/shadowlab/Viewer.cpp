@@ -198,7 +198,7 @@ int ViewerSession::run() {
 
     // The loop ended without an error (errors throw out of run()): the
     // script's images are put in place together.
-    scriptOutputs.commit();
+    for (const std::filesystem::path& file : scriptOutputs.commit()) std::cout << file.string() << "\n";
     tracing.reset();
     freeDebugTextures();
     freeReferenceTextures();
@@ -273,8 +273,7 @@ void ViewerSession::endFrame(int width, int height, bool screenshotKey) {
         } catch (const Error& e) {
             throw Error(args.script + ":" + std::to_string(script[nextAction].line) + ": screenshot: " + e.what());
         }
-        std::cout << script[nextAction].argument << "\n";
-        ++nextAction;
+        ++nextAction;  // named on stdout once it is in place (commit), not before: a failing later line keeps none
     }
     ++frame;
     if (waitFrames > 0) --waitFrames;

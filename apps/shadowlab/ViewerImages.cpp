@@ -75,7 +75,6 @@ void ViewerSession::finishComparison() {
                 } catch (const Error& e) {
                     throw Error(run->label.empty() ? std::string(e.what()) : run->label + ": " + e.what());
                 }
-                std::cout << file << "\n";
             }
         }
     }

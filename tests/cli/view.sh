@@ -146,8 +146,10 @@ if "$tool" view --width 96 --height 64 --script cmpdir.txt >/dev/null 2>err.txt;
 # failed render leaves no frame): the screenshot of line 2 is gone when line
 # 3 fails.
 printf 'wait 1\nscreenshot early.png\nscreenshot /proc/b.png\nquit\n' > later.txt
-if "$tool" view --script later.txt >/dev/null 2>err.txt; then echo "a failing script exited 0"; exit 1; fi
+if "$tool" view --script later.txt >later-out.txt 2>err.txt; then echo "a failing script exited 0"; exit 1; fi
 [[ ! -e early.png && -z $(ls -A | grep pending) ]] || { echo "a failing script left $(ls -A | grep -E 'early|pending')"; exit 1; }
+# ... and did not name it as written (issue 59: it printed early.png, then removed it).
+! grep -q "early.png" later-out.txt || { echo "a failing script named a screenshot it did not keep: $(cat later-out.txt)"; exit 1; }
 # Nor its compare's error images.
 mkdir -p latecmp
 printf 'compare latecmp
