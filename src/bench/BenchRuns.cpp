@@ -8,6 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
+#include <map>
+
 namespace shadowlab::bench {
 
 Variation parseVariation(const std::string& text) {
@@ -84,13 +87,31 @@ std::vector<BenchRun> loadRuns(const BenchOptions& args) {
             if (overridePathsOverlap(variations[j].key, variations[i].key))
                 throw Error("--vary " + args.vary[i] + ": " + variations[i].key + " is already varied by --vary " + args.vary[j] +
                             (overridePathsEqual(variations[j].key, variations[i].key) ? " (give all its values in one --vary)" : " (one holds the other)"));
+        // More values than runs allowed: refused before anything else is
+        // done with them (20,000 values were compared pair by pair first,
+        // a minute and more).
+        if (variations[i].values.size() > kMaxBenchRuns)
+            throw Error("--vary " + variations[i].key + "=...: " + std::to_string(variations[i].values.size()) + " values make more than " +
+                        std::to_string(kMaxBenchRuns) + " runs (the limit); vary fewer settings at a time");
         // A value twice (as JSON: 1 and 1.0 are one value) would run the same
-        // combination twice under two labels.
-        for (std::size_t a = 0; a < variations[i].values.size(); ++a)
-            for (std::size_t b = 0; b < a; ++b)
-                if (asJson(variations[i].values[a]) == asJson(variations[i].values[b]))
-                    throw Error("--vary " + args.vary[i] + ": the value " + variations[i].values[a] +
-                                (variations[i].values[a] == variations[i].values[b] ? "" : " (" + variations[i].values[b] + ")") + " is given twice");
+        // combination twice under two labels. Each value parsed once, looked
+        // up by its JSON (numbers by their double's digits: 1 and 1.0 are one).
+        std::map<std::string, std::size_t> seen;
+        for (std::size_t a = 0; a < variations[i].values.size(); ++a) {
+            const nlohmann::json j = asJson(variations[i].values[a]);
+            std::string key = j.dump();
+            if (j.is_number()) {
+                char digits[40];
+                std::snprintf(digits, sizeof digits, "%.17g", j.get<double>());
+                key = digits;
+            }
+            const auto [at, fresh] = seen.emplace(key, a);
+            if (!fresh) {
+                const std::string& before = variations[i].values[at->second];
+                throw Error("--vary " + args.vary[i] + ": the value " + variations[i].values[a] +
+                            (variations[i].values[a] == before ? "" : " (" + before + ")") + " is given twice");
+            }
+        }
         // A --set of the same key would be replaced by every run's value without a word.
         for (const std::string& set : args.overrides)
             if (overridePathsOverlap(set.substr(0, set.find('=')), variations[i].key))

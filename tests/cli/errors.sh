@@ -362,6 +362,10 @@ fi
 
 PROGRESS_OK=1 expect_error vary-index-spelled-twice "--vary lights[00].intensity=3,4: lights[00].intensity is already varied by --vary lights[0].intensity=1,2 (give all its values in one --vary)" bench -o outdir --vary lights[0].intensity=1,2 --vary lights[00].intensity=3,4
 PROGRESS_OK=1 expect_error vary-and-set-index-spelled "is also set by --set lights[00].intensity=5" bench -o outdir --set lights[00].intensity=5 --vary lights[0].intensity=1,2
+# 20,000 values: refused for the 10,000-run limit, naming the key, before
+# the values are compared (issue 59: every pair was compared first, a
+# minute and more, and then the product was refused without the key).
+PROGRESS_OK=1 expect_error vary-20000-values "--vary lights[0].intensity=...: 20000 values make more than 10000 runs (the limit)" bench -o outdir --vary "lights[0].intensity=$(seq -s, 0 19999)"
 PROGRESS_OK=1 expect_error vary-value-twice-spelled "--vary lights[0].intensity=1,1.0: the value 1.0 (1) is given twice" bench -o outdir --vary lights[0].intensity=1,1.0
 PROGRESS_OK=1 expect_error bench-budget-from-set "bench run 1/1 (fits.json): --set lights[0].shadow.map.cascades=8: lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB" bench fits.json -o outdir --set lights[0].shadow.map.cascades=8 "${bench_small[@]}"
 # A write that fails part way (a full disk; here the file-size limit, which
