@@ -66,27 +66,45 @@ int SceneBuilder::addMesh(Mesh mesh) {
 
 void SceneBuilder::importMesh(const Reader& r, int parent, int materialOverride, const Node& owner) {
     const fs::path file = ctx_.baseDir / r.string();
-    ImportedModel model;
-    try {
-        model = loadMeshFile(file);
-    } catch (const Error& e) {
-        r.fail(e.what());
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(file, ec);
+    const std::string key = ec ? file.lexically_normal().string() : canonical.string();
+    auto shared = meshFiles_.find(key);
+    if (shared == meshFiles_.end()) {
+        ImportedModel model;
+        try {
+            model = loadMeshFile(file);
+        } catch (const Error& e) {
+            r.fail(e.what());
+        }
+        // The file's triangles count against the scene's budget, once.
+        std::size_t triangles = 0;
+        for (const Mesh& m : model.meshes) triangles += m.triangleCount();
+        if (triangles > shapeTrianglesLeft_)
+            r.fail(file.string() + ": " + std::to_string(triangles) + " triangles, past what a scene may hold in all (" + std::to_string(kMaxShapeTriangles) +
+                   " triangles of shapes and mesh files; " + std::to_string(shapeTrianglesLeft_) + " left)");
+        shapeTrianglesLeft_ -= triangles;
+        SharedFile added;
+        added.meshBase = static_cast<int>(scene_.meshes.size());
+        const int textureBase = static_cast<int>(scene_.textures.size());
+        added.materialBase = static_cast<int>(scene_.materials.size());
+        for (Mesh& m : model.meshes) scene_.meshes.push_back(std::move(m));
+        for (ImageRGBA8& t : model.textures) scene_.textures.push_back(std::move(t));
+        for (std::size_t t = 0; t < model.textures.size(); ++t)
+            scene_.textureSources.push_back(ctx_.source + ": " + r.path() + ": " + file.string() + ": " +
+                                            (t < model.textureSources.size() ? model.textureSources[t] : "texture " + std::to_string(t)));
+        for (Material m : model.materials) {
+            if (m.baseColorTexture >= 0) m.baseColorTexture += textureBase;
+            scene_.materials.push_back(std::move(m));
+        }
+        added.nodes = std::move(model.nodes);
+        shared = meshFiles_.emplace(key, std::move(added)).first;
     }
-    const int meshBase = static_cast<int>(scene_.meshes.size());
-    const int textureBase = static_cast<int>(scene_.textures.size());
-    const int materialBase = static_cast<int>(scene_.materials.size());
-    for (Mesh& m : model.meshes) scene_.meshes.push_back(std::move(m));
-    for (ImageRGBA8& t : model.textures) scene_.textures.push_back(std::move(t));
-    for (std::size_t t = 0; t < model.textures.size(); ++t)
-        scene_.textureSources.push_back(ctx_.source + ": " + r.path() + ": " + file.string() + ": " +
-                                        (t < model.textureSources.size() ? model.textureSources[t] : "texture " + std::to_string(t)));
-    for (Material m : model.materials) {
-        if (m.baseColorTexture >= 0) m.baseColorTexture += textureBase;
-        scene_.materials.push_back(std::move(m));
-    }
-    std::vector<int> sceneIndex(model.nodes.size());
-    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
-        const ImportedModel::Node& in = model.nodes[i];
+    const int meshBase = shared->second.meshBase, materialBase = shared->second.materialBase;
+    const std::vector<ImportedModel::Node>& nodes = shared->second.nodes;
+    std::vector<int> sceneIndex(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const ImportedModel::Node& in = nodes[i];
         Node node;
         node.name = in.name;
         node.parent = in.parent >= 0 ? sceneIndex[static_cast<std::size_t>(in.parent)] : parent;

@@ -4,6 +4,7 @@
 // options (LightFile.cpp); textures and materials (MaterialFile.cpp); shapes
 // (ShapeFile.cpp); the nodes and their meshes (NodeFile.cpp). SceneFile.cpp
 // reads a whole file through them. Private to the scene loader.
+#include "scene/MeshFile.h"
 #include "scene/SceneJson.h"
 
 #include <shadowlab/Scene.h>
@@ -29,9 +30,10 @@ ShadowAtlasSettings readShadowAtlas(const Reader& r);
 /// An image file named at `r`, as RGBA8 (MaterialFile.cpp).
 ImageRGBA8 loadTexture(const Reader& r, const std::filesystem::path& file);
 
-/// Triangles the procedural shapes of one scene may make in all (2^24,
-/// about 2 GB with their GPU copy and the reference's BVH): a scene file
-/// of a few kB must not ask for 70 GB through 400 finely divided spheres.
+/// Triangles the procedural shapes and mesh files of one scene may hold in
+/// all (2^24, about 2 GB with their GPU copy and the reference's BVH): a
+/// scene file of a few kB must not ask for 70 GB through 400 finely divided
+/// spheres. A mesh file named by several nodes counts once (it is shared).
 constexpr std::size_t kMaxShapeTriangles = std::size_t(1) << 24;
 
 /// A node's `shape`: a procedural mesh (ShapeFile.cpp). `trianglesLeft`:
@@ -64,7 +66,16 @@ private:
     const ParseContext& ctx_;
     std::map<std::string, int> materialIndex_;
     std::vector<std::string> nodeSources_; ///< JSON path (and mesh file node) per scene_.nodes entry
-    std::size_t shapeTrianglesLeft_ = kMaxShapeTriangles;  ///< readShape's budget
+    std::size_t shapeTrianglesLeft_ = kMaxShapeTriangles;  ///< readShape's budget, and the mesh files'
+    /// Mesh files read so far, by their canonical path: a file named by
+    /// several nodes is read and its meshes, materials and textures added
+    /// once (300 nodes naming one 69k-triangle OBJ made 300 copies, 6.6 GB);
+    /// each node gets its own nodes over them.
+    struct SharedFile {
+        int meshBase = 0, materialBase = 0;
+        std::vector<ImportedModel::Node> nodes;
+    };
+    std::map<std::string, SharedFile> meshFiles_;
 };
 
 } // namespace shadowlab::scenefile

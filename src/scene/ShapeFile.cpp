@@ -92,8 +92,8 @@ Mesh readShape(const Reader& r, std::size_t& trianglesLeft) {
     Mesh mesh = makeShape(r);
     const std::size_t triangles = mesh.triangleCount();
     if (triangles > trianglesLeft)
-        r.fail("this shape makes " + std::to_string(triangles) + " triangles, past what the scene's shapes may make in all (" +
-               std::to_string(kMaxShapeTriangles) + "; " + std::to_string(trianglesLeft) + " left): fewer segments, or a mesh file for geometry this large");
+        r.fail("this shape makes " + std::to_string(triangles) + " triangles, past what a scene may hold in all (" + std::to_string(kMaxShapeTriangles) +
+               " triangles of shapes and mesh files; " + std::to_string(trianglesLeft) + " left): fewer segments");
     trianglesLeft -= triangles;
     return mesh;
 }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -140,8 +141,8 @@ TEST(SceneFile, TheShapesOfASceneHaveATriangleBudget) {
     std::string nodes;
     for (int i = 0; i < 9; ++i) nodes += std::string(i ? "," : "") + R"({"shape": {"type": "sphere", "segments": 1024, "rings": 1024}})";
     const std::string error = errorOf(R"({"nodes": [)" + nodes + "]}");
-    EXPECT_EQ(error, "scene.json: nodes[8].shape: this shape makes 2095104 triangles, past what the scene's shapes may make in all "
-                     "(16777216; 16384 left): fewer segments, or a mesh file for geometry this large");
+    EXPECT_EQ(error, "scene.json: nodes[8].shape: this shape makes 2095104 triangles, past what a scene may hold in all "
+                     "(16777216 triangles of shapes and mesh files; 16384 left): fewer segments");
 }
 
 // --- Errors: one line, file or flag, JSON path, what was expected ------------
@@ -261,6 +262,46 @@ TEST(SceneFile, MeshPathsAreRelativeToTheSceneFile) {
     const Scene s = loadSceneFile(scene);
     ASSERT_EQ(s.drawItems().size(), 1u);
     EXPECT_EQ(s.meshes.at(0).triangleCount(), 1u);
+}
+
+// Nodes naming one mesh file share its meshes (issue 59: 300 nodes naming
+// one 69k-triangle OBJ made 300 copies, 6.6 GB), the same file however its
+// path is spelled; each node still draws it where it stands.
+TEST(SceneFile, NodesNamingOneMeshFileShareItsMeshes) {
+    TempDir dir;
+    dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const fs::path scene = dir.write("scene.json", R"({"nodes": [{"mesh": "tri.obj"}, {"mesh": "tri.obj", "translation": [2, 0, 0]},
+                                                                  {"mesh": "./tri.obj", "translation": [4, 0, 0]}]})");
+    const Scene s = loadSceneFile(scene);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const std::vector<DrawItem> items = s.drawItems();
+    ASSERT_EQ(items.size(), 3u);
+    for (const DrawItem& item : items) EXPECT_EQ(item.mesh, 0);
+    EXPECT_FLOAT_EQ(items[2].worldFromObject[3].x, 4.0f);
+}
+
+// Mesh files count against the scene's triangles with its shapes: a mesh
+// file past what is left is one line naming the node and the file.
+TEST(SceneFile, MeshFilesCountAgainstTheScenesTriangles) {
+    TempDir dir;
+    // A fan of 20,000 triangles, after eight of the finest spheres (2 x 1024 x
+    // 1023 triangles each), which leave 16,384 of the 2^24.
+    std::string fan = "v 0 0 0\n";
+    for (int i = 0; i <= 20000; ++i) fan += "v " + std::to_string(std::cos(i * 1e-4)) + " " + std::to_string(std::sin(i * 1e-4)) + " 0\n";
+    for (int i = 0; i < 20000; ++i) fan += "f 1 " + std::to_string(i + 2) + " " + std::to_string(i + 3) + "\n";
+    dir.write("fan.obj", fan);
+    std::string nodes;
+    for (int i = 0; i < 8; ++i) nodes += R"({"shape": {"type": "sphere", "segments": 1024, "rings": 1024}},)";
+    const fs::path scene = dir.write("scene.json", R"({"nodes": [)" + nodes + R"({"mesh": "fan.obj"}]})");
+    try {
+        loadSceneFile(scene);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("nodes[8].mesh: "), std::string::npos) << m;
+        EXPECT_NE(m.find("fan.obj: 20000 triangles, past what a scene may hold in all (16777216 triangles of shapes and mesh files; 16384 left)"),
+                  std::string::npos) << m;
+    }
 }
 
 TEST(SceneFile, GlbThatIsNotGltfNamesTheFileAndPath) {
