@@ -29,6 +29,7 @@
 
 
 #include <algorithm>
+#include <new>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -572,6 +573,11 @@ int main(int argc, char** argv) {
         // A file-system call that still throws: its path and reason, without the library's "filesystem error:" text.
         if (const auto* f = dynamic_cast<const fs::filesystem_error*>(&e))
             message = (f->path1().empty() ? std::string("a file") : f->path1().string()) + ": " + f->code().message();
+        // Memory ran out past the frame-size checks (256 lights of unlimited
+        // reach in one clustered list at 4096x4096 under an address-space
+        // limit said "std::bad_alloc" alone): what to lower.
+        if (dynamic_cast<const std::bad_alloc*>(&e))
+            message = "out of memory (lower --width and --height, or the scene's lights, meshes or shadow map sizes)";
         if (*render) message = withValueSource(message, renderArgs.scene.empty() ? "the default scene" : renderArgs.scene, renderArgs.overrides);
         if (*compare) message = withValueSource(message, compareArgs.scene.empty() ? "the default scene" : compareArgs.scene, compareArgs.overrides);
 #if SHADOWLAB_VIEWER
