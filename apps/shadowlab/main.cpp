@@ -15,6 +15,7 @@
 
 #include <shadowlab/Limits.h>
 #include <shadowlab/Compare.h>
+#include <shadowlab/MapOptions.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/FileWrite.h>
@@ -263,6 +264,8 @@ int runCompare(const CompareArgs& args) {
         if (l.texelFootprintP50 >= 0.0)
             std::cout << "  texel footprint (pixels a texel):  median " << l.texelFootprintP50 << ", p95 " << l.texelFootprintP95 << ", max "
                       << l.texelFootprintMax << "\n";
+        else if (light.shadow.technique == MapOptions::kTechnique && light.shadow.get<MapOptions>().atlas)
+            std::cout << "  texel footprint (pixels a texel):  not measured for a light in the shadow atlas\n";  // said, not left out silently
         if (l.soft)
             std::cout << "  penumbra:                          " << l.techniquePenumbraPixels << " pixels against " << l.referencePenumbraPixels
                       << " in truth (ratio " << l.penumbraRatio() << ")\n";
