@@ -59,7 +59,14 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
                std::to_string(kMaxLights) + " in a scene, " + std::to_string(lightsBefore) + " in `lights`); give lightGrid.count");
     const int seed = r.integer("seed", 1, 0, 2147483647);
     const glm::vec2 lo = corner(r, "min", {-10.0f, -10.0f}), hi = corner(r, "max", {10.0f, 10.0f});
-    if (!(hi.x > lo.x && hi.y > lo.y)) (r.has("max") ? r.child("max") : r).fail("expected max > min in x and z");
+    if (!(hi.x > lo.x && hi.y > lo.y)) {
+        // The corner a --set changed is at fault, not the file's other one
+        // (--set lightGrid.min=[24,12] was blamed on the file's max).
+        const bool minSet = r.has("min") && overrides::overrideAt(r.context().overrides, r.path() + ".min");
+        const bool maxSet = r.has("max") && overrides::overrideAt(r.context().overrides, r.path() + ".max");
+        const char* key = minSet && !maxSet ? "min" : "max";
+        (r.has(key) ? r.child(key) : r).fail("expected max > min in x and z");
+    }
     const float height = r.number("height", 2.0f);
     const float spots = r.has("spots") ? r.child("spots").number() : 0.5f;
     if (!(spots >= 0.0f && spots <= 1.0f)) r.child("spots").fail("expected a share in 0..1, got " + Reader::fmt(spots));

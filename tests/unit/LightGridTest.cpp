@@ -152,6 +152,9 @@ INSTANTIATE_TEST_SUITE_P(
         // A seed past its documented range names the range (issue 59: 2147483647, the maximum, was "integer out of range").
         SceneErrorCase{"SeedPastItsRange", withGrid(R"({"seed": 2147483648})"), {}, "lightGrid.seed: expected an integer in 0..2147483647, got 2147483648"},
         SceneErrorCase{"EmptyRectangle", withGrid(R"({"min": [0, 0], "max": [0, 5]})"), {}, "lightGrid.max: expected max > min in x and z"},
+        // The --set that broke it is named (issue 59: it was blamed on the file's max).
+        SceneErrorCase{"EmptyRectangleBySet", withGrid(R"({"min": [-24, -12], "max": [24, 12]})"), {"lightGrid.min=[24,12]"},
+                       "--set lightGrid.min=[24,12]: lightGrid.min: expected max > min in x and z"},
         SceneErrorCase{"CornerNotAPair", withGrid(R"({"min": [0, 0, 0]})"), {}, "lightGrid.min: expected [x, z]"},
         SceneErrorCase{"SpotShare", withGrid(R"({"spots": 1.5})"), {}, "lightGrid.spots: expected a share in 0..1, got 1.5"},
         SceneErrorCase{"TemplateType", withGrid(R"({"light": {"type": "point"}})"), {}, "lightGrid.light.type: unknown key"},
