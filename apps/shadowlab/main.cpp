@@ -15,7 +15,6 @@
 
 #include <shadowlab/Limits.h>
 #include <shadowlab/Compare.h>
-#include <shadowlab/MapOptions.h>
 #include <shadowlab/Context.h>
 #include <shadowlab/Error.h>
 #include <shadowlab/FileWrite.h>
@@ -235,6 +234,11 @@ int runCompare(const CompareArgs& args) {
     if (rays >= 1e8 && isatty(STDERR_FILENO)) std::fprintf(stderr, "compare: tracing the reference, %.3g rays\n", rays);
     tool::traceInterruptibly(job);
     const Comparison c = job.finish(renderer);
+    // The lights whose technique drew them a light camera (a map): each
+    // should have a texel footprint, and one that has none is said to have none.
+    std::vector<bool> hasCamera(scene.lights.size(), false);
+    for (const LightFrustum& f : renderer.lightFrustums(scene))
+        if (f.light >= 0 && static_cast<std::size_t>(f.light) < hasCamera.size()) hasCamera[static_cast<std::size_t>(f.light)] = true;
     printNotes(c.techniqueFrame.notes);
     requireNoGlErrors(context);
 
@@ -264,8 +268,8 @@ int runCompare(const CompareArgs& args) {
         if (l.texelFootprintP50 >= 0.0)
             std::cout << "  texel footprint (pixels a texel):  median " << l.texelFootprintP50 << ", p95 " << l.texelFootprintP95 << ", max "
                       << l.texelFootprintMax << "\n";
-        else if (light.shadow.technique == MapOptions::kTechnique && light.shadow.get<MapOptions>().atlas)
-            std::cout << "  texel footprint (pixels a texel):  not measured for a light in the shadow atlas\n";  // said, not left out silently
+        else if (hasCamera[i])  // a map with no texel-density image (the shadow atlas's tiles): said, not left out silently
+            std::cout << "  texel footprint (pixels a texel):  not measured (the technique makes no texel-density image of this light's map)\n";
         if (l.soft)
             std::cout << "  penumbra:                          " << l.techniquePenumbraPixels << " pixels against " << l.referencePenumbraPixels
                       << " in truth (ratio " << l.penumbraRatio() << ")\n";

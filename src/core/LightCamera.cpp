@@ -343,14 +343,23 @@ std::vector<float> cascadeSplits(float near, float far, int count, float lambda,
     return out;
 }
 
-float viewReach(const Camera& camera, const FitInput& in) {
+namespace {
+
+// The view-space box around the boxes of the receivers that may be in view
+// (viewReach, viewNearest); empty when none is.
+Bounds receiversInView(const Camera& camera, const FitInput& in) {
     const glm::mat4 view = camera.viewFromWorld();
-    float reach = camera.nearPlane;
-    for (std::size_t i = 0; i < in.items.size(); ++i) {
-        if (!in.items[i].receivesShadows || !mayIntersect(in.cameraClipFromWorld, in.itemBounds[i])) continue;
-        const Bounds b = in.itemBounds[i].transformed(view);
-        reach = std::max(reach, -b.lo.z);
-    }
+    Bounds out;
+    for (std::size_t i = 0; i < in.items.size(); ++i)
+        if (in.items[i].receivesShadows && mayIntersect(in.cameraClipFromWorld, in.itemBounds[i])) out.add(in.itemBounds[i].transformed(view));
+    return out;
+}
+
+} // namespace
+
+float viewReach(const Camera& camera, const FitInput& in) {
+    const Bounds seen = receiversInView(camera, in);
+    const float reach = seen.empty() ? camera.nearPlane : std::max(camera.nearPlane, -seen.lo.z);
     return std::clamp(reach, camera.nearPlane * 1.001f, camera.farPlane);
 }
 
@@ -434,13 +443,8 @@ float nearestInPyramid(const Bounds& box, const glm::mat4& view, float tanX, flo
 } // namespace
 
 float viewNearest(const Camera& camera, const FitInput& in) {
-    const glm::mat4 view = camera.viewFromWorld();
-    float nearest = camera.farPlane;
-    for (std::size_t i = 0; i < in.items.size(); ++i) {
-        if (!in.items[i].receivesShadows || !mayIntersect(in.cameraClipFromWorld, in.itemBounds[i])) continue;
-        const Bounds b = in.itemBounds[i].transformed(view);
-        nearest = std::min(nearest, -b.hi.z);
-    }
+    const Bounds seen = receiversInView(camera, in);
+    const float nearest = seen.empty() ? camera.farPlane : std::min(camera.farPlane, -seen.hi.z);
     return std::clamp(nearest, camera.nearPlane, camera.farPlane);
 }
 
