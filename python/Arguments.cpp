@@ -38,17 +38,17 @@ std::string utf8(const py::handle& value, const std::string& what) {
     } catch (const py::error_already_set&) {
     } catch (const py::cast_error&) {
     }
-    throw py::value_error(what + ": not valid UTF-8 text");
+    throw InputFailure(what + ": not valid UTF-8 text");
 }
 
 // A key of overrides or vary: a scene path, as text without '=' or NUL.
 std::string sceneKey(const py::handle& key, const std::string& argument) {
     if (!py::isinstance<py::str>(key))
-        throw py::value_error(argument + ": keys are scene paths as strings, e.g. \"lights[0].shadow.map.size\", got " + typeName(key));
+        throw InputFailure(argument + ": keys are scene paths as strings, e.g. \"lights[0].shadow.map.size\", got " + typeName(key));
     const std::string k = utf8(key, argument + " key");
-    if (k.empty()) throw py::value_error(argument + ": an empty key");
+    if (k.empty()) throw InputFailure(argument + ": an empty key");
     if (k.find('=') != std::string::npos || k.find('\0') != std::string::npos)
-        throw py::value_error(argument + "[" + text::escapeControl(k) + "]: a key may not contain '=' or NUL");
+        throw InputFailure(argument + "[" + text::escapeControl(k) + "]: a key may not contain '=' or NUL");
     return k;
 }
 
@@ -60,7 +60,7 @@ std::string jsonText(const py::handle& value, const std::string& where) {
         return utf8(dumps(value, py::arg("allow_nan") = false), where);
     } catch (py::error_already_set& e) {
         const std::string why = e.what();
-        throw py::value_error(where + ": not a JSON value (" + text::escapeControl(why.substr(0, why.find('\n'))) + ")");
+        throw InputFailure(where + ": not a JSON value (" + text::escapeControl(why.substr(0, why.find('\n'))) + ")");
     }
 }
 
@@ -80,8 +80,8 @@ std::vector<std::string> overrideLines(const py::dict& overrides) {
         const std::string& later = keys[clash->first];
         const std::string& earlier = keys[clash->second];
         if (overridePathsEqual(later, earlier))
-            throw py::value_error("overrides[" + later + "]: " + later + " is already set by overrides[" + earlier + "] (give each path once)");
-        throw py::value_error("overrides[" + later + "]: replaces " + earlier + ", set by overrides[" + earlier +
+            throw InputFailure("overrides[" + later + "]: " + later + " is already set by overrides[" + earlier + "] (give each path once)");
+        throw InputFailure("overrides[" + later + "]: replaces " + earlier + ", set by overrides[" + earlier +
                               "] (give the inner path after the outer one, or within its value)");
     }
     return lines;
@@ -92,23 +92,23 @@ std::vector<std::string> varyLines(const py::object& vary) {
     if (vary.is_none()) return lines;
     const bool isDict = py::isinstance<py::dict>(vary);
     if (!isDict && !py::isinstance<py::list>(vary) && !py::isinstance<py::tuple>(vary))
-        throw py::value_error("vary: expected {key: [values]} or [(key, [values]), ...], got " + typeName(vary));
+        throw InputFailure("vary: expected {key: [values]} or [(key, [values]), ...], got " + typeName(vary));
     const py::object pairs = isDict ? py::object(vary.attr("items")()) : vary;
     for (const py::handle& pair : pairs) {
         if (!(py::isinstance<py::tuple>(pair) || py::isinstance<py::list>(pair)) || py::len(pair) != 2)
-            throw py::value_error("vary: expected {key: [values]} or [(key, [values]), ...]; an item is " + typeName(pair));
+            throw InputFailure("vary: expected {key: [values]} or [(key, [values]), ...]; an item is " + typeName(pair));
         const py::sequence kv = py::reinterpret_borrow<py::sequence>(pair);
         const std::string key = sceneKey(kv[0], "vary");
         const py::object values = kv[1];
         if (!(py::isinstance<py::list>(values) || py::isinstance<py::tuple>(values)))
-            throw py::value_error("vary[" + key + "]: expected a list of values, got " + typeName(values));
+            throw InputFailure("vary[" + key + "]: expected a list of values, got " + typeName(values));
         std::string line = key + "=";
         std::size_t count = 0;
         for (const py::handle& value : values) {
             if (count++ > 0) line += ',';
             line += jsonText(value, "vary[" + key + "]");
         }
-        if (count == 0) throw py::value_error("vary[" + key + "]: no values");
+        if (count == 0) throw InputFailure("vary[" + key + "]: no values");
         lines.push_back(line);
     }
     return lines;
@@ -120,12 +120,12 @@ std::string pathArgument(const py::handle& value, const std::string& name) {
     try {
         text = fspath(value);
     } catch (const py::error_already_set&) {
-        throw py::value_error(name + ": expected a path (str or os.PathLike), got " + typeName(value));
+        throw InputFailure(name + ": expected a path (str or os.PathLike), got " + typeName(value));
     }
-    if (!py::isinstance<py::str>(text)) throw py::value_error(name + ": expected a path as text, got " + typeName(text));
+    if (!py::isinstance<py::str>(text)) throw InputFailure(name + ": expected a path as text, got " + typeName(text));
     const std::string path = utf8(text, name);
-    if (path.empty()) throw py::value_error(name + ": empty path");
-    if (path.find('\0') != std::string::npos) throw py::value_error(name + " " + text::escapeControl(path) + ": a path may not contain NUL");
+    if (path.empty()) throw InputFailure(name + ": empty path");
+    if (path.find('\0') != std::string::npos) throw InputFailure(name + " " + text::escapeControl(path) + ": a path may not contain NUL");
     return path;
 }
 
@@ -153,12 +153,16 @@ std::string pythonNames(std::string message, const std::vector<std::string>& ove
     return text::escapeControl(text::clipMiddle(message));
 }
 
-void raiseInput(const Error& e, const std::vector<std::string>& overrides) { throw py::value_error(pythonNames(e.what(), overrides)); }
+std::string drawingMessage(const Error& e, const std::string& sourceName, const std::vector<std::string>& overrides) {
+    return pythonNames(withValueSource(e.what(), sourceName, overrides), overrides);
+}
+
+void raiseInput(const Error& e, const std::vector<std::string>& overrides) { throw InputFailure(pythonNames(e.what(), overrides)); }
 
 void checkFrame(int width, int height, double time) {
     if (width < 1 || height < 1)
-        throw py::value_error("width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
-    if (!std::isfinite(time)) throw py::value_error("time " + text::numberText(time) + ": expected a finite number of seconds");
+        throw InputFailure("width and height must be at least 1 pixel, got " + std::to_string(width) + "x" + std::to_string(height));
+    if (!std::isfinite(time)) throw InputFailure("time " + text::numberText(time) + ": expected a finite number of seconds");
     try {
         checkMemory(width, height);  // the GPU's own limits: once the context is there (drawn)
     } catch (const Error& e) {
@@ -168,7 +172,7 @@ void checkFrame(int width, int height, double time) {
 
 void checkSoftSamples(int softSamples, int width, int height) {
     if (softSamples < 1 || softSamples > kMaxSoftSamples)
-        throw py::value_error("soft_samples " + std::to_string(softSamples) + ": expected 1.." + std::to_string(kMaxSoftSamples));
+        throw InputFailure("soft_samples " + std::to_string(softSamples) + ": expected 1.." + std::to_string(kMaxSoftSamples));
     try {
         checkReferenceRays(width, height, softSamples);
     } catch (const Error& e) {

@@ -7,6 +7,8 @@
 #include <shadowlab/FileWrite.h>
 #include <shadowlab/Text.h>
 
+#include <atomic>
+#include <csignal>
 #include <filesystem>
 #include <optional>
 
@@ -22,7 +24,7 @@ std::string scenePath(const py::handle& scene) {
     if (py::isinstance<PyScene>(scene)) {
         const PyScene& s = scene.cast<const PyScene&>();
         if (s.text || s.path.empty() || !s.overrides.empty())
-            throw py::value_error("scenes: bench takes scene files; a Scene from load_scene_json, default_scene or with overrides is not one "
+            throw InputFailure("scenes: bench takes scene files; a Scene from load_scene_json, default_scene or with overrides is not one "
                                   "(give the file, and the overrides as bench's overrides=)");
         return s.path;
     }
@@ -30,9 +32,9 @@ std::string scenePath(const py::handle& scene) {
     const std::string path = pathArgument(scene, "scenes");
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) throw py::value_error("scenes " + text::escapeControl(text::clipMiddle(path, 200)) + ": file not found");
+    if (!fs::exists(status)) throw InputFailure("scenes " + text::escapeControl(text::clipMiddle(path, 200)) + ": file not found");
     if (!fs::is_regular_file(status))
-        throw py::value_error("scenes " + text::escapeControl(text::clipMiddle(path, 200)) + ": not a regular file (expected a scene file)");
+        throw InputFailure("scenes " + text::escapeControl(text::clipMiddle(path, 200)) + ": not a regular file (expected a scene file)");
     return path;
 }
 
@@ -42,7 +44,7 @@ std::vector<std::string> scenePaths(const py::object& scenes) {
     if (!(py::isinstance<py::list>(scenes) || py::isinstance<py::tuple>(scenes))) return {scenePath(scenes)};
     std::vector<std::string> paths;
     for (const py::handle& s : scenes) paths.push_back(scenePath(s));
-    if (paths.empty()) throw py::value_error("scenes: an empty list (None benches the built-in default scene)");
+    if (paths.empty()) throw InputFailure("scenes: an empty list (None benches the built-in default scene)");
     return paths;
 }
 
@@ -53,12 +55,59 @@ std::string outPath(const py::object& out) {
     const std::string path = pathArgument(out, "out");
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
-    if (fs::exists(status) && !fs::is_directory(status)) throw py::value_error("out " + text::escapeControl(path) + ": exists and is not a directory");
+    if (fs::exists(status) && !fs::is_directory(status)) throw InputFailure("out " + text::escapeControl(path) + ": exists and is not a directory");
     const fs::path parent = fs::path(path).parent_path();
     if (!parent.empty() && !fs::is_directory(parent, ec))
-        throw py::value_error("out " + text::escapeControl(path) + ": directory " + text::escapeControl(parent.string()) + " does not exist");
+        throw InputFailure("out " + text::escapeControl(path) + ": directory " + text::escapeControl(parent.string()) + " does not exist");
     return path;
 }
+
+// Ctrl-C during a bench, seen without the GIL: a bench holds the GL lock
+// while it runs, and a thread that holds the lock must never wait for the
+// GIL (a thread holding the GIL may be waiting for something the bench
+// thread's progress would free). Called from the main thread, while
+// Python's own SIGINT handler is installed, a handler of ours records the
+// signal in a flag the bench's checkpoint reads; at the end Python's
+// handler is put back and the signal handed to it (PyErr_SetInterrupt),
+// so KeyboardInterrupt, or the handler the program set, follows. Elsewhere
+// (another thread, SIGINT ignored) the bench runs to its end, as Python
+// code in a thread does.
+class InterruptWatch {
+public:
+    InterruptWatch() {
+        const py::object threading = py::module_::import("threading");
+        if (!threading.attr("current_thread")().is(threading.attr("main_thread")())) return;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // one that came before the bench
+        struct sigaction current {};
+        if (sigaction(SIGINT, nullptr, &current) != 0 || current.sa_handler == SIG_IGN || current.sa_handler == SIG_DFL) return;
+        struct sigaction ours {};
+        ours.sa_handler = [](int) { arrived().store(true); };
+        sigemptyset(&ours.sa_mask);
+        arrived().store(false);
+        installed_ = sigaction(SIGINT, &ours, &python_) == 0;
+    }
+    InterruptWatch(const InterruptWatch&) = delete;
+    InterruptWatch& operator=(const InterruptWatch&) = delete;
+    ~InterruptWatch() { restore(); }
+    /// Whether Ctrl-C came since the bench began (no GIL needed).
+    static bool interrupted() { return arrived().load(); }
+    /// Python's handler back; a signal that came is handed to it. Call with the GIL.
+    void restore() {
+        if (!installed_) return;
+        sigaction(SIGINT, &python_, nullptr);
+        installed_ = false;
+        if (arrived().exchange(false)) PyErr_SetInterrupt();
+    }
+
+private:
+    static std::atomic<bool>& arrived() {
+        static std::atomic<bool> flag{false};
+        static_assert(std::atomic<bool>::is_always_lock_free, "read from a signal handler");
+        return flag;
+    }
+    struct sigaction python_ {};
+    bool installed_ = false;
+};
 
 // What a run's images are, kept for the rows.
 struct RunImages {
@@ -90,6 +139,7 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
     std::vector<RunImages> kept;
     std::string results, failure;
     bool interrupted = false, input = false, ran = false;
+    InterruptWatch watch;
     {
         py::gil_scoped_release unlocked;
         std::lock_guard hold(glLock());
@@ -101,12 +151,9 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
             std::optional<StagingDirectory> staging;
             if (!outDir.empty()) staging.emplace(outDir, "out");
             BenchHooks hooks;
-            // Ctrl-C (KeyboardInterrupt) stops the bench between frames.
+            // Ctrl-C (KeyboardInterrupt) stops the bench between frames, seen without the GIL.
             hooks.checkpoint = [&] {
-                {
-                    py::gil_scoped_acquire locked;
-                    interrupted = interrupted || PyErr_CheckSignals() != 0;
-                }
+                interrupted = interrupted || InterruptWatch::interrupted();
                 if (interrupted) throw Error("interrupted");
             };
             hooks.images = [&](std::size_t, const std::string& stem, const Comparison& c) {
@@ -125,15 +172,16 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
         } catch (const Error& e) {
             failure = e.what();
             // Before the first run: the arguments', a scene's or the size's; a run's failure names the run.
-            input = !ran && failure.rfind("bench run ", 0) != 0;
+            input = (!ran && failure.rfind("bench run ", 0) != 0) || dynamic_cast<const InputError*>(&e) != nullptr;
         }
     }
+    watch.restore();
     if (interrupted) {
-        if (PyErr_Occurred()) throw py::error_already_set();
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // KeyboardInterrupt, or what the program's handler raised
         throw std::runtime_error("bench: interrupted");
     }
     if (!failure.empty()) {
-        if (input) throw py::value_error(pythonNames(failure, options.overrides));
+        if (input) throw InputFailure(pythonNames(failure, options.overrides));
         throw std::runtime_error(pythonNames(failure, options.overrides));
     }
     py::dict all = py::module_::import("json").attr("loads")(results);

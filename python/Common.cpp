@@ -4,16 +4,43 @@
 
 #include <cstring>
 
+#include <unistd.h>
+
 namespace shadowlab::python {
 
 namespace {
 
 struct Gl {
     std::mutex lock;
-    std::optional<Context> context;
+    std::unique_ptr<Context> context;
+    pid_t owner = 0;  ///< the process that made the context (0: none made yet)
+    /// Set by the module's atexit hook: calls made after it (other atexit
+    /// handlers, __del__ at shutdown) keep no renderer past their end.
+    bool closing = false;
     // Declared after the context: destroyed before it.
     std::shared_ptr<const Scene> keptScene;
     std::unique_ptr<Renderer> kept;
+
+    /// Whether this process is a child forked after the context was made:
+    /// the child has the parent's memory but not its EGL display, so no GL
+    /// call may be made there (libepoxy aborts the process).
+    bool forked() const { return owner != 0 && owner != getpid(); }
+    /// In a forked child, the parent's context and renderer are let go of
+    /// without a GL call (their memory is the child's; the GL objects are
+    /// the parent's).
+    void abandonIfForked() {
+        if (!forked()) return;
+        (void)kept.release();
+        keptScene.reset();
+        (void)context.release();
+    }
+    ~Gl() {
+        abandonIfForked();
+        if (kept && context) {  // a renderer kept at exit: deleted in its own context
+            context->makeCurrent();
+            kept.reset();
+        }
+    }
 };
 Gl& gl() {
     static Gl g;
@@ -26,9 +53,14 @@ std::mutex& glLock() { return gl().lock; }
 
 Context& contextLocked() {
     Gl& g = gl();
+    if (g.forked())
+        throw std::runtime_error("shadowlab: this process was forked from one that had made its OpenGL context, which a forked child "
+                                 "cannot use; start worker processes with multiprocessing's 'spawn' start method "
+                                 "(multiprocessing.get_context('spawn')), or fork before the first shadowlab call");
     if (!g.context) {
         try {
-            g.context.emplace(Context::createHeadless());
+            g.context = std::make_unique<Context>(Context::createHeadless());
+            g.owner = getpid();
         } catch (const Error& e) {
             throw std::runtime_error(e.what());
         }
@@ -57,6 +89,8 @@ void forgetRenderer() {
 void forgetRendererAtExit() {
     Gl& g = gl();
     std::lock_guard hold(g.lock);
+    g.closing = true;
+    g.abandonIfForked();
     if (!g.kept || !g.context) return;
     g.context->makeCurrent();  // its GL objects are deleted in the context they belong to
     forgetRenderer();
@@ -64,7 +98,10 @@ void forgetRendererAtExit() {
 }
 
 Released::~Released() {
-    if (gl().context) gl().context->releaseCurrent();
+    Gl& g = gl();
+    if (g.forked() || !g.context) return;
+    if (g.closing) forgetRenderer();  // after the atexit hook nothing is kept: the next call may be the last
+    g.context->releaseCurrent();
 }
 
 py::array_t<std::uint8_t> rgba(ImageRGBA8&& image) {

@@ -26,7 +26,7 @@ struct Frame {
 
 Frame frameOf(const PyScene& s, int width, int height, double time, int light, bool images) {
     if (light >= 0 && static_cast<std::size_t>(light) >= s.scene->lights.size())
-        throw py::value_error("light " + std::to_string(light) + ": the scene has " + std::to_string(s.scene->lights.size()) + " light(s)");
+        throw InputFailure("light " + std::to_string(light) + ": the scene has " + std::to_string(s.scene->lights.size()) + " light(s)");
     Frame f;
     drawn(s, width, height, time, [&](Renderer& renderer, const Scene& at) {
         renderer.render(at, frameOptions(width, height, time));
@@ -42,7 +42,7 @@ Frame frameOf(const PyScene& s, int width, int height, double time, int light, b
 // (1 lit, 0 shadowed, 0 on the background), HxW float32, or HxWx3 with
 // `coloured` (transmittance through translucent casters).
 py::array_t<float> visibility(const PyScene& s, int light, int width, int height, bool coloured, double time) {
-    if (light < 0) throw py::value_error("light " + std::to_string(light) + ": expected an index from 0");
+    if (light < 0) throw InputFailure("light " + std::to_string(light) + ": expected an index from 0");
     const Frame f = frameOf(s, width, height, time, light, false);
     if (coloured) {
         py::array_t<float> out({height, width, 3});

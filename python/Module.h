@@ -80,7 +80,20 @@ std::string pathArgument(const py::handle& value, const std::string& name);
 /// (`--frames`, `--samples`, `--width`, ...) as the keyword arguments;
 /// control characters escaped, a huge message clipped in its middle.
 std::string pythonNames(std::string message, const std::vector<std::string>& overrides = {});
-/// An Error for bad input as ValueError, named as pythonNames says.
+/// Bad input: raised as `shadowlab.InputError`, a ValueError (module.cpp
+/// registers it), for every value of the caller's that is wrong, wherever
+/// it is found: in the arguments, in reading the scene, or while drawing
+/// (the library's InputError).
+struct InputFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// The message of a library error found while drawing, with the file or
+/// override that set the value it blames (withValueSource), named as
+/// pythonNames says.
+std::string drawingMessage(const Error& e, const std::string& sourceName, const std::vector<std::string>& overrides);
+
+/// An Error for bad input as InputError, named as pythonNames says.
 [[noreturn]] void raiseInput(const Error& e, const std::vector<std::string>& overrides = {});
 /// A frame's size (at least 1 pixel; within the host's memory: the
 /// library's checkMemory) and time (finite); ValueError otherwise.
@@ -111,8 +124,9 @@ RenderOptions frameOptions(int width, int height, double time);
 /// context taken on this thread (one call at a time) and let go after, a
 /// renderer with the scene uploaded (rendererFor: kept from the previous
 /// call with the same scene), `use` run with it and the scene at `time`;
-/// the library's errors as ValueError (a size past the GPU's limit: the
-/// caller's) or RuntimeError (GL's), named as pythonNames says.
+/// the library's errors as InputError (a size past the GPU's limit, a
+/// value of the scene's that cannot be drawn: named with the override or
+/// file that set it) or RuntimeError (GL's), named as pythonNames says.
 template <class Use>
 void drawn(const PyScene& s, int width, int height, double time, const Use& use) {
     checkFrame(width, height, time);
@@ -126,19 +140,20 @@ void drawn(const PyScene& s, int width, int height, double time, const Use& use)
         try {
             checkSize(width, height, context.info());
         } catch (const Error& e) {
-            failure = e.what();
+            failure = pythonNames(e.what());
             input = true;
         }
         if (!input) try {
                 const Scene at = sceneAtTime(*s.scene, time);
                 use(rendererFor(context, s.scene), at);
             } catch (const Error& e) {
-                failure = e.what();
+                input = dynamic_cast<const InputError*>(&e) != nullptr;
+                failure = drawingMessage(e, s.text ? "<json>" : s.path, s.overrides);
                 forgetRenderer();
             }
     }
-    if (input) throw py::value_error(pythonNames(failure, s.overrides));
-    if (!failure.empty()) throw std::runtime_error(pythonNames(failure, s.overrides));
+    if (input) throw InputFailure(failure);
+    if (!failure.empty()) throw std::runtime_error(failure);
 }
 
 py::array_t<std::uint8_t> render(const PyScene& s, int width, int height, double time);

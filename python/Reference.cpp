@@ -30,7 +30,7 @@ CompareOptions compareOptions(int width, int height, int softSamples, double tim
 // traced alone: the others and its own technique do not run.
 py::array_t<float> reference(const PyScene& s, int light, int width, int height, int softSamples, double time) {
     if (light < 0 || static_cast<std::size_t>(light) >= s.scene->lights.size())
-        throw py::value_error("light " + std::to_string(light) + ": the scene has " + std::to_string(s.scene->lights.size()) + " light(s)");
+        throw InputFailure("light " + std::to_string(light) + ": the scene has " + std::to_string(s.scene->lights.size()) + " light(s)");
     const CompareOptions options = compareOptions(width, height, softSamples, time);
     auto alone = std::make_shared<Scene>(*s.scene);
     alone->lights = {s.scene->lights[static_cast<std::size_t>(light)]};

@@ -88,12 +88,12 @@ void bindScenes(py::module_& m) {
     }, py::arg("path"), py::arg("overrides") = py::dict(),
           "A scene file (JSON; a str or os.PathLike) with overrides {path: value} as --set takes them, e.g. {\"lights[0].shadow.map.size\": 1024}");
     m.def("load_scene_json", [](const py::object& text, const py::object& baseDir, const py::dict& overrides) {
-        if (!py::isinstance<py::str>(text)) throw py::value_error("text: expected the scene's JSON as a str");
+        if (!py::isinstance<py::str>(text)) throw InputFailure("text: expected the scene's JSON as a str");
         std::string json;
         try {
             json = text.cast<std::string>();
         } catch (const std::exception&) {
-            throw py::value_error("text: not valid UTF-8 text");
+            throw InputFailure("text: not valid UTF-8 text");
         }
         return loadJson(json, pathArgument(baseDir, "base_dir"), overrideLines(overrides));
     }, py::arg("text"), py::arg("base_dir") = ".", py::arg("overrides") = py::dict(),

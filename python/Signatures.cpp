@@ -52,6 +52,16 @@ std::pair<std::string, bool> problem(const Parameter& p, const py::handle& value
         if (PyBool_Check(value.ptr()) || !(PyFloat_Check(value.ptr()) || PyLong_Check(value.ptr()) || PyIndex_Check(value.ptr()) ||
                                           py::hasattr(value, "__float__")))
             return {name + ": expected a number, got " + typeOf(value), false};
+        if (PyLong_Check(value.ptr()) || (!PyFloat_Check(value.ptr()) && PyIndex_Check(value.ptr()))) {
+            // An integer past a double's range (10**400): pybind11 refuses it as a type.
+            const py::int_ i = py::reinterpret_steal<py::int_>(PyNumber_Index(value.ptr()));
+            const double d = PyLong_AsDouble(i.ptr());
+            if (d == -1.0 && PyErr_Occurred()) {
+                PyErr_Clear();
+                const std::string shown = text::clipMiddle(py::cast<std::string>(py::str(i.ptr())));
+                return {name + " " + shown + ": expected a finite number (past a double's range)", true};
+            }
+        }
         return {"", false};
     case Kind::Bool:
         if (!PyBool_Check(value.ptr()) && typeOf(value) != "bool_") return {name + ": expected True or False, got " + typeOf(value), false};
@@ -90,7 +100,7 @@ void explain(const std::string& function, const std::vector<Parameter>& params, 
         }
         const auto [message, range] = problem(params[i], bound[i], sceneType);
         if (message.empty()) continue;
-        if (range) throw py::value_error(message);
+        if (range) throw InputFailure(message);
         throw py::type_error(message);
     }
 }

@@ -63,6 +63,12 @@ ContextHandle processContext() {
 } // namespace
 
 PYBIND11_MODULE(shadowlab, m) {
+    // numpy's C API looked up now, while the import holds the GIL and no other
+    // call of ours runs: pybind11 looks it up at the first array, inside a
+    // function-local static whose guard a thread would hold while the import
+    // lets go of the GIL, and another thread holding the GIL would wait on that
+    // guard for ever (four threads' first render() calls hung so).
+    (void)py::detail::npy_api::get();
     m.doc() = "shadowlab: real-time shadow techniques on OpenGL 4.5, measured against exact ray-traced shadows";
     py::class_<ContextHandle>(m, "Context",
                           "The process's one headless OpenGL 4.5 context (EGL): Context() makes it on first use, as the first drawing call "
@@ -78,6 +84,9 @@ PYBIND11_MODULE(shadowlab, m) {
         .def_property_readonly("device_memory_bytes", [](const ContextHandle& c) { return c.info.deviceMemoryBytes; },
                                "free device memory the driver reported when the context was made; 0 when it reports none (llvmpipe)")
         .def("__repr__", [](const ContextHandle& c) { return "<shadowlab.Context " + c.info.platform + ": " + c.info.renderer + ", " + c.info.version + ">"; });
+    py::register_exception<InputFailure>(m, "InputError", PyExc_ValueError)
+        .doc() = "Bad input (a ValueError): an argument, a scene's value or an override that is wrong, named in one line with where it came from, "
+                 "whether found in the arguments, in reading the scene or while drawing";
     bindScenes(m);
     // The kept renderer goes before the interpreter and the context do.
     py::module_::import("atexit").attr("register")(py::cpp_function([] {

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Error.h
-/// The one exception type shadowlab throws at its boundary.
+/// The exception types shadowlab throws at its boundary: Error, and
+/// InputError, an Error that blames a value the caller gave.
 ///
 /// Every runtime failure (bad scene file, missing mesh, shader compile error,
 /// no OpenGL 4.5, incomplete framebuffer) throws shadowlab::Error whose what()
@@ -23,6 +24,19 @@ private:
         for (std::size_t at = s.find('\0'); at != std::string::npos; at = s.find('\0', at + 4)) s.replace(at, 1, "\\x00");
         return s;
     }
+};
+
+/// An Error found while drawing that blames a value of the scene or of the
+/// call, not the system: a map past the memory budget, a shadow atlas too
+/// small for its tiles, a planar receiver that is not there, a frame past
+/// the GPU's size limit. what() starts with the value's scene path
+/// (`shadowAtlas.size: ...`, `lights[0].shadow.map: ...`), so that
+/// withValueSource (SceneFile.h) can name the file or override that set it.
+/// Errors in reading a scene are plain Errors (they name their source
+/// themselves); GL and system failures are plain Errors too.
+class SHADOWLAB_API InputError : public Error {
+public:
+    using Error::Error;
 };
 
 } // namespace shadowlab

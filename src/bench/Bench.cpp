@@ -97,9 +97,10 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
                     applied.push_back(c);
                     labels.push_back("--vary " + c);
                 }
-                const std::string message = withValueSource(e.what(), "", applied, labels);
-                throw Error("bench run " + std::to_string(r + 1) + "/" + std::to_string(runs.size()) + " (" + where +
-                            "): " + message);
+                const std::string message = "bench run " + std::to_string(r + 1) + "/" + std::to_string(runs.size()) + " (" + where +
+                                            "): " + withValueSource(e.what(), "", applied, labels);
+                if (dynamic_cast<const InputError*>(&e)) throw InputError(message);  // still the input's fault
+                throw Error(message);
             }
             if (hooks.progress) hooks.progress(++done, total, shown);
             if (last) run.loaded = Scene{};  // its meshes and textures are not needed again

@@ -180,7 +180,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     const GlInfo& gl = context.info();
     const int limit = std::min({gl.maxTextureSize, gl.maxViewportWidth, gl.maxViewportHeight});
     if (options.width < 1 || options.height < 1 || options.width > limit || options.height > limit)
-        throw Error("render size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+        throw InputError("render size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                     ": expected 1.." + std::to_string(limit) + " pixels per side (this GPU's limit)");
     const glm::ivec2 size(options.width, options.height);
     if (!targets || targets->size != size || (options.surfaces && !targets->surfaces)) targets.emplace(size, options.surfaces);

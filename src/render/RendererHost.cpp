@@ -185,7 +185,7 @@ void Renderer::Impl::checkScene(const Scene& s) const {
         throw Error("Renderer: the scene differs from the uploaded one (call upload again)");
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         const std::string reason = unsupportedReason(s.lights[i].shadow.technique, s.lights[i]);
-        if (!reason.empty()) throw Error("Renderer: light " + std::to_string(i) + " ('" + s.lights[i].name + "'): " + reason);
+        if (!reason.empty()) throw InputError("Renderer: light " + std::to_string(i) + " ('" + s.lights[i].name + "'): " + reason);
     }
 }
 

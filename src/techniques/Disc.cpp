@@ -88,7 +88,7 @@ public:
             if (list.empty())
                 host.note("lights[" + std::to_string(index) + "].shadow.disc: no casting node is a disc shape, so this light casts no shadow");
             if (list.size() > SL_DISC_MAX)
-                throw Error(at + ": " + std::to_string(list.size()) + " discs, more than the " + std::to_string(SL_DISC_MAX) + " one light tests");
+                throw InputError(at + ": " + std::to_string(list.size()) + " discs, more than the " + std::to_string(SL_DISC_MAX) + " one light tests");
             counts_[&frame.scene.lights[static_cast<std::size_t>(index)]] = list.size();
         }
     }

@@ -22,10 +22,10 @@ std::vector<std::size_t> itemsNamed(const FrameInfo& frame, const std::string& l
             const int node = frame.items[i].node;
             if (node < 0 || frame.scene.nodes[static_cast<std::size_t>(node)].name != name) continue;
             found = true;
-            if (!fits(i)) throw Error(at + ": node '" + text::escapeControl(name) + "' " + why);
+            if (!fits(i)) throw InputError(at + ": node '" + text::escapeControl(name) + "' " + why);
             chosen.push_back(i);
         }
-        if (!found) throw Error(at + ": no node named '" + text::escapeControl(name) + "'");
+        if (!found) throw InputError(at + ": no node named '" + text::escapeControl(name) + "'");
     }
     return chosen;
 }

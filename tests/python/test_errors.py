@@ -1,6 +1,6 @@
-"""Bad input to the Python module: a ValueError whose one-line message names
-the argument or override key, before anything is drawn or written; never a
-crash, a hang or another exception. The cases come from a hostile run over
+"""Bad input to the Python module: shadowlab.InputError (a ValueError) whose
+one-line message names the argument or override key, before anything is
+written; never a crash, a hang or another exception. The cases come from a hostile run over
 the module (issue 24's battery), one per cause it found."""
 import math
 import os
@@ -12,6 +12,7 @@ import shadowlab as sl
 
 SOURCE = os.path.join(os.path.dirname(__file__), "..", "..")
 SCENE = os.path.join(SOURCE, "scenes", "torus-floating.json")
+MANY = os.path.join(SOURCE, "scenes", "many-lights.json")
 
 
 def D(overrides=None):
@@ -38,6 +39,19 @@ CASES = [
     # frames and warmup: the CLI's ranges (issue 59: 10**6 frames ran for ever).
     ("bench-frames-huge", lambda: sl.bench(SCENE, 32, 24, frames=10**6), r"^frames 1000000: expected 1\.\.100000$"),
     ("bench-warmup-huge", lambda: sl.bench(SCENE, 32, 24, warmup=10**7), r"^warmup 10000000: expected 0\.\.1000$"),
+    # Found while drawing, not in reading the scene: still bad input, named by the override that set the value.
+    ("atlas-too-small", lambda: sl.render(sl.load_scene(MANY, {"shadowAtlas.size": 512, "shadowAtlas.minTile": 256}), 64, 36),
+     r"^overrides\[shadowAtlas\.size\]: shadowAtlas\.size: 224 tiles of at least 256\^2 texels \(shadowAtlas\.minTile\) do not fit in 512\^2"),
+    ("atlas-too-small-with-overrides", lambda: sl.render(sl.load_scene(MANY).with_overrides({"shadowAtlas.size": 512, "shadowAtlas.minTile": 256}), 64, 36),
+     r"^overrides\[shadowAtlas\.size\]: shadowAtlas\.size: 224 tiles"),
+    ("planar-receiver-missing", lambda: sl.render(D({"lights[0].shadow.technique": "planar", "lights[0].shadow.planar.receivers": "nosuch"}), 64, 36),
+     r"^overrides\[lights\[0\]\.shadow\.planar\.receivers\]: lights\[0\]\.shadow\.planar\.receivers: no node named 'nosuch'$"),
+    ("cascade-split-before-near", lambda: sl.visibility(D({"lights[0].shadow.map.cascades": 3, "lights[0].shadow.map.cascadeSplits": "0.001,1"}), 0, 64, 36),
+     r"^overrides\[lights\[0\]\.shadow\.map\.cascadeSplits\]: .*the first split must lie beyond the camera's near plane"),
+    ("maps-past-budget", lambda: sl.render(D({"lights[0].shadow.map.size": 16384, "lights[0].shadow.map.cascades": 4}), 64, 36),
+     r"^overrides\[lights\[0\]\.shadow\.map\.cascades\]: lights\[0\]\.shadow\.map: the shadow maps of 1 light\(s\) need 4\.00 GiB, more than the budget of 1 GiB"),
+    ("bench-run-atlas-too-small", lambda: sl.bench(MANY, 64, 36, frames=1, warmup=0, overrides={"shadowAtlas.minTile": 256}, vary={"shadowAtlas.size": [512]}),
+     r"^bench run 1/1 \(.*many-lights\.json, vary\[shadowAtlas\.size\]=512\): vary\[shadowAtlas\.size\]=512: shadowAtlas\.size: 224 tiles"),
     # Overrides: keys are paths without '=' or NUL, values JSON; messages name the key, not a JSON value's colons.
     ("override-object-value", lambda: D({"lights[0].shadow.map": {"size": 7}}),
      r"^overrides\[lights\[0\]\.shadow\.map\]: lights\[0\]\.shadow\.map\.size: map: size: expected 0 \(follow the frame\) or 16\.\.16384 texels, got 7$"),
@@ -87,9 +101,9 @@ CASES = [
 @pytest.mark.parametrize("name,call,message", CASES, ids=[c[0] for c in CASES])
 def test_bad_input(name, call, message, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # a bench that wrongly ran would write here
-    with pytest.raises(ValueError, match=message) as raised:
+    with pytest.raises(sl.InputError, match=message) as raised:
         call()
-    assert "\n" not in str(raised.value)
+    assert isinstance(raised.value, ValueError) and "\n" not in str(raised.value)
     assert os.listdir(tmp_path) == [], name  # nothing written
 
 
@@ -104,22 +118,25 @@ def scene_object():
 
 
 # Arguments of the wrong type: one line naming the argument (pybind11's own
-# error lists every signature over four lines); an int past C's int: ValueError.
+# error lists every signature over four lines); an int past C's int, or a
+# number past a double's: InputError (a ValueError).
 TYPE_CASES = [
     ("render-width-str", lambda: sl.render(scene_object(), "a", 10), TypeError, r"^width: expected an int, got str$"),
     ("render-width-float", lambda: sl.render(scene_object(), 10.5, 10), TypeError, r"^width: expected an int, got float$"),
-    ("render-width-huge", lambda: sl.render(scene_object(), 2**70, 10), ValueError,
+    ("render-width-huge", lambda: sl.render(scene_object(), 2**70, 10), sl.InputError,
      r"^width 1180591620717411303424: expected an integer in -2147483648\.\.2147483647$"),
     ("render-time-str", lambda: sl.render(scene_object(), 10, 10, time="x"), TypeError, r"^time: expected a number, got str$"),
+    ("render-time-past-double", lambda: sl.render(scene_object(), 10, 10, time=10**400), sl.InputError,
+     r"^time 1000.*0: expected a finite number \(past a double's range\)$"),
     ("render-scene-none", lambda: sl.render(None, 10, 10), TypeError, r"^scene: expected a shadowlab\.Scene .*, got NoneType$"),
     ("render-scene-path", lambda: sl.render(SCENE, 10, 10), TypeError, r"^scene: expected a shadowlab\.Scene .*, got str$"),
     ("render-unknown-keyword", lambda: sl.render(scene_object(), 10, 10, foo=1), TypeError, r"^render\(\): no argument named foo$"),
     ("render-missing", lambda: sl.render(scene_object()), TypeError, r"^render\(\): missing argument width$"),
     ("render-too-many", lambda: sl.render(scene_object(), 10, 10, 0.0, 5), TypeError, r"^render\(\) takes at most 4 arguments, got 5$"),
-    ("visibility-light-huge", lambda: sl.visibility(scene_object(), 2**40, 10, 10), ValueError, r"^light 1099511627776: expected an integer in"),
+    ("visibility-light-huge", lambda: sl.visibility(scene_object(), 2**40, 10, 10), sl.InputError, r"^light 1099511627776: expected an integer in"),
     ("visibility-coloured-str", lambda: sl.visibility(scene_object(), 0, 10, 10, coloured="yes"), TypeError,
      r"^coloured: expected True or False, got str$"),
-    ("compare-soft-samples-huge", lambda: sl.compare(scene_object(), 10, 10, soft_samples=2**31), ValueError, r"^soft_samples 2147483648: "),
+    ("compare-soft-samples-huge", lambda: sl.compare(scene_object(), 10, 10, soft_samples=2**31), sl.InputError, r"^soft_samples 2147483648: "),
     ("bench-frames-str", lambda: sl.bench(SCENE, 32, 24, frames="3"), TypeError, r"^frames: expected an int, got str$"),
     ("load-scene-overrides-str", lambda: sl.load_scene(SCENE, "x"), TypeError, r"^overrides: expected a dict \{path: value\}, got str$"),
     ("with-overrides-int", lambda: scene_object().with_overrides(5), TypeError, r"^overrides: expected a dict \{path: value\}, got int$"),

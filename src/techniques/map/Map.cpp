@@ -46,11 +46,11 @@ void checkSplitsInView(const MapOptions& o, const Light& light, const Camera& ca
     if (splits.empty()) return;
     const std::string at = "lights[" + std::to_string(index) + "].shadow.map.cascadeSplits: \"" + text::escapeControl(o.cascadeSplits) + "\": ";
     if (splits.front() <= camera.nearPlane)
-        throw Error(at + "the first split must lie beyond the camera's near plane (camera.near " + text::numberText(camera.nearPlane) + ")");
+        throw InputError(at + "the first split must lie beyond the camera's near plane (camera.near " + text::numberText(camera.nearPlane) + ")");
     if (splits.back() >= camera.farPlane) {
         // A split a hair under the far plane may round onto it as a 32-bit float.
         const bool rounded = splits.back() == camera.farPlane;
-        throw Error(at + "the last split must lie before the camera's far plane (camera.far " + text::numberText(camera.farPlane) + ")" +
+        throw InputError(at + "the last split must lie before the camera's far plane (camera.far " + text::numberText(camera.farPlane) + ")" +
                     (rounded ? "; as a 32-bit float it is " + text::numberText(splits.back()) : ""));
     }
 }
@@ -91,7 +91,7 @@ public:
             }
             const int limit = host.glInfo().maxTextureSize;
             if (o.size > limit)
-                throw Error("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
+                throw InputError("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
                             " texels is past this GPU's limit of " + std::to_string(limit));
             const bool cube = isCube(light);
             const ArrayKey key = ArrayKey::of(o, cube);

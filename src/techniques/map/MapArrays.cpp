@@ -99,12 +99,12 @@ void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<Arr
             largestLayers = wanted.second * perLight;
         }
         if (wanted.second * perLight > info.maxArrayLayers)
-            throw Error("lights[" + std::to_string(firstLight) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
+            throw InputError("lights[" + std::to_string(firstLight) + "].shadow.map: " + std::to_string(wanted.second * perLight) +
                         " map layers in one array (" + (perLight == 6 ? std::to_string(wanted.second) + " point light(s), six each" : "lights and cascades") +
                         "), past this GPU's limit of " + std::to_string(info.maxArrayLayers) + " layers");
     }
     if (bytes > kMapBudgetBytes && largest < 0.0)
-        throw Error("shadowAtlas.size: the shadow atlas needs " + std::to_string(atlasBytes / kMapBudgetBytes).substr(0, 4) +
+        throw InputError("shadowAtlas.size: the shadow atlas needs " + std::to_string(atlasBytes / kMapBudgetBytes).substr(0, 4) +
                     " GiB, more than the maps' budget of 1 GiB (a side of at most 16384 texels, 8192 by default)");
     if (bytes > kMapBudgetBytes) {
         // Named at the map block of the light whose array takes the most, so
@@ -114,7 +114,7 @@ void checkLimits(const std::map<ArrayKey, int>& layersWanted, const std::map<Arr
         std::snprintf(text, sizeof text,
                       "the shadow maps of %zu light(s) need %.2f GiB, more than the budget of 1 GiB%s (the largest array, from this light: %d layer(s) of %d^2, %.2f GiB; lower lights[i].shadow.map.size or cascades, or set technique \"none\" on lights that need no shadow)",
                       lightCount, bytes / kMapBudgetBytes, atlasBytes > 0.0 ? " with the shadow atlas's" : "", largestLayers, largestKey.size, largest / kMapBudgetBytes);
-        throw Error("lights[" + std::to_string(largestLight) + "].shadow.map: " + text);
+        throw InputError("lights[" + std::to_string(largestLight) + "].shadow.map: " + text);
     }
 }
 

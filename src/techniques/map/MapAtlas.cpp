@@ -85,7 +85,7 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
     const ShadowAtlasSettings& settings = frame.scene.shadowAtlas;
     const int limit = host.glInfo().maxTextureSize;
     if (settings.size > limit)
-        throw Error("shadowAtlas.size: " + std::to_string(settings.size) + " texels is past this GPU's limit of " + std::to_string(limit));
+        throw InputError("shadowAtlas.size: " + std::to_string(settings.size) + " texels is past this GPU's limit of " + std::to_string(limit));
     if (size_ != settings.size) {
         depth_ = gl::Texture(GL_TEXTURE_2D);
         glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, settings.size, settings.size);
@@ -166,7 +166,7 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
     if (!layout.fits) {
         std::size_t tiles = 0;
         for (const AtlasRequest& r : requests) tiles += static_cast<std::size_t>(r.tiles);
-        throw Error("shadowAtlas.size: " + std::to_string(tiles) + " tiles of at least " + std::to_string(settings.minTile) + "^2 texels (shadowAtlas.minTile) do not fit in " +
+        throw InputError("shadowAtlas.size: " + std::to_string(tiles) + " tiles of at least " + std::to_string(settings.minTile) + "^2 texels (shadowAtlas.minTile) do not fit in " +
                     std::to_string(settings.size) + "^2; raise shadowAtlas.size or lower shadowAtlas.minTile");
     }
     tiles_.clear();
