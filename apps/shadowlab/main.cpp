@@ -111,6 +111,29 @@ bool debugWanted(DebugImageKind kind, const std::vector<std::string>& wanted) {
     return false;
 }
 
+// --debug texel-density: a light drawn with a light camera whose technique
+// makes no texel-density image of it (a tile of the shadow atlas) is said,
+// not left out silently.
+void noteLightsWithoutDensity(const Renderer& renderer, const Scene& scene, const std::vector<DebugImage>& images, std::ostream& out) {
+    std::vector<bool> hasCamera(scene.lights.size(), false), hasDensity(scene.lights.size(), false);
+    for (const LightFrustum& f : renderer.lightFrustums(scene))
+        if (f.light >= 0 && static_cast<std::size_t>(f.light) < hasCamera.size()) hasCamera[static_cast<std::size_t>(f.light)] = true;
+    for (const DebugImage& d : images)
+        if (d.kind == DebugImageKind::TexelDensity && d.light >= 0 && static_cast<std::size_t>(d.light) < hasDensity.size())
+            hasDensity[static_cast<std::size_t>(d.light)] = true;
+    std::string missing;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        if (hasCamera[i] && !hasDensity[i]) {
+            if (count < 8) missing += (missing.empty() ? "" : ", ") + std::to_string(i) + " '" + text::escapeControl(scene.lights[i].name) + "'";
+            ++count;
+        }
+    if (count == 0) return;
+    if (count > 8) missing += " and " + std::to_string(count - 8) + " more";
+    out << "shadowlab: note: --debug texel-density: no texel-density image of light" << (count > 1 ? "s " : " ") << missing
+        << ": the technique makes none of its map (a tile of the shadow atlas)\n";
+}
+
 int runRender(const RenderArgs& args) {
     checkTime(args.timeSeconds, "--time");
     checkFps(args.fps);
@@ -175,6 +198,7 @@ int runRender(const RenderArgs& args) {
         // --debug KIND: the images of that kind beside the output, <stem>-<image>.png.
         for (const DebugImage& d : debug)
             if (debugWanted(d.kind, args.debug)) pending.write(output.parent_path() / (output.stem().string() + "-" + d.name + ".png"), d.image);
+        if (debugWanted(DebugImageKind::TexelDensity, args.debug)) noteLightsWithoutDensity(renderer, scene, debug, std::cerr);
         // --debug-images DIR: <image>.png, or <frame stem>-<image>.png for a sequence.
         if (!args.debugImages.empty()) {
             const fs::path dir(args.debugImages);

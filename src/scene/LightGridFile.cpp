@@ -59,14 +59,19 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
                std::to_string(kMaxLights) + " in a scene, " + std::to_string(lightsBefore) + " in `lights`); give lightGrid.count");
     const int seed = r.integer("seed", 1, 0, 2147483647);
     const glm::vec2 lo = corner(r, "min", {-10.0f, -10.0f}), hi = corner(r, "max", {10.0f, 10.0f});
-    if (!(hi.x > lo.x && hi.y > lo.y)) {
-        // The corner a --set changed is at fault, not the file's other one
-        // (--set lightGrid.min=[24,12] was blamed on the file's max).
+    // A bad rectangle is blamed on the corner a --set changed, not on the
+    // file's other one (--set lightGrid.min=[24,12] was blamed on the file's max).
+    const auto failCorner = [&](const std::string& why) {
         const bool minSet = r.has("min") && overrides::overrideAt(r.context().overrides, r.path() + ".min");
         const bool maxSet = r.has("max") && overrides::overrideAt(r.context().overrides, r.path() + ".max");
         const char* key = minSet && !maxSet ? "min" : "max";
-        (r.has(key) ? r.child(key) : r).fail("expected max > min in x and z");
-    }
+        (r.has(key) ? r.child(key) : r).fail(why);
+    };
+    if (!(hi.x > lo.x && hi.y > lo.y)) failCorner("expected max > min in x and z");
+    // Each corner within a float's range, their difference too (min -3e38, max
+    // 3e38 made the lights' positions infinite, blamed on lightGrid.light.position).
+    if (!std::isfinite(hi.x - lo.x) || !std::isfinite(hi.y - lo.y))
+        failCorner(std::string("the rectangle's side max - min is past a float's range of 3e38 in ") + (std::isfinite(hi.x - lo.x) ? "z" : "x"));
     const float height = r.number("height", 2.0f);
     const float spots = r.has("spots") ? r.child("spots").number() : 0.5f;
     if (!(spots >= 0.0f && spots <= 1.0f)) r.child("spots").fail("expected a share in 0..1, got " + Reader::fmt(spots));

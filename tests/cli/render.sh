@@ -40,6 +40,14 @@ grep -q -- "--view-from-light 7: the scene has 1 light" err.txt && [[ ! -e p.png
 # --debug shadow-maps: the map beside the image; a kind it does not know is a one-line error.
 out=$("$tool" render "$src/scenes/spot-objects.json" -o s.png --width 64 --height 48 --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=64 --debug shadow-maps)
 [[ -s s.png && -s s-light0-map.png && ! -e s-light0-texel-density.png ]] || { echo "--debug shadow-maps wrote: $out"; exit 1; }
+# --debug texel-density of lights in the shadow atlas (no density image of a
+# tile): a note names them, rather than writing nothing silently (issue 59).
+"$tool" render "$src/scenes/many-lights.json" -o a.png --width 64 --height 48 --set lightGrid.count=2 --debug texel-density 2>err.txt >/dev/null \
+  || { echo "--debug texel-density on atlas lights failed: $(cat err.txt)"; exit 1; }
+grep -qx "shadowlab: note: --debug texel-density: no texel-density image of lights 0 'spot 0', 1 'point 1': the technique makes none of its map (a tile of the shadow atlas)" err.txt \
+  || { echo "atlas lights' missing density unsaid: $(cat err.txt)"; exit 1; }
+"$tool" render "$src/scenes/torus-resting.json" -o td.png --width 64 --height 48 --debug texel-density 2>err.txt >/dev/null
+[[ -s td-light0-texel-density.png && ! -s err.txt ]] || { echo "--debug texel-density of a map light: $(cat err.txt)"; exit 1; }
 # A point light's cube: its six faces as one cross, 4 x 3 faces of 64 texels.
 out=$("$tool" render "$src/scenes/room-point.json" -o c.png --width 64 --height 48 --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=64 --debug shadow-maps)
 [[ -s c-light0-cube.png ]] || { echo "--debug shadow-maps on a point light wrote: $out"; exit 1; }

@@ -155,6 +155,10 @@ INSTANTIATE_TEST_SUITE_P(
         // The --set that broke it is named (issue 59: it was blamed on the file's max).
         SceneErrorCase{"EmptyRectangleBySet", withGrid(R"({"min": [-24, -12], "max": [24, 12]})"), {"lightGrid.min=[24,12]"},
                        "--set lightGrid.min=[24,12]: lightGrid.min: expected max > min in x and z"},
+        SceneErrorCase{"SidePastAFloat", withGrid(R"({"min": [-3e38, -1], "max": [3e38, 1]})"), {},
+                       "lightGrid.max: the rectangle's side max - min is past a float's range of 3e38 in x"},
+        SceneErrorCase{"SidePastAFloatBySet", withGrid(R"({"min": [-1, -1], "max": [3e38, 1]})"), {"lightGrid.min=[-3e38,-1]"},
+                       "--set lightGrid.min=[-3e38,-1]: lightGrid.min: the rectangle's side"},
         SceneErrorCase{"CornerNotAPair", withGrid(R"({"min": [0, 0, 0]})"), {}, "lightGrid.min: expected [x, z]"},
         SceneErrorCase{"SpotShare", withGrid(R"({"spots": 1.5})"), {}, "lightGrid.spots: expected a share in 0..1, got 1.5"},
         SceneErrorCase{"TemplateType", withGrid(R"({"light": {"type": "point"}})"), {}, "lightGrid.light.type: unknown key"},
