@@ -405,3 +405,31 @@ TEST_F(CubeMapGLTest, SwitchingTheCubesMeasureLeavesNoStaleDepths) {
     EXPECT_GT(shadowed, 1000u) << "the room's shadows must be in view";
     EXPECT_LE(static_cast<double>(differ), 0.0005 * static_cast<double>(window.size()));
 }
+
+// A point light over receivers far past any map's reach (a plane 1e20 m
+// wide, a box spanning +-1.5e38 m below it): each face's projected
+// rectangle is clamped before it becomes texels (it overflowed an int:
+// issue 59, seen by UBSan) and the frame draws without a GL error, every
+// visibility in 0..1. The shadows themselves are not judged: a surface
+// interpolated between vertices 1e19 m and more apart has positions good
+// to about 1e12 m in 32-bit floats. Run under the ASan+UBSan preset too,
+// where an overflow stops the test.
+TEST_F(CubeMapGLTest, ReceiversPastAnyReachDrawWithoutOverflow) {
+    for (const char* ground : {R"({"name": "ground", "shape": {"type": "plane", "size": [1e20, 1e20]}})",
+                               R"({"name": "ground", "shape": {"type": "box", "size": [3e38, 1, 3e38]}, "translation": [0, -0.5, 0]})"}) {
+        SCOPED_TRACE(ground);
+        const Scene scene = parseScene(std::string(R"({"camera": {"position": [0, 6, 6], "target": [0, 0, 0]},
+          "lights": [{"type": "point", "position": [0, 3, 0], "shadow": {"technique": "map", "map": {"size": 256}}}],
+          "nodes": [)") + ground + R"(, {"name": "ball", "shape": {"type": "sphere", "radius": 0.5}, "translation": [0, 1, 0]}]})",
+                                       "huge", ".");
+        Renderer renderer(test::glContext());
+        renderer.upload(scene);
+        RenderOptions options;
+        options.width = 160;
+        options.height = 90;
+        renderer.render(scene, options);
+        std::size_t outside = 0;
+        for (const float x : renderer.readVisibility(scene, 0)) outside += !(x >= 0.0f && x <= 1.0f);
+        EXPECT_EQ(outside, 0u) << "visibilities outside 0..1 (or NaN)";
+    }
+}
