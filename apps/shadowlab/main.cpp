@@ -310,6 +310,9 @@ int runCompare(const CompareArgs& args) {
     std::cout << "wrote";
     for (const fs::path& p : written) std::cout << " " << p.string();
     std::cout << "\n";
+    if (!c.lights.empty())
+        std::cout << "error-<i>.png: red = lit where truth is shadowed (false lit), blue = shadowed where truth is lit (false shadow), "
+                     "paler in the 1-pixel edge band; grey = agrees, darker grey = not a receiver\n";
     return 0;
 }
 

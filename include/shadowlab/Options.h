@@ -23,6 +23,16 @@ enum class OptionKind {
     Text,    ///< std::string member; JSON string (e.g. a comma-separated list of node names)
 };
 
+/// Another name for one of a Choice's values (the lectures' "pcf" for the
+/// grid filter), with the values it implies for other fields of the block
+/// (kernel 8) unless the block writes them.
+struct ChoiceAlias {
+    std::string name;                                     ///< the other name, accepted where the choice is written
+    std::string means;                                    ///< the choice it stands for (one of OptionField::choices)
+    std::vector<std::pair<std::string, double>> implies;  ///< other fields' values (Choice: index), where not written
+    std::string doc;                                      ///< one clause: what it is ("the lectures' PCF: ...")
+};
+
 struct OptionField {
     std::string key;                  ///< JSON key inside the technique's block
     OptionKind kind = OptionKind::Number;
@@ -31,6 +41,7 @@ struct OptionField {
     double maximum = 0.0;             ///< Number, Integer: largest allowed value
     std::vector<std::string> choices; ///< Choice: the names, in enum order; Text: one line saying what it may hold
     std::string doc;                  ///< one line
+    std::vector<ChoiceAlias> aliases; ///< Choice: other names accepted for its values
     /// The member's value as a number (Choice: its index; Boolean: 0 or 1).
     std::function<double(const std::any&)> get;
     /// Sets the member from a number that is valid for the field.
@@ -94,6 +105,12 @@ public:
         add(key, OptionKind::Choice, noUnit, 0, last, std::move(names), doc,
             [member](const T& t) { return static_cast<double>(static_cast<int>(t.*member)); },
             [member](T& t, double v) { t.*member = static_cast<E>(static_cast<int>(v)); });
+        return *this;
+    }
+    /// `name` accepted for the last field's (a Choice's) value `means`,
+    /// setting `implies` (other fields by key) where the block does not write them.
+    OptionTableFor& alias(std::string name, std::string means, std::vector<std::pair<std::string, double>> implies, std::string doc) {
+        table_.fields.back().aliases.push_back({std::move(name), std::move(means), std::move(implies), std::move(doc)});
         return *this;
     }
     OptionTableFor& text(std::string T::*member, std::string key, std::string allowed, std::string doc) {

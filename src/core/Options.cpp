@@ -53,6 +53,7 @@ std::string OptionTable::rangeText(const OptionField& field) {
     case OptionKind::Choice: {
         std::string out;
         for (const std::string& c : field.choices) out += (out.empty() ? "\"" : ", \"") + c + "\"";
+        for (const ChoiceAlias& a : field.aliases) out += ", \"" + a.name + "\" (" + a.doc + ")";
         return out;
     }
     case OptionKind::Integer:

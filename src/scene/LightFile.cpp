@@ -51,10 +51,16 @@ std::any readOptions(const Reader& r, const OptionTable& table) {
         }
         case OptionKind::Boolean: f.set(options, v.boolean() ? 1.0 : 0.0); break;
         case OptionKind::Choice: {
-            const std::string name = v.string();
+            std::string name = v.string();
+            // Another name (the lectures' "pcf"): its value, and what it implies where the block is silent.
+            const auto alias = std::find_if(f.aliases.begin(), f.aliases.end(), [&](const ChoiceAlias& a) { return a.name == name; });
+            if (alias != f.aliases.end()) name = alias->means;
             const auto it = std::find(f.choices.begin(), f.choices.end(), name);
             if (it == f.choices.end()) v.fail("expected one of " + allowed + ", got \"" + name + "\"");
             f.set(options, static_cast<double>(it - f.choices.begin()));
+            if (alias != f.aliases.end())
+                for (const auto& [key, value] : alias->implies)
+                    if (const OptionField* other = table.find(key); other && !r.has(key)) other->set(options, value);
             break;
         }
         case OptionKind::Text: f.setText(options, v.string()); break;

@@ -67,6 +67,13 @@ for f in technique.png reference.png error-0.png; do cmp -s walk/$f key/$f || fa
 cmp -s walk0/technique.png walk/technique.png && fail "compare at times 0 and 2 of a camera path gave the same image"
 passed=$((passed + 1))
 
+# The error image's colours are said with the files (a user opening
+# error-0.png should not need docs/metrics.md to read it).
+"$tool" compare "$src/scenes/torus-resting.json" -o legend --width 48 --height 27 > legend.txt || fail "compare for the legend failed"
+grep -qx "error-<i>.png: red = lit where truth is shadowed (false lit), blue = shadowed where truth is lit (false shadow), paler in the 1-pixel edge band; grey = agrees, darker grey = not a receiver" legend.txt \
+  || fail "no legend of the error image: $(cat legend.txt)"
+passed=$((passed + 1))
+
 # A light in the shadow atlas has no texel footprint measured, and compare
 # says so rather than leave the line out (issue 59).
 "$tool" compare "$src/scenes/many-lights.json" --set lightGrid.count=2 -o atlas --width 96 --height 72 > atlas.txt || fail "compare of the atlas's lights failed"

@@ -146,3 +146,23 @@ TEST(OptionsTest, EveryNumberOptionTakesTheEndsOfItsRange) {
         }
     }
 }
+
+// The lectures' name for percentage-closer filtering: `filter: pcf` is the
+// grid filter with the lecture's 8x8 kernel (64 taps), a kernel the block
+// writes kept; the allowed values say so, and a name that is neither a
+// filter nor an alias is still refused.
+TEST(OptionAlias, PcfIsTheGridFilterWithTheLecturesKernel) {
+    const auto mapOf = [](const std::string& block) {
+        const Scene s = parseScene(R"({"lights": [{"type": "directional", "shadow": {"technique": "map", "map": )" + block + "}}]}", "s.json", ".");
+        return s.lights[0].shadow.get<MapOptions>();
+    };
+    const MapOptions pcf = mapOf(R"({"filter": "pcf"})");
+    EXPECT_EQ(pcf.filter, MapFilter::Grid);
+    EXPECT_EQ(pcf.kernel, 8);
+    const MapOptions pcf3 = mapOf(R"({"filter": "pcf", "kernel": 3})");
+    EXPECT_EQ(pcf3.filter, MapFilter::Grid);
+    EXPECT_EQ(pcf3.kernel, 3);
+    EXPECT_EQ(mapOf(R"({"filter": "grid"})").kernel, MapOptions{}.kernel);  // the grid's own default is untouched
+    const std::string refused = errorOf([&] { mapOf(R"({"filter": "pcff"})"); });
+    EXPECT_NE(refused.find("\"pcf\" (the lectures' percentage-closer filtering"), std::string::npos) << refused;
+}
