@@ -118,7 +118,7 @@ struct RunImages {
 } // namespace
 
 py::list bench(const py::object& scenes, int width, int height, const py::object& vary, const py::dict& overrides, int frames, int warmup,
-               double time, double fps, bool flips, int softSamples, const py::object& out, int rounds) {
+               double time, double fps, bool flips, int softSamples, const py::object& out, int rounds, bool skipUnsupported) {
     checkFrame(width, height, time);
     checkSoftSamples(softSamples, width, height);
     BenchOptions options;
@@ -134,6 +134,7 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
     options.width = width;
     options.height = height;
     options.softSamples = softSamples;
+    options.skipUnsupported = skipUnsupported;
     const std::string outDir = outPath(out);
 
     std::vector<RunImages> kept;

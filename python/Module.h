@@ -167,6 +167,6 @@ py::dict compare(const PyScene& s, int width, int height, int softSamples, doubl
 void explainArgumentErrors(py::module_& m);
 
 py::list bench(const py::object& scenes, int width, int height, const py::object& vary, const py::dict& overrides, int frames, int warmup,
-               double time, double fps, bool flips, int softSamples, const py::object& out, int rounds);
+               double time, double fps, bool flips, int softSamples, const py::object& out, int rounds, bool skipUnsupported);
 
 } // namespace shadowlab::python

@@ -157,7 +157,7 @@ void explainArgumentErrors(py::module_& m) {
     wrapFunction(m, "bench",
                  {{"scenes", Kind::Any, false}, {"width", Kind::Int, false}, {"height", Kind::Int, false}, {"vary", Kind::Any, false}, overrides,
                   {"frames", Kind::Int, false}, {"warmup", Kind::Int, false}, time, {"fps", Kind::Float, false}, {"flips", Kind::Bool, false},
-                  softSamples, {"out", Kind::Any, false}, {"rounds", Kind::Int, false}},
+                  softSamples, {"out", Kind::Any, false}, {"rounds", Kind::Int, false}, {"skip_unsupported", Kind::Bool, false}},
                  scene);
     wrapFunction(m, "load_scene", {{"path", Kind::Any, true}, overrides}, scene);
     wrapFunction(m, "load_scene_json", {{"text", Kind::Any, true}, {"base_dir", Kind::Any, false}, overrides}, scene);

@@ -107,7 +107,7 @@ PYBIND11_MODULE(shadowlab, m) {
           "Light `light`'s exact ray-traced visibility (Embree) at the frame's surface points: float32 HxW, 1 lit, 0 shadowed, 0 where the light does not reach");
     m.def("bench", &bench, py::arg("scenes") = py::none(), py::arg("width") = 960, py::arg("height") = 540, py::arg("vary") = py::none(),
           py::arg("overrides") = py::dict(), py::arg("frames") = 10, py::arg("warmup") = 2, py::arg("time") = 0.0, py::arg("fps") = 30.0,
-          py::arg("flips") = false, py::arg("soft_samples") = 256, py::arg("out") = py::none(), py::arg("rounds") = 1,
+          py::arg("flips") = false, py::arg("soft_samples") = 256, py::arg("out") = py::none(), py::arg("rounds") = 1, py::arg("skip_unsupported") = false,
           "`shadowlab bench`: every scene with every combination of vary's values ({key: [values]} or [(key, [values])]), timed and compared; "
           "results.json's rows as dicts with their images as arrays; with out=DIR also results.json, report.html and the images there");
     m.def("live_gl_objects", &liveGlObjects, "GL objects the library's handles own right now (0 between calls: each call's are gone at its end)");

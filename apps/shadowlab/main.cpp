@@ -464,6 +464,9 @@ CLI::App* addBench(CLI::App& app, tool::BenchArgs& args, std::string& output) {
     bench->add_flag("--flips", args.flips,
                     "Temporal stability: compare every timed frame with the reference and report per light the share of receiver "
                     "pixels whose shadow changes between consecutive frames at the same world point while the truth there does not (needs --frames >= 2)");
+    bench->add_flag("--skip-unsupported", args.skipUnsupported,
+                    "Leave out the runs whose combination a light's technique cannot draw (cascades on a spot light, a soft filter on an "
+                    "atlas tile), each listed with its reason in results.json's \"skipped\", instead of refusing the bench; other bad values still refuse it");
     bench->add_option("--warmup", args.warmup, "Untimed frames before timing")->check(CLI::Range(0, 1000))->capture_default_str();
     bench->add_option("--rounds", args.rounds,
                       "Rounds of timing: each run timed once a round, the runs in turn, and each row keeps its fastest round "

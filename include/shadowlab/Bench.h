@@ -47,6 +47,13 @@ struct BenchOptions {
     int rounds = 1;
     int width = 960, height = 540;       ///< pixels; default 960 x 540
     int softSamples = 256;               ///< reference rays per pixel for lights with size > 0; default 256
+    /// Leave out the runs whose combination a light's technique cannot draw
+    /// (UnsupportedError: cascades on a spot light, volume on an
+    /// alpha-tested caster), each listed in results.json's "skipped" with
+    /// its reason, instead of refusing the whole bench; so one run can vary
+    /// techniques over scenes that not every technique suits. Other bad
+    /// values still refuse it. Default off.
+    bool skipUnsupported = false;
     /// Per-pass clock: Auto = glFinish-bracketed CPU time on a software
     /// rasteriser, timestamp queries on a GPU.
     TimingClock clock = TimingClock::Auto;

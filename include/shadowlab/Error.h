@@ -39,4 +39,12 @@ public:
     using Error::Error;
 };
 
+/// An InputError for a combination a light's technique cannot draw (a spot
+/// light with cascades, an atlas tile with a soft filter): every value is
+/// valid alone. Bench's skipUnsupported leaves such runs out.
+class SHADOWLAB_API UnsupportedError : public InputError {
+public:
+    using InputError::InputError;
+};
+
 } // namespace shadowlab

@@ -36,7 +36,18 @@ void checkArgs(const BenchOptions& args) {
 
 json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
     checkArgs(args);
-    std::vector<BenchRun> runs = loadRuns(args);  // every scene and combination checked before the long run starts
+    json skipped = json::array();
+    std::vector<BenchRun> runs = loadRuns(args, &skipped);  // every scene and combination checked before the long run starts
+    if (runs.empty()) throw Error("--skip-unsupported: every run was left out (" + skipped.front()["reason"].get<std::string>() + ")");
+    if (hooks.note)
+        for (std::size_t i = 0; i < skipped.size(); ++i) {
+            if (i == 10) {
+                hooks.note("--skip-unsupported: " + std::to_string(skipped.size() - 10) + " more run(s) left out (results.json's \"skipped\")");
+                break;
+            }
+            const std::string file = skipped[i]["sceneFile"].get<std::string>();
+            hooks.note("--skip-unsupported: left out " + (file.empty() ? std::string("the default scene") : file) + ": " + skipped[i]["reason"].get<std::string>());
+        }
     json records = json::array();
     // Rounds (BenchOptions::rounds): every run timed once a round, the
     // runs in turn; a run keeps its fastest round's frames whole.
@@ -121,6 +132,8 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
                 {"softSamples", args.softSamples},
                 {"overrides", args.overrides},
                 {"vary", args.vary},
+                {"skipUnsupported", args.skipUnsupported},
+                {"skipped", skipped},
                 {"results", records}};
 }
 

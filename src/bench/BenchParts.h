@@ -44,7 +44,9 @@ struct BenchRun {
 /// Every scene with every combination of args.vary, scene by scene, each
 /// parsed once, before anything is rendered: a bad value throws Error, one
 /// that --vary gave naming that flag.
-std::vector<BenchRun> loadRuns(const BenchOptions& args);
+/// With args.skipUnsupported, the runs left out are added to `skipped`
+/// (scene, combination, reason) instead.
+std::vector<BenchRun> loadRuns(const BenchOptions& args, nlohmann::json* skipped = nullptr);
 
 /// `scene`, a copy of `loaded` (its techniques may have been changed), with
 /// its lights and camera where their paths are at `seconds`; the meshes are

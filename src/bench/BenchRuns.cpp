@@ -77,7 +77,7 @@ nlohmann::json asJson(const std::string& value) {
 
 } // namespace
 
-std::vector<BenchRun> loadRuns(const BenchOptions& args) {
+std::vector<BenchRun> loadRuns(const BenchOptions& args, nlohmann::json* skipped) {
     std::vector<Variation> variations;
     for (std::size_t i = 0; i < args.vary.size(); ++i) {
         variations.push_back(parseVariation(args.vary[i]));
@@ -136,8 +136,13 @@ std::vector<BenchRun> loadRuns(const BenchOptions& args) {
                 std::string message = e.what();
                 for (const std::string& c : combo)
                     if (message.rfind("--set " + c + ":", 0) == 0) message = "--vary " + c + message.substr(6 + c.size());
+                if (args.skipUnsupported && skipped && dynamic_cast<const UnsupportedError*>(&e)) {
+                    skipped->push_back({{"sceneFile", file}, {"vary", combo}, {"reason", message}});
+                    continue;
+                }
                 std::string where = file.empty() ? std::string("the default scene") : file;
                 for (const std::string& c : combo) where += ", --vary " + c;
+                if (dynamic_cast<const UnsupportedError*>(&e) && !combo.empty()) where += "; --skip-unsupported leaves such runs out";
                 throw Error(message + " (bench: " + where + ")");
             }
         }

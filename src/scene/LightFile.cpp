@@ -107,10 +107,10 @@ void readShadow(const Reader& r, ShadowSettings& shadow, const Light& light) {
         const std::string named = reason.substr(prefix.size());
         for (const OptionField& f : info->options->fields) {
             const bool names = named.rfind(f.key, 0) == 0 && (named.size() == f.key.size() || named[f.key.size()] == ' ' || named[f.key.size()] == ':');
-            if (names && block.has(f.key)) block.child(f.key).fail(reason);
+            if (names && block.has(f.key)) block.child(f.key).failUnsupported(reason);
         }
     }
-    (r.has("technique") ? r.child("technique") : r).fail(reason);
+    (r.has("technique") ? r.child("technique") : r).failUnsupported(reason);
 }
 
 // `lights[i].path`: how a spot or point light moves (LightPath in Scene.h).

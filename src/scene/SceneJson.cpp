@@ -16,13 +16,21 @@ using overrides::typeName;
 
 // --- Reading values with their JSON path ------------------------------------
 
-void ParseContext::fail(const std::string& path, const std::string& message) const {
+namespace {
+// The message of ParseContext::fail: the --set whose value `path` lies in, else the source.
+std::string failure(const ParseContext& c, const std::string& path, const std::string& message) {
     // An error inside an overridden value is the flag's fault: name the flag.
-    if (const overrides::Override* o = overrides::overrideAt(overrides, path))
-        throw Error(text::escapeControl(o->flag + ": " + path + ": " + message));
+    if (const overrides::Override* o = overrides::overrideAt(c.overrides, path)) return text::escapeControl(o->flag + ": " + path + ": " + message);
     // Keys, values and file names are quoted as written: escape them so
     // the message stays on one line.
-    throw Error(text::escapeControl(source + ": " + (path.empty() ? "" : path + ": ") + message));
+    return text::escapeControl(c.source + ": " + (path.empty() ? "" : path + ": ") + message);
+}
+} // namespace
+
+void ParseContext::fail(const std::string& path, const std::string& message) const { throw Error(failure(*this, path, message)); }
+
+void ParseContext::failUnsupported(const std::string& path, const std::string& message) const {
+    throw UnsupportedError(failure(*this, path, message));
 }
 
 void Reader::checkKeys(const std::vector<const char*>& known) const {

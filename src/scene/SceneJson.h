@@ -28,6 +28,8 @@ struct ParseContext {
     /// Throws shadowlab::Error naming the source, `path` and `message`, or
     /// the `--set` flag whose value the path lies in.
     [[noreturn]] void fail(const std::string& path, const std::string& message) const;
+    /// The same as UnsupportedError (Error.h): a combination the light's technique cannot draw.
+    [[noreturn]] void failUnsupported(const std::string& path, const std::string& message) const;
 };
 
 class Reader {
@@ -38,6 +40,7 @@ public:
     const nlohmann::json& value() const { return value_; }
     const std::string& path() const { return path_; }
     [[noreturn]] void fail(const std::string& message) const { ctx_.fail(path_, message); }
+    [[noreturn]] void failUnsupported(const std::string& message) const { ctx_.failUnsupported(path_, message); }
 
     Reader child(const std::string& key) const {
         return Reader(ctx_, value_.at(key), path_.empty() ? key : path_ + "." + key);
