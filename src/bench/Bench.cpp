@@ -60,6 +60,10 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
         const bool last = round + 1 == args.rounds;
         for (std::size_t r = 0; r < runs.size(); ++r) {
             BenchRun& run = runs[r];
+            if (run.skipped) {  // found unsupported while drawing (--skip-unsupported), in an earlier round
+                done += 1;
+                continue;
+            }
             // The scene at --time: the warm-up frames and the comparison.
             Scene scene = sceneAtTime(run.loaded, args.timeSeconds);
             std::string label = scene.name;
@@ -110,6 +114,15 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
                 }
                 const std::string message = "bench run " + std::to_string(r + 1) + "/" + std::to_string(runs.size()) + " (" + where +
                                             "): " + withValueSource(e.what(), "", applied, labels);
+                // Found only while drawing (an alpha-tested caster under shadow volumes): left out as a load-time one is.
+                if (args.skipUnsupported && dynamic_cast<const UnsupportedError*>(&e)) {
+                    run.skipped = true;
+                    const std::string reason = withValueSource(e.what(), run.file, applied, labels);
+                    skipped.push_back({{"sceneFile", run.file}, {"vary", run.combo}, {"reason", reason}});
+                    if (hooks.note) hooks.note("--skip-unsupported: left out " + where + ": " + reason);
+                    if (hooks.progress) hooks.progress(++done, total, shown);
+                    continue;
+                }
                 if (dynamic_cast<const InputError*>(&e)) throw InputError(message);  // still the input's fault
                 throw Error(message);
             }
@@ -117,6 +130,7 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
             if (last) run.loaded = Scene{};  // its meshes and textures are not needed again
         }
     }
+    if (records.empty()) throw Error("--skip-unsupported: every run was left out (" + skipped.front()["reason"].get<std::string>() + ")");
     const GlInfo& info = context.info();
     return json{{"tool", "shadowlab bench"},
                 {"renderer", info.renderer},

@@ -39,6 +39,7 @@ struct BenchRun {
     std::string file;               ///< the scene file; empty for the built-in default scene
     std::vector<std::string> combo; ///< the combination as `key=value` overrides, after --set's
     Scene loaded;                   ///< the scene as parsed with them (paths not evaluated)
+    bool skipped = false;           ///< left out while drawing (UnsupportedError with skipUnsupported)
 };
 
 /// Every scene with every combination of args.vary, scene by scene, each

@@ -87,7 +87,7 @@ public:
                 if (!casts[i] || item.material < 0) continue;
                 const Material& material = frame.scene.materials[static_cast<std::size_t>(item.material)];
                 if (material.alphaTested())
-                    throw InputError("lights[" + std::to_string(index) + "].shadow.technique: volume: material '" + material.name +
+                    throw UnsupportedError("lights[" + std::to_string(index) + "].shadow.technique: volume: material '" + material.name +
                                 "' is alpha-tested (alphaMode mask or blend) and casts into this light; shadow volumes follow geometry and would "
                                 "shadow its holes whole: use technique map for this light, or make the material opaque");
             }

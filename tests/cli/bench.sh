@@ -264,6 +264,12 @@ grep -q "^shadowlab: note: --skip-unsupported: left out .*spot-objects.json: --v
   || fail "no note of the skipped run: $(cat err.txt)"
 /usr/bin/python3 -c "import json,sys; d=json.load(open('skip/results.json')); sys.exit(not (len(d['results']) == 3 and len(d['skipped']) == 1 and d['skipped'][0]['vary'] == ['lights[0].shadow.map.cascades=4']))" \
   || fail "results.json: expected 3 runs and 1 skipped"
+# Found only while drawing (shadow volumes over an alpha-tested caster): left out the same way.
+"$tool" bench "$src/scenes/glass-panel.json" "$src/scenes/torus-resting.json" --width 48 --height 27 --frames 1 --warmup 0 -o skipdraw \
+  --vary 'lights[0].shadow={"technique": "volume"}' --skip-unsupported >/dev/null 2>err.txt || fail "--skip-unsupported at draw time failed: $(cat err.txt)"
+grep -q "^shadowlab: note: --skip-unsupported: left out .*glass-panel.json.*alpha-tested" err.txt || fail "no note of the run left out while drawing: $(cat err.txt)"
+/usr/bin/python3 -c "import json,sys; d=json.load(open('skipdraw/results.json')); sys.exit(not (len(d['results']) == 1 and len(d['skipped']) == 1))" \
+  || fail "results.json: expected 1 run and 1 skipped while drawing"
 if "$tool" bench "$src/scenes/spot-objects.json" --width 48 --height 27 --frames 1 --warmup 0 -o noskip --vary 'lights[0].shadow.map.cascades=1,4' 2>err.txt >/dev/null; then
   fail "cascades on a spot light ran without --skip-unsupported"
 fi
