@@ -163,6 +163,45 @@ TEST(OptionAlias, PcfIsTheGridFilterWithTheLecturesKernel) {
     EXPECT_EQ(pcf3.filter, MapFilter::Grid);
     EXPECT_EQ(pcf3.kernel, 3);
     EXPECT_EQ(mapOf(R"({"filter": "grid"})").kernel, MapOptions{}.kernel);  // the grid's own default is untouched
+    // On a point light's cube the lectures' 64 taps are a 4x4x4 grid.
+    const Scene point = parseScene(R"({"lights": [{"type": "point", "position": [0, 2, 0], "shadow": {"map": {"filter": "pcf"}}}]})", "s.json", ".");
+    EXPECT_EQ(point.lights[0].shadow.get<MapOptions>().kernel, 4);
+    const Scene point8 = parseScene(R"({"lights": [{"type": "point", "position": [0, 2, 0], "shadow": {"map": {"filter": "pcf", "kernel": 8}}}]})", "s.json", ".");
+    EXPECT_EQ(point8.lights[0].shadow.get<MapOptions>().kernel, 8);
     const std::string refused = errorOf([&] { mapOf(R"({"filter": "pcff"})"); });
     EXPECT_NE(refused.find("\"pcf\" (the lectures' percentage-closer filtering"), std::string::npos) << refused;
+}
+
+// Each technique's page under docs/techniques/ carries its section of the
+// generated tables between `<!-- options:NAME begin -->` and `end`, the
+// same text `shadowlab techniques --markdown` prints for it (from its
+// "#### `lights[i].shadow.NAME`" line to the table's last line), so an
+// option is documented once, in its table (scripts/generated-docs.py
+// pastes them).
+TEST(TechniquePagesDoc, CarryTheirGeneratedOptionsTables) {
+    const std::string all = techniquesMarkdown();
+    const std::filesystem::path dir = std::filesystem::path(SHADOWLAB_SOURCE_DIR) / "docs" / "techniques";
+    std::string pages;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        std::ifstream in(entry.path());
+        std::stringstream text;
+        text << in.rdbuf();
+        pages += text.str();
+    }
+    for (const TechniqueInfo& t : techniques()) {
+        SCOPED_TRACE(t.name);
+        const std::string heading = "#### `lights[i].shadow." + t.name + "`\n";
+        const auto from = all.find(heading);
+        ASSERT_NE(from, std::string::npos);
+        auto to = all.find("\n\n####", from);
+        to = to == std::string::npos ? all.size() : to + 1;
+        const std::string section = all.substr(from, to - from);
+        const std::string begin = "<!-- options:" + t.name + " begin -->\n", end = "<!-- options:" + t.name + " end -->";
+        const auto a = pages.find(begin);
+        ASSERT_NE(a, std::string::npos) << "no page under docs/techniques/ holds " << begin;
+        const auto b = pages.find(end, a);
+        ASSERT_NE(b, std::string::npos);
+        EXPECT_EQ(pages.substr(a + begin.size(), b - a - begin.size()), section)
+            << "docs/techniques/: the " << t.name << " block disagrees with the options tables: run /usr/bin/python3 scripts/generated-docs.py";
+    }
 }

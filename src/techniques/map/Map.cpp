@@ -325,7 +325,14 @@ TechniqueEntry mapTechnique() {
     entry.vertexShaderFile = "shadow_map_vertex.glsl";
     entry.baseline = &plainestMap;
     entry.resolve = [](std::any& options, const std::vector<std::string>& written, const Light& light) {
-        options = withPreset(std::any_cast<const MapOptions&>(options), light.type == LightType::Point, written);
+        MapOptions o = std::any_cast<const MapOptions&>(options);
+        // filter "pcf" (the options table's alias: grid, kernel 8 where none is
+        // written) is the lectures' 64 taps: on a point light's cube, a 4x4x4
+        // grid (Lawonn's), not 8^3. Only the alias gives a grid kernel 8 the
+        // block did not write (the grid's own default is 3).
+        const bool kernelWritten = std::find(written.begin(), written.end(), "kernel") != written.end();
+        if (light.type == LightType::Point && o.filter == MapFilter::Grid && o.kernel == 8 && !kernelWritten) o.kernel = 4;
+        options = withPreset(o, light.type == LightType::Point, written);
     };
     return entry;
 }
