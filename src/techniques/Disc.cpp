@@ -59,7 +59,7 @@ bool discOf(const DrawItem& item, float radius, Disc& out) {
 
 class DiscShadow final : public Technique {
 public:
-    static constexpr const char* summary = "exact shadows of flat discs in the light pass, no shadow pass or map (lecture 002 exercise 8.6.2-1)";
+    static constexpr const char* summary = "exact shadows of flat discs in the light pass, no shadow pass or map (Ganovelli et al. exercise 8.6.2-1)";
 
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         Bounds scene;

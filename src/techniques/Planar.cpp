@@ -32,9 +32,9 @@ const OptionTable& planarOptionTable() {
             .nodeNames(&PlanarOptions::receivers, "receivers",
                        "the receiver planes; empty: every node whose mesh is planar and receives shadows")
             .choice(&PlanarOptions::style, "style", {"stencil", "lecture"},
-                    "stencil: each receiver pixel darkened once, clipped to the receiver; lecture: 000's dark polygons with depth only (double blending, z-fighting)")
+                    "stencil: each receiver pixel darkened once, clipped to the receiver; lecture: Wolberg's dark polygons with depth only (double blending, z-fighting)")
             .choice(&PlanarOptions::projection, "projection", {"vertex", "geometry"},
-                    "the caster flattened in the vertex shader once per plane, or by a geometry shader onto every plane of a draw (000's duplication)")
+                    "the caster flattened in the vertex shader once per plane, or by a geometry shader onto every plane of a draw (Wolberg's duplication)")
             .number(&PlanarOptions::darkness, "darkness", 0.0, 1.0, "share of the colour", "style lecture: what each shadow polygon takes away")
             .build();
     return table;

@@ -40,7 +40,7 @@ const OptionTable& volumeOptionTable() {
     static const OptionTable table =
         OptionTableFor<VolumeOptions>("volume")
             .choice(&VolumeOptions::method, "method", {"depth-fail", "depth-pass", "book"},
-                    "count the volume faces behind the visible surface (right with the camera in a shadow), or in front of it (no caps; wrong then), or lecture 002 §8.5's finite extrusion counted in two culled passes")
+                    "count the volume faces behind the visible surface (right with the camera in a shadow), or in front of it (no caps; wrong then), or Ganovelli et al. §8.5's finite extrusion counted in two culled passes")
             .choice(&VolumeOptions::extrusion, "extrusion", {"gpu", "cpu"},
                     "silhouettes found and extruded by a geometry shader, or on the CPU each frame (the same volumes; bench reports the CPU's triangles per second)")
             .choice(&VolumeOptions::openMeshes, "openMeshes", {"facing", "triangles"},

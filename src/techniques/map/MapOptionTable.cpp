@@ -30,13 +30,13 @@ const OptionTable& mapOptionTable() {
     static const OptionTable table =
         OptionTableFor<MapOptions>("map")
             .integer(&MapOptions::size, "size", 0, 16384, "texels",
-                     "side of the square shadow map (a cube map: of each face), 16..16384; 0 (the default): follows the frame, 0.96 texels per pixel of its larger side and at least 768 (768 up to 800 pixels across, 1856 at 1920x1080, at most 4096), which keeps every bundled scene but the 400 m field and the 300 m street (which ship cascades) within 0.05 % misclassified (docs/techniques.md)")
+                     "side of the square shadow map (a cube map: of each face), 16..16384; 0 (the default): follows the frame, 0.96 texels per pixel of its larger side, at least 768 and at most 4096 (docs/techniques/map.md)")
             .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
-                    "depth texture format; rgba8 packs depth into colour (lecture 002 §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (lecture 002 exercise 8.6.2-1, variation 2)")
+                    "depth texture format; rgba8 packs depth into colour (Ganovelli et al. §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (Ganovelli et al. exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
-                    "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights): around the points the viewer does see, reduced from a depth pre-pass of the frame; with cascades, the first slice starts at the nearest depth it sees and the last ends at the farthest, and slices not stabilised are each fitted to the points seen in them (docs/techniques.md)")
+                    "light camera: around what the viewer may see (receivers' boxes in the view) and the casters over it; around the whole scene; sdsm (directional lights): around the points the viewer does see, reduced from a depth pre-pass of the frame; with cascades, the first slice starts at the nearest depth it sees and the last ends at the farthest, and slices not stabilised are each fitted to the points seen in them (docs/techniques/fits.md)")
             .choice(&MapOptions::warp, "warp", {"none", "lispsm"},
-                    "directional lights (one map, or cascades with stabilize false): none; lispsm, the fitted box warped by a perspective along the view (light space perspective shadow maps), more texels near the camera and fewer far away; a light along the view gets no warp (docs/techniques.md)")
+                    "directional lights (one map, or cascades with stabilize false): none; lispsm, the fitted box warped by a perspective along the view (light space perspective shadow maps), more texels near the camera and fewer far away; a light along the view gets no warp (docs/techniques/fits.md)")
             .number(&MapOptions::warpNear, "warpNear", 0.01, 1000.0, "scene units",
                     "warp lispsm: the view distance below which the warp gives no more texels (the warp's near plane stands for max(warpNear, the nearest receiver seen)); larger: a milder warp")
             .choice(&MapOptions::filter, "filter", map::filterNames(), map::filterDoc())
@@ -45,23 +45,23 @@ const OptionTable& mapOptionTable() {
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
                     "grid filter: the same comparisons from ceil(kernel/2)^2 bilinear or kernel^2 nearest fetches; auto: nearest on a software rasteriser")
             .boolean(&MapOptions::earlyOut, "earlyOut",
-                     "grid (nearest taps, 2D maps) and pcf20 filters: the kernel's corners first (and an odd grid's centre), and where they all agree the taps between them are skipped; pcss: where every blocker tap finds a blocker and the filter's disk lies inside their hull, the filter is skipped; either differs from taking every tap only where a caster's edge bends or ends between agreeing taps; false: every tap (docs/techniques.md)")
+                     "grid (nearest taps, 2D maps) and pcf20 filters: the kernel's corners first (and an odd grid's centre), and where they all agree the taps between them are skipped; pcss: where every blocker tap finds a blocker and the filter's disk lies inside their hull, the filter is skipped; either differs from taking every tap only where a caster's edge bends or ends between agreeing taps; false: every tap (docs/techniques/map.md)")
             .integer(&MapOptions::samples, "samples", 4, 64, "taps", "poisson and pcss filters: taps on the disk")
-            .integer(&MapOptions::blockerSamples, "blockerSamples", 4, 64, "taps", "pcss filter: taps of the blocker search, shared by each 2x2 quad of pixels (each fetches every fourth; docs/techniques.md)")
+            .integer(&MapOptions::blockerSamples, "blockerSamples", 4, 64, "taps", "pcss filter: taps of the blocker search, shared by each 2x2 quad of pixels (each fetches every fourth; docs/techniques/pcss.md)")
             .number(&MapOptions::radius, "radius", 0.0, 32.0, "texels", "poisson filter: disk radius")
             .number(&MapOptions::constantBias, "constantBias", 0.0, 0.1, "depth (0..1)", "subtracted from the receiver's map depth")
             .number(&MapOptions::slopeBias, "slopeBias", 0.0, 16.0, "polygon offset factor", "shadow pass: depth offset per unit of depth slope")
             .number(&MapOptions::offsetUnits, "offsetUnits", 0.0, 1024.0, "polygon offset units", "shadow pass: constant depth offset in the format's smallest steps")
             .number(&MapOptions::normalBias, "normalBias", 0.0, 16.0, "texels",
                     "receiver moved along its normal by this many map texels (their world size) times 1 - N.L")
-            .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws back faces only, without the polygon offset (slopeBias, offsetUnits), which the far side needs not and which would lift it off the receivers at a caster's foot (closed meshes; lecture 002 §8.4.1.1)")
+            .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws back faces only, without the polygon offset (slopeBias, offsetUnits), which the far side needs not and which would lift it off the receivers at a caster's foot (closed meshes; Ganovelli et al. §8.4.1.1)")
             .number(&MapOptions::lodTexels, "lodTexels", 0.0, 4.0, "texels",
-                    "a dense caster (4096 triangles or more) is drawn into the map (a cube's faces too) from the coarsest simplified level of its mesh whose surface lies within this many map texels of the mesh's, pushed that far away from the light; 0: every triangle; not in the shadow atlas or with fit sdsm (docs/techniques.md)")
+                    "a dense caster (4096 triangles or more) is drawn into the map (a cube's faces too) from the coarsest simplified level of its mesh whose surface lies within this many map texels of the mesh's, pushed that far away from the light; 0: every triangle; not in the shadow atlas or with fit sdsm (docs/techniques/map.md)")
             .number(&MapOptions::shadowedLight, "shadowedLight", 0.0, 1.0, "share of the light",
-                    "what a shadowed point keeps of the light (lecture 002 listing 8.4: 0.6); compare judges the shadow test, not this look")
-            .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (lecture 002 exercise 8.6.1-4; docs/techniques.md says what it does)")
+                    "what a shadowed point keeps of the light (Ganovelli et al. listing 8.4: 0.6); compare judges the shadow test, not this look")
+            .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (Ganovelli et al. exercise 8.6.1-4; docs/techniques/map.md says what it does)")
             .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl", "lecture-000"},
-                    "the lecture's or LearnOpenGL's settings as the defaults of every option the scene does not write (docs/techniques.md); lecture-000: a point light through lecture 000's one 60-degree map")
+                    "the lecture's or LearnOpenGL's settings as the defaults of every option the scene does not write (docs/techniques/map.md); lecture-000: a point light through Wolberg's one 60-degree map")
             .integer(&MapOptions::cascades, "cascades", 1, 8, "maps",
                      "directional lights: cascaded shadow maps, one per slice of the view's depth (layers of one array); 1: one map")
             .number(&MapOptions::cascadeLambda, "cascadeLambda", 0.0, 1.0, "0 uniform .. 1 logarithmic",
@@ -75,8 +75,8 @@ const OptionTable& mapOptionTable() {
             .choice(&MapOptions::representation, "representation", {"depth", "vsm", "evsm2", "evsm4", "msm"},
                     "directional and spot lights: what the map stores; depth, compared per tap, or moments of depth that are blurred and filtered like colour (variance, exponential variance with 2 or 4 moments, moment shadow maps)")
             .choice(&MapOptions::momentFormat, "momentFormat", {"rgba32f", "rgba16f"},
-                    "moments: 32- or 16-bit floats; 16-bit moments are stored (a fullscreen pass makes them), while 32-bit ones with no blur and no mipmaps are taken from the depth by the light pass and take no memory of their own; 16 holds on scenes a few metres across (torus-floating, spheres-sun: at most 0.007 % misclassified), less well on large ones (the 400 m cascades-field as shipped: vsm and msm 0.20-0.22 % against 0.05-0.06 % in 32 bits, evsm4 0.058 % against 0.040 %; docs/techniques.md)")
-            .integer(&MapOptions::blur, "blur", 0, 16, "texels each side", "moments: separable Gaussian blur of sigma blur / 2 texels before the light pass; 0 by default (none: the bilinear lookup's one-texel edge), which bench finds faster and no less accurate against hard shadows (docs/techniques.md); more for wider soft edges")
+                    "moments: 32- or 16-bit floats; 16-bit moments are stored (a fullscreen pass makes them), while 32-bit ones with no blur and no mipmaps are taken from the depth by the light pass and take no memory of their own; 16 bits hold on scenes a few metres across and less well on large ones (docs/techniques/moments.md)")
+            .integer(&MapOptions::blur, "blur", 0, 16, "texels each side", "moments: separable Gaussian blur of sigma blur / 2 texels before the light pass; 0 by default (none: the bilinear lookup's one-texel edge); more for wider soft edges (docs/techniques/moments.md)")
             .number(&MapOptions::bleedReduction, "bleedReduction", 0.0, 0.9, "share of the bound",
                     "moments: light-bleeding reduction, the upper bound's values under this become 0 and the rest is stretched to 0..1 (darkens penumbrae)")
             .choice(&MapOptions::cubePasses, "cubePasses", {"one", "six"},
@@ -88,7 +88,7 @@ const OptionTable& mapOptionTable() {
             .number(&MapOptions::diskGrowth, "diskGrowth", 0.0, 100.0, "per viewer distance / far",
                     "point lights: the radius times 1 + diskGrowth x (viewer distance / far)")
             .boolean(&MapOptions::atlas, "atlas",
-                     "spot and point lights: the map is a tile of the scene's shared shadow atlas (a point light's faces, six tiles), sized each frame from the light's reach on screen (the scene's shadowAtlas), and the light is shaded with the other such lights in one pass over the clustered light list; format depth32f, filter none or hardware (docs/techniques.md)")
+                     "spot and point lights: the map is a tile of the scene's shared shadow atlas (a point light's faces, six tiles), sized each frame from the light's reach on screen (the scene's shadowAtlas), and the light is shaded with the other such lights in one pass over the clustered light list; format depth32f, filter none or hardware (docs/techniques/atlas.md)")
             .build();
     return table;
 }
