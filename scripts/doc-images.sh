@@ -69,6 +69,19 @@ render  default                 --width 960 --height 540   # README: the default
 # (the unshadowed baseline instead, as README said before the default changed: add --set "$L.shadow.technique=none")
 view    viewer                  scenes/room-point.json --width 1280 --height 720 --frames 60   # README "The viewer": room-point's cube map at its defaults; times and graph vary per run
 
+# README "The lecture's shadows": each scene in scenes/lecture/ at 400x225, as it ships and with its fix
+render  lecture-acne            scenes/lecture/acne.json --width 400 --height 225
+render  lecture-acne-fixed      scenes/lecture/acne.json --width 400 --height 225 --set "$MAP"'={"filter": "none"}'
+render  lecture-peter-panning   scenes/lecture/peter-panning.json --width 400 --height 225
+render  lecture-aliasing        scenes/lecture/aliasing.json --width 400 --height 225
+render  lecture-pcf             scenes/lecture/pcf.json --width 400 --height 225
+debug   lecture-point-cube light0-cube.png scenes/lecture/point-cube.json --width 400 --height 225
+render  lecture-planar          scenes/lecture/planar-double-blending.json --width 400 --height 225
+render  lecture-volume          scenes/lecture/volume-camera-in-shadow.json --width 400 --height 225
+render  lecture-rgba8           scenes/lecture/rgba8-packing.json --width 400 --height 225
+debug   lecture-cascades light0-cascades.png scenes/cascades-field.json --width 400 --height 225
+compare lecture-pcss technique.png scenes/penumbra-step.json --width 400 --height 225
+
 # docs/exercises.md (960x540 unless said; 2048^2 maps)
 compare exercise-camera-at-light technique.png scenes/spot-objects.json --width 960 --height 540 --set "$L.shadow.technique=map" --set "$MAP.size=2048" --set 'camera.position=[1.5,5.0,1.0]' --set 'camera.target=[1.2,4.0,0.8]'   # exercises 8.6.1-1
 compare exercise-fit-scene-error error-0.png scenes/learnopengl-shadow-mapping.json --width 800 --height 600 --set "$L.shadow.technique=map" --set "$MAP.filter=none" --set "$MAP.size=1024" --set "$MAP.fit=scene"   # exercises 8.6.1-2
