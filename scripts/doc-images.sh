@@ -89,7 +89,7 @@ compare exercise-fit-tight-error error-0.png scenes/learnopengl-shadow-mapping.j
 compare discs-spot technique.png scenes/discs.json --width 960 --height 540 --set "$L"'={"type": "spot", "position": [1, 7, 1], "direction": [0, -1, 0], "outerCone": 60, "shadow": {"technique": "disc"}}'   # exercises 8.6.2-1
 compare glass-panel-red technique.png scenes/glass-panel.json --width 960 --height 540 --set materials.glass.alphaMode=blend --set 'materials.glass.baseColor=[1,0,0]' --set "$MAP.size=2048"   # exercises 8.6.2-2 and techniques "Translucent casters"
 
-# docs/techniques.md, `map`
+# docs/techniques/map.md
 debug   map-texel-density light0-texel-density.png scenes/learnopengl-shadow-mapping.json --width 800 --height 600 --set "$L.shadow.technique=map"   # techniques "Debug"
 render  slide-projector         scenes/slide-projector.json --width 640 --height 400   # techniques, slide projector
 compare map-learnopengl technique.png scenes/learnopengl-shadow-mapping.json --width 640 --height 480 --set "$L.shadow.technique=map"   # techniques "Accuracy": defaults
@@ -103,13 +103,13 @@ render  map-filter-poisson      --width 480 --height 270 --set "$L.shadow.techni
 render  map-filter-grid         --width 480 --height 270 --set "$L.shadow.technique=map" --set "$MAP.size=256" --set "$MAP.filter=grid" --set "$MAP.kernel=5"   # techniques "Filters": grid 5x5
 compare map-mipmaps-error error-0.png scenes/learnopengl-shadow-mapping.json --width 800 --height 600 --set "$L.shadow.technique=map" --set "$MAP.size=2048" --set "$MAP.mipmaps=true"   # techniques "Every option in bench" (2048^2)
 
-# docs/techniques.md, cube maps
+# docs/techniques/map-point.md
 render  point-learnopengl       scenes/learnopengl-point-shadows.json --width 800 --height 600 --set "$L.shadow.technique=map"   # techniques, cube maps: defaults
 debug   point-cube-cross light0-cube.png scenes/learnopengl-point-shadows.json --width 800 --height 600 --set "$L.shadow.technique=map" --set "$MAP.size=256"   # techniques, cube maps: the cross at 256^2
 compare point-learnopengl-preset-error error-0.png scenes/learnopengl-point-shadows.json --width 800 --height 600 --set "$L.shadow.technique=map" --set "$MAP.preset=learnopengl"   # techniques, cube maps: preset learnopengl
 render  point-room              scenes/room-point.json --width 960 --height 540 --set "$L.shadow.technique=map"   # techniques, cube maps: room-point
 
-# docs/techniques.md, cascades, PCSS, filterable maps
+# docs/techniques/cascades.md, pcss.md, moments.md
 render  cascades-field          scenes/cascades-field.json --width 640 --height 360 --set "$MAP.cascades=4" --set "$MAP.size=2048"   # techniques "Cascaded shadow maps" (2048^2 per cascade)
 debug   cascades-field-cascades light0-cascades.png scenes/cascades-field.json --width 640 --height 360 --set "$MAP.cascades=4" --set "$MAP.size=2048"   # techniques "Cascaded shadow maps": by cascade
 compare pcss-spot-objects technique.png scenes/spot-objects.json --width 480 --height 270 --samples 1024 --set "$L.size=0.3" --set "$L.shadow.technique=map" --set "$MAP.filter=pcss"   # techniques "Soft shadows"
@@ -120,7 +120,7 @@ debug   atlas-many-lights       light0-atlas.png scenes/many-lights.json --width
 
 compare long-view-tight-error error-0.png scenes/long-view.json --width 480 --height 270 --set "$MAP.cascades=1" --set "$MAP.warp=none"   # techniques "Warped maps": one 2048^2 map, unwarped, its errors
 compare long-view-lispsm-error error-0.png scenes/long-view.json --width 480 --height 270 --set "$MAP.cascades=1" --set "$MAP.warp=lispsm"   # techniques "Warped maps": the same map warped
-# docs/techniques.md, planar
+# docs/techniques/planar.md
 render  planar-room             scenes/room-point.json --width 960 --height 540 --set "$L.shadow.technique=planar"   # techniques `planar`
 render  planar-room-lecture     scenes/room-point.json --width 1280 --height 720 --set "$L.shadow.technique=planar" --set "$L.shadow.planar.style=lecture"   # techniques `planar`: style lecture
 compare planar-spot-error error-0.png scenes/spot-objects.json --width 960 --height 540 --set "$L.shadow.technique=planar"   # techniques `planar`: the spot scene's error image

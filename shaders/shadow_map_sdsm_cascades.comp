@@ -10,7 +10,7 @@
 // the first starting at the nearest. (Placed from the nearest depth seen,
 // the logarithmic scheme's splits all moved out with it, and the near
 // slices, where a texel covers the most pixels, got fewer texels a metre
-// than the tight fit's: docs/techniques.md.)
+// than the tight fit's: docs/techniques/fits.md.)
 // SDSM_STABILIZE 1: the depths kept in whole steps of 2^(1/4), and each
 // slice's camera fitted here: its bounding sphere, its box snapped to
 // whole texels, and its depth range the scene's cut to what the slice's

@@ -532,7 +532,7 @@ int main(int argc, char** argv) {
     // Keep the heap glibc would hand back to the system after every frame:
     // Mesa's software rasteriser frees its per-frame memory at the heap's
     // top, and taking those pages again the next frame costs page faults
-    // (docs/techniques.md, "The heap between frames"). Setting the trim
+    // (docs/history.md, "The heap"). Setting the trim
     // threshold fixes glibc's mmap threshold too, which would then map and
     // unmap every block over 128 KiB each frame: keep blocks up to the
     // largest threshold glibc takes (32 MiB) in the heap as well.

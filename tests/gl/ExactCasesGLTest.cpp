@@ -94,7 +94,7 @@ TEST_F(ExactCasesGLTest, MomentMapsHoldAtCastersFeet) {
 // capped with the light-facing triangles were empty (100 % false lit with
 // every method); closed meshes are now capped with the triangles facing
 // away. Depth-pass is left out: it counts from the camera, which is inside
-// this volume, the case docs/techniques.md says it gets wrong.
+// this volume, the case docs/techniques/volume.md says it gets wrong.
 TEST_F(ExactCasesGLTest, VolumesShadowEverythingOutsideALampsShade) {
     const char* const shade = R"({
       "camera": { "position": [6, 5, 8], "target": [0, 1, 0], "fovY": 50 },

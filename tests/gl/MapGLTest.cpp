@@ -59,7 +59,7 @@ TEST_F(MapGLTest, EveryBundledSceneMatchesTheReferenceAwayFromEdges) {
     for (const fs::path& file : bundledScenes()) {
         // A 400 m field and a 300 m street seen from eye height: one 2048^2
         // map misclassifies 0.21 % and 1.6 % there away from edges
-        // (measured; docs/techniques.md, "Fits and the texel footprint").
+        // (measured; docs/techniques/fits.md).
         // The scenes ship four cascades, tested on them separately
         // (FourCascadesBeatOneMapOnTheField, DefaultShadowsGLTest), and
         // fit "scene" is one map, not cascades.

@@ -13,7 +13,7 @@
 //   flaws on purpose: the lecture's peter-panning and dither, LearnOpenGL's
 //   fixed camera), format r8 (8 bits of depth: for casters nearer the light
 //   than what they shadow), momentFormat rgba16f (16-bit moments; measured
-//   in docs/techniques.md).
+//   in docs/techniques/map.md).
 // - Filters meant to soften (grid, dither4, poisson, pcss, box, pcf20, a
 //   moment map's blur) are judged outside a band of their own reach on
 //   screen: the filter's footprint in texels times the scene's p95 texel

@@ -86,7 +86,7 @@ TEST_F(SoftShadowGLTest, PcssMatchesTheAreaLightReferenceOnTheLectureScenes) {
 
 // The large light: torus-floating's sun 3 degrees across, and
 // point lights of radius 1 and 2, a third and two thirds of their height
-// (measured 0.016, 0.020 and 0.031; radius 3: 0.046, docs/techniques.md).
+// (measured 0.016, 0.020 and 0.031; radius 3: 0.046, docs/techniques/pcss.md).
 // Before the blocker search was bounded by the nearest caster (it reached
 // three radii), radius 1.5 and more missed the bar (0.065 to 0.084).
 TEST_F(SoftShadowGLTest, PcssMatchesTheAreaLightReferenceForALargeLight) {

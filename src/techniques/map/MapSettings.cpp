@@ -134,7 +134,7 @@ float reach(const MapOptions& o) {
 
 namespace {
 
-// Every field `o`'s preset sets, set (docs/techniques.md cites each value);
+// Every field `o`'s preset sets, set (docs/techniques/map.md cites each value);
 // withPreset keeps the fields the scene wrote.
 MapOptions presetValues(MapOptions o, bool pointLight) {
     const bool cube = pointLight && o.preset != MapPreset::Lecture000;
