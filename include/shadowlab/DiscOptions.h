@@ -1,7 +1,7 @@
 #pragma once
 /// @file DiscOptions.h
 /// Options of technique "disc": shadows of flat discs computed exactly in
-/// the light pass, with no shadow pass and no map (lecture 002 exercise
+/// the light pass, with no shadow pass and no map (Ganovelli et al. exercise
 /// 8.6.2-1: UFOs over the ground, and its variation 1, discs in any
 /// orientation), under lights[i].shadow.disc in a scene file.
 #include <shadowlab/Export.h>

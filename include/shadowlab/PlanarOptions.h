@@ -1,5 +1,5 @@
 #pragma once
-// Options of technique "planar": projected planar shadows (lecture 000,
+// Options of technique "planar": projected planar shadows (Wolberg,
 // "Projective Shadows"), under lights[i].shadow.planar in a scene file.
 #include <shadowlab/Export.h>
 #include <shadowlab/Options.h>

@@ -137,7 +137,7 @@ struct Light {
     float outerConeDeg = 30.0f;        ///< spot: half-angle where light reaches zero, degrees, default 30, >= inner, < 90
     float size = 0.0f;                 ///< soft reference only: radius (point/spot, scene units) or angular diameter (directional, degrees); 0 = hard
     /// Spot only: index into Scene::textures of an image projected along the
-    /// cone (lecture 000's slide projector), multiplying the light's colour;
+    /// cone (Wolberg's slide projector), multiplying the light's colour;
     /// the image fills the square around the outer cone, its top towards the
     /// light camera's up (+Y, or +X for a vertical spot). -1: none (default).
     int projectorTexture = -1;
@@ -271,7 +271,7 @@ SHADOWLAB_API Scene sceneAtTime(const Scene& scene, double seconds);
 /// a spot's projected image and cameraFromLight all use it.
 SHADOWLAB_API glm::vec3 lightCameraUp(const glm::vec3& axis);
 
-/// The light's own view as a camera (lecture 002 exercise 8.6.1-1): a spot
+/// The light's own view as a camera (Ganovelli et al. exercise 8.6.1-1): a spot
 /// light looks along its axis with a field of view of twice its outer cone;
 /// a directional light looks along its direction from outside the scene's
 /// bounds, with a field of view just containing them. Near and far enclose

@@ -1,5 +1,5 @@
 #pragma once
-// Options of technique "volume": stencil shadow volumes (lecture 002 §8.5),
+// Options of technique "volume": stencil shadow volumes (Ganovelli et al. §8.5),
 // under lights[i].shadow.volume in a scene file.
 #include <shadowlab/Export.h>
 #include <shadowlab/Options.h>
@@ -9,7 +9,7 @@ namespace shadowlab {
 enum class VolumeMethod {
     DepthFail, ///< "depth-fail": count the volume faces behind the visible surface (right with the camera inside a volume; default)
     DepthPass, ///< "depth-pass": count the faces in front of it (no caps needed; wrong when the camera is inside a volume)
-    Book,      ///< "book": 002 §8.5's construction: extruded to a finite distance beyond the scene's box, depth-fail in two passes with face culling
+    Book,      ///< "book": Ganovelli et al. §8.5's construction: extruded to a finite distance beyond the scene's box, depth-fail in two passes with face culling
 };
 
 enum class VolumeOpenMeshes {
