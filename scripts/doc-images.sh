@@ -82,6 +82,11 @@ render  lecture-rgba8           scenes/lecture/rgba8-packing.json --width 400 --
 debug   lecture-cascades light0-cascades.png scenes/cascades-field.json --width 400 --height 225
 compare lecture-pcss technique.png scenes/penumbra-step.json --width 400 --height 225
 
+# docs/techniques/map.md "Bias": each bias key alone on the acne scene
+for key in slopeBias=1.5 offsetUnits=8 normalBias=1 constantBias=0.002; do
+    render "bias-${key%%=*}" scenes/lecture/acne.json --width 400 --height 225 --set "$MAP.$key"
+done
+
 # docs/exercises.md (960x540 unless said; 2048^2 maps)
 compare exercise-camera-at-light technique.png scenes/spot-objects.json --width 960 --height 540 --set "$L.shadow.technique=map" --set "$MAP.size=2048" --set 'camera.position=[1.5,5.0,1.0]' --set 'camera.target=[1.2,4.0,0.8]'   # exercises 8.6.1-1
 compare exercise-fit-scene-error error-0.png scenes/learnopengl-shadow-mapping.json --width 800 --height 600 --set "$L.shadow.technique=map" --set "$MAP.filter=none" --set "$MAP.size=1024" --set "$MAP.fit=scene"   # exercises 8.6.1-2
