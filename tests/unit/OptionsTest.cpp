@@ -169,7 +169,7 @@ TEST(OptionAlias, PcfIsTheGridFilterWithTheLecturesKernel) {
     const Scene point8 = parseScene(R"({"lights": [{"type": "point", "position": [0, 2, 0], "shadow": {"map": {"filter": "pcf", "kernel": 8}}}]})", "s.json", ".");
     EXPECT_EQ(point8.lights[0].shadow.get<MapOptions>().kernel, 8);
     const std::string refused = errorOf([&] { mapOf(R"({"filter": "pcff"})"); });
-    EXPECT_NE(refused.find("\"pcf\" (the lectures' percentage-closer filtering"), std::string::npos) << refused;
+    EXPECT_NE(refused.find("\"pcf\" (the lectures' PCF: grid with 64 taps"), std::string::npos) << refused;
 }
 
 // Each technique's page under docs/techniques/ carries its section of the

@@ -40,7 +40,7 @@ const OptionTable& mapOptionTable() {
             .number(&MapOptions::warpNear, "warpNear", 0.01, 1000.0, "scene units",
                     "warp lispsm: the view distance below which the warp gives no more texels (the warp's near plane stands for max(warpNear, the nearest receiver seen)); larger: a milder warp")
             .choice(&MapOptions::filter, "filter", map::filterNames(), map::filterDoc())
-            .alias("pcf", "grid", {{"kernel", 8.0}}, "the lectures' percentage-closer filtering, 64 taps: grid with kernel 8 (a point light's cube: 4, a 4x4x4 grid) unless kernel is given")
+            .alias("pcf", "grid", {{"kernel", 8.0}}, "the lectures' PCF: grid with 64 taps, kernel 8 or a cube's 4 unless given")
             .integer(&MapOptions::kernel, "kernel", 2, 8, "taps per side", "grid filter: kernel x kernel taps one texel apart")
             .choice(&MapOptions::gridTaps, "gridTaps", {"auto", "bilinear", "nearest"},
                     "grid filter: the same comparisons from ceil(kernel/2)^2 bilinear or kernel^2 nearest fetches; auto: nearest on a software rasteriser")
