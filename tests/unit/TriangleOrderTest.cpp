@@ -100,3 +100,26 @@ TEST(TriangleOrder, AMeshSpanningTheFloatRangeKeepsItsOrder) {
     EXPECT_EQ(sorted[3], 3u) << "then the middle";
     EXPECT_EQ(sorted[6], 0u) << "then +x";
 }
+
+// A triangle repeated is drawn once, whether its copies share its indices,
+// start at another corner, or name copies of its vertices; the same corners
+// turning the other way are another triangle (its back), and a near copy
+// (one corner moved by a float's step) is kept too. A million copies of
+// one triangle come out as one: the fill a shadow pass would repeat.
+TEST(TriangleOrder, ARepeatedTriangleIsDrawnOnce) {
+    std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-0.0f, 0, 0}, {0, std::nextafter(1.0f, 2.0f), 0}};
+    std::vector<std::uint32_t> indices{0, 1, 2,  1, 2, 0,  3, 4, 5,  6, 1, 2,  0, 2, 1,  0, 1, 7,  2, 0, 1};
+    const std::vector<std::uint32_t> once = spatialTriangleOrder(positions, indices);
+    ASSERT_EQ(once.size(), 9u) << "kept: the first, its back (0 2 1), its near copy (0 1 7)";
+    EXPECT_EQ((std::vector<std::uint32_t>(once.begin(), once.begin() + 3)), (std::vector<std::uint32_t>{0, 1, 2})) << "the first copy in the mesh's order is kept";
+    const std::vector<Triangle> kept = canonical(once);
+    EXPECT_EQ(kept, (std::vector<Triangle>{{0, 1, 2}, {0, 1, 7}, {0, 2, 1}}));
+
+    std::vector<std::uint32_t> million;
+    million.reserve(3'000'000);
+    for (int i = 0; i < 1'000'000; ++i) million.insert(million.end(), {0, 1, 2});
+    EXPECT_EQ(spatialTriangleOrder(positions, million).size(), 3u);
+    // A sphere has no repeats: every triangle is kept.
+    const Mesh sphere = shapes::sphere(1.0f, 64, 32);
+    EXPECT_EQ(canonical(spatialTriangleOrder(sphere.positions, sphere.indices)), canonical(sphere.indices));
+}
