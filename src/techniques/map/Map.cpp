@@ -70,7 +70,6 @@ public:
         const std::uint64_t inputs = mapInputs(frame, lights);
         cached_ = frame.cacheShadowMaps && drawnFrom_ && *drawnFrom_ == inputs && lights_.size() == lights.size();
         noteHardPcss(host, frame, lights);
-        noteOpenCastersCulled(host, frame, lights);
         if (cached_) return;
         // The maps are refitted now and hold these inputs once a shadow pass
         // draws them (a frame lit by the reference's visibility draws none).
@@ -259,29 +258,6 @@ private:
             if (effective(light).filter == MapFilter::Pcss && !(light.size > 0.0f))
                 host.note("lights[" + std::to_string(index) + "].shadow.map.filter \"pcss\": the light's size is 0, so its shadows stay hard (set lights[" +
                           std::to_string(index) + "].size: a radius, or a directional light's angular diameter in degrees)");
-        }
-    }
-
-    // cullFront draws back faces only; an open caster (a plane, a ceiling,
-    // any mesh that is not closed) has no back face behind the front the
-    // light sees, so its shadow is lost there: said every frame, by name.
-    static void noteOpenCastersCulled(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) {
-        for (int index : lights) {
-            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
-            if (!effective(light).cullFront) continue;
-            std::string names;
-            int open = 0;
-            for (std::size_t i = 0; i < frame.items.size(); ++i) {
-                if (!frame.items[i].castsShadows || frame.itemWinding[i] != 0) continue;
-                if (++open > 4) continue;
-                const int node = frame.items[i].node;
-                const std::string name = node >= 0 && static_cast<std::size_t>(node) < frame.scene.nodes.size() ? frame.scene.nodes[static_cast<std::size_t>(node)].name : "";
-                names += (names.empty() ? "" : ", ") + (name.empty() ? "nodes[" + std::to_string(node) + "]" : "'" + name + "'");
-            }
-            if (open == 0) continue;
-            host.note("lights[" + std::to_string(index) + "].shadow.map.cullFront: " + std::to_string(open) + " open caster(s) (" + names +
-                      (open > 4 ? ", and " + std::to_string(open - 4) + " more" : "") +
-                      ") have no back face where the light sees their front, so they cast no shadow there (set cullFront false, or close their meshes)");
         }
     }
 

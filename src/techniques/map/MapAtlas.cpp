@@ -316,6 +316,14 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         const TexelRect& c = p.atlasCovered[f];
         if (!c.empty()) cleared += static_cast<double>(c.x1 - c.x0) * static_cast<double>(c.y1 - c.y0);
     }
+    // cullFront: closed casters by their far sides (mirrored ones with back
+    // faces culled), open ones whole with the offset (MapCasterDraw.h).
+    gl::RenderState mirrored = state;
+    mirrored.cull = gl::Cull::Back;
+    gl::RenderState open = state;
+    open.cull = gl::Cull::None;
+    open.polygonOffset = p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f;
+    const auto winding = [&](std::size_t i) { return i < frame.itemWinding.size() ? frame.itemWinding[i] : 0; };
     host.apply(state);
     for (int t = 0; t < p.atlasTiles; ++t) {
         const auto f = static_cast<std::size_t>(t);
@@ -323,18 +331,32 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         const glm::ivec2 o = p.atlasOrigins[f];
         glViewport(o.x, o.y, p.atlasSides[f], p.atlasSides[f]);
         const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
-        // The casters this tile's camera can see (layout found them).
-        const std::vector<std::size_t>& wanted = p.atlasCasters[f];
-        const bool singles = std::any_of(wanted.begin(), wanted.end(), [&](std::size_t i) { return !batch_.holds(i); });
         glProgramUniformMatrix4fv(batched.id(), 0, 1, GL_FALSE, &clip[0][0]);
-        drawn += batch_.draw(batched, wanted);
-        if (!singles) continue;
         glProgramUniformMatrix4fv(single.id(), 0, 1, GL_FALSE, &clip[0][0]);
-        host.drawItems(ItemFilter::Casters, single, [&](std::size_t i) {
-            const bool draw = !batch_.holds(i) && std::binary_search(wanted.begin(), wanted.end(), i);
-            if (draw) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
-            return draw;
-        });
+        // The casters `wanted` (in order): the opaque in one batch, those with holes one by one.
+        const auto drawCasters = [&](const std::vector<std::size_t>& wanted) {
+            drawn += batch_.draw(batched, wanted);
+            if (std::all_of(wanted.begin(), wanted.end(), [&](std::size_t i) { return batch_.holds(i); })) return;
+            host.drawItems(ItemFilter::Casters, single, [&](std::size_t i) {
+                const bool draw = !batch_.holds(i) && std::binary_search(wanted.begin(), wanted.end(), i);
+                if (draw) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+                return draw;
+            });
+        };
+        // The casters this tile's camera can see (layout found them).
+        if (!p.options.cullFront) {
+            drawCasters(p.atlasCasters[f]);
+            continue;
+        }
+        for (const int sides : {1, -1, 0}) {
+            std::vector<std::size_t> group;
+            for (std::size_t i : p.atlasCasters[f])
+                if (winding(i) == sides) group.push_back(i);
+            if (group.empty()) continue;
+            host.apply(sides > 0 ? state : sides < 0 ? mirrored : open);
+            drawCasters(group);
+        }
+        host.apply(state);
     }
     host.count("triangles", static_cast<double>(drawn));
     host.count("atlasTiles", static_cast<double>(p.atlasTiles));

@@ -2,6 +2,7 @@
 #include "techniques/map/MapCasterDraw.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace shadowlab::map {
@@ -65,12 +66,21 @@ CasterDetail casterDetail(float lodTexels, const CubeCamera& camera, int size, c
 }
 
 std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
-                             const gl::RenderState& state, const CasterSeenWhole& seenWhole, const CasterDetail& detail) {
+                             const gl::RenderState& state, const CasterSeenWhole& seenWhole, const CasterDetail& detail,
+                             const gl::RenderState* openCasters) {
+    const auto winding = [&](std::size_t i) { return i < frame.itemWinding.size() ? frame.itemWinding[i] : 0; };
     // The side of item i the pass leaves out: none (0), or its far sides, counter-clockwise (+1) or clockwise (-1) as seen.
     const bool cullable = state.cull == gl::Cull::None && seenWhole;
-    const auto farSides = [&](std::size_t i) -> int {
-        const int winding = i < frame.itemWinding.size() ? frame.itemWinding[i] : 0;
-        return cullable && winding != 0 && seenWhole(i) ? winding : 0;
+    const auto farSides = [&](std::size_t i) -> int { return cullable && winding(i) != 0 && seenWhole(i) ? winding(i) : 0; };
+    // cullFront: closed casters by their far sides (front faces culled,
+    // or back faces where mirrored), open ones whole with openCasters.
+    const bool backFaces = openCasters != nullptr && state.cull == gl::Cull::Front;
+    gl::RenderState mirrored = state;
+    mirrored.cull = gl::Cull::Back;
+    // The state item i is drawn with (nullptr: the pass's own).
+    const auto stateOf = [&](std::size_t i) -> const gl::RenderState* {
+        if (!backFaces) return nullptr;
+        return winding(i) > 0 ? nullptr : winding(i) < 0 ? &mirrored : openCasters;
     };
     const gl::Program& opaque = program(false);
     std::size_t drawn = 0;
@@ -103,30 +113,41 @@ std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool h
         drawn += triangles;
         return chosen;
     };
+    // The items `pick` accepts, drawn with `drawState` (applied before the
+    // first of them, `state` again after), or the pass's own (nullptr).
+    const auto drawWith = [&](const gl::RenderState* drawState, const gl::Program& drawing, const std::function<bool(std::size_t)>& pick,
+                              const std::function<int(std::size_t)>& levelOf) {
+        bool applied = false;
+        host.drawItems(ItemFilter::Casters, drawing, [&](std::size_t i) {
+            if (!pick(i)) return false;
+            if (drawState && !applied) host.apply(*drawState);
+            applied = true;
+            return true;
+        }, Topology::Triangles, levelOf);
+        if (drawState && applied) host.apply(state);
+    };
+    const auto isOpaque = [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Opaque; };
     for (const int sides : {1, -1}) {
         if (!cullable) break;
         gl::RenderState culled = state;
         culled.cull = sides > 0 ? gl::Cull::Back : gl::Cull::Front;
-        bool applied = false;
-        host.drawItems(ItemFilter::Casters, opaque, [&](std::size_t i) {
-            if (casterSurface(frame, i) != CasterSurface::Opaque || farSides(i) != sides || !keep(i, opaque)) return false;
-            if (!applied) host.apply(culled);
-            applied = true;
-            return true;
-        }, Topology::Triangles, level);
-        if (applied) host.apply(state);
+        drawWith(&culled, opaque, [&](std::size_t i) { return isOpaque(i) && farSides(i) == sides && keep(i, opaque); }, level);
     }
-    host.drawItems(
-        ItemFilter::Casters, opaque, [&](std::size_t i) { return casterSurface(frame, i) == CasterSurface::Opaque && farSides(i) == 0 && keep(i, opaque); },
-        Topology::Triangles, level);
+    for (const gl::RenderState* group : std::array<const gl::RenderState*, 3>{nullptr, &mirrored, openCasters}) {
+        if (group && !backFaces) break;
+        drawWith(group, opaque, [&](std::size_t i) { return isOpaque(i) && farSides(i) == 0 && stateOf(i) == group && keep(i, opaque); }, level);
+    }
     setPush(0.0f);
     if (!holes) return drawn;
     const gl::Program& cut = program(true);
-    host.drawItems(ItemFilter::Casters, cut, [&](std::size_t i) {
-        if (casterSurface(frame, i) != CasterSurface::Holes || !keep(i, cut)) return false;
-        drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
-        return true;
-    });
+    for (const gl::RenderState* group : std::array<const gl::RenderState*, 3>{nullptr, &mirrored, openCasters}) {
+        if (group && !backFaces) break;
+        drawWith(group, cut, [&](std::size_t i) {
+            if (casterSurface(frame, i) != CasterSurface::Holes || stateOf(i) != group || !keep(i, cut)) return false;
+            drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+            return true;
+        }, {});
+    }
     return drawn;
 }
 

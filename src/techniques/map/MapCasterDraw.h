@@ -102,9 +102,15 @@ bool seesWhole(const CubeCamera& camera, const Bounds& box);
 /// culled (gl::Cull::Back, or Front where their winding is mirrored:
 /// FrameInfo::itemWinding). Where `detail` is given, each opaque caster is
 /// drawn from the coarsest level of its mesh within detail(i), its push set
-/// at kCasterPushLocation of program(false) (which must have it). Returns
-/// the triangles drawn.
+/// at kCasterPushLocation of program(false) (which must have it). Where
+/// `state` culls front faces (cullFront) and `openCasters` is given, only
+/// closed casters are drawn so (mirrored ones with back faces culled):
+/// an open caster (a plane, a ceiling) has no back face where the light
+/// sees its front, and is drawn whole with `openCasters` (culling nothing,
+/// with the polygon offset a front face takes). Returns the triangles
+/// drawn.
 std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
-                             const gl::RenderState& state, const CasterSeenWhole& seenWhole, const CasterDetail& detail = {});
+                             const gl::RenderState& state, const CasterSeenWhole& seenWhole, const CasterDetail& detail = {},
+                             const gl::RenderState* openCasters = nullptr);
 
 } // namespace shadowlab::map

@@ -82,6 +82,10 @@ std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes,
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
     const auto seenWhole = [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); };
     const CasterDetail detail = casterDetail(p.options.lodTexels, p.cubeCamera, g.size(), frame);
+    // cullFront: an open caster has no back face, so it is drawn whole (the
+    // cube's slope bias is the same either way).
+    gl::RenderState open = state;
+    open.cull = gl::Cull::None;
     const auto defines = [&](bool cut) {
         return CubePassVariant{g.format(), onePass, p.options.faceCulling, cubeWindowDepth(p.options), cut}.defines();
     };
@@ -101,7 +105,7 @@ std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes,
                 glProgramUniform1ui(drawing.id(), 0, p.faceMask(i));
                 return true;
             },
-            state, seenWhole, detail);
+            state, seenWhole, detail, &open);
     }
     const auto program = [&](bool cut) -> const gl::Program& {
         return host.program({{{GL_VERTEX_SHADER, "shadow_map_cube.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}}, defines(cut)});
@@ -113,7 +117,7 @@ std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes,
         glProgramUniform1i(program(false).id(), 1, f);
         if (holes) glProgramUniform1i(program(true).id(), 1, f);
         drawn += drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state,
-                                  seenWhole, detail);
+                                  seenWhole, detail, &open);
     }
     return drawn;
 }

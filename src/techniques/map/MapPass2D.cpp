@@ -30,16 +30,18 @@ void clearLayer(TechniqueHost& host, const MapArray& g, const gl::Framebuffer& f
 // The casters' draw state: depth (and the colour the map is, if any), the
 // light's polygon offset and culling. Back faces (cullFront) are drawn where
 // they are: they lie behind the lit surfaces already, and an offset pushes
-// them past the receivers at a caster's foot (light leaks there). Moments
-// are made from the depth as drawn, so it takes no offset (moments bound
-// the depths' spread instead).
-gl::RenderState casterState(const MapArray& g, const MapOptions& o, const LightCamera& camera) {
+// them past the receivers at a caster's foot (light leaks there). An open
+// caster (`open`: it has no back face) is drawn whole with the offset even
+// then. Moments are made from the depth as drawn, so it takes no offset
+// (moments bound the depths' spread instead).
+gl::RenderState casterState(const MapArray& g, const MapOptions& o, const LightCamera& camera, bool open = false) {
     gl::RenderState state;
     if (!isPacked(g.format())) state.noColor();
-    state.polygonOffset = !o.cullFront && !g.hasMoments() && (o.slopeBias != 0.0f || o.offsetUnits != 0.0f);
+    const bool backFaces = o.cullFront && !open;
+    state.polygonOffset = !backFaces && !g.hasMoments() && (o.slopeBias != 0.0f || o.offsetUnits != 0.0f);
     state.offsetFactor = o.slopeBias;
     state.offsetUnits = o.offsetUnits;
-    state.cull = o.cullFront ? gl::Cull::Front : gl::Cull::None;
+    state.cull = backFaces ? gl::Cull::Front : gl::Cull::None;
     // An orthographic light pancakes casters nearer than its near plane onto it.
     state.depthClamp = !camera.perspective;
     return state;
@@ -75,7 +77,8 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         else
             clearLayer(host, g, fbo);
         gl::RenderState state = casterState(g, p.options, camera);
-        if (part) state.scissor = std::array<GLint, 4>{part->x0, part->y0, part->x1 - part->x0, part->y1 - part->y0};
+        gl::RenderState open = casterState(g, p.options, camera, true);
+        if (part) state.scissor = open.scissor = std::array<GLint, 4>{part->x0, part->y0, part->x1 - part->x0, part->y1 - part->y0};
         host.apply(state);
         // This cascade's camera for the depth pass (the block's first member).
         res.block.setCamera(p, c);
@@ -87,7 +90,8 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         if (!part || !part->empty())
             drawnHere = drawDepthCasters(
                 host, frame, res.holes, program, [&](std::size_t i, const gl::Program&) { return castsInto(camera, frame, i, g.hasMoments()); },
-                state, [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); }, casterDetail(p.gpuFit ? 0.0f : p.options.lodTexels, camera, frame));
+                state, [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); }, casterDetail(p.gpuFit ? 0.0f : p.options.lodTexels, camera, frame),
+                &open);
         if (cameras.size() > 1) {
             host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
             // The share of the layer's texels the pass cleared and drew.
