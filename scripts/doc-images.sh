@@ -74,6 +74,7 @@ render  lecture-acne            scenes/lecture/acne.json --width 400 --height 22
 render  lecture-acne-fixed      scenes/lecture/acne.json --width 400 --height 225 --set "$MAP"'={"filter": "none"}'
 render  lecture-peter-panning   scenes/lecture/peter-panning.json --width 400 --height 225
 render  lecture-aliasing        scenes/lecture/aliasing.json --width 400 --height 225
+render  lecture-outside-map     scenes/lecture/outside-map.json --width 400 --height 225
 render  lecture-pcf             scenes/lecture/pcf.json --width 400 --height 225
 debug   lecture-point-cube light0-cube.png scenes/lecture/point-cube.json --width 400 --height 225
 render  lecture-planar          scenes/lecture/planar-double-blending.json --width 400 --height 225

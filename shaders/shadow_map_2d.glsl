@@ -109,7 +109,14 @@ float mapFilter(MapLookup m, vec2 uv, float ref);
 float mapTest(MapLookup m, vec4 s, float NdotL, inout vec3 transmit) {
     m.inside = s.w > 0.0;
     s.xyz /= m.inside ? s.w : 1.0;
+#if MAP_OUTSIDE_REPEAT
+    // outside "repeat" (LearnOpenGL's over-sampling): the map tiled, and a
+    // point past its far plane compared as it is, deeper than any depth
+    // stored, so shadowed.
+    s.xy = fract(s.xy);
+#else
     m.inside = m.inside && all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0))) && s.z <= 1.0;
+#endif
     float ref = s.z - map.constantBias;
 #if MAP_PRESET_BIAS
     // LearnOpenGL's own bias, slope-scaled, in place of the offsets (the preset).

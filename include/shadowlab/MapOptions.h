@@ -70,6 +70,11 @@ enum class MapMomentFormat {
     Rgba16f, ///< "rgba16f": 16-bit float moments: half the memory and bandwidth, more light bleeding; EVSM's exponents drop to 5.54
 };
 
+enum class MapOutside {
+    Lit,    ///< "lit": a receiver outside the map's box or past its far plane is lit (default)
+    Repeat, ///< "repeat": the map read as if tiled and points past its far plane shadowed (LearnOpenGL's over-sampling, before its fix)
+};
+
 enum class MapCubePasses {
     One, ///< "one": each caster drawn once, a geometry shader sends each triangle to the faces it touches (default)
     Six, ///< "six": one pass per face, the face attached as the target
@@ -101,6 +106,7 @@ struct MapOptions {
     float lodTexels = 0.5f;              ///< map texels; default 0.5
     float shadowedLight = 0.0f;          ///< share of the light; default 0
     bool mipmaps = false;                ///< default false
+    MapOutside outside = MapOutside::Lit;
     /// Default "default". Scene files, `--set` and `bench --vary` resolve
     /// it as they are read; code that sets it on MapOptions itself calls withPreset.
     MapPreset preset = MapPreset::Default;

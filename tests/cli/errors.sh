@@ -118,6 +118,7 @@ expect_error splits-beyond-far "--set lights[0].shadow.map.cascadeSplits=\"500\"
 expect_error splits-inside-near "the first split must lie beyond the camera's near plane (camera.near 0.1)" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.cascades=2 --set 'lights[0].shadow.map.cascadeSplits="0.01"'
 expect_error warp-spot "--set lights[0].shadow.map.warp=lispsm: lights[0].shadow.map.warp: map: warp \"lispsm\" is for directional lights" render "$src/scenes/spot-objects.json" -o out.png --set lights[0].shadow.map.warp=lispsm
 expect_error warp-cascades "lights[0].shadow.map.warp: map: warp \"lispsm\" with cascades takes stabilize false (a warped map cannot be snapped to whole texels); or use warp \"none\"" render -o out.png --set lights[0].shadow.map.warp=lispsm --set lights[0].shadow.map.cascades=3
+expect_error outside-repeat-cube "--set lights[0].shadow.map.outside=repeat: lights[0].shadow.map.outside: map: outside \"repeat\" is for one 2D map" render "$src/scenes/room-point.json" -o out.png --set lights[0].shadow.map.outside=repeat
 expect_error warp-near-zero "--set lights[0].shadow.map.warpNear=0: lights[0].shadow.map.warpNear: expected a number in 0.01..1000, got 0" render -o out.png --set lights[0].shadow.map.warpNear=0
 # The map budget counts translucent casters' transmittance and mip chains, and names the light that holds the memory.
 # The file's size alone fits; a --set of cascades takes it past the budget: the --set is named, not the file.

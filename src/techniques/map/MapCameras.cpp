@@ -329,6 +329,7 @@ std::optional<TexelRect> lookupTexels(const LightCamera& camera, const MapOption
 
 std::optional<TexelRect> drawnTexels(const FrameInfo& frame, const MapArray& g, const MapLight& p, const LightCamera& camera) {
     if (!frame.shadowRegions || g.hasMoments() || g.mipmaps() || isPacked(g.format()) || p.gpuFit) return std::nullopt;
+    if (p.options.outside == MapOutside::Repeat) return std::nullopt;  // a lookup outside reads the map tiled: any texel
     return lookupTexels(camera, p.options, g.size());
 }
 

@@ -54,12 +54,14 @@ const OptionTable& mapOptionTable() {
             .number(&MapOptions::offsetUnits, "offsetUnits", 0.0, 1024.0, "polygon offset units", "shadow pass: constant depth offset in the format's smallest steps")
             .number(&MapOptions::normalBias, "normalBias", 0.0, 16.0, "texels",
                     "receiver moved along its normal by this many map texels (their world size) times 1 - N.L")
-            .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws back faces only, without the polygon offset (slopeBias, offsetUnits), which the far side needs not and which would lift it off the receivers at a caster's foot (closed meshes; Ganovelli et al. §8.4.1.1)")
+            .boolean(&MapOptions::cullFront, "cullFront", "shadow pass draws closed casters' back faces only, without the polygon offset (slopeBias, offsetUnits), which would lift them off the receivers at their foot; open casters (a plane, a ceiling) have no back face and are drawn whole, with the offset (Ganovelli et al. §8.4.1.1)")
             .number(&MapOptions::lodTexels, "lodTexels", 0.0, 4.0, "texels",
                     "a dense caster (4096 triangles or more) is drawn into the map (a cube's faces too) from the coarsest simplified level of its mesh whose surface lies within this many map texels of the mesh's, pushed that far away from the light; 0: every triangle; not in the shadow atlas or with fit sdsm (docs/techniques/map.md)")
             .number(&MapOptions::shadowedLight, "shadowedLight", 0.0, 1.0, "share of the light",
                     "what a shadowed point keeps of the light (Ganovelli et al. listing 8.4: 0.6); compare judges the shadow test, not this look")
             .boolean(&MapOptions::mipmaps, "mipmaps", "mipmap the map and compare at the pixel's level (Ganovelli et al. exercise 8.6.1-4; docs/techniques/map.md says what it does)")
+            .choice(&MapOptions::outside, "outside", {"lit", "repeat"},
+                    "directional and spot lights, one map: what a receiver outside the map gets; lit: outside its box and past its far plane, lit (LearnOpenGL's fix for over-sampling: a border of 1 and depths past 1 lit); repeat: the map read as if tiled and points past its far plane shadowed, as before that fix (de Vries, Shadow Mapping)")
             .choice(&MapOptions::preset, "preset", {"default", "lecture", "learnopengl", "lecture-000"},
                     "the lecture's or LearnOpenGL's settings as the defaults of every option the scene does not write (docs/techniques/map.md); lecture-000: a point light through Wolberg's one 60-degree map")
             .integer(&MapOptions::cascades, "cascades", 1, 8, "maps",
@@ -107,6 +109,8 @@ std::string unsupported(const Light& light) {
     } else if (o.filter == MapFilter::Pcf20 && o.preset == MapPreset::Default) {
         return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
     }
+    if (o.outside == MapOutside::Repeat && (isCube(light) || o.atlas || o.cascades > 1))
+        return std::string("map: outside \"repeat\" is for one 2D map (a directional or spot light without cascades or the atlas); use outside \"lit\"");
     if (o.atlas) {
         if (light.type == LightType::Directional)
             return std::string("map: atlas is for spot and point lights; a directional light's map (or cascades) is its own");

@@ -103,6 +103,7 @@ std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const Li
     if (p.cube) return cubeShadowedPixels(p, light, frame, size);
     const MapOptions& o = p.options;
     if (o.atlas || p.gpuFit) return std::nullopt;
+    if (o.outside == MapOutside::Repeat) return std::nullopt;  // shadows anywhere outside the map, by design
     if (o.representation != MapRepresentation::Depth || o.filter == MapFilter::Dither4) return std::nullopt;
     if (o.slopeBias < 0.0f || o.offsetUnits < 0.0f) return std::nullopt;  // stored depths nearer than the casters
     const RegionScene scene{frame.items, frame.itemBounds, frame.itemPlanes, frame.clipFromWorld, frame.viewport};

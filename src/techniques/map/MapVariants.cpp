@@ -81,6 +81,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.momentsFromDepth = !v.cube && !o.atlas && map::momentsFromDepth(o);
     v.layerView = map::layerView(o, v.cube, v.cascades);
     v.mipmaps = !v.cube && !o.atlas && o.mipmaps && v.representation == MapRepresentation::Depth && !v.presetBias;
+    v.outsideRepeat = !v.cube && !o.atlas && v.cascades == 1 && o.outside == MapOutside::Repeat;
     return v;
 }
 
@@ -107,6 +108,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_MOMENTS_FROM_DEPTH", momentsFromDepth)
         .set("MAP_LAYER_VIEW", layerView)
         .set("MAP_MIPMAPS", mipmaps)
+        .set("MAP_OUTSIDE_REPEAT", outsideRepeat)
         .str();
 }
 

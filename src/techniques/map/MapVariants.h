@@ -64,6 +64,7 @@ struct LightPassVariant {
     /// scaled per fragment to the texel of the level the lookup reads
     /// (2^level texels of level 0), against the acne of averaged depths
     bool mipmaps = false;
+    bool outsideRepeat = false;     ///< outside "repeat": the map tiled, past its far plane compared as it is
     /// A moment map whose moments the light pass takes from the depth
     /// (MapArrays.h: momentsFromDepth), not from a texture of moments
     bool momentsFromDepth = false;
