@@ -220,6 +220,9 @@ in vec4 vShadowOffset;  // and the offsets in it, at level 0's texel
 #if MAP_PRESET_BIAS
 in float vShadowNdotL;  // N.L at the vertex, for the preset's slope-scaled bias
 #endif
+#if MAP_FRAGMENT_OFFSETS
+in float vShadowDepthOffset;  // the receiver-plane offset as a change of vShadowCoord.z
+#endif
 
 // The shadow test's visibility, 0 (shadowed) to 1 (lit); `transmit`, the
 // translucent casters' transmittance.
@@ -228,18 +231,30 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
 #if MAP_MOMENTS > 0
     m.planes = vec2(map.nearPlane, map.farPlane);
 #endif
+#if MAP_FRAGMENT_OFFSETS
+    // A perspective map: the receiver-plane offset as a change of the
+    // depth along the fragment's own ray (shadow_map_vertex.glsl).
+    vec4 shadowCoord = vShadowCoord;
+    shadowCoord.z += vShadowDepthOffset;
+#else
+    vec4 shadowCoord = vShadowCoord;
+#endif
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
     m.texelWorld = map.texelWorld;
     m.planes = vec2(map.nearPlane, map.farPlane);
-    vec3 q = vShadowCoord.xyz / vShadowCoord.w;
+    vec3 q = shadowCoord.xyz / shadowCoord.w;
     m.dx = dFdx(q);
     m.dy = dFdy(q);
 #endif
-    vec4 coord = vShadowCoord;
+    vec4 coord = shadowCoord;
 #if MAP_MIPMAPS
     // The offsets reach the texel of the level read (shadow_map_bias.glsl).
-    vec2 uv = vShadowCoord.xy / vShadowCoord.w;
-    coord += (mapLevelScale(dFdx(uv), dFdy(uv)) - 1.0) * vShadowOffset;
+    vec2 uv = shadowCoord.xy / shadowCoord.w;
+    float levelScale = mapLevelScale(dFdx(uv), dFdy(uv)) - 1.0;
+    coord += levelScale * vShadowOffset;
+#if MAP_FRAGMENT_OFFSETS
+    coord.z += levelScale * vShadowDepthOffset;
+#endif
 #endif
 #if MAP_PRESET_BIAS
     return mapTest(m, coord, vShadowNdotL, transmit);

@@ -51,6 +51,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
     SL_MAP_VEC4 cascadeWarp[SL_MAP_MAX_CASCADES];      // warp lispsm, cascades: each one's warpU (x) and warpV (y)
     SL_MAP_VEC4 cascadeScale[SL_MAP_MAX_CASCADES];     // cascades sharing one light view (MAP_CASCADE_AXES): each one's texture space from the first's, a scale (xyz), w: the cascade's texel along the light view's y, world units ...
     SL_MAP_VEC4 cascadeOffset[SL_MAP_MAX_CASCADES];    // ... and an offset (xyz); w: the cascade's texel along x
+    SL_MAP_VEC4 lightTexture;  // a perspective 2D map: the light's own position times shadowFromWorld (w 0), where rays towards it meet
     SL_MAP_VEC3 lightPosition; float shadowedLight; // spot and point lights: world position; the light a shadowed point keeps (share, shadowedLight)
     SL_MAP_VEC3 towardsLight; float reachTexels;    // directional lights: unit vector towards the light; the filter's reach (texels from the centre to its farthest tap)
     SL_MAP_VEC3 lightAxis; float cascadeBlend;      // a perspective light camera's unit view direction (texels grow along it); cascades: the blend share of a slice

@@ -1,8 +1,11 @@
 // Technique "map", per vertex (scene.vert's "@shadow_vertex?" slot): the
 // receiver's offset point in the light's texture space, so the fragment
 // only divides, compares and filters (lecture 002 Listing 8.3 computes
-// vShadowPosition in the vertex shader too). Offsets are linear in the
-// position over a flat triangle, so interpolating them is exact there.
+// vShadowPosition in the vertex shader too). Under a directional light the
+// offsets are linear in the position over a flat triangle, so
+// interpolating them is exact there; a perspective map's receiver-plane
+// offset, along the ray to the light, is not, and is the fragment's
+// (MAP_FRAGMENT_OFFSETS).
 #include "shadow_map_shared.h"
 #include "shadow_map_bias.glsl"
 #define SHADOW_VERTEX_HOOK 1
@@ -38,6 +41,9 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {}
 #else
 
 out vec4 vShadowCoord;  // map.shadowFromWorld times the offset point
+#if MAP_FRAGMENT_OFFSETS
+out float vShadowDepthOffset; // a perspective map: the receiver-plane offset as a change of vShadowCoord.z
+#endif
 #if MAP_MIPMAPS
 out vec4 vShadowOffset; // the offsets in texture space (the fragment scales them to its level)
 #endif
@@ -64,8 +70,27 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     if (map.warpU > 0.0) texel = mapWarpedTexel(map.warpPlane, vec2(map.warpU, map.warpV), worldPosition, n);
 #endif
     // The normal offset, then the receiver-plane bias for the filter's reach (shadow_map_bias.glsl).
+#if MAP_FRAGMENT_OFFSETS
+    // A perspective map: the receiver-plane offset moves the point towards
+    // the light along its own ray, which keeps its uv and brings its depth
+    // nearer, t of the way: in texture space a mix with the light's point
+    // (w 0). Moved along the vertex's ray and interpolated across a large
+    // triangle (a floor of two), the uv moved along it (the panel's shadow
+    // on glass-panel's floor, grazed by the spot, shifted a few pixels at
+    // 512^2). So the point keeps the normal offset alone, and the
+    // receiver-plane offset goes as a change of the depth, which the
+    // fragment adds to its own.
+    vec3 p = mapNormalOffset(worldPosition, n, NdotL, texel);
+    vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);
+    // mix(s, light, t) has the depth (s.z + t / (1 - t) light.z) / s.w: a
+    // change of s.z alone, which interpolates as s does (no divide here,
+    // where a vertex behind the light has w <= 0).
+    float t = min(map.reachTexels * texel * mapTanTheta(n, toLight, NdotL) / max(length(map.lightPosition - p), 1e-30), 0.5);
+    vShadowDepthOffset = t / (1.0 - t) * map.lightTexture.z;
+#else
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), toLight, texel, mapTanTheta(n, toLight, NdotL));
     vShadowCoord = map.shadowFromWorld * vec4(p, 1.0);
+#endif
 #if MAP_MIPMAPS
     vShadowOffset = map.shadowFromWorld * vec4(p - worldPosition, 0.0);
 #endif

@@ -94,6 +94,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     shared::MapUniforms u{};
     u.lightClipFromWorld = p.camera.clipFromWorld();
     u.shadowFromWorld = kBias * u.lightClipFromWorld;
+    if (p.camera.perspective) u.lightTexture = u.shadowFromWorld * glm::vec4(light.position, 1.0f);
     u.layer = static_cast<float>(p.layer);
     u.reachTexels = reach(p.options);
     u.texelWorld = p.camera.texelSize;

@@ -64,7 +64,12 @@ struct LightPassVariant {
     /// scaled per fragment to the texel of the level the lookup reads
     /// (2^level texels of level 0), against the acne of averaged depths
     bool mipmaps = false;
-    bool outsideRepeat = false;     ///< outside "repeat": the map tiled, past its far plane compared as it is
+    bool outsideRepeat = false;
+    /// A perspective 2D map (a spot's): the receiver's offsets worked out
+    /// per fragment; the direction to the light, N.L and tan(theta) are not
+    /// affine in the position, so a vertex's, interpolated across a large
+    /// triangle, moved the lookup along it (shadow_map_2d.glsl)
+    bool fragmentOffsets = false;     ///< outside "repeat": the map tiled, past its far plane compared as it is
     /// A moment map whose moments the light pass takes from the depth
     /// (MapArrays.h: momentsFromDepth), not from a texture of moments
     bool momentsFromDepth = false;
