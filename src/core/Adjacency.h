@@ -9,7 +9,8 @@
 namespace shadowlab {
 
 /// Per vertex, the first vertex with the same position (meshes split
-/// vertices for normals and uvs; welding finds the surface's own).
+/// vertices for normals and uvs; welding finds the surface's own). Same as
+/// == compares: +0 and -0 are one, a position with a NaN is only its own.
 std::vector<std::uint32_t> weldByPosition(const std::vector<glm::vec3>& positions);
 
 /// For each triangle (a, b, c) of `indices` the six indices

@@ -2,6 +2,7 @@
 
 #include "core/Adjacency.h"
 #include "core/MeshLevels.h"
+#include "core/MeshTwins.h"
 #include "core/Plane.h"
 #include "core/TriangleOrder.h"
 
@@ -124,29 +125,43 @@ const std::vector<DetailLevel>& GpuScene::levels(int mesh, const Scene& scene) {
     if (m.levelsBuilt) return m.levels;
     m.levelsBuilt = true;
     const Mesh& source = scene.meshes[static_cast<std::size_t>(mesh)];
-    const GpuMesh* twin = nullptr;
-    for (std::size_t j = 0; j < meshes_.size() && !twin; ++j) {
-        const Mesh& other = scene.meshes[j];
-        if (static_cast<int>(j) != mesh && meshes_[j].levelsBuilt && other.indices == source.indices && other.positions == source.positions) twin = &meshes_[j];
-    }
-    if (twin) {
-        m.levels = twin->levels;
-        m.levelFirst = twin->levelFirst;
-        m.levelData = twin->levelData;
+    // A mesh too small for levels has none to build or share.
+    if (source.triangleCount() < MeshLevelOptions{}.minTriangles) return m.levels;
+    // A mesh identical to one whose levels are built (a file's mesh loaded
+    // for several nodes) shares them (core/MeshTwins.h: by a hash).
+    const int same = levelTwins_.findOrAdd(mesh, scene.meshes);
+    if (same >= 0) {
+        // Its index buffer numbers the vertices as this mesh's buffer does
+        // (the same positions and indices make the same remap): copied on
+        // the GPU.
+        const GpuMesh& twin = meshes_[static_cast<std::size_t>(same)];
+        m.levels = twin.levels;
+        m.levelFirst = twin.levelFirst;
+        if (!m.levels.empty()) {
+            const auto bytes = static_cast<GLsizeiptr>((static_cast<std::size_t>(m.levelFirst.back()) + m.levels.back().triangles * 3) * 4);
+            m.levelIndices = gl::Buffer();
+            glNamedBufferStorage(m.levelIndices.id(), bytes, nullptr, 0);
+            glCopyNamedBufferSubData(twin.levelIndices.id(), m.levelIndices.id(), 0, 0, bytes);
+        }
     } else {
-        for (const MeshLevel& level : meshLevels(source.positions, source.indices)) {
-            m.levelFirst.push_back(static_cast<GLsizei>(m.levelData.size()));
+        // The levels one after another, in the buffer's numbering (m.remap's).
+        std::vector<MeshLevel> built = meshLevels(source.positions, source.indices);
+        std::size_t total = 0;
+        for (const MeshLevel& level : built) total += level.indices.size();
+        std::vector<std::uint32_t> data;
+        data.reserve(total);
+        for (MeshLevel& level : built) {
+            m.levelFirst.push_back(static_cast<GLsizei>(data.size()));
             m.levels.push_back({level.error, level.indices.size() / 3});
-            m.levelData.insert(m.levelData.end(), level.indices.begin(), level.indices.end());
+            for (const std::uint32_t i : level.indices) data.push_back(m.remap.empty() ? i : m.remap[i]);
+            level.indices = {};
+        }
+        if (!data.empty()) {
+            m.levelIndices = gl::Buffer();
+            glNamedBufferStorage(m.levelIndices.id(), static_cast<GLsizeiptr>(data.size() * 4), data.data(), 0);
         }
     }
-    if (!m.levelData.empty()) {
-        // The levels number the mesh's vertices as the scene does; the buffer's are m.remap's.
-        std::vector<std::uint32_t> data = m.levelData;
-        if (!m.remap.empty())
-            for (std::uint32_t& i : data) i = m.remap[i];
-        m.levelIndices = gl::Buffer();
-        glNamedBufferStorage(m.levelIndices.id(), static_cast<GLsizeiptr>(data.size() * 4), data.data(), 0);
+    if (!m.levels.empty()) {
         m.levelArray = gl::VertexArray();
         describeVertices(m.levelArray, m.vertices, m.levelIndices);
     }

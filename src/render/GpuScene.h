@@ -2,6 +2,7 @@
 // The scene's meshes and textures on the GPU.
 #include "core/Bounds.h"
 #include "core/MeshLevels.h"
+#include "core/MeshTwins.h"
 #include "core/TriangleOrder.h"
 #include "gl/Object.h"
 
@@ -28,12 +29,11 @@ struct GpuMesh {
     gl::Buffer adjacency{gl::NoCreate}; ///< GL_TRIANGLES_ADJACENCY indices, built on first use
     gl::VertexArray adjacencyArray{gl::NoCreate};
     /// Coarser levels for depth passes (core/MeshLevels.h), built on first use:
-    /// their indices one after another in `levelIndices` (the CPU copy in
-    /// `levelData`, for an identical mesh to share), drawn through `levelArray`.
+    /// their indices one after another in `levelIndices` (in remap's
+    /// numbering; an identical mesh copies it), drawn through `levelArray`.
     bool levelsBuilt = false;
     std::vector<DetailLevel> levels;
     std::vector<GLsizei> levelFirst; ///< each level's first index in levelIndices
-    std::vector<std::uint32_t> levelData;
     gl::Buffer levelIndices{gl::NoCreate};
     gl::VertexArray levelArray{gl::NoCreate};
 };
@@ -70,6 +70,7 @@ public:
 private:
     std::vector<GpuMesh> meshes_;
     std::vector<gl::Texture> textures_;
+    MeshTwins levelTwins_; ///< the meshes that built their own levels (levels())
 };
 
 } // namespace shadowlab
