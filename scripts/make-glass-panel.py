@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes scenes/images/glass-panel-smiley.png: the glass panel's picture for
-scenes/glass-panel.json (lecture 002 exercise 8.6.2-2), 128x128 RGBA, a
+scenes/glass-panel.json (Ganovelli et al. exercise 8.6.2-2), 128x128 RGBA, a
 smiley opaque (alpha 255) on a clear panel (alpha 0): its shadow is the
 picture. Run from the repository root; the PNG is committed."""
 import struct

@@ -1,6 +1,6 @@
 // Every pass that shades scene geometry: the base pass (ambient, and one
 // light merged in when its technique allows) and the additive pass of each
-// further light. Blinn-Phong as in the lecture (000, "passTwo"):
+// further light. Blinn-Phong as in the lecture (Wolberg, "passTwo"):
 //   colour = globalAmbient*ambient*base
 //          + visibility * light * (diffuse*base*max(N.L,0) + specular*max(N.H,0)^shininess)
 // Variants (ShaderVariant): AMBIENT, LIGHT (0/1: the ambient term, one
@@ -85,7 +85,7 @@ vec3 lightTermOf(int type, vec3 position, vec3 direction, vec4 params, vec3 radi
 vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
     vec3 radiance = light.radiance.rgb;
 #if HAS_PROJECTOR
-    // The slide projector (lecture 000): projective texture coordinates from
+    // The slide projector (Wolberg's lecture): projective texture coordinates from
     // the spot's camera; black outside the image. Image rows run top to
     // bottom, so v is flipped.
     vec4 c = light.projectorFromWorld * vec4(vWorldPosition, 1.0);

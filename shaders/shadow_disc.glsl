@@ -2,7 +2,7 @@
 // light (to infinity along a directional light) crosses one of the discs:
 // the ray meets the disc's plane at t, and there the point's coordinates
 // along the disc's semi-axes a and b lie in the unit circle. Exact, per
-// fragment, no shadow pass (lecture 002 exercise 8.6.2-1).
+// fragment, no shadow pass (Ganovelli et al. exercise 8.6.2-1).
 #include "shadow_disc_shared.h"
 
 vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {

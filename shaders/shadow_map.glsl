@@ -1,5 +1,5 @@
-// Technique "map": a shadow map per light (lecture 000, 002 §8.2-8.4), a
-// cube map per point light (001); the light pass's visibility hook. The
+// Technique "map": a shadow map per light (Wolberg's lecture, Ganovelli et al. §8.2-8.4), a
+// cube map per point light (Lawonn); the light pass's visibility hook. The
 // variant (src/techniques/map/MapVariants.h: LightPassVariant) picks the
 // path and the kernel: MAP_CUBE (a point light's cube map) or a 2D map
 // with MAP_CASCADES maps; MAP_FILTER (SL_MAP_FILTER_*, one kernel file
@@ -36,7 +36,7 @@ vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     vec3 transmit = vec3(1.0);  // coloured by the translucent casters in the way
     float v = mapVisibility(worldPosition, worldNormal, transmit);
 #if !OUTPUT_VISIBILITY
-    // The look of lecture 002 listing 8.4 (color *= 0.6 in shadow) when
+    // The look of Ganovelli et al. listing 8.4 (color *= 0.6 in shadow) when
     // shadowedLight > 0; compare reads the test itself (OUTPUT_VISIBILITY).
     v = mix(map.shadowedLight, 1.0, v);
 #endif

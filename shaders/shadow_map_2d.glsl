@@ -101,7 +101,7 @@ float mapFilter(MapLookup m, vec2 uv, float ref);
 // The test in a map, at texture-space point s (before the divide);
 // `transmit` becomes the translucent casters' transmittance there (left as
 // it was outside the map). Outside the map, behind a perspective light or
-// beyond its far plane: lit, never falsely shadowed (004). The filter runs
+// beyond its far plane: lit, never falsely shadowed (Navarro Rosales). The filter runs
 // there too and its answer is dropped, with no early return: a rasteriser
 // that runs both sides of a branch (llvmpipe) paid for the return's masks
 // (0.1-0.2 ms of an 800x600 frame), and PCSS's quad-shared search needs

@@ -2,11 +2,11 @@
 // (depth32f): the stored depth is the face camera's window depth as
 // rasterised, reversed (near 1, far 0), with the polygon offset for bias;
 // nothing is written here. Otherwise it is the distance from the light
-// over the far plane (lecture 001), written to gl_FragDepth, plus the slope
+// over the far plane (Lawonn's lecture), written to gl_FragDepth, plus the slope
 // bias (the distance's largest change to a neighbouring texel times
 // `slopeBias`, what glPolygonOffset's factor does for window depth, which a
 // written depth bypasses) and the constant offset. Variant MAP_RGBA8 packs
-// it into colour (002 §8.3.1).
+// it into colour (Ganovelli et al. §8.3.1).
 #include "shadow_map_shared.h"
 #include "alpha_test.h"
 

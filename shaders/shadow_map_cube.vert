@@ -1,4 +1,4 @@
-// Technique "map", a point light's cube-map pass (lecture 001): the casters'
+// Technique "map", a point light's cube-map pass (Lawonn's lecture): the casters'
 // world positions for the geometry shader (MAP_CUBE_ONE_PASS), or one face's
 // clip position for the six-pass path (that face in `face`).
 #include "shadow_map_shared.h"

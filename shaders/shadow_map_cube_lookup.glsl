@@ -1,5 +1,5 @@
-// Technique "map", the light pass for a point light's cube map (lecture
-// 001; shadow_map.glsl includes it when MAP_CUBE): the fragment's vector
+// Technique "map", the light pass for a point light's cube map (Lawonn's
+// lecture; shadow_map.glsl includes it when MAP_CUBE): the fragment's vector
 // from the light looks the map up, its distance over the far plane is the
 // reference (all per fragment: a point light's texel size and N.L change
 // too much across a wall-sized triangle to interpolate), and the filter's
@@ -106,7 +106,7 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius);
 
 // The shadow test's visibility, 0 (shadowed) to 1 (lit); `transmit`, the
 // translucent casters' transmittance. At the light or beyond the far
-// plane: lit (004). The filter runs there too and its answer is dropped,
+// plane: lit (Navarro Rosales). The filter runs there too and its answer is dropped,
 // with no early return (a rasteriser that runs both sides of a branch paid
 // for the return's masks; PCSS's quad-shared search needs every fragment
 // of the quad to run it: it sees from its vector that such a fragment
@@ -121,7 +121,7 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     float NdotL = clamp(dot(n, L), 0.0, 1.0);
     // World size of one texel at this distance (largest at a face's centre).
     float texel = d * map.cubeTexelPerDistance;
-    // Filter radius at the fragment, growing with the viewer's distance (001).
+    // Filter radius at the fragment, growing with the viewer's distance (Lawonn).
     float radius = map.diskRadius * (1.0 + map.diskGrowth * length(frame.cameraPosition.xyz - worldPosition) / map.cubeFar);
     float reachWorld = cubeReach(texel, radius);
     vec3 p = worldPosition;

@@ -1,8 +1,8 @@
 // Technique "map", shadow pass. Variants: MAP_RGBA8 (pack depth into an
-// RGBA8 colour, lecture 002 §8.3.1); otherwise depth alone (moment maps
+// RGBA8 colour, Ganovelli et al. §8.3.1); otherwise depth alone (moment maps
 // too: their moments are made from it afterwards, shadow_map_blur.frag);
 // MAP_HOLES, casters whose holes are cut here (the others: no test).
-// A spot's map is drawn whole, not only the cone inscribed in it (002
+// A spot's map is drawn whole, not only the cone inscribed in it (Ganovelli et al.
 // §8.2.1.3 discards outside the cone): a caster outside the cone shadows
 // nothing inside it, and the texels just outside the rim keep the depth
 // that filters and bilinear compares at the rim read (a discard there left

@@ -1,5 +1,5 @@
 // Technique "map", filter "dither4": the lecture's 4-sample dithered PCF
-// (000), one of four patterns from gl_FragCoord mod 2, taps `spread`
+// (Wolberg), one of four patterns from gl_FragCoord mod 2, taps `spread`
 // texels apart (map.ditherSpread). 2D maps only.
 #if MAP_CUBE
 #error filter dither4 is for 2D maps

@@ -1,6 +1,6 @@
 // Technique "map", filter "grid": the lecture's percentage-closer filter,
 // MAP_KERNEL x MAP_KERNEL comparisons one texel apart (2D maps), or the
-// lecture's 3-D grid of MAP_KERNEL^3 offsets around the ray (cube maps, 001).
+// lecture's 3-D grid of MAP_KERNEL^3 offsets around the ray (cube maps, Lawonn's lecture).
 #if MAP_CUBE
 float cubeReach(float texel, float radius) { return radius * 1.7320508; }  // the grid's corners
 

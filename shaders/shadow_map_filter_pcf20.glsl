@@ -1,5 +1,5 @@
 // Technique "map", filter "pcf20": the lecture's 20 offset directions
-// (001) times the radius, far apart, none along the ray. Cube maps only.
+// (Lawonn) times the radius, far apart, none along the ray. Cube maps only.
 #if !MAP_CUBE
 #error filter pcf20 is for point lights' cube maps
 #endif

@@ -112,7 +112,7 @@ float cubeWindowClipZ(float w) { return map.nearPlane * (map.farPlane - w) / (ma
 #endif
 
 #ifndef __cplusplus
-// d in [0, 1) as four base-255 digits (lecture 002 §8.3.1, Listing 8.2).
+// d in [0, 1) as four base-255 digits (Ganovelli et al. §8.3.1, Listing 8.2).
 // The lecture uses base 256, but an 8-bit UNORM channel stores x as
 // round(255 x) / 255, so a digit k / 256 comes back as about k / 255: up to
 // 0.4 % of the depth range wrong. With base 255 every digit is an exact
@@ -121,7 +121,7 @@ vec4 packDepth(float d) {
     if (d >= 1.0) return vec4(1.0);
 #if defined(MAP_R8) && MAP_R8
     // r8: one byte, rounded up, so a caster never shadows its own surface
-    // (lecture 002 exercise 8.6.2-1, variation 2: casters nearer the light
+    // (Ganovelli et al. exercise 8.6.2-1, variation 2: casters nearer the light
     // than anything they shadow need no more).
     return vec4(ceil(d * 255.0) / 255.0, 0.0, 0.0, 1.0);
 #endif

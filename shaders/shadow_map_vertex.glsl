@@ -1,6 +1,6 @@
 // Technique "map", per vertex (scene.vert's "@shadow_vertex?" slot): the
 // receiver's offset point in the light's texture space, so the fragment
-// only divides, compares and filters (lecture 002 Listing 8.3 computes
+// only divides, compares and filters (Ganovelli et al. Listing 8.3 computes
 // vShadowPosition in the vertex shader too). Under a directional light the
 // offsets are linear in the position over a flat triangle, so
 // interpolating them is exact there; a perspective map's receiver-plane

@@ -1,7 +1,7 @@
 // Technique "planar": the flattened caster. Style stencil: no colour (only
 // the stencil is written). Style lecture (PLANAR_DARK): a dark polygon that
 // multiplies the colour below by 1 - darkness (blended, so overlapping
-// polygons darken twice, as in lecture 000).
+// polygons darken twice, as in Wolberg's lecture).
 #include "shadow_planar_shared.h"
 
 #if PLANAR_DARK

@@ -1,6 +1,6 @@
 // Technique "planar", variant PLANAR_GEOMETRY: each triangle of the caster
 // emitted once per receiver plane of the draw, flattened onto it (lecture
-// 000's geometry-shader duplication), with the vertex shader's clip distances.
+// Wolberg's geometry-shader duplication), with the vertex shader's clip distances.
 #include "shadow_planar_shared.h"
 
 layout(triangles) in;

@@ -19,7 +19,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform PlanarUniforms {
 #define SL_PLANAR_VEC4 vec4
 #define SL_PLANAR_MAT4 mat4
 #endif
-    // The plane projection matrix (lecture 000): (n.L) I - L n^T, with L the
+    // The plane projection matrix (Wolberg's lecture): (n.L) I - L n^T, with L the
     // light (position, w = 1; or the direction towards it, w = 0) and n the
     // plane (a, b, c, d) turned so that n.L > 0.
     SL_PLANAR_MAT4 shadowFromWorld[SL_PLANAR_MAX_PLANES];

@@ -36,7 +36,7 @@ bool before(vec3 p, vec3 q) { return p.x < q.x || (p.x == q.x && (p.y < q.y || (
 // A triangle's facing, computed from its lexicographically smallest corner
 // on (a cyclic turn, which keeps the orientation): the triangle itself and
 // its neighbour across an edge then round the very same expression, so two
-// nearly coplanar faces can never disagree about their shared edge (002
+// nearly coplanar faces can never disagree about their shared edge (Ganovelli et al.
 // §8.5's "hole" in the volume).
 bool facesLight(int i, int j, int k) {
     if (before(vVolumeObject[j], vVolumeObject[i]) && !before(vVolumeObject[k], vVolumeObject[j])) { int t = i; i = j; j = k; k = t; }

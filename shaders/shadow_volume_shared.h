@@ -23,7 +23,7 @@ layout(std140, binding = SL_BINDING_TECHNIQUE) uniform VolumeUniforms {
 // put every vertex of a volume at the very same place.
 vec3 towardsLight(vec3 p) { return volume.light.w > 0.5 ? volume.light.xyz - p : volume.light.xyz; }
 #if BOOK
-// Lecture 002 §8.5: the silhouette swept to a finite distance, beyond the scene's box.
+// Ganovelli et al. §8.5: the silhouette swept to a finite distance, beyond the scene's box.
 vec4 atInfinity(vec3 p) { return frame.clipFromWorld * vec4(p - normalize(towardsLight(p)) * volume.params.x, 1.0); }
 #else
 vec4 atInfinity(vec3 p) { return frame.clipFromWorld * vec4(-towardsLight(p), 0.0); }

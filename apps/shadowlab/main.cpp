@@ -79,7 +79,7 @@ void checkFps(double fps) {
     if (!std::isfinite(fps) || !(fps > 0.0)) throw Error("--fps " + numberText(fps) + ": expected a finite number of frames per second > 0");
 }
 
-// --view-from-light I: the scene seen from light I (lecture 002 exercise 8.6.1-1).
+// --view-from-light I: the scene seen from light I (Ganovelli et al. exercise 8.6.1-1).
 void applyViewFromLight(Scene& scene, int light) {
     if (light < 0) return;
     if (static_cast<std::size_t>(light) >= scene.lights.size())

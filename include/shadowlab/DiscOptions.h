@@ -11,12 +11,13 @@
 
 namespace shadowlab {
 
+/// Technique "disc"'s options. What each one does and its default are
+/// documented once, in the options table (`shadowlab techniques`,
+/// docs/techniques/disc.md); a field's comment here gives its unit and
+/// default only.
 struct DiscOptions {
     static constexpr const char* kTechnique = "disc";
-    /// Comma-separated node names of the disc casters; empty (default):
-    /// every casting node whose mesh is a `disc` shape. A named node must
-    /// be one. Other casters cast no shadow with this technique.
-    std::string casters;
+    std::string casters;  ///< node names, comma-separated; default "" (every disc shape that casts)
 };
 
 /// The options table of "disc".

@@ -10,22 +10,24 @@ namespace shadowlab {
 
 enum class PlanarStyle {
     Stencil, ///< "stencil": each receiver pixel darkened at most once, clipped to the receiver, no z-fighting (default)
-    Lecture, ///< "lecture": 000's look, the shadow polygons drawn dark over the lit scene with depth only (double blending, z-fighting)
+    Lecture, ///< "lecture": Wolberg's look, the shadow polygons drawn dark over the lit scene with depth only (double blending, z-fighting)
 };
 
 enum class PlanarProjection {
     Vertex,   ///< "vertex": the caster drawn again with the projection in the vertex shader, once per receiver plane (default)
-    Geometry, ///< "geometry": a geometry shader emits the projected copy of each triangle (000's duplication), onto every receiver plane in one draw
+    Geometry, ///< "geometry": a geometry shader emits the projected copy of each triangle (Wolberg's duplication), onto every receiver plane in one draw
 };
 
+/// Technique "planar"'s options. What each one does and its default are
+/// documented once, in the options table (`shadowlab techniques`,
+/// docs/techniques/planar.md); a field's comment here gives its unit and
+/// default only.
 struct PlanarOptions {
     static constexpr const char* kTechnique = "planar";
-    /// Comma-separated node names of the receiver planes; empty (default):
-    /// every node whose mesh is planar and receives shadows.
-    std::string receivers;
+    std::string receivers;  ///< node names, comma-separated; default "" (every planar receiver)
     PlanarStyle style = PlanarStyle::Stencil;
     PlanarProjection projection = PlanarProjection::Vertex;
-    float darkness = 0.6f; ///< style lecture: the share of the colour a shadow polygon takes away, per polygon; default 0.6
+    float darkness = 0.6f;  ///< share of the colour; default 0.6
 };
 
 /// The options table of "planar".

@@ -22,6 +22,10 @@ enum class VolumeExtrusion {
     Cpu, ///< "cpu": the same, on the CPU every frame, into a vertex buffer
 };
 
+/// Technique "volume"'s options. What each one does and its default are
+/// documented once, in the options table (`shadowlab techniques`,
+/// docs/techniques/volume.md); a field's comment here gives its unit and
+/// default only.
 struct VolumeOptions {
     static constexpr const char* kTechnique = "volume";
     VolumeMethod method = VolumeMethod::DepthFail;

@@ -1,5 +1,5 @@
 #pragma once
-// Light cameras for shadow maps (lecture 002 §8.2.1): an orthographic box
+// Light cameras for shadow maps (Ganovelli et al. §8.2.1): an orthographic box
 // along a directional light, a perspective frustum around a spot's cone,
 // fitted to the casters and receivers that matter. GPU-free.
 #include "core/Bounds.h"

@@ -2,7 +2,7 @@
 // Planar meshes: a floor, a wall, a quad. A planar mesh cannot shadow
 // itself and shadows only what lies behind its plane as seen from the
 // light, so shadow maps leave it out of their pass when nothing visible is
-// there (and planar shadows, lecture 000, take such meshes as receivers).
+// there (and planar shadows, Wolberg's lecture, take such meshes as receivers).
 // GPU-free.
 #include "core/Bounds.h"
 

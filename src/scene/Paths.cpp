@@ -1,7 +1,7 @@
 // Animation: a light's position and the camera's eye and target along their
 // paths at a time (Scene.h). The scene file's `lights[i].path` and
 // `camera.path` (docs/scene-format.md); the lecture's moving point light
-// (lecture 001, "Omnidirectional Shadow Maps": lightPos.z = sin(t * 0.5) * 3)
+// (Lawonn's lecture, "Omnidirectional Shadow Maps": lightPos.z = sin(t * 0.5) * 3)
 // is a sine path with amplitude [0, 0, 3] and angular frequency 0.5.
 #include <shadowlab/Scene.h>
 

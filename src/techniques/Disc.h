@@ -1,6 +1,6 @@
 #pragma once
 // Technique "disc": exact shadows of flat discs in the light pass, with no
-// shadow pass (lecture 002 exercise 8.6.2-1 and its variation 1). Options:
+// shadow pass (Ganovelli et al. exercise 8.6.2-1 and its variation 1). Options:
 // include/shadowlab/DiscOptions.h; GLSL: shaders/shadow_disc.glsl.
 #include "techniques/Technique.h"
 

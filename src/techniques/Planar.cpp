@@ -1,4 +1,4 @@
-// Technique "planar": projected planar shadows (lecture 000, "Projective
+// Technique "planar": projected planar shadows (Wolberg's lecture, "Projective
 // Shadows"). No shadow pass: in the light's own pass, per receiver plane,
 // the receiver's visible pixels are marked in the stencil (1), every caster
 // is drawn flattened onto the plane by the plane projection matrix where the
@@ -7,7 +7,7 @@
 // remaining marks are cleared, and the light is added where the stencil is
 // not 2. The flattened casters need no depth test (the stencil says where
 // the receiver is visible), so they cannot z-fight with it. Style "lecture"
-// draws them dark over the lit scene with depth only instead (000's look).
+// draws them dark over the lit scene with depth only instead (Wolberg's look).
 #include "techniques/Planar.h"
 
 #include "core/LightCamera.h"
@@ -42,7 +42,7 @@ const OptionTable& planarOptionTable() {
 
 namespace {
 
-// The plane projection matrix (lecture 000): M = (n.L) I - L n^T maps a
+// The plane projection matrix (Wolberg's lecture): M = (n.L) I - L n^T maps a
 // point v to where the ray from the light through v meets the plane n
 // (homogeneous: w = (n.L) v.w - (n.v) L.w). L: the light's position with
 // w = 1, or the direction towards a directional light with w = 0.
@@ -108,7 +108,7 @@ public:
         };
 
         if (o.style == PlanarStyle::Lecture) {
-            // 000's look: the light everywhere, then the flattened casters
+            // Wolberg's look: the light everywhere, then the flattened casters
             // dark on top, depth-tested against the receivers they lie in.
             host.drawLit(host.litState());
             gl::RenderState dark;

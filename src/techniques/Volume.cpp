@@ -1,4 +1,4 @@
-// Technique "volume": stencil shadow volumes (lecture 002 §8.5). In the
+// Technique "volume": stencil shadow volumes (Ganovelli et al. §8.5). In the
 // light's own pass: every caster drawn over GL_TRIANGLES_ADJACENCY through
 // a geometry shader that extrudes its silhouette to infinity along the
 // light's rays and caps it (shaders/shadow_volume.geom), counted in the
@@ -148,7 +148,7 @@ public:
                 Topology::TrianglesAdjacency);
         };
         if (book) {
-            // 002 §8.5's sequence: back faces (front faces culled) increment
+            // Ganovelli et al.'s §8.5 sequence: back faces (front faces culled) increment
             // where they fail the depth test, then front faces (back faces
             // culled) decrement there.
             s.stencilFront = s.stencilBack = {GL_ALWAYS, 0, 0xFF, 0xFF, GL_KEEP, GL_INCR_WRAP, GL_KEEP};

@@ -1,5 +1,5 @@
 #pragma once
-// Technique "volume": stencil shadow volumes (lecture 002 §8.5): the
+// Technique "volume": stencil shadow volumes (Ganovelli et al. §8.5): the
 // casters' silhouettes extruded to infinity along the light's rays, capped,
 // counted in the stencil; the light is added where the count is zero.
 #include "techniques/Technique.h"

@@ -2,7 +2,8 @@
 everything they point at:
 
 - no file in the repository names `../shared` (a folder beside the
-  checkout that a clone does not have);
+  checkout that a clone does not have), nor cites a lecture by that
+  folder's file numbers ("lecture 002 §8.5": by its author instead);
 - README.md and every page under docs/ carry no commit hash (a word of 7 to
   40 hex digits with both letters and digits), no issue number ("issue 25",
   "issues 58-59") and no date of a run (2026-12-06);
@@ -17,6 +18,7 @@ import sys
 
 HASH = re.compile(r"\b(?=[0-9a-f]*[a-f])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}\b")
 ISSUE = re.compile(r"\bissues? #?[0-9]+", re.IGNORECASE)
+LECTURE_NUMBER = re.compile(r"\blectures? 00[0-9]\b", re.IGNORECASE)
 DATE = re.compile(r"\b20[0-9]{2}-[01][0-9]-[0-3][0-9]\b")
 SKIP_DIRS = {".git", "build", "build-asan", "build-fuzz", "build-lod", "build-refcheck", "build-web", "node_modules"}
 
@@ -42,6 +44,10 @@ def main():
             continue  # this file names what it looks for
         if "../shared" in text:
             problems.append(f"{rel}: names ../shared, which a clone does not have")
+        m = LECTURE_NUMBER.search(text)
+        if m and rel != os.path.join("docs", "history.md"):
+            line = text.count("\n", 0, m.start()) + 1
+            problems.append(f"{rel}:{line}: cites '{m.group(0)}' by the reference folder's number (name its author)")
     pages = ["README.md"] + [os.path.relpath(os.path.join(d, n), root)
                              for d, _, files in os.walk(os.path.join(root, "docs")) for n in files if n.endswith(".md")]
     for rel in sorted(pages):

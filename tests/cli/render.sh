@@ -54,7 +54,7 @@ out=$("$tool" render "$src/scenes/room-point.json" -o c.png --width 64 --height 
 [[ "$(head -c 24 c-light0-cube.png | tail -c 8 | od -An -tu1 | tr -s ' ')" == " 0 0 1 0 0 0 0 192" ]] || { echo "the cube cross is not 256x192"; exit 1; }
 if "$tool" render -o q.png --debug everything 2>err.txt; then echo "--debug everything accepted"; exit 1; fi
 [[ $(wc -l <err.txt) -eq 1 && ! -e q.png ]] && grep -q -- "--debug" err.txt || { echo "--debug everything: $(cat err.txt)"; exit 1; }
-# --frames: the room's point light follows lecture 001's path (z = 3 sin(0.5 t));
+# --frames: the room's point light follows Lawonn's path (z = 3 sin(0.5 t));
 # at 1 frame per second, frames 0, 1 and 2 see it at z = 0, 1.44 and 2.52.
 mkdir seq
 out=$("$tool" render "$src/scenes/room-point.json" --frames 3 --fps 1 -o 'seq/frame_%03d.png' --width 64 --height 48)

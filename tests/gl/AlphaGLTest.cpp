@@ -1,6 +1,6 @@
 // Alpha-tested casters (issue 18): a material's alpha cuts holes for the
 // camera, for every shadow map and for the ray-traced reference alike, so
-// compare judges them exactly. The scene is lecture 002's exercise 8.6.2-2:
+// compare judges them exactly. The scene is Ganovelli et al.'s exercise 8.6.2-2:
 // a 2 x 2 glass panel whose texture is a smiley with alpha 0 or 1, a
 // headlight behind it, walls that receive its picture.
 #include "GLTestContext.h"

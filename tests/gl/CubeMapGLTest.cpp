@@ -1,4 +1,4 @@
-// Technique "map" on point lights: depth cube maps (lecture 001) against the
+// Technique "map" on point lights: depth cube maps (Lawonn's lecture) against the
 // ray-traced reference: every face of a room, the bundled point-light
 // scenes, LearnOpenGL's point-shadow scene, one pass against six, no seams,
 // and culling per face.

@@ -1,4 +1,4 @@
-// Technique "disc" (issue 18, lecture 002 exercise 8.6.2-1): flat discs'
+// Technique "disc" (issue 18, Ganovelli et al. exercise 8.6.2-1): flat discs'
 // shadows computed exactly in the light pass, without a shadow pass, match
 // the ray-traced reference (the discs as 256-gons: their rims stay within
 // the 1-pixel band here) with no misclassified pixel outside the band,

@@ -257,7 +257,7 @@ TEST_F(MapGLTest, FourLightsInOneFrameEachMatchTheReference) {
     test::saveImagesIfFailed("four-lights", c.technique, c.reference);
 }
 
-// RGBA8 packing (lecture 002 §8.3.1) classifies like depth32f on at least
+// RGBA8 packing (Ganovelli et al. §8.3.1) classifies like depth32f on at least
 // 99.9 % of the receivers of every directional and spot scene.
 TEST_F(MapGLTest, Rgba8PackingClassifiesLikeDepth32f) {
     for (const fs::path& file : bundledScenes()) {
@@ -289,7 +289,7 @@ TEST_F(MapGLTest, Rgba8PackingClassifiesLikeDepth32f) {
     }
 }
 
-// The "flashlight in the eye" (lecture 000): a spot light at the camera,
+// The "flashlight in the eye" (Wolberg's lecture): a spot light at the camera,
 // pointing where it looks, shows no shadow: every shadow falls behind what
 // the camera sees.
 TEST_F(MapGLTest, AFlashlightInTheEyeShowsNoShadow) {
@@ -315,7 +315,7 @@ TEST_F(MapGLTest, AFlashlightInTheEyeShowsNoShadow) {
     EXPECT_LE(l.falseShadow, 0.0005);
 }
 
-// Preset "lecture-000" remakes lecture 000's torus and pyramid: its point light
+// Preset "lecture-000" remakes Wolberg's torus and pyramid: its point light
 // through one 60-degree map towards the origin, at the window's size, with
 // its polygon offset and dithered PCF. Its acne (the stripes the lecture
 // shows) is no concern here; its shadows must be where the truth has them.
@@ -329,7 +329,7 @@ TEST_F(MapGLTest, TheLecturePresetRemakesTheTorusAndPyramid) {
     EXPECT_LT(l.falseLitAwayFromEdges, 0.001);
 }
 
-// shadowedLight (preset "lecture": 0.6, lecture 002 listing 8.4's
+// shadowedLight (preset "lecture": 0.6, Ganovelli et al. listing 8.4's
 // color *= 0.6) is a look: shadowed receivers keep part of the light and so
 // are brighter than with 0, lit ones are unchanged, and compare, which
 // judges the shadow test, counts exactly the same pixels.

@@ -21,7 +21,7 @@
 //   footprint in pixels (at least 1 pixel, at most 64), where a soft edge
 //   is meant to differ from the hard truth.
 // - Exempt beyond the list, said in its closing note: fit "scene"
-//   (lecture 002's box around the whole scene, kept as the lecture draws
+//   (Ganovelli et al.'s box around the whole scene, kept as the lecture draws
 //   it: its texels are as coarse as the scene is wide; 0.05-0.08 % here),
 //   cullFront (a closed caster's back face meets the ground it stands on,
 //   and near that foot the two depths are nearer than the lookup's
@@ -29,7 +29,7 @@
 //   faces do; wider under a low sun: at 800x600 bunny 0.064 %,
 //   cascades-field 0.111 %, long-view 0.096 %, the rest at most 0.027 %; open casters, which it used
 //   to lose, are drawn whole now, MapDefectsGLTest), and mipmaps
-//   (lecture 002 exercise 8.6.1-4: averaged depths are not a prefiltered
+//   (Ganovelli et al. exercise 8.6.1-4: averaged depths are not a prefiltered
 //   shadow; a coarse level blends a caster's edge with the depth behind
 //   it, and shadows shrink by its texels, 0.05-1.7 % false lit here; the
 //   acne of an unscaled bias is gone, MapDefectsGLTest).

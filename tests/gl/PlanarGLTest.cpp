@@ -1,4 +1,4 @@
-// Technique "planar" (projected planar shadows, lecture 000): the analytic
+// Technique "planar" (projected planar shadows, Wolberg's lecture): the analytic
 // shadow of a box, one darkening where shadows overlap, the receiver's
 // edge, no anti-shadows, the two projections, the reference, bad options.
 #include "GLTestContext.h"

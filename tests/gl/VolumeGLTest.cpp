@@ -1,4 +1,4 @@
-// Technique "volume" (stencil shadow volumes, lecture 002 §8.5) against the
+// Technique "volume" (stencil shadow volumes, Ganovelli et al. §8.5) against the
 // ray-traced reference: closed casters under the three kinds of light, the
 // camera inside a volume (depth-fail right, depth-pass wrong), open meshes.
 #include "GLTestContext.h"
@@ -195,7 +195,7 @@ TEST_F(VolumeGLTest, CpuAndGpuExtrusionGiveTheSameShadows) {
 namespace {
 
 // A closed slab whose top is an n x n grid of faces lifted by up to 1e-6 at
-// random: nearly coplanar neighbours (002 §8.5's "hole" case).
+// random: nearly coplanar neighbours (Ganovelli et al.'s §8.5 "hole" case).
 Mesh jitteredSlab(int n) {
     Mesh m;
     m.name = "jittered slab";

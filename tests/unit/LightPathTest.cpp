@@ -146,7 +146,7 @@ TEST(LightPath, LightAtTimeMovesOnlyThePositionAndRemovesThePath) {
 
 TEST(LightPath, TheRoomFollowsTheLecturesPath) {
     const Scene s = loadSceneFile(fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "room-point.json");
-    // Lecture 001: lightPos.z = sin(t * 0.5) * 3, around the room's bulb at (0, 2.5, 0).
+    // Lawonn's lecture: lightPos.z = sin(t * 0.5) * 3, around the room's bulb at (0, 2.5, 0).
     for (const double t : {0.0, 0.7, 2.0, 9.0}) {
         SCOPED_TRACE(t);
         expectNear(sceneAtTime(s, t).lights[0].position, {0, 2.5f, 3.0f * static_cast<float>(std::sin(0.5 * t))});

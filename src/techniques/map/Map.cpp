@@ -1,5 +1,5 @@
 // Technique "map": shadow maps for directional and spot lights, the lecture's
-// two passes (000, 002 §8.2-8.4, 004), and cube maps for point lights (001).
+// two passes (Wolberg; Ganovelli et al. §8.2-8.4; Navarro Rosales), and cube maps for point lights (Lawonn).
 // Shadow pass: the casters that can reach the light's frustum, drawn from
 // the light camera (src/core/LightCamera) into one layer of a texture array
 // shared by every light with the same format and size, colour writes off
@@ -264,7 +264,7 @@ private:
     // The light's options, and a size that follows the frame (size 0) resolved.
     static MapOptions effectiveHere(TechniqueHost& host, const FrameInfo& frame, const Light& light) {
         MapOptions o = effective(light);
-        // size 0: the frame's (lecture 000: the window's own size; otherwise frameMapSize's texels per pixel).
+        // size 0: the frame's (Wolberg's lecture: the window's own size; otherwise frameMapSize's texels per pixel).
         if (o.size == 0)
             o.size = std::clamp(isLecture2D(o, light) ? std::max(frame.viewport.x, frame.viewport.y) : frameMapSize(frame.viewport.x, frame.viewport.y), 16,
                                 host.glInfo().maxTextureSize);

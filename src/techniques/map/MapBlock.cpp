@@ -47,7 +47,7 @@ void cubeMembers(shared::MapUniforms& u, const MapLight& p, const MapArray& g) {
     const CubeCamera& c = p.cubeCamera;
     for (std::size_t f = 0; f < 6; ++f) u.faceClipFromWorld[f] = c.faceClipFromWorld[f];
     const bool presetBias = usesPresetBias(p.options, true);
-    // The presets give their constant bias in world units (001, LearnOpenGL: 0.15).
+    // The presets give their constant bias in world units (Lawonn, LearnOpenGL: 0.15).
     u.constantBias = presetBias ? p.options.constantBias / c.farPlane : p.options.constantBias;
     // The constant offset in the format's smallest steps.
     const float step = g.format() == MapFormat::Depth16 ? 1.0f / 65535.0f : g.format() == MapFormat::Depth24 ? 1.0f / 16777215.0f : 1.0f / 16777216.0f;

@@ -1,4 +1,4 @@
-// Technique "map": a point light's cube-map pass (lecture 001; MapResources.h:
+// Technique "map": a point light's cube-map pass (Lawonn's lecture; MapResources.h:
 // renderCubePass). The six faces are six layers of a cube-map array, drawn
 // in one geometry-shader pass (gl_Layer picks the faces each triangle
 // touches) or in six; only the texels that held casters or will are cleared.

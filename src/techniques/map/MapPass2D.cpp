@@ -1,6 +1,6 @@
 // Technique "map": the shadow pass of a directional or spot light, one map
-// or a cascade per layer (MapResources.h: renderMapPass). Lecture 000 and
-// 002 §8.2-8.4: the casters drawn from the light camera, colour writes off
+// or a cascade per layer (MapResources.h: renderMapPass). Wolberg's lecture and
+// Ganovelli et al. §8.2-8.4: the casters drawn from the light camera, colour writes off
 // (or depth packed into RGBA8, or moments), a polygon offset against acne.
 #include "techniques/map/MapResources.h"
 

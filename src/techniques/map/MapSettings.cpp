@@ -139,7 +139,7 @@ namespace {
 MapOptions presetValues(MapOptions o, bool pointLight) {
     const bool cube = pointLight && o.preset != MapPreset::Lecture000;
     if (cube && o.preset == MapPreset::Lecture) {
-        // Lecture 001's cube: near 1, far 25 (cubeNearFar), no bias but a
+        // Lawonn's cube: near 1, far 25 (cubeNearFar), no bias but a
         // constant one in world units (upload() turns it into stored depth),
         // and its three stages by the light's filter: "none", one sample with
         // bias 0.05; "grid", the 64-sample 3-D grid (4 per axis, offsets to
@@ -172,7 +172,7 @@ MapOptions presetValues(MapOptions o, bool pointLight) {
         return o;
     }
     if (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000) {
-        // Lecture 000: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map
+        // Wolberg's lecture: glPolygonOffset(2.0, 4.0), a DEPTH_COMPONENT32F map
         // of the window's size (size 0: the frame's larger side), the
         // 4-sample dithered PCF; no normal offset, no constant bias.
         presetBase(o);
@@ -181,7 +181,7 @@ MapOptions presetValues(MapOptions o, bool pointLight) {
         o.offsetUnits = 4.0f;
         o.filter = MapFilter::Dither4;
         o.fit = MapFit::Scene;
-        // Lecture 002 listing 8.4: a shadowed point keeps 60 % (color *= 0.6).
+        // Ganovelli et al. listing 8.4: a shadowed point keeps 60 % (color *= 0.6).
         o.shadowedLight = 0.6f;
     } else if (o.preset == MapPreset::LearnOpenGL) {
         // LearnOpenGL 5.advanced_lighting/3.1.3: 1024^2 DEPTH_COMPONENT
@@ -244,7 +244,7 @@ LightCamera learnOpenGlCamera(const Light& light, int size) {
     return cam;
 }
 
-// Lecture 000's camera for its point light (the torus-and-pyramid scene):
+// Wolberg's camera for its point light (the torus-and-pyramid scene):
 // lookAt(light, origin, +Y) and perspective(60 degrees, 0.1, 1000), one map
 // towards the origin instead of a cube.
 LightCamera lecturePointCamera(const Light& light, int size) {
@@ -303,14 +303,14 @@ std::vector<float> parseSplits(const MapOptions& o, std::string& problem) {
 bool isCube(const Light& light) {
     return light.type == LightType::Point && light.shadow.get<MapOptions>().preset != MapPreset::Lecture000;
 }
-// Lecture 000's 2D settings (the window-sized map, the dither spread).
+// Wolberg's 2D settings (the window-sized map, the dither spread).
 bool isLecture2D(const MapOptions& o, const Light& light) {
     return !isCube(light) && (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000);
 }
 bool usesPresetBias(const MapOptions& o, bool cube) {
     return cube ? o.preset != MapPreset::Default : o.preset == MapPreset::LearnOpenGL;
 }
-// The presets' fixed near and far planes for a cube (001 and LearnOpenGL: 1 and 25); 0: fitted.
+// The presets' fixed near and far planes for a cube (Lawonn and LearnOpenGL: 1 and 25); 0: fitted.
 std::pair<float, float> cubeNearFar(const MapOptions& o) {
     return o.preset == MapPreset::Lecture || o.preset == MapPreset::LearnOpenGL ? std::pair{1.0f, 25.0f} : std::pair{0.0f, 0.0f};
 }

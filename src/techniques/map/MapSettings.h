@@ -18,14 +18,14 @@ MapOptions effective(const Light& light);
 
 /// A point light's map is a cube unless preset lecture-000 asks for 000's single map.
 bool isCube(const Light& light);
-/// Lecture 000's 2D settings (the window-sized map, the dither spread).
+/// Wolberg's 2D settings (the window-sized map, the dither spread).
 bool isLecture2D(const MapOptions& o, const Light& light);
 /// Whether the light pass takes a preset's own bias in place of the normal
 /// and receiver-plane offsets: LearnOpenGL's slope-scaled depth bias on a
 /// 2D map, any preset's constant bias alone on a cube (MapBlock's values,
 /// LightPassVariant::presetBias).
 bool usesPresetBias(const MapOptions& o, bool cube);
-/// The presets' fixed near and far planes for a cube (001 and LearnOpenGL: 1 and 25); 0: fitted.
+/// The presets' fixed near and far planes for a cube (Lawonn and LearnOpenGL: 1 and 25); 0: fitted.
 std::pair<float, float> cubeNearFar(const MapOptions& o);
 /// The maps of a directional light's cascades (1 for any other light).
 int cascadeCount(const Light& light, const MapOptions& o);
@@ -115,7 +115,7 @@ float reach(const MapOptions& o);
 
 /// LearnOpenGL's light camera for a directional light.
 LightCamera learnOpenGlCamera(const Light& light, int size);
-/// Lecture 000's camera for its point light: one map towards the origin.
+/// Wolberg's camera for its point light: one map towards the origin.
 LightCamera lecturePointCamera(const Light& light, int size);
 
 } // namespace shadowlab::map
