@@ -1,5 +1,7 @@
 #include "core/Adjacency.h"
 
+#include "core/LargePages.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -46,7 +48,7 @@ std::vector<std::uint32_t> weldByPosition(const std::vector<glm::vec3>& position
             return index < o.index;
         }
     };
-    std::vector<Keyed> keyed(positions.size());
+    std::vector<Keyed, LargePages<Keyed>> keyed(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i) {
         Keyed& k = keyed[i];
         for (int c = 0; c < 3; ++c) {

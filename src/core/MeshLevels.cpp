@@ -2,6 +2,7 @@
 #include "core/MeshLevels.h"
 
 #include "core/Adjacency.h"
+#include "core/LargePages.h"
 #include "core/VertexHeap.h"
 
 #include <algorithm>
@@ -38,6 +39,10 @@ struct Quadric {
 
 constexpr std::uint32_t kNone = 0xffffffffu;
 
+// The collapser's large arrays (core/LargePages.h: fewer page faults).
+template <class T>
+using Big = std::vector<T, LargePages<T>>;
+
 // The squared distance from p to the triangle (a, b, c), through its
 // closest point by the triangle's Voronoi regions (Ericson, Real-Time
 // Collision Detection, 5.1.5). In double: in float, a point inside a long
@@ -72,7 +77,7 @@ public:
     Collapser(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices, MeshLevelWork& work) : work_(work) {
         // The surface's own vertices (welded by position), numbered anew.
         const std::vector<std::uint32_t> weld = weldByPosition(positions);
-        std::vector<std::uint32_t> number(positions.size(), kNone);
+        Big<std::uint32_t> number(positions.size(), kNone);
         for (std::uint32_t i = 0; i < positions.size(); ++i)
             if (weld[i] == i) original_.push_back(i);
         t_.reserve(indices.size() / 3);
@@ -113,7 +118,7 @@ public:
         // An edge used by other than two triangles is open or non-manifold:
         // its vertices never move. Around v, a neighbour w appears once per
         // triangle on the edge vw.
-        std::vector<std::uint32_t> uses(v_.size(), 0);
+        Big<std::uint32_t> uses(v_.size(), 0);
         for (std::uint32_t v = 0; v < v_.size(); ++v) {
             v_[v].self = static_cast<float>(q_[v].at(glm::dvec3(v_[v].position)));
             const std::uint32_t s = stamp();
@@ -126,7 +131,7 @@ public:
         }
         for (const Vertex& x : v_) locked_ += x.locked;
         // Every vertex keyed by its cheapest collapse, the heap made at once.
-        std::vector<std::pair<float, std::uint32_t>> keys;
+        Big<std::pair<float, std::uint32_t>> keys;
         for (std::uint32_t v = 0; v < v_.size(); ++v)
             if (v_[v].size > 0 && !v_[v].locked) {
                 neighbours(v, scratchA_);
@@ -176,7 +181,7 @@ public:
     /// Puts each triangle's held vertices one after another in memory
     /// (collapses walk them triangle by triangle).
     void regroup() {
-        std::vector<Held>& grouped = spareHeld_; // (its memory kept from the last time)
+        Big<Held>& grouped = spareHeld_; // (its memory kept from the last time)
         grouped.clear();
         grouped.reserve(held_.capacity());
         for (Triangle& t : t_) {
@@ -380,7 +385,7 @@ private:
     // The lists one after another again, each with its room, in a pool
     // with as much again reserved.
     void pack() {
-        std::vector<std::uint32_t> packed;
+        Big<std::uint32_t> packed;
         packed.reserve(2 * reserved_);
         for (Vertex& x : v_) {
             const std::size_t at = packed.size();
@@ -503,17 +508,17 @@ private:
     }
 
     MeshLevelWork& work_;
-    std::vector<std::uint32_t> original_; ///< per vertex here, its number in the mesh (the first of its position)
-    std::vector<Vertex> v_;
-    std::vector<Quadric> q_;
-    std::vector<Triangle> t_;
+    Big<std::uint32_t> original_; ///< per vertex here, its number in the mesh (the first of its position)
+    Big<Vertex> v_;
+    Big<Quadric> q_;
+    Big<Triangle> t_;
     std::size_t live_ = 0, locked_ = 0;
-    std::vector<std::uint32_t> pool_; ///< every vertex's list of triangles (Vertex::start)
+    Big<std::uint32_t> pool_; ///< every vertex's list of triangles (Vertex::start)
     std::size_t reserved_ = 0;        ///< the lists' capacities' sum
     VertexHeap heap_{0};              ///< the vertices that may move, by their cheapest collapse
     float slack_ = 0.0f, running_ = 0.0f; ///< setSlack
     std::uint32_t stamp_ = 0, nearStamp_ = 0;
-    std::vector<Held> held_, spareHeld_; ///< the removed vertices; regroup()'s
+    Big<Held> held_, spareHeld_; ///< the removed vertices; regroup()'s
     std::vector<std::pair<std::uint32_t, std::uint32_t>> changed_; ///< a collapse's held vertices, each with its old triangle (kNone: u)
     std::vector<std::uint32_t> moved_, scratchA_, scratchB_;
     std::vector<std::pair<float, std::uint32_t>> scratchCosts_;

@@ -5,6 +5,8 @@
 // cheapest collapse). At most one entry a vertex; ties go to the lower
 // vertex number, a total order, so the order things come out in does not
 // depend on the order they went in. GPU-free.
+#include "core/LargePages.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -27,7 +29,8 @@ public:
 
     /// Puts each (cost, vertex) of `entries` in at once, into an empty heap
     /// (faster than set() one by one: linear, not n log n).
-    void build(const std::vector<std::pair<float, std::uint32_t>>& entries) {
+    template <class Entries>
+    void build(const Entries& entries) {
         heap_.clear();
         for (const auto& [cost, v] : entries) {
             place_[v] = static_cast<std::uint32_t>(heap_.size());
@@ -98,8 +101,8 @@ private:
         put(i, e);
     }
 
-    std::vector<Entry> heap_;
-    std::vector<std::uint32_t> place_; ///< per vertex, its index in heap_, or kOut
+    std::vector<Entry, LargePages<Entry>> heap_;
+    std::vector<std::uint32_t, LargePages<std::uint32_t>> place_; ///< per vertex, its index in heap_, or kOut
 };
 
 } // namespace shadowlab
