@@ -94,10 +94,12 @@ if "$tool" view fits.json --width 320 --height 180 --script budget.txt >/dev/nul
 # SIGTERM and SIGINT stop the viewer at its next frame: one line naming
 # the signal, exit 1, and the script's screenshot taken before it not kept.
 printf 'screenshot early.png\nwait 100000\n' > long.txt
+# The waits are long for a loaded machine or a sanitizer build, where the
+# viewer took over 30 s to draw its first frame; a quick one breaks out at once.
 for sig in TERM INT; do
-  timeout 30 "$tool" view --width 320 --height 180 --script long.txt >/dev/null 2>err.txt &
+  timeout 300 "$tool" view --width 320 --height 180 --script long.txt >/dev/null 2>err.txt &
   viewer=$!
-  for _ in $(seq 300); do [[ -n "$(pgrep -P "$viewer" shadowlab)" ]] && [[ -n "$(compgen -G 'early.png.pending-*')" ]] && break; sleep 0.1; done
+  for _ in $(seq 2400); do [[ -n "$(pgrep -P "$viewer" shadowlab)" ]] && [[ -n "$(compgen -G 'early.png.pending-*')" ]] && break; sleep 0.1; done
   pkill -"$sig" -P "$viewer" shadowlab
   wait "$viewer"
   code=$?
