@@ -179,7 +179,13 @@ size=$(python3 -c "import struct; d=open('resized.png','rb').read(24); print(*st
 # A resize under the memory guard but past what the process may allocate
 # (ulimit -v 8 GB; a 14000^2 frame needs about 12 GB): GL_OUT_OF_MEMORY said
 # in one line naming the script's line, no GL debug lines before it.
-printf 'resize 14000 14000\nquit\n' > huge.txt
-if (ulimit -v 8000000; "$tool" view --script huge.txt 2>err.txt); then echo "resize past the process's memory accepted"; exit 1; fi
-[[ $(wc -l <err.txt) -eq 1 ]] && grep -q "huge.txt:1: resize 14000 14000: the GPU ran out of memory making the .* (GL_OUT_OF_MEMORY)" err.txt || { echo "resize past memory: $(cat err.txt)"; exit 1; }
+# An AddressSanitizer build reserves terabytes of shadow memory at start,
+# which no address-space limit admits: the check is left out there.
+if ldd "$tool" | grep -q libasan; then
+  echo "resize past the process's memory: skipped, the tool is built with AddressSanitizer (ulimit -v cannot hold its shadow memory)"
+else
+  printf 'resize 14000 14000\nquit\n' > huge.txt
+  if (ulimit -v 8000000; "$tool" view --script huge.txt 2>err.txt); then echo "resize past the process's memory accepted"; exit 1; fi
+  [[ $(wc -l <err.txt) -eq 1 ]] && grep -q "huge.txt:1: resize 14000 14000: the GPU ran out of memory making the .* (GL_OUT_OF_MEMORY)" err.txt || { echo "resize past memory: $(cat err.txt)"; exit 1; }
+fi
 echo ok
