@@ -1,11 +1,11 @@
 #include "core/Adjacency.h"
 
+#include "core/FloatBits.h"
 #include "core/LargePages.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <unordered_map>
 
 namespace shadowlab {
@@ -51,10 +51,7 @@ std::vector<std::uint32_t> weldByPosition(const std::vector<glm::vec3>& position
     std::vector<Keyed, LargePages<Keyed>> keyed(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i) {
         Keyed& k = keyed[i];
-        for (int c = 0; c < 3; ++c) {
-            const float value = positions[i][c] == 0.0f ? 0.0f : positions[i][c];
-            std::memcpy(&k.bits[static_cast<std::size_t>(c)], &value, sizeof value);
-        }
+        for (int c = 0; c < 3; ++c) k.bits[static_cast<std::size_t>(c)] = equalityBits(positions[i][c]);
         k.index = static_cast<std::uint32_t>(i);
     }
     std::sort(keyed.begin(), keyed.end());

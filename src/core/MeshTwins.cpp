@@ -1,7 +1,7 @@
 // An earlier identical mesh by a hash of indices and positions (MeshTwins.h).
 #include "core/MeshTwins.h"
 
-#include <cstring>
+#include "core/FloatBits.h"
 
 namespace shadowlab {
 
@@ -11,12 +11,7 @@ std::uint64_t meshHash(const Mesh& mesh) {
     add(static_cast<std::uint32_t>(mesh.indices.size()));
     for (const std::uint32_t i : mesh.indices) add(i);
     for (const glm::vec3& p : mesh.positions)
-        for (int k = 0; k < 3; ++k) {
-            const float c = p[k] == 0.0f ? 0.0f : p[k];
-            std::uint32_t word;
-            std::memcpy(&word, &c, sizeof word);
-            add(word);
-        }
+        for (int k = 0; k < 3; ++k) add(equalityBits(p[k]));
     return h;
 }
 

@@ -1,9 +1,10 @@
 // Triangles in Morton order of their centroids (TriangleOrder.h).
 #include "core/TriangleOrder.h"
 
+#include "core/FloatBits.h"
+
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <numeric>
 
@@ -26,8 +27,7 @@ std::array<std::uint32_t, 9> triangleCorners(const std::vector<glm::vec3>& posit
     std::array<std::array<std::uint32_t, 3>, 3> c{};
     for (int k = 0; k < 3; ++k)
         for (int a = 0; a < 3; ++a) {
-            const float v = positions[indices[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(k)]][a];
-            c[static_cast<std::size_t>(k)][static_cast<std::size_t>(a)] = v == 0.0f ? 0u : std::bit_cast<std::uint32_t>(v);
+            c[static_cast<std::size_t>(k)][static_cast<std::size_t>(a)] = equalityBits(positions[indices[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(k)]][a]);
         }
     const std::size_t first = static_cast<std::size_t>(std::min_element(c.begin(), c.end()) - c.begin());
     std::array<std::uint32_t, 9> out{};
