@@ -220,7 +220,7 @@ in vec4 vShadowOffset;  // and the offsets in it, at level 0's texel
 #if MAP_PRESET_BIAS
 in float vShadowNdotL;  // N.L at the vertex, for the preset's slope-scaled bias
 #endif
-#if MAP_FRAGMENT_OFFSETS
+#if MAP_RAY_DEPTH_OFFSET
 in float vShadowDepthOffset;  // the receiver-plane offset as a change of vShadowCoord.z
 #endif
 
@@ -231,13 +231,11 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
 #if MAP_MOMENTS > 0
     m.planes = vec2(map.nearPlane, map.farPlane);
 #endif
-#if MAP_FRAGMENT_OFFSETS
+    vec4 shadowCoord = vShadowCoord;
+#if MAP_RAY_DEPTH_OFFSET
     // A perspective map: the receiver-plane offset as a change of the
     // depth along the fragment's own ray (shadow_map_vertex.glsl).
-    vec4 shadowCoord = vShadowCoord;
     shadowCoord.z += vShadowDepthOffset;
-#else
-    vec4 shadowCoord = vShadowCoord;
 #endif
 #if MAP_FILTER == SL_MAP_FILTER_PCSS
     m.texelWorld = map.texelWorld;
@@ -252,7 +250,7 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     vec2 uv = shadowCoord.xy / shadowCoord.w;
     float levelScale = mapLevelScale(dFdx(uv), dFdy(uv)) - 1.0;
     coord += levelScale * vShadowOffset;
-#if MAP_FRAGMENT_OFFSETS
+#if MAP_RAY_DEPTH_OFFSET
     coord.z += levelScale * vShadowDepthOffset;
 #endif
 #endif

@@ -4,8 +4,8 @@
 // vShadowPosition in the vertex shader too). Under a directional light the
 // offsets are linear in the position over a flat triangle, so
 // interpolating them is exact there; a perspective map's receiver-plane
-// offset, along the ray to the light, is not, and is the fragment's
-// (MAP_FRAGMENT_OFFSETS).
+// offset, along the ray to the light, is not, and goes on as a change of
+// depth alone (MAP_RAY_DEPTH_OFFSET).
 #include "shadow_map_shared.h"
 #include "shadow_map_bias.glsl"
 #define SHADOW_VERTEX_HOOK 1
@@ -41,7 +41,7 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {}
 #else
 
 out vec4 vShadowCoord;  // map.shadowFromWorld times the offset point
-#if MAP_FRAGMENT_OFFSETS
+#if MAP_RAY_DEPTH_OFFSET
 out float vShadowDepthOffset; // a perspective map: the receiver-plane offset as a change of vShadowCoord.z
 #endif
 #if MAP_MIPMAPS
@@ -70,7 +70,7 @@ void shadowVertex(vec3 worldPosition, vec3 worldNormal) {
     if (map.warpU > 0.0) texel = mapWarpedTexel(map.warpPlane, vec2(map.warpU, map.warpV), worldPosition, n);
 #endif
     // The normal offset, then the receiver-plane bias for the filter's reach (shadow_map_bias.glsl).
-#if MAP_FRAGMENT_OFFSETS
+#if MAP_RAY_DEPTH_OFFSET
     // A perspective map: the receiver-plane offset moves the point towards
     // the light along its own ray, which keeps its uv and brings its depth
     // nearer, t of the way: in texture space a mix with the light's point

@@ -82,7 +82,7 @@ LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterize
     v.layerView = map::layerView(o, v.cube, v.cascades);
     v.mipmaps = !v.cube && !o.atlas && o.mipmaps && v.representation == MapRepresentation::Depth && !v.presetBias;
     v.outsideRepeat = !v.cube && !o.atlas && v.cascades == 1 && o.outside == MapOutside::Repeat;
-    v.fragmentOffsets = !v.cube && !o.atlas && light.type != LightType::Directional;
+    v.rayDepthOffset = !v.cube && !o.atlas && light.type != LightType::Directional;
     return v;
 }
 
@@ -110,7 +110,7 @@ std::string LightPassVariant::defines() const {
         .set("MAP_LAYER_VIEW", layerView)
         .set("MAP_MIPMAPS", mipmaps)
         .set("MAP_OUTSIDE_REPEAT", outsideRepeat)
-        .set("MAP_FRAGMENT_OFFSETS", fragmentOffsets)
+        .set("MAP_RAY_DEPTH_OFFSET", rayDepthOffset)
         .str();
 }
 

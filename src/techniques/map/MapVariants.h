@@ -64,12 +64,12 @@ struct LightPassVariant {
     /// scaled per fragment to the texel of the level the lookup reads
     /// (2^level texels of level 0), against the acne of averaged depths
     bool mipmaps = false;
-    bool outsideRepeat = false;
-    /// A perspective 2D map (a spot's): the receiver's offsets worked out
-    /// per fragment; the direction to the light, N.L and tan(theta) are not
-    /// affine in the position, so a vertex's, interpolated across a large
-    /// triangle, moved the lookup along it (shadow_map_2d.glsl)
-    bool fragmentOffsets = false;     ///< outside "repeat": the map tiled, past its far plane compared as it is
+    bool outsideRepeat = false;       ///< outside "repeat": the map tiled, past its far plane compared as it is
+    /// A perspective 2D map (a spot's): the receiver-plane offset handed on
+    /// as a change of the texture-space depth, which keeps each point's ray
+    /// to the light; moved along a vertex's ray and interpolated across a
+    /// large triangle, the point slid across the map (shadow_map_vertex.glsl)
+    bool rayDepthOffset = false;
     /// A moment map whose moments the light pass takes from the depth
     /// (MapArrays.h: momentsFromDepth), not from a texture of moments
     bool momentsFromDepth = false;
