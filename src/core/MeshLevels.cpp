@@ -178,6 +178,56 @@ public:
         return out;
     }
 
+    /// Numbers the live vertices and triangles anew, in the order they had
+    /// (the order every choice breaks its ties by, so the levels come out
+    /// the same), with nothing between them: a level's collapses then read
+    /// half the memory the one before's did, and fewer cache lines.
+    void compact() {
+        Big<std::uint32_t> vertexNumber(v_.size(), kNone), triangleNumber(t_.size(), kNone);
+        std::uint32_t vertices = 0, triangles = 0;
+        for (std::uint32_t v = 0; v < v_.size(); ++v)
+            if (!v_[v].removed && v_[v].size > 0) vertexNumber[v] = vertices++;
+        for (std::uint32_t t = 0; t < t_.size(); ++t)
+            if (t_[t].first != kDead) triangleNumber[t] = triangles++;
+        Big<Vertex> v(vertices);
+        Big<Quadric> q(vertices);
+        Big<std::uint32_t> original(vertices);
+        Big<std::uint32_t> pool;
+        std::size_t room = 0;
+        for (std::uint32_t old = 0; old < v_.size(); ++old)
+            if (vertexNumber[old] != kNone) room += v_[old].size + kRoom;
+        pool.reserve(2 * room);
+        Big<std::pair<float, std::uint32_t>> keys;
+        for (std::uint32_t old = 0; old < v_.size(); ++old) {
+            const std::uint32_t k = vertexNumber[old];
+            if (k == kNone) continue;
+            Vertex x = v_[old];
+            x.target = x.target == kNone ? kNone : vertexNumber[x.target];
+            x.mark = x.near = 0;
+            x.start = static_cast<std::uint32_t>(pool.size());
+            x.capacity = x.size + kRoom;
+            for (const std::uint32_t t : around(old)) pool.push_back(triangleNumber[t]);
+            pool.resize(pool.size() + kRoom);
+            v[k] = x;
+            q[k] = q_[old];
+            original[k] = original_[old];
+            if (heap_.contains(old)) keys.emplace_back(heap_.cost(old), k);
+        }
+        Big<Triangle> t;
+        t.reserve(triangles);
+        for (const Triangle& old : t_)
+            if (old.first != kDead) t.push_back({{vertexNumber[old.v[0]], vertexNumber[old.v[1]], vertexNumber[old.v[2]]}, old.first});
+        v_ = std::move(v);
+        q_ = std::move(q);
+        original_ = std::move(original);
+        t_ = std::move(t);
+        pool_ = std::move(pool);
+        reserved_ = room;
+        stamp_ = nearStamp_ = 0;
+        heap_ = VertexHeap(v_.size());
+        heap_.build(keys);
+    }
+
     /// Puts each triangle's held vertices one after another in memory
     /// (collapses walk them triangle by triangle).
     void regroup() {
@@ -553,6 +603,7 @@ std::vector<MeshLevel> meshLevels(const std::vector<glm::vec3>& positions, const
         if (static_cast<double>(collapser.live()) > 0.75 * static_cast<double>(before)) break;
         levels.push_back(collapser.level());
         collapser.setSlack(levels.back().error);
+        collapser.compact();
         collapser.regroup();
         before = collapser.live();
         if (!reached) break;
