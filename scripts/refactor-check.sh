@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Before/after check for changes that must leave every pixel as it was
-# (issue 23: the map technique as modules). Builds the pinned BASE commit
+# (first made for the map technique as modules). Builds the pinned BASE commit
 # beside the work tree, renders every case below with both builds, and
 # compares every file each writes: the frame, the techniques' debug images
 # (shadow maps, cube crosses, texel density, cascade colours), and for
@@ -8,7 +8,7 @@
 # images and metrics.json (its timing fields, *Ms, left out).
 #
 # Usage: scripts/refactor-check.sh [--base COMMIT] [--only REGEX] [--list] [--bench]
-#   --base COMMIT  the "before" build (default: the commit issue 23 started from)
+#   --base COMMIT  the "before" build (default: the commit the map module's inside refactor started from)
 #   --only REGEX   only the cases whose name matches (grep -E)
 #   --list         print the cases and exit
 #   --bench        also time both builds side by side (bench, interleaved rounds)
@@ -23,8 +23,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 
-# The commit issue 23 starts from: every landing of it is measured against this.
-base=7fca00156ba8ee87546ad904ccfa6eaefe5cfc4c
+# The commit the map module's inside refactor starts from (the one before
+# its first landing): every landing of it is measured against this.
+base=48fd5a681ba65b6dd686b98382158905c58cce53
 only=""
 list=false
 bench=false

@@ -1,6 +1,6 @@
 // The shadow atlas's lookup (technique map with `atlas`): a light's map is
 // a tile of one depth texture, a point light's cube six tiles, one per
-// face (src/techniques/map/MapAtlas.cpp places and draws them). Shared by
+// face (src/techniques/map/atlas/Atlas.cpp places and draws them). Shared by
 // the light list's loop (lighting.frag, LIGHT_LIST_SHADOWS) and the map
 // technique's own pass for one such light (shadow_map_atlas.glsl).
 #ifndef SHADOW_ATLAS_GLSL

@@ -1,5 +1,5 @@
 // Technique "map", the shadow atlas's pass for the opaque casters in one
-// batch (src/techniques/map/MapCasterBatch.cpp): positions already in
+// batch (src/techniques/map/passes/CasterBatch.cpp): positions already in
 // world space, so one call draws every caster a tile culls; clipped to the
 // tile's sides as shadow_atlas_depth.vert says.
 layout(location = 0) in vec3 inWorldPosition;

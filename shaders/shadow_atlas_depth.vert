@@ -1,4 +1,4 @@
-// Technique "map", the shadow atlas's pass (src/techniques/map/MapAtlas.cpp):
+// Technique "map", the shadow atlas's pass (src/techniques/map/atlas/Atlas.cpp):
 // the casters from one tile's camera (a spot's, or a cube face's), drawn
 // into the tile's square of the atlas (the viewport); shadow_map_depth.frag
 // after it.

@@ -1,6 +1,6 @@
 // Technique "map": a shadow map per light (Wolberg's lecture, Ganovelli et al. §8.2-8.4), a
 // cube map per point light (Lawonn); the light pass's visibility hook. The
-// variant (src/techniques/map/MapVariants.h: LightPassVariant) picks the
+// variant (src/techniques/map/Variants.h: LightPassVariant) picks the
 // path and the kernel: MAP_CUBE (a point light's cube map) or a 2D map
 // with MAP_CASCADES maps; MAP_FILTER (SL_MAP_FILTER_*, one kernel file
 // each), MAP_KERNEL (grid side), MAP_GRID_BILINEAR (the grid's

@@ -13,7 +13,7 @@ layout(location = 1) uniform int face;
 out vec3 gCubeWorld;
 out vec2 gCubeUv;
 #endif
-// A caster drawn from a coarser level of its mesh (MapCasterDraw.h): its
+// A caster drawn from a coarser level of its mesh (map/passes/CasterDraw.h): its
 // vertices moved this far away from the light, world units; 0 for a mesh's
 // own triangles.
 layout(location = 4) uniform float casterPush = 0.0;

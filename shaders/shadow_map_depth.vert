@@ -5,7 +5,7 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
 out vec2 vUv;
 
-// A caster drawn from a coarser level of its mesh (MapCasterDraw.h): its
+// A caster drawn from a coarser level of its mesh (map/passes/CasterDraw.h): its
 // vertices moved this far away from the light, world units; 0 for a mesh's
 // own triangles.
 layout(location = 4) uniform float casterPush = 0.0;

@@ -44,7 +44,7 @@ float msmShadow(vec4 b, float z) {
 // The filtered moments at uv of layer `layer` (planes: a spot's near and
 // far, which linearise its depth as shadow_map_blur.frag does).
 #if MAP_MOMENTS_FROM_DEPTH
-// Taken from the depth itself (MapArrays.h: momentsFromDepth): the four
+// Taken from the depth itself (map/passes/Arrays.h: momentsFromDepth): the four
 // depth texels a bilinear lookup reads, gathered, their moments blended
 // with the bilinear weights, which is what a bilinear lookup of moments
 // made per texel returns (with no blur, no mipmaps, 32-bit moments).

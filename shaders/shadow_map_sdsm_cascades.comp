@@ -55,7 +55,7 @@ layout(location = 25) uniform vec2 splitRange;
 layout(location = 26) uniform mat4 clipFromView;  // the camera's projection
 layout(location = 27) uniform float blend;        // cascadeBlend
 
-// The window depth (0..1) of a point `distance` along the view's axis (MapSdsm.cpp: windowDepthAt).
+// The window depth (0..1) of a point `distance` along the view's axis (map/fit/Sdsm.cpp: windowDepthAt).
 float windowDepthAt(float distance) {
     vec4 clip = clipFromView * vec4(0.0, 0.0, -distance, 1.0);
     return 0.5 * clip.z / clip.w + 0.5;
@@ -142,7 +142,7 @@ void main() {
     // count: from its near end, or for a slice after the first from where
     // the slice before fades into it over its far blend share
     // (MapCameras: sliceDistances), each way a step of the 24-bit depth
-    // wider (a pixel on a split counts for both; MapSdsm.cpp: depthWindow).
+    // wider (a pixel on a split counts for both; map/fit/Sdsm.cpp: depthWindow).
     const float depthStep = 1.0 / 16777215.0, below1 = 0.99999994;
     for (int c = 0; c < count; ++c) {
         fit.cascadeFar[c >> 2][c & 3] = ends[c];

@@ -4,7 +4,7 @@
 // shadow_map_sdsm_cascades.comp: the cascades' splits, and stabilised
 // ones' cameras), one per light, kept
 // from frame to frame, and copied on the GPU over the cameras' members of
-// the light's block (MapBlock). Shared by the C++ (MapSdsm.h: SdsmFit) and
+// the light's block (MapBlock). Shared by the C++ (map/fit/Sdsm.h: SdsmFit) and
 // the GLSL (std430 at SL_STORAGE_SDSM_FIT); matrices, then vec4s, then
 // floats four at a time, so that both lay it out alike.
 #ifndef SHADOWLAB_SHADOW_MAP_SDSM_SHARED_H

@@ -6,7 +6,7 @@
 #include "shadowlab_shared.h"
 
 // MAP_FILTER's values, SL_MAP_FILTER_<NAME>, come with the light pass's
-// variant (src/techniques/map/MapFilters.cpp: the filters' table).
+// variant (src/techniques/map/options/Filters.cpp: the filters' table).
 
 // MAP_MOMENTS variant values (MapRepresentation's order): 0 a depth map.
 #define SL_MAP_MOMENTS_VSM 1
@@ -23,7 +23,7 @@
 
 // The block: matrices, then vec4 arrays, then each vec3 with a float, then
 // floats four at a time, so std140 lays it out as C++ does (a vec3 starts
-// on 16 bytes, a float packs after it; MapBlock.cpp checks the offsets).
+// on 16 bytes, a float packs after it; map/lookup/Block.cpp checks the offsets).
 // Every member has one meaning, in the units it says.
 #ifdef __cplusplus
 #include <glm/glm.hpp>

@@ -25,7 +25,7 @@
 #define SL_LIGHT_SLICES 32         // depth slices a tile (core/LightTiles.h)
 #define SL_STORAGE_ATLAS_TILES 2   // AtlasTile[]: the shadow atlas's tiles (technique map, atlas: shadow_atlas.glsl)
 #define SL_STORAGE_SDSM_CASTERS 3  // technique map, fit sdsm on the GPU: the casters' boxes in the light's view (shadow_map_sdsm_fit.comp)
-#define SL_STORAGE_SDSM_FIT 4      // and the camera it fits (MapSdsm.h: SdsmFit)
+#define SL_STORAGE_SDSM_FIT 4      // and the camera it fits (map/fit/Sdsm.h: SdsmFit)
 
 // Texture units.
 #define SL_UNIT_BASE_COLOR 0

@@ -81,7 +81,7 @@ enum class MapCubePasses {
 };
 
 /// Technique "map"'s options. What each one does, its range and its
-/// default are documented once, in the options table (MapOptionTable.cpp:
+/// default are documented once, in the options table (map/options/OptionTable.cpp:
 /// `shadowlab techniques`, docs/techniques/map.md); a field's comment here
 /// gives its unit and default only.
 struct MapOptions {

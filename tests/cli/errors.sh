@@ -79,7 +79,7 @@ expect_error set-light-after-intensity "--set lights[0]={\"type\":\"directional\
 expect_error set-no-value "--set camera: expected key=value" render -o out.png --set camera
 expect_error map-past-budget "lights[0].shadow.map: the shadow maps of 1 light(s) need 2.00 GiB, more than the budget of 1 GiB" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16384 --set 'lights[0].shadow.map.format="rgba8"'
 expect_error map-size-range "--set lights[0].shadow.map.size=16385: lights[0].shadow.map.size: expected an integer in 0..16384, got 16385" render -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.size=16385
-# The names come from the filters' table (src/techniques/map/MapFilters.cpp): the list's start, and what was given.
+# The names come from the filters' table (src/techniques/map/options/Filters.cpp): the list's start, and what was given.
 expect_error map-bad-filter "--set lights[0].shadow.map.filter=pcff: lights[0].shadow.map.filter: expected one of \"none\", \"hardware\", \"grid\"" render -o out.png --set lights[0].shadow.map.filter=pcff
 expect_error map-bad-filter-names-it "), got \"pcff\"" render -o out.png --set lights[0].shadow.map.filter=pcff
 expect_error map-point-dither "--set lights[0].shadow.map.filter=dither4: lights[0].shadow.map.filter: map: filter \"dither4\" is for 2D maps" render "$src/scenes/room-point.json" -o out.png --set lights[0].shadow.technique=map --set lights[0].shadow.map.filter=dither4

@@ -1,4 +1,4 @@
-// Map option lodTexels (MapCasterDraw.h, core/MeshLevels.h): dense casters
+// Map option lodTexels (map/passes/CasterDraw.h, core/MeshLevels.h): dense casters
 // drawn into 2D maps from a coarser level of their mesh, within that many
 // texels of its surface and pushed that far from the light. What a user
 // cares about: far fewer triangles in the pass, the shadows as right as

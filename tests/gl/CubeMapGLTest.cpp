@@ -2,11 +2,11 @@
 // ray-traced reference: every face of a room, the bundled point-light
 // scenes, LearnOpenGL's point-shadow scene, one pass against six, no seams,
 // and culling per face.
-#include "GLTestContext.h"
 #include "Comparisons.h"
+#include "GLTestContext.h"
 #include "ImageArtifacts.h"
 
-#include "techniques/map/MapFilters.h"
+#include "techniques/map/options/Filters.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/Error.h>
@@ -226,7 +226,7 @@ TEST_F(CubeMapGLTest, CastersAreDrawnOnlyIntoTheFacesTheyTouch) {
 }
 
 // A cube's pass leaves out the far sides of closed casters the light sees
-// from outside (MapCasterDraw.h). Whichever way a crate's triangles wind
+// from outside (map/passes/CasterDraw.h). Whichever way a crate's triangles wind
 // (as built, mirrored by its transform, turned inside out), the map keeps
 // its near side: the crate's side facing the light lies 2.5 m from it
 // along +X, its far side 3.5 m, and a floor (open: both sides drawn) 2 m

@@ -50,7 +50,7 @@
 #include "CheckerScenes.h"
 #include "Comparisons.h"
 
-#include "techniques/map/MapFilters.h"
+#include "techniques/map/options/Filters.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/MapOptions.h>

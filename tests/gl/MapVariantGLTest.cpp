@@ -9,9 +9,9 @@
 #include "GLTestContext.h"
 
 #include "gl/PassClock.h"
-#include "techniques/map/MapArrays.h"
-#include "techniques/map/MapSettings.h"
-#include "techniques/map/MapVariants.h"
+#include "techniques/map/Variants.h"
+#include "techniques/map/options/Settings.h"
+#include "techniques/map/passes/Arrays.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/MapOptions.h>

@@ -1,13 +1,13 @@
 // RenderOptions::shadowRegions: the base pass runs its light's test only in
 // the screen rectangles its technique says the light's shadows can fall in
-// (technique "map", one 2D map: src/techniques/map/MapRegion.h) and shades
+// (technique "map", one 2D map: src/techniques/map/fit/Region.h) and shades
 // the rest lit without it (src/render/RegionDraw.cpp). That must change no
 // pixel: the frames with and without it are compared byte for byte, over
 // every bundled scene and over the options that move a shadow off its
 // caster's box (filters' reach, normal offset, biases), spot and
 // directional lights, translucent casters, and a view from inside a shadow.
-#include "GLTestContext.h"
 #include "Comparisons.h"
+#include "GLTestContext.h"
 #include "ImageArtifacts.h"
 
 #include <shadowlab/Renderer.h>

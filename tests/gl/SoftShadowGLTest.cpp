@@ -1,8 +1,8 @@
 // Soft shadows against the area-light reference (lights with a `size`):
 // PCSS (technique "map", filter "pcss") on the lecture scenes made soft,
 // and its penumbra growing with the distance from occluder to receiver.
-#include "GLTestContext.h"
 #include "Comparisons.h"
+#include "GLTestContext.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/SceneFile.h>
@@ -169,7 +169,7 @@ TEST_F(SoftShadowGLTest, MomentMapsClassifyLikeDepthMapsAwayFromEdges) {
 }
 
 // Moments with no blur, no mipmaps and 32-bit floats are taken from the
-// depth by the light pass (MapArrays.h: momentsFromDepth), so such a map
+// depth by the light pass (map/passes/Arrays.h: momentsFromDepth), so such a map
 // holds its depth alone (bench's mapBytes: 4 bytes a texel); 16-bit or
 // blurred moments are made and stored beside it. The two tests above hold
 // both kinds to the reference (32-bit unblurred, 16-bit, and blurred).

@@ -1,9 +1,9 @@
-// The texels a box may cover in a map (techniques/map/MapCameras.h:
+// The texels a box may cover in a map (techniques/map/fit/Cameras.h:
 // projectedRect): a box past an int's range in the map's texels, or one
 // whose projection is no number, gives the whole map, never an overflow
 // (issue 59: a point light's cube face over a plane of size 1e20 reached
 // `INT_MIN - 1`, a signed overflow under UBSan, and an empty rectangle).
-#include "techniques/map/MapCameras.h"
+#include "techniques/map/fit/Cameras.h"
 
 #include <gtest/gtest.h>
 

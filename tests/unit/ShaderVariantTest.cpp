@@ -1,8 +1,8 @@
 // Shader variants and source assembly, without a GPU.
 #include "gl/ShaderSource.h"
 #include "render/ShaderVariant.h"
-#include "techniques/map/MapSettings.h"
 #include "shadow_map_shared.h"
+#include "techniques/map/options/Settings.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/MapOptions.h>

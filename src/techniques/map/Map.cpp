@@ -7,20 +7,24 @@
 // a cube-map array, filled in one geometry-shader pass or six passes.
 // Light pass: shaders/shadow_map.glsl compares the fragment's depth in the
 // light's texture space with the map, filtered as the light asks.
-// This file is the Technique; map/Map.h lists the module's other files.
+// This file is the Technique; docs/architecture.md lists the module's other files.
 #include "techniques/map/Map.h"
 
-#include "techniques/map/MapAtlas.h"
-#include "techniques/map/MapCache.h"
-#include "techniques/map/MapCameras.h"
-#include "techniques/map/MapCasterDraw.h"
-#include "techniques/map/MapDebugImages.h"
-#include "techniques/map/MapRegion.h"
-#include "techniques/map/MapResources.h"
-#include "techniques/map/MapSdsm.h"
-#include "techniques/map/MapSettings.h"
-#include "techniques/map/MapTranslucent.h"
-#include "techniques/map/MapVariants.h"
+#include "techniques/map/Cache.h"
+#include "techniques/map/Variants.h"
+#include "techniques/map/atlas/Atlas.h"
+#include "techniques/map/atlas/Images.h"
+#include "techniques/map/debug/Images.h"
+#include "techniques/map/fit/Cameras.h"
+#include "techniques/map/fit/Region.h"
+#include "techniques/map/fit/Sdsm.h"
+#include "techniques/map/options/Settings.h"
+#include "techniques/map/passes/CasterDraw.h"
+#include "techniques/map/passes/CubePass.h"
+#include "techniques/map/passes/Pass2D.h"
+#include "techniques/map/passes/Resources.h"
+#include "techniques/map/passes/Targets.h"
+#include "techniques/map/passes/Translucent.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/Text.h>
@@ -229,9 +233,9 @@ public:
             std::map<int, const MapLight*> inAtlas;
             for (const auto& [index, p] : lights_)
                 if (p.options.atlas) inAtlas.emplace(index, &p);
-            if (kinds.wants(DebugImageKind::Atlas) && inAtlas.begin()->first == view.index) out.push_back(atlas_.debugImage(inAtlas));
+            if (kinds.wants(DebugImageKind::Atlas) && inAtlas.begin()->first == view.index) out.push_back(atlasImage(atlas_, inAtlas));
             if (!kinds.wants(DebugImageKind::ShadowMap)) return;
-            DebugImage tiles = atlas_.lightTiles(lights_.at(view.index));
+            DebugImage tiles = atlasLightTiles(atlas_, lights_.at(view.index));
             if (!tiles.image.pixels.empty()) out.push_back(std::move(tiles));
             return;
         }

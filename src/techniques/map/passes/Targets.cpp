@@ -1,0 +1,77 @@
+// Technique "map": the framebuffers on each light's layers (passes/Targets.h).
+#include "techniques/map/passes/Targets.h"
+
+#include "techniques/map/options/Settings.h"
+
+#include <algorithm>
+
+namespace shadowlab::map {
+
+namespace {
+
+// Attaches layer `layer` of `g` (the whole array, layered, when negative)
+// to `fbo`: its depth and the colour the pass writes, if any.
+void attachLayer(gl::Framebuffer& fbo, const MapArray& g, GLuint colour, int layer, const char* what) {
+    if (layer < 0) {  // the whole array, layered (gl_Layer picks)
+        glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0);
+        if (colour) glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0);
+    } else {
+        glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, sharedDepthBuffer(g.key) ? 0 : layer);
+        if (colour) glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0, layer);
+    }
+    glNamedFramebufferDrawBuffer(fbo.id(), colour ? GL_COLOR_ATTACHMENT0 : GL_NONE);
+    glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
+    gl::checkFramebuffer(fbo, what);
+}
+
+// The light pass's view of the light's layers when it samples one
+// (MapSettings: layerView: a 2D map's layer, a cube's six), made unless it
+// is there; none otherwise.
+void viewLayer(MapLight& p, const MapArray& g) {
+    if (!layerView(p.options, p.cube, static_cast<int>(std::max<std::size_t>(p.cascades.size(), 1)))) {
+        p.layerView = gl::TextureView(gl::NoCreate);
+        return;
+    }
+    if (p.layerView) return;
+    const GLuint first = static_cast<GLuint>(p.layer * g.layersPerLight()), count = static_cast<GLuint>(g.layersPerLight());
+    p.layerView = gl::TextureView(p.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D, g.depth.id(), depthFormat(g.key), 0u, 1u, first, count);
+}
+
+} // namespace
+
+void attachTargets(MapLight& p, const MapArray& g) {
+    const bool attached = p.attachedGeneration == g.generation && p.attachedLayer == p.layer &&
+                          (p.cascades.empty() ? static_cast<bool>(p.fbo) : p.cascadeFbos.size() == p.cascades.size());
+    if (attached) {
+        viewLayer(p, g);  // the options may have changed, not the layer
+        return;
+    }
+    if (!p.fbo || p.attachedGeneration != g.generation) p.fbo = gl::Framebuffer();
+    const bool packed = isPacked(g.format());
+    // The colour the pass writes: depth packed into RGBA8 (moment maps are
+    // drawn as depth alone, their moments made from it: makeMoments).
+    const GLuint colour = packed ? g.packed.id() : 0;
+    if (p.cube) {
+        attachLayer(p.fbo, g, colour, -1, "cube shadow map framebuffer (layered)");
+        for (int f = 0; f < 6; ++f) {
+            gl::Framebuffer& face = p.faceFbos[static_cast<std::size_t>(f)];
+            face = gl::Framebuffer();
+            attachLayer(face, g, colour, 6 * p.layer + f, "cube shadow map framebuffer (one face)");
+        }
+        p.faceDirty.fill(TexelRect::whole());  // a new array or layer: its contents are undefined
+    } else if (!p.cascades.empty()) {
+        p.cascadeFbos.clear();
+        for (std::size_t c = 0; c < p.cascades.size(); ++c) {
+            p.cascadeFbos.emplace_back();
+            attachLayer(p.cascadeFbos.back(), g, colour, p.layer + static_cast<int>(c), "cascade shadow map framebuffer");
+        }
+    } else {
+        attachLayer(p.fbo, g, colour, p.layer, "shadow map framebuffer");
+    }
+    p.layerView = gl::TextureView(gl::NoCreate);  // of the layer it held
+    viewLayer(p, g);
+    p.attachedGeneration = g.generation;
+    p.attachedLayer = p.layer;
+}
+
+} // namespace shadowlab::map
