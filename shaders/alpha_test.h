@@ -9,7 +9,7 @@
 #define SHADOWLAB_ALPHA_TEST_H
 #include "shadowlab_shared.h"
 
-layout(binding = SL_UNIT_BASE_COLOR) uniform sampler2D alphaTexture;
+SL_BINDING(SL_UNIT_BASE_COLOR) uniform sampler2D alphaTexture;
 
 bool alphaCutOut(vec2 uv) {
     if (draw.alpha.z < 0.5 || draw.alpha.z > 1.5) return false;

@@ -24,10 +24,10 @@ in vec3 vWorldNormal;
 in vec2 vUv;
 
 #if HAS_BASE_COLOR_TEXTURE
-layout(binding = SL_UNIT_BASE_COLOR) uniform sampler2D baseColorTexture;
+SL_BINDING(SL_UNIT_BASE_COLOR) uniform sampler2D baseColorTexture;
 #endif
 #if HAS_PROJECTOR
-layout(binding = SL_UNIT_PROJECTOR) uniform sampler2D projectorImage;
+SL_BINDING(SL_UNIT_PROJECTOR) uniform sampler2D projectorImage;
 #endif
 
 layout(location = SL_TARGET_COLOR) out vec4 outColor;
@@ -38,7 +38,7 @@ layout(location = SL_TARGET_NORMAL) out vec4 outNormal;
 
 #if LIGHT
 #if SCREEN_VISIBILITY
-layout(binding = SL_UNIT_SCREEN_VISIBILITY) uniform sampler2D screenVisibility;
+SL_BINDING(SL_UNIT_SCREEN_VISIBILITY) uniform sampler2D screenVisibility;
 vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal) {
     return vec3(texelFetch(screenVisibility, ivec2(gl_FragCoord.xy), 0).r);
 }
@@ -107,8 +107,8 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 #if LIGHT_LIST_SHADOWS
 #include "shadow_atlas.glsl"
 #endif
-layout(std430, binding = SL_STORAGE_LIGHT_LIST) readonly buffer LightList { ListedLight listed[]; };
-layout(std430, binding = SL_STORAGE_LIGHT_TILES) readonly buffer LightTiles {
+layout(std430) SL_BINDING(SL_STORAGE_LIGHT_LIST) readonly buffer LightList { ListedLight listed[]; };
+layout(std430) SL_BINDING(SL_STORAGE_LIGHT_TILES) readonly buffer LightTiles {
     uvec4 tiling;  // tile size in pixels, tiles across, tiles down, depth slices
     vec4 slicing;  // x: the view depth the slices are counted from, y: slices per unit of log(depth / x)
     uint cells[];  // per cluster (first, count) into cells itself, then the light indices

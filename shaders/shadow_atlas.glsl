@@ -8,9 +8,9 @@
 
 #include "shadowlab_shared.h"
 
-layout(std430, binding = SL_STORAGE_ATLAS_TILES) readonly buffer AtlasTiles { AtlasTile atlasTiles[]; };
-layout(binding = SL_UNIT_ATLAS) uniform sampler2D atlasDepth;
-layout(binding = SL_UNIT_ATLAS_COMPARE) uniform sampler2DShadow atlasCompare;
+layout(std430) SL_BINDING(SL_STORAGE_ATLAS_TILES) readonly buffer AtlasTiles { AtlasTile atlasTiles[]; };
+SL_BINDING(SL_UNIT_ATLAS) uniform sampler2D atlasDepth;
+SL_BINDING(SL_UNIT_ATLAS_COMPARE) uniform sampler2DShadow atlasCompare;
 
 // The cube face direction d falls in, as a cube map picks it: the axis of
 // its largest component, + or - (0..5: +X, -X, +Y, -Y, +Z, -Z).

@@ -14,7 +14,7 @@ namespace shadowlab::shared {
 struct DiscUniforms {
 #define SL_DISC_VEC4 glm::vec4
 #else
-layout(std140, binding = SL_BINDING_TECHNIQUE) uniform DiscUniforms {
+layout(std140) SL_BINDING(SL_BINDING_TECHNIQUE) uniform DiscUniforms {
 #define SL_DISC_VEC4 vec4
 #endif
     // Disc k: centre c (xyz) and its two semi-axes a, b (xyz, world units,

@@ -16,9 +16,9 @@
 
 #if MAP_MOMENTS > 0
 // The moments, or the depth they are taken from (MAP_MOMENTS_FROM_DEPTH).
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapMoments;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapMoments;
 #elif MAP_RGBA8
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
 // 1 where the receiver at depth `ref` is nearer than the map's occluder.
 float mapTap(float layer, vec2 uv, float ref) {
     return ref <= unpackDepth(texture(mapPacked, vec3(uv, layer))) ? 1.0 : 0.0;
@@ -29,32 +29,18 @@ float mapTap(float layer, vec2 uv, float ref) {
 // One 2D map (MAP_LAYER_VIEW): a 2D view of its layer, which llvmpipe
 // addresses faster than the array's layer (MapSettings: layerView).
 #if MAP_LAYER_VIEW
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D mapDepthPlain;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2D mapDepthPlain;
 float mapTap(float layer, vec2 uv, float ref) { return ref <= textureLod(mapDepthPlain, uv, 0.0).r ? 1.0 : 0.0; }
 #else
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapDepthPlain;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapDepthPlain;
 float mapTap(float layer, vec2 uv, float ref) { return ref <= textureLod(mapDepthPlain, vec3(uv, layer), 0.0).r ? 1.0 : 0.0; }
 #endif
 #elif MAP_LAYER_VIEW
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DShadow mapDepth;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DShadow mapDepth;
 float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec3(uv, ref)); }
 #else
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
 float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec4(uv, layer, ref)); }
-#endif
-
-#if MAP_FILTER == SL_MAP_FILTER_PCSS
-// PCSS reads stored depths in its blocker search: the same array through a
-// sampler without comparison (rgba8: unpacked).
-#if MAP_RGBA8
-float mapDepthAt(float layer, vec2 uv) { return unpackDepth(texture(mapPacked, vec3(uv, layer))); }
-#elif MAP_LAYER_VIEW
-layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform sampler2D mapRaw;  // the layer's view
-float mapDepthAt(float layer, vec2 uv) { return texture(mapRaw, uv).r; }
-#else
-layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform sampler2DArray mapRaw;
-float mapDepthAt(float layer, vec2 uv) { return texture(mapRaw, vec3(uv, layer)).r; }
-#endif
 #endif
 
 // The map a test reads: its array layer, its camera's near and far
@@ -84,8 +70,8 @@ float mapDistance(float depth, vec2 planes) {
 // Translucent casters (alphaMode blend): the layer's transmittance and the
 // nearest translucent depth (shadow_map_transmit.frag); a receiver behind
 // that depth gets the light through them, coloured.
-layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform sampler2DArray mapTransmitColour;
-layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform sampler2DArray mapTransmitDepth;
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 2) uniform sampler2DArray mapTransmitColour;
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 3) uniform sampler2DArray mapTransmitDepth;
 vec3 transmittanceAt(float layer, vec2 uv, float ref) {
 #if MAP_TRANSMIT
     float nearest = texture(mapTransmitDepth, vec3(uv, layer)).r;
@@ -147,12 +133,10 @@ float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, flo
     vec4 scale = map.cascadeScale[c], offset = map.cascadeOffset[c];
     MapLookup m = mapLookup(map.layer + float(c));
     m.quad = quad;
-#if MAP_FILTER == SL_MAP_FILTER_PCSS
     m.texelWorld = max(offset.w, scale.w);
     m.planes = map.cascadeRange[c].xy;
     m.dx = scale.xyz * dx;
     m.dy = scale.xyz * dy;
-#endif
     float texel = dot(vec2(offset.w, scale.w), vCascadeAxes);  // the x and y texels, weighed by the normal
 #if MAP_MIPMAPS
     texel *= mapLevelScale(scale.xy * dx.xy, scale.xy * dy.xy);
@@ -170,13 +154,11 @@ float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, flo
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), map.towardsLight, texel, tanTheta);
     MapLookup m = mapLookup(map.layer + float(c));
     m.quad = quad;
-#if MAP_FILTER == SL_MAP_FILTER_PCSS
     m.texelWorld = texel;
     m.planes = map.cascadeRange[c].xy;
     mat3 affine = mat3(map.cascadeShadowFromWorld[c]);  // orthographic: the point's change is linear
     m.dx = affine * dx;
     m.dy = affine * dy;
-#endif
     return mapTest(m, map.cascadeShadowFromWorld[c] * vec4(p, 1.0), NdotL, transmit);
 #endif
 }
@@ -228,22 +210,17 @@ in float vShadowDepthOffset;  // the receiver-plane offset as a change of vShado
 // translucent casters' transmittance.
 float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     MapLookup m = mapLookup(map.layer);
-#if MAP_MOMENTS > 0
-    m.planes = vec2(map.nearPlane, map.farPlane);
-#endif
     vec4 shadowCoord = vShadowCoord;
 #if MAP_RAY_DEPTH_OFFSET
     // A perspective map: the receiver-plane offset as a change of the
     // depth along the fragment's own ray (shadow_map_vertex.glsl).
     shadowCoord.z += vShadowDepthOffset;
 #endif
-#if MAP_FILTER == SL_MAP_FILTER_PCSS
     m.texelWorld = map.texelWorld;
     m.planes = vec2(map.nearPlane, map.farPlane);
     vec3 q = shadowCoord.xyz / shadowCoord.w;
     m.dx = dFdx(q);
     m.dy = dFdy(q);
-#endif
     vec4 coord = shadowCoord;
 #if MAP_MIPMAPS
     // The offsets reach the texel of the level read (shadow_map_bias.glsl).

@@ -10,7 +10,7 @@
 #include "shadow_map_shared.h"
 
 #if BLUR_FROM_DEPTH
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2DArray blurSource;  // the depth layers (no compare)
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArray blurSource;  // the depth layers (no compare)
 vec4 fetch(ivec2 t) {
     float z = clamp(texelFetch(blurSource, ivec3(t, int(map.blurLayer)), 0).r, 0.0, 1.0);
 #if MAP_SPOT
@@ -24,7 +24,7 @@ vec4 fetch(ivec2 t) {
 ivec2 sourceSize() { return textureSize(blurSource, 0).xy; }
 const ivec2 kStep = ivec2(1, 0);
 #else
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D blurSource;  // the scratch: moments blurred across
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2D blurSource;  // the scratch: moments blurred across
 vec4 fetch(ivec2 t) { return texelFetch(blurSource, t, 0); }
 ivec2 sourceSize() { return textureSize(blurSource, 0); }
 const ivec2 kStep = ivec2(0, 1);

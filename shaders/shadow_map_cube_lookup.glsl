@@ -6,13 +6,10 @@
 // kernel (shadow_map_filter_*.glsl) compares around it.
 
 #if MAP_RGBA8
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePacked;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePacked;
 float cubeTap(vec3 direction, float ref) {
     return ref <= unpackDepth(texture(mapCubePacked, vec4(direction, map.layer))) ? 1.0 : 0.0;
 }
-#if MAP_FILTER == SL_MAP_FILTER_PCSS
-float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, vec4(direction, map.layer))); }
-#endif
 #else
 #if MAP_CUBE_WINDOW
 // The stored depth is the face's window depth, reversed (MapSettings:
@@ -23,9 +20,6 @@ float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, ve
 // Lit where the receiver's window depth is the greater. The shadow pass's
 // constant offset (map.cubeOffset) is taken off here. Only the one-tap
 // filters take this measure; PCSS's blocker search reads distance / far.
-#if MAP_FILTER == SL_MAP_FILTER_PCSS
-#error MAP_CUBE_WINDOW is for the one-tap filters (MapSettings: cubeWindowDepth)
-#endif
 float cubeStored(vec3 direction, float ref) {
     vec3 a = abs(direction);
     float axis = (ref - map.cubeOffset) * map.cubeFar * max(a.x, max(a.y, a.z)) * inversesqrt(dot(direction, direction));
@@ -43,10 +37,10 @@ float cubeStored(vec3 direction, float ref) {
 // The light's six layers as a cube of their own (MAP_LAYER_VIEW:
 // MapSettings layerView) or the array with the light's layer.
 #if MAP_LAYER_VIEW
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCube mapCubePlain;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform samplerCube mapCubePlain;
 float cubeStoredAt(vec3 direction) { return textureLod(mapCubePlain, direction, 0.0).r; }
 #else
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePlain;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform samplerCubeArray mapCubePlain;
 float cubeStoredAt(vec3 direction) { return textureLod(mapCubePlain, vec4(direction, map.layer), 0.0).r; }
 #endif
 #if MAP_CUBE_WINDOW
@@ -66,28 +60,18 @@ float cubeTap(vec3 direction, float ref) {
 float cubeTap(vec3 direction, float ref) { return ref <= cubeStoredAt(direction) ? 1.0 : 0.0; }
 #endif
 #elif MAP_LAYER_VIEW
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeShadow mapCube;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform samplerCubeShadow mapCube;
 float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, SL_CUBE_REF(direction, ref))); }
 #else
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform samplerCubeArrayShadow mapCube;
 float cubeTap(vec3 direction, float ref) { return texture(mapCube, vec4(direction, map.layer), SL_CUBE_REF(direction, ref)); }
-#endif
-#if MAP_FILTER == SL_MAP_FILTER_PCSS
-// The stored depths for PCSS's blocker search (distance / far): a sampler without comparison.
-#if MAP_LAYER_VIEW
-layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCube mapCubeRaw;
-float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, direction).r; }
-#else
-layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
-float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.layer)).r; }
-#endif
 #endif
 #endif
 
 // Translucent casters (alphaMode blend): the cube's transmittance and the
 // nearest translucent depth (shadow_map_cube_transmit.frag).
-layout(binding = SL_UNIT_SHADOW_FIRST + 2) uniform samplerCubeArray mapCubeTransmitColour;
-layout(binding = SL_UNIT_SHADOW_FIRST + 3) uniform samplerCubeArray mapCubeTransmitDepth;
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 2) uniform samplerCubeArray mapCubeTransmitColour;
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 3) uniform samplerCubeArray mapCubeTransmitDepth;
 vec3 cubeTransmittanceAt(vec3 direction, float ref) {
 #if MAP_TRANSMIT
     float nearest = texture(mapCubeTransmitDepth, vec4(direction, map.layer)).r;

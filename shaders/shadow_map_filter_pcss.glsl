@@ -23,6 +23,21 @@ float blockerReach(float dr) {
 }
 
 #if MAP_CUBE
+#if MAP_CUBE_WINDOW
+#error MAP_CUBE_WINDOW is for the one-tap filters (MapSettings: cubeWindowDepth)
+#endif
+// The stored depths for the blocker search (distance / far): the cube
+// through a sampler without comparison (rgba8: unpacked).
+#if MAP_RGBA8
+float cubeDepthAt(vec3 direction) { return unpackDepth(texture(mapCubePacked, vec4(direction, map.layer))); }
+#elif MAP_LAYER_VIEW
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 1) uniform samplerCube mapCubeRaw;
+float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, direction).r; }
+#else
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 1) uniform samplerCubeArray mapCubeRaw;
+float cubeDepthAt(vec3 direction) { return texture(mapCubeRaw, vec4(direction, map.layer)).r; }
+#endif
+
 float cubeReach(float texel, float radius) { return 0.0; }  // each tap compares against the receiver's plane itself
 
 // The reference depth of the receiver's plane (normal n, nv = n.v at the
@@ -84,6 +99,18 @@ float cubeFilter(vec3 v, float ref, vec3 n, float radius) {
     return sum / float(taps);
 }
 #else
+// The stored depths for the blocker search: the same array through a
+// sampler without comparison (rgba8: unpacked).
+#if MAP_RGBA8
+float mapDepthAt(float layer, vec2 uv) { return unpackDepth(texture(mapPacked, vec3(uv, layer))); }
+#elif MAP_LAYER_VIEW
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 1) uniform sampler2D mapRaw;  // the layer's view
+float mapDepthAt(float layer, vec2 uv) { return texture(mapRaw, uv).r; }
+#else
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 1) uniform sampler2DArray mapRaw;
+float mapDepthAt(float layer, vec2 uv) { return texture(mapRaw, vec3(uv, layer)).r; }
+#endif
+
 // The receiver plane's depth change per uv, from the screen derivatives of
 // its texture-space point (m.dx, m.dy), clamped.
 vec2 receiverDepthSlope(MapLookup m) {

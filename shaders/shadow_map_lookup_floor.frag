@@ -10,10 +10,10 @@
 
 #if LOOKUP_CUBE
 in vec3 vFromLight;
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform samplerCube floorMap;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform samplerCube floorMap;
 #else
 in vec4 vLightClip;
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D floorMap;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2D floorMap;
 #endif
 layout(location = 0) out vec4 outColor;
 

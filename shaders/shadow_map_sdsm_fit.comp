@@ -33,7 +33,7 @@ layout(location = 7) uniform int casterCount;
 // camera's view (lightView, or the warp's turned view): lo, hi. A slice's:
 // those for the whole view (the slice's own are among them); then the
 // large meshes' world boxes (boxedCount of them).
-layout(std430, binding = SL_STORAGE_SDSM_CASTERS) readonly buffer Casters { vec4 casterBox[]; };
+layout(std430) SL_BINDING(SL_STORAGE_SDSM_CASTERS) readonly buffer Casters { vec4 casterBox[]; };
 
 #if SDSM_SLICE
 layout(location = 14) uniform int slice;

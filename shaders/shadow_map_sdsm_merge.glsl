@@ -4,8 +4,8 @@
 // shadow_map_sdsm_cascades.comp).
 
 // The reduction's lowest and highest corner a block (w = 1: covered).
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D blockLo;
-layout(binding = SL_UNIT_SHADOW_FIRST + 1) uniform sampler2D blockHi;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2D blockLo;
+SL_BINDING(SL_UNIT_SHADOW_FIRST + 1) uniform sampler2D blockHi;
 
 shared vec3 sdsmLows[256], sdsmHighs[256];
 

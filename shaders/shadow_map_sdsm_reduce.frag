@@ -11,7 +11,7 @@
 #include "shadowlab_shared.h"
 const int kBlock = 8;  // MapSdsm::kBlock
 
-layout(binding = SL_UNIT_SHADOW_FIRST) uniform sampler2D sdsmDepth;
+SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2D sdsmDepth;
 // Light view from (pixel x, pixel y, window depth, 1): the light's view
 // times the camera's inverse projection times the viewport's inverse, one
 // matrix (MapSdsm); the light's view is affine, so w divides alone.

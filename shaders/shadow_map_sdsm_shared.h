@@ -19,7 +19,7 @@ struct SdsmFit {
 #define SL_SDSM_VEC4 glm::vec4
 #define SL_SDSM_MAT4 glm::mat4
 #else
-layout(std430, binding = SL_STORAGE_SDSM_FIT) buffer SdsmFit {
+layout(std430) SL_BINDING(SL_STORAGE_SDSM_FIT) buffer SdsmFit {
 #define SL_SDSM_VEC4 vec4
 #define SL_SDSM_MAT4 mat4
 #endif

@@ -33,7 +33,7 @@ struct MapUniforms {
 #define SL_MAP_VEC4 glm::vec4
 #define SL_MAP_MAT4 glm::mat4
 #else
-layout(std140, binding = SL_BINDING_TECHNIQUE) uniform MapUniforms {
+layout(std140) SL_BINDING(SL_BINDING_TECHNIQUE) uniform MapUniforms {
 #define SL_MAP_VEC3 vec3
 #define SL_MAP_VEC4 vec4
 #define SL_MAP_MAT4 mat4

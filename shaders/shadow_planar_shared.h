@@ -15,7 +15,7 @@ struct PlanarUniforms {
 #define SL_PLANAR_VEC4 glm::vec4
 #define SL_PLANAR_MAT4 glm::mat4
 #else
-layout(std140, binding = SL_BINDING_TECHNIQUE) uniform PlanarUniforms {
+layout(std140) SL_BINDING(SL_BINDING_TECHNIQUE) uniform PlanarUniforms {
 #define SL_PLANAR_VEC4 vec4
 #define SL_PLANAR_MAT4 mat4
 #endif

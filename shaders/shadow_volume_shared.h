@@ -14,7 +14,7 @@ struct VolumeUniforms {
 };
 } // namespace shadowlab::shared
 #else
-layout(std140, binding = SL_BINDING_TECHNIQUE) uniform VolumeUniforms {
+layout(std140) SL_BINDING(SL_BINDING_TECHNIQUE) uniform VolumeUniforms {
     vec4 light;
     vec4 params;
 } volume;

@@ -50,7 +50,7 @@ namespace shadowlab::shared {
 #else
 #define SL_VEC4 vec4
 #define SL_MAT4 mat4
-#define SL_BLOCK(name, bindingPoint, instance) layout(std140, binding = bindingPoint) uniform name
+#define SL_BLOCK(name, bindingPoint, instance) layout(std140) SL_BINDING(bindingPoint) uniform name
 #define SL_END_BLOCK(instance) instance;
 #endif
 

@@ -116,6 +116,10 @@ AssembledSource assembleShader(std::string_view fileName, std::string_view pream
     if (inlineText) out.inlineText = std::string(*inlineText);
     out.text.append(preamble);
     if (!preamble.empty() && preamble.back() != '\n') out.text += '\n';
+    // How this GL flavour spells what GLSL ES 3.00 spells otherwise, the
+    // only place it is written: a sampler's or block's unit is given in the
+    // shader (SL_BINDING(unit) before `uniform`).
+    out.text += "#define SL_BINDING(unit) layout(binding = unit)\n";
     std::vector<std::string> stack;
     appendFile(fileName, out, stack, Assembly{aliases, inlineText});
     return out;

@@ -59,7 +59,7 @@ void Renderer::Impl::blendedPass(const Scene& s, bool screenVisibility) {
             variant.blended = true;
             Technique& t = technique(currentLight->shadow.technique);
             if (!screenVisibility && t.sharesBasePass(*currentLight)) {
-                setTechnique(variant, *currentLight);
+                setTechnique(variant);
                 t.bindLightPass(*this, *info, view(i));
             } else if (!screenVisibility) {
                 note("light " + std::to_string(i) + " ('" + currentLight->name + "'): technique '" + currentLight->shadow.technique +

@@ -1,5 +1,6 @@
 #include "render/DrawList.h"
 
+#include "gl/Calls.h"
 #include "shadowlab_shared.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -31,7 +32,7 @@ void DrawList::upload(const Scene& scene, const std::vector<DrawItem>& items) {
         u.alpha = glm::vec4(m.alpha, m.alphaCutoff, static_cast<float>(static_cast<int>(m.alphaMode)), m.baseColorTexture >= 0 ? 1.0f : 0.0f);
         std::memcpy(staging_.data() + i * stride_, &u, sizeof u);
     }
-    if (!staging_.empty()) glNamedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(staging_.size()), staging_.data());
+    if (!staging_.empty()) gl::namedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(staging_.size()), staging_.data());
 }
 
 void DrawList::bind(std::size_t item) const {

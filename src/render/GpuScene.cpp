@@ -5,6 +5,7 @@
 #include "core/MeshTwins.h"
 #include "core/Plane.h"
 #include "core/TriangleOrder.h"
+#include "gl/Calls.h"
 
 #include <shadowlab/Error.h>
 
@@ -26,14 +27,14 @@ struct Vertex {
 // Attributes 0 position, 1 normal, 2 uv (scene.vert) from `vertices`, indices from `indices`.
 void describeVertices(const gl::VertexArray& array, const gl::Buffer& vertices, const gl::Buffer& indices) {
     const GLuint vao = array.id();
-    glVertexArrayVertexBuffer(vao, 0, vertices.id(), 0, sizeof(Vertex));
-    glVertexArrayElementBuffer(vao, indices.id());
+    gl::vertexArrayVertexBuffer(vao, 0, vertices.id(), 0, sizeof(Vertex));
+    gl::vertexArrayElementBuffer(vao, indices.id());
     const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
     const GLint sizes[] = {3, 3, 2};
     for (GLuint a = 0; a < 3; ++a) {
-        glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
-        glVertexArrayAttribBinding(vao, a, 0);
+        gl::enableVertexArrayAttrib(vao, a);
+        gl::vertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+        gl::vertexArrayAttribBinding(vao, a, 0);
     }
 }
 } // namespace
@@ -58,10 +59,10 @@ GpuScene::GpuScene(const Scene& scene) {
             v.normal = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0);
             v.uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
         }
-        glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
+        gl::namedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
                              vertices.empty() ? nullptr : vertices.data(), 0);
         const std::vector<std::uint32_t>& ordered = order.indices;
-        glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, ordered.size()) * 4),
+        gl::namedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, ordered.size()) * 4),
                              ordered.empty() ? nullptr : ordered.data(), 0);
         describeVertices(gpu.vao, gpu.vertices, gpu.indices);
         gpu.indexCount = static_cast<GLsizei>(ordered.size());
@@ -83,16 +84,16 @@ GpuScene::GpuScene(const Scene& scene) {
                         " texels per side (this GPU's limit)");
         gl::Texture texture(GL_TEXTURE_2D);
         const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
-        glTextureStorage2D(texture.id(), levels, GL_SRGB8_ALPHA8, image.width, image.height);
+        gl::textureStorage2D(texture.id(), levels, GL_SRGB8_ALPHA8, image.width, image.height);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         // Scene images are stored top row first; GL's t = 0 is the first row
         // uploaded, which matches glTF's uv convention (v = 0 at the top).
-        glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
-        glGenerateTextureMipmap(texture.id());
-        glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+        gl::textureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+        gl::generateTextureMipmap(texture.id());
+        gl::textureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        gl::textureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl::textureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        gl::textureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
         textures_.push_back(std::move(texture));
     }
 }
@@ -104,7 +105,7 @@ const gl::Buffer& GpuScene::adjacencyIndices(int mesh, const Mesh& source) {
         for (std::uint32_t& i : indices)
             if (!m.remap.empty()) i = m.remap[i];  // the buffer's vertex numbers
         m.adjacency = gl::Buffer();
-        glNamedBufferStorage(m.adjacency.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, indices.size()) * 4),
+        gl::namedBufferStorage(m.adjacency.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, indices.size()) * 4),
                              indices.empty() ? nullptr : indices.data(), 0);
         // A second vertex array: same vertices, the adjacency indices.
         m.adjacencyArray = gl::VertexArray();
@@ -140,8 +141,8 @@ const std::vector<DetailLevel>& GpuScene::levels(int mesh, const Scene& scene) {
         if (!m.levels.empty()) {
             const auto bytes = static_cast<GLsizeiptr>((static_cast<std::size_t>(m.levelFirst.back()) + m.levels.back().triangles * 3) * 4);
             m.levelIndices = gl::Buffer();
-            glNamedBufferStorage(m.levelIndices.id(), bytes, nullptr, 0);
-            glCopyNamedBufferSubData(twin.levelIndices.id(), m.levelIndices.id(), 0, 0, bytes);
+            gl::namedBufferStorage(m.levelIndices.id(), bytes, nullptr, 0);
+            gl::copyNamedBufferSubData(twin.levelIndices.id(), m.levelIndices.id(), 0, 0, bytes);
         }
     } else {
         // The levels one after another, in the buffer's numbering (m.remap's).
@@ -158,7 +159,7 @@ const std::vector<DetailLevel>& GpuScene::levels(int mesh, const Scene& scene) {
         }
         if (!data.empty()) {
             m.levelIndices = gl::Buffer();
-            glNamedBufferStorage(m.levelIndices.id(), static_cast<GLsizeiptr>(data.size() * 4), data.data(), 0);
+            gl::namedBufferStorage(m.levelIndices.id(), static_cast<GLsizeiptr>(data.size() * 4), data.data(), 0);
         }
     }
     if (!m.levels.empty()) {

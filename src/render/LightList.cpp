@@ -1,5 +1,6 @@
 #include "render/LightList.h"
 
+#include "gl/Calls.h"
 #include "render/RendererImpl.h"
 
 #include <glm/gtc/constants.hpp>
@@ -26,13 +27,13 @@ void LightList::upload(const Scene& scene, const std::vector<int>& lights, const
     const std::size_t cellBytes = sizeof(glm::uvec4) + sizeof(glm::vec4) + tiles_.cells.size() * sizeof(std::uint32_t);
     gl::reserveBuffer(lights_, lightBytes_, lightBytes);
     gl::reserveBuffer(cells_, cellBytes_, cellBytes);
-    if (!listed.empty()) glNamedBufferSubData(lights_.id(), 0, static_cast<GLsizeiptr>(listed.size() * sizeof(shared::ListedLight)), listed.data());
+    if (!listed.empty()) gl::namedBufferSubData(lights_.id(), 0, static_cast<GLsizeiptr>(listed.size() * sizeof(shared::ListedLight)), listed.data());
     // The header (lighting.frag's LightTiles): tiling, then the slices' depths.
     const glm::uvec4 header(tiles_.tileSize, tiles_.tiles.x, tiles_.tiles.y, tiles_.slices);
     const glm::vec4 slicing(tiles_.sliceNear, tiles_.sliceScale, 0.0f, 0.0f);
-    glNamedBufferSubData(cells_.id(), 0, sizeof header, &header);
-    glNamedBufferSubData(cells_.id(), sizeof header, sizeof slicing, &slicing);
-    glNamedBufferSubData(cells_.id(), sizeof header + sizeof slicing, static_cast<GLsizeiptr>(tiles_.cells.size() * sizeof(std::uint32_t)),
+    gl::namedBufferSubData(cells_.id(), 0, sizeof header, &header);
+    gl::namedBufferSubData(cells_.id(), sizeof header, sizeof slicing, &slicing);
+    gl::namedBufferSubData(cells_.id(), sizeof header + sizeof slicing, static_cast<GLsizeiptr>(tiles_.cells.size() * sizeof(std::uint32_t)),
                          tiles_.cells.data());
 }
 

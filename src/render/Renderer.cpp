@@ -2,6 +2,7 @@
 // renderer's state and its services to techniques: RendererImpl.h.
 #include "render/RendererImpl.h"
 
+#include "gl/Calls.h"
 #include "gl/Debug.h"
 
 #include <shadowlab/Techniques.h>
@@ -59,8 +60,8 @@ void uploadVisibility(const FrameTargets& t, const std::vector<float>& values) {
     for (int y = 0; y < t.size.y; ++y)
         std::copy_n(values.begin() + static_cast<long>((t.size.y - 1 - y) * row), row, flipped.begin() + static_cast<long>(y * row));
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(t.visibilityIn.id(), 0, 0, 0, t.size.x, t.size.y, GL_RED, GL_FLOAT, flipped.data());
-    glBindTextureUnit(SL_UNIT_SCREEN_VISIBILITY, t.visibilityIn.id());
+    gl::textureSubImage2D(t.visibilityIn.id(), 0, 0, 0, t.size.x, t.size.y, GL_RED, GL_FLOAT, flipped.data());
+    gl::bindTextureUnit(SL_UNIT_SCREEN_VISIBILITY, t.visibilityIn.id());
 }
 } // namespace
 
@@ -81,7 +82,7 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
             variant.screenVisibility = true;
             uploadVisibility(*targets, (*screenVisibility)[static_cast<std::size_t>(baseLight)]);
         } else {
-            setTechnique(variant, *currentLight);
+            setTechnique(variant);
             technique(currentLight->shadow.technique).bindLightPass(*this, *info, view(static_cast<std::size_t>(baseLight)));
         }
     }
@@ -92,20 +93,20 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
     state.framebufferSrgb = true;  // linear radiance in, sRGB bytes stored
     gl::apply(state);              // all writes on: the clears below obey the masks
     const glm::vec4 background(s.background, 1.0f), zero(0.0f);
-    glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, 0, &background.x);
+    gl::clearNamedFramebufferfv(targets->frame.id(), GL_COLOR, 0, &background.x);
     if (options.surfaces) {
-        glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_POSITION, &zero.x);
-        glClearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_NORMAL, &zero.x);
+        gl::clearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_POSITION, &zero.x);
+        gl::clearNamedFramebufferfv(targets->frame.id(), GL_COLOR, SL_TARGET_NORMAL, &zero.x);
     }
     if (depthPrepassed) {
         // A technique drew this frame's depth first (beginDepthPrepass): kept.
         count("depthPrepass", 1.0);
         const GLint none = 0;
-        glClearNamedFramebufferiv(targets->frame.id(), GL_STENCIL, 0, &none);
+        gl::clearNamedFramebufferiv(targets->frame.id(), GL_STENCIL, 0, &none);
         state.depthFunc = GL_LEQUAL;
         gl::apply(state);
     } else {
-        glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+        gl::clearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     }
     // The light's test only on items that receive shadows and where its
     // shadows can fall, the rest shaded lit without it (RegionDraw.cpp).
@@ -226,7 +227,7 @@ FrameStats Renderer::Impl::frame(const Scene& s, const RenderOptions& options,
     // technique's pass. Both on the base pass's depth.
     std::vector<int> listed;
     for (std::size_t i = 0; i < s.lights.size() && options.groupLights && !screenVisibility; ++i)
-        if (static_cast<int>(i) != baseLight && !hasProjector(s.lights[i]) && technique(s.lights[i].shadow.technique).joinsLightList(s.lights[i]))
+        if (static_cast<int>(i) != baseLight && !hasProjector(s.lights[i]) && technique(s.lights[i].shadow.technique).joinsLightList(view(i)))
             listed.push_back(static_cast<int>(i));
     if (listed.size() < 2) listed.clear();
     if (!listed.empty()) lightListPass(s, listed);
@@ -258,7 +259,7 @@ template <class T>
 std::vector<T> readTexture(const gl::Texture& texture, glm::ivec2 size, GLenum format, GLenum type, int components) {
     std::vector<T> data(static_cast<std::size_t>(size.x) * size.y * components);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(texture.id(), 0, format, type, static_cast<GLsizei>(data.size() * sizeof(T)), data.data());
+    gl::getTextureImage(texture.id(), 0, format, type, static_cast<GLsizei>(data.size() * sizeof(T)), data.data());
     const std::size_t row = static_cast<std::size_t>(size.x) * components;
     for (int y = 0; y < size.y / 2; ++y)
         std::swap_ranges(data.begin() + static_cast<long>(y * row), data.begin() + static_cast<long>((y + 1) * row),
@@ -289,7 +290,7 @@ std::vector<glm::vec3> Renderer::readVisibilityRgb(const Scene& scene, std::size
     d.bindFrameTarget();
     gl::apply(gl::RenderState{});
     const float zero[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(t.visibility.id(), GL_COLOR, 0, zero);
+    gl::clearNamedFramebufferfv(t.visibility.id(), GL_COLOR, 0, zero);
     try {
         d.technique(scene.lights[lightIndex].shadow.technique).renderLightPass(d, *d.info, d.view(lightIndex));
     } catch (...) {
@@ -355,8 +356,8 @@ void Renderer::blitToDefaultFramebuffer() const {
     if (!impl_->targets) throw Error("Renderer::blitToDefaultFramebuffer: nothing rendered yet");
     const FrameTargets& t = *impl_->targets;
     gl::apply(gl::RenderState{});  // no sRGB conversion: the bytes as they are
-    glNamedFramebufferReadBuffer(t.frame.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(t.frame.id(), 0, 0, 0, t.size.x, t.size.y, 0, 0, t.size.x, t.size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    gl::namedFramebufferReadBuffer(t.frame.id(), GL_COLOR_ATTACHMENT0);
+    gl::blitNamedFramebuffer(t.frame.id(), 0, 0, 0, t.size.x, t.size.y, 0, 0, t.size.x, t.size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 SurfaceBuffer Renderer::readSurfaces() const {

@@ -3,6 +3,7 @@
 #include "render/RendererImpl.h"
 
 #include "core/Plane.h"
+#include "gl/Calls.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -44,7 +45,7 @@ void Renderer::Impl::drawItems(ItemFilter filter, const gl::Program& prog, const
         // An alpha-tested caster's holes come from its texture (alpha_test.h).
         if (item.material >= 0) {
             const Material& m = scene->materials[static_cast<std::size_t>(item.material)];
-            if (m.alphaTested() && m.baseColorTexture >= 0) glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
+            if (m.alphaTested() && m.baseColorTexture >= 0) gl::bindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
         }
         if (topology == Topology::TrianglesAdjacency)
             gpu->drawAdjacency(item.mesh, scene->meshes[static_cast<std::size_t>(item.mesh)]);
@@ -61,7 +62,7 @@ bool Renderer::Impl::beginDepthPrepass() {
     targets->drawBuffers(false);
     glViewport(0, 0, targets->size.x, targets->size.y);
     gl::apply(gl::RenderState{});  // depth writes on: the clear obeys the masks
-    glClearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    gl::clearNamedFramebufferfi(targets->frame.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     depthPrepassed = true;
     return true;
 }
@@ -86,24 +87,26 @@ void Renderer::Impl::drawLit(const gl::RenderState& state) {
     variant.outputVisibility = litMode == LitMode::OutputVisibility;
     variant.screenVisibility = litMode == LitMode::ScreenVisibility;
     variant.projector = hasProjector(light);
-    setTechnique(variant, light);
+    setTechnique(variant);
     gl::apply(state);
     drawShaded(variant);
 }
 
-void Renderer::Impl::setTechnique(ShaderVariant& variant, const Light& light) {
-    const TechniqueEntry* entry = findTechniqueEntry(light.shadow.technique);
+void Renderer::Impl::setTechnique(ShaderVariant& variant) {
+    const LightView light = view(currentIndex);
+    const TechniqueEntry* entry = findTechniqueEntry(light.light.shadow.technique);
     variant.techniqueFile = entry->shaderFile;
     variant.techniqueVertexFile = entry->vertexShaderFile;
-    variant.techniqueDefines = technique(light.shadow.technique).lightPassDefines(light);
-    variant.techniqueIncludes = technique(light.shadow.technique).lightPassIncludes(light);
+    variant.techniqueDefines = technique(light.light.shadow.technique).lightPassDefines(light);
+    variant.techniqueIncludes = technique(light.light.shadow.technique).lightPassIncludes(light);
 }
 
 void Renderer::Impl::setLight(std::size_t i) {
     currentLight = &scene->lights[i];
+    currentIndex = i;
     const shared::LightUniforms u = lightUniforms(*currentLight);
-    glNamedBufferSubData(lightUbo.id(), 0, sizeof u, &u);
-    if (hasProjector(*currentLight)) glBindTextureUnit(SL_UNIT_PROJECTOR, gpu->texture(currentLight->projectorTexture).id());
+    gl::namedBufferSubData(lightUbo.id(), 0, sizeof u, &u);
+    if (hasProjector(*currentLight)) gl::bindTextureUnit(SL_UNIT_PROJECTOR, gpu->texture(currentLight->projectorTexture).id());
 }
 
 void Renderer::Impl::drawShaded(ShaderVariant variant, const std::vector<std::size_t>* only) {
@@ -123,7 +126,7 @@ void Renderer::Impl::drawShaded(ShaderVariant variant, const std::vector<std::si
             variant.alphaTest = masked;
             wanted = &programs.get(variant.program());
         }
-        if (textured) glBindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
+        if (textured) gl::bindTextureUnit(SL_UNIT_BASE_COLOR, gpu->texture(m.baseColorTexture).id());
         if (wanted != current) {
             wanted->use();
             current = wanted;
@@ -175,7 +178,7 @@ void Renderer::Impl::beginFrame(const Scene& s, glm::ivec2 size, double timeSeco
     u.clipFromWorld = info->clipFromWorld;
     u.cameraPosition = glm::vec4(s.camera.position, 1.0f);
     u.ambient = glm::vec4(s.ambient, 0.0f);
-    glNamedBufferSubData(frameUbo.id(), 0, sizeof u, &u);
+    gl::namedBufferSubData(frameUbo.id(), 0, sizeof u, &u);
     drawList.upload(s, items);
 }
 

@@ -15,6 +15,7 @@
 #include <shadowlab/Error.h>
 #include <shadowlab/Renderer.h>
 
+#include "gl/Calls.h"
 #include "shadowlab_shared.h"
 
 #include <algorithm>
@@ -63,6 +64,7 @@ struct Renderer::Impl final : TechniqueHost {
     LitMode litMode = LitMode::Shade;
     bool depthPrepassed = false;  ///< this frame's depth drawn before the base pass (beginDepthPrepass)
     const Light* currentLight = nullptr;
+    std::size_t currentIndex = 0; ///< currentLight's index in Scene::lights (setLight)
     std::string currentPass;  // for count()
     std::vector<std::pair<std::string, double>> counters;
     std::vector<std::string> notes;
@@ -73,8 +75,8 @@ struct Renderer::Impl final : TechniqueHost {
     }
 
     explicit Impl(Context& c) : context(c), programs(*c.impl().programs) {
-        glNamedBufferStorage(frameUbo.id(), sizeof(shared::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
-        glNamedBufferStorage(lightUbo.id(), sizeof(shared::LightUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        gl::namedBufferStorage(frameUbo.id(), sizeof(shared::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        gl::namedBufferStorage(lightUbo.id(), sizeof(shared::LightUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
 
     // --- TechniqueHost ---------------------------------------------------------
@@ -138,7 +140,7 @@ struct Renderer::Impl final : TechniqueHost {
     }
 
     /// The light's technique into `variant` (its files, defines and slots).
-    void setTechnique(ShaderVariant& variant, const Light& light);
+    void setTechnique(ShaderVariant& variant);  ///< the current light's (setLight)
 
     /// Makes light i current: its block uploaded, its projector bound.
     void setLight(std::size_t i);

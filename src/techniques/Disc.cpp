@@ -93,10 +93,10 @@ public:
         }
     }
 
-    std::string lightPassDefines(const Light& light) const override {
+    std::string lightPassDefines(const LightView& view) const override {
         // A light this frame did not prepare: every slot of the block (the
         // ones past its discs are zero, which no ray crosses), slower but right.
-        const auto found = counts_.find(&light);
+        const auto found = counts_.find(&view.light);
         return "#define DISC_COUNT " + std::to_string(found == counts_.end() ? std::size_t{SL_DISC_MAX} : found->second) + "\n";
     }
 

@@ -13,7 +13,7 @@ struct NoneOptions {
 class NoShadow final : public Technique {
 public:
     static constexpr const char* summary = "no shadows: visibility 1 everywhere (the unshadowed baseline)";
-    bool joinsLightList(const Light&) const override { return true; }
+    bool joinsLightList(const LightView&) const override { return true; }
 };
 } // namespace
 

@@ -18,6 +18,7 @@
 #include <shadowlab/Error.h>
 #include <shadowlab/PlanarOptions.h>
 
+#include "gl/Calls.h"
 #include "shadow_planar_shared.h"
 
 #include <algorithm>
@@ -181,7 +182,7 @@ private:
                 if (planes[p].item == i) self = static_cast<GLint>(p);
                 else any = any || above(planes[p].plane, frame.itemBounds[i]);
             }
-            if (any && geometry) glProgramUniform1i(program.id(), 2, self);
+            if (any && geometry) gl::programUniform1i(program.id(), 2, self);
             return any;
         });
     }

@@ -156,7 +156,7 @@ public:
     /// (RenderOptions::groupLights): its visibility is 1 everywhere ("none"),
     /// or read from what bindLightList binds by shadows/atlas lookups
     /// described by listedShadow ("map" with `atlas`: shadow_atlas.glsl).
-    virtual bool joinsLightList(const Light&) const { return false; }
+    virtual bool joinsLightList(const LightView&) const { return false; }
     /// The light's ListedLight::shadow (shadowlab_shared.h): zero for no shadow.
     virtual glm::vec4 listedShadow(const LightView&) const { return glm::vec4(0.0f); }
     /// Binds what the light list's shadow lookups read (once per frame's
@@ -166,11 +166,12 @@ public:
     /// volumes: far caps are never clipped). Any light asking for it turns
     /// it on for the whole frame; FrameInfo::clipFromView says which was used.
     virtual bool needsInfiniteFar(const Light&) const { return false; }
-    /// `#define` lines for this light's variant of the technique's GLSL file.
-    virtual std::string lightPassDefines(const Light&) const { return {}; }
+    /// `#define` lines for this light's variant of the technique's GLSL file
+    /// (asked after prepare() for the frame).
+    virtual std::string lightPassDefines(const LightView&) const { return {}; }
     /// Files that fill the technique's own `#include "@slot"` lines in this
     /// light's variant (slot, embedded file), e.g. a filter's kernel.
-    virtual gl::IncludeAliases lightPassIncludes(const Light&) const { return {}; }
+    virtual gl::IncludeAliases lightPassIncludes(const LightView&) const { return {}; }
     /// Binds what the GLSL hook reads (textures, the technique's block).
     virtual void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView&) {}
     /// Screen rectangles outside of which the light's visibility (its

@@ -4,6 +4,7 @@
 // SL_BINDING_TECHNIQUE, where the technique's shaders read it.
 #include "gl/Object.h"
 
+#include "gl/Calls.h"
 #include "shadowlab_shared.h"
 
 #include <cstddef>
@@ -21,20 +22,20 @@ public:
     /// Writes `size` bytes at byte `offset` of the block (its binding unchanged).
     void writePart(std::size_t offset, std::size_t size, const void* data) {
         made();
-        glNamedBufferSubData(buffer_.id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(size), data);
+        gl::namedBufferSubData(buffer_.id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(size), data);
     }
     /// Copies `size` bytes at byte `from` of buffer `source` to byte
     /// `offset` of the block, on the GPU (what a shader wrote there).
     void copyPart(const gl::Buffer& source, std::size_t from, std::size_t offset, std::size_t size) {
         made();
-        glCopyNamedBufferSubData(source.id(), buffer_.id(), static_cast<GLintptr>(from), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(size));
+        gl::copyNamedBufferSubData(source.id(), buffer_.id(), static_cast<GLintptr>(from), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(size));
     }
 
 private:
     void made() {
         if (buffer_) return;
         buffer_ = gl::Buffer();
-        glNamedBufferStorage(buffer_.id(), sizeof(Block), nullptr, GL_DYNAMIC_STORAGE_BIT);
+        gl::namedBufferStorage(buffer_.id(), sizeof(Block), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     gl::Buffer buffer_{gl::NoCreate};
 };

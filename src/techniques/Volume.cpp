@@ -26,6 +26,7 @@
 #include <shadowlab/Error.h>
 #include <shadowlab/VolumeOptions.h>
 
+#include "gl/Calls.h"
 #include "shadow_volume_shared.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -139,9 +140,9 @@ public:
                 [&](std::size_t i) {
                     if (!casts_[view.index][i]) return false;
                     const auto mesh = static_cast<std::size_t>(frame.items[i].mesh);
-                    glProgramUniform1i(program.id(), 0, static_cast<int>(volumeMode(triangles, open_[mesh].edges > 0)));
+                    gl::programUniform1i(program.id(), 0, static_cast<int>(volumeMode(triangles, open_[mesh].edges > 0)));
                     const glm::dvec4 l = lightInObject(frame.items[i], view.light);
-                    glProgramUniform4d(program.id(), 1, l.x, l.y, l.z, l.w);
+                    gl::programUniform4d(program.id(), 1, l.x, l.y, l.z, l.w);
                     drawn += frame.scene.meshes[mesh].triangleCount();
                     return true;
                 },
@@ -264,20 +265,20 @@ private:
         if (seconds > 0.0) host.count("cpuTrianglesPerSecond", static_cast<double>(triangles) / seconds);
         if (!cpuArray_) {
             cpuArray_ = gl::VertexArray();
-            glVertexArrayAttribFormat(cpuArray_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-            glVertexArrayAttribFormat(cpuArray_.id(), 1, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec3));
-            glVertexArrayAttribBinding(cpuArray_.id(), 0, 0);
-            glVertexArrayAttribBinding(cpuArray_.id(), 1, 0);
-            glEnableVertexArrayAttrib(cpuArray_.id(), 0);
-            glEnableVertexArrayAttrib(cpuArray_.id(), 1);
+            gl::vertexArrayAttribFormat(cpuArray_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+            gl::vertexArrayAttribFormat(cpuArray_.id(), 1, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec3));
+            gl::vertexArrayAttribBinding(cpuArray_.id(), 0, 0);
+            gl::vertexArrayAttribBinding(cpuArray_.id(), 1, 0);
+            gl::enableVertexArrayAttrib(cpuArray_.id(), 0);
+            gl::enableVertexArrayAttrib(cpuArray_.id(), 1);
         }
         // One buffer for the technique's life: glNamedBufferData gives it new
         // storage each frame (the driver keeps the old one while it is read).
         if (!cpuBuffer_) {
             cpuBuffer_ = gl::Buffer();
-            glVertexArrayVertexBuffer(cpuArray_.id(), 0, cpuBuffer_.id(), 0, sizeof(CpuVertex));
+            gl::vertexArrayVertexBuffer(cpuArray_.id(), 0, cpuBuffer_.id(), 0, sizeof(CpuVertex));
         }
-        glNamedBufferData(cpuBuffer_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, cpuVertices_.size()) * sizeof(CpuVertex)),
+        gl::namedBufferData(cpuBuffer_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, cpuVertices_.size()) * sizeof(CpuVertex)),
                           cpuVertices_.empty() ? nullptr : cpuVertices_.data(), GL_STREAM_DRAW);
     }
 

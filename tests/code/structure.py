@@ -3,8 +3,7 @@
 - every file in src/techniques/map/ is named in docs/architecture.md's
   index of the map technique's module ("The map technique's module"), and
   every file named there exists;
-- every .cpp there has a header of its own (the same path, .h), but for
-  the options table, whose header is include/shadowlab/MapOptions.h;
+- every .cpp there has a header of its own (the same path, .h);
 - no two units there depend on each other (a unit: a .h and its .cpp;
   it depends on another when either file includes the other's header),
   directly or through others.
@@ -17,8 +16,6 @@ import sys
 
 MODULE = os.path.join("src", "techniques", "map")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"techniques/map/([^"]+)"', re.MULTILINE)
-# .cpp files whose header lies elsewhere, with where it lies.
-OWN_HEADER_ELSEWHERE = {"options/OptionTable.cpp": "include/shadowlab/MapOptions.h"}
 
 
 def module_files(root):
@@ -89,9 +86,7 @@ def main():
         problems.append(f"docs/architecture.md: its module index names {f}, which {MODULE}/ does not have")
     for f in files:
         if f.endswith(".cpp") and f[:-4] + ".h" not in files:
-            elsewhere = OWN_HEADER_ELSEWHERE.get(f)
-            if not (elsewhere and os.path.exists(os.path.join(root, elsewhere))):
-                problems.append(f"{MODULE}/{f}: no header of its own ({f[:-4]}.h)")
+            problems.append(f"{MODULE}/{f}: no header of its own ({f[:-4]}.h)")
     for cycle in cycles(root, files):
         problems.append(f"{MODULE}: units that depend on each other: {' -> '.join(cycle)}")
     for p in problems:

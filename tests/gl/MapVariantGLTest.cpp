@@ -108,9 +108,9 @@ TEST_F(MapVariantGLTest, EveryVariantOneOptionFromTheDefaultsCompilesAndDraws) {
                 }
                 ++drawn;
                 const Light& l = scene.lights[0];
-                lightPasses.insert(map::LightPassVariant::of(l, software, false).defines());
-                const MapOptions o = map::effective(l);
-                if (map::isCube(l))
+                const MapOptions& o = l.shadow.get<MapOptions>();  // as resolved when the scene was read
+                lightPasses.insert(map::LightPassVariant::of(o, l, software, false).defines());
+                if (map::isCube(o, l))
                     shadowPasses.insert(map::CubePassVariant{o.format, o.cubePasses == MapCubePasses::One, o.faceCulling}.defines());
                 else {
                     const map::ArrayKey key = map::ArrayKey::of(o, false);

@@ -71,7 +71,7 @@ TEST(ShaderVariant, PreambleDefinesEverySwitchTheSourcesTest) {
 
 TEST(ShaderSource, IncludesExpandWithLineDirectivesPerFile) {
     const gl::AssembledSource s = gl::assembleShader("lighting.frag", "#define X 1\n", {{"@shadow", "shadow_none.glsl"}});
-    EXPECT_EQ(s.text.rfind("#version 450 core\n#define X 1\n", 0), 0u);
+    EXPECT_EQ(s.text.rfind("#version 450 core\n#define X 1\n#define SL_BINDING(unit) layout(binding = unit)\n", 0), 0u);
     // preamble, lighting.frag, shadowlab_shared.h, light_reach.h and the
     // shadowlab_shared.h it includes (its include guard leaves that copy
     // empty), alpha_test.h and its own copy of shadowlab_shared.h, then the

@@ -1,7 +1,6 @@
 // Technique "map": the maps' inputs as one hash (Cache.h).
 #include "techniques/map/Cache.h"
 
-#include "techniques/map/options/Settings.h"
 
 #include <shadowlab/MapOptions.h>
 #include <shadowlab/Options.h>
@@ -13,7 +12,7 @@ namespace shadowlab::map {
 
 namespace {
 
-void addLight(Hash& h, const Light& light) {
+void addLight(Hash& h, const Light& light, const MapOptions& o) {
     h.value(static_cast<int>(light.type));
     h.value(light.position);
     h.value(light.direction);
@@ -21,22 +20,22 @@ void addLight(Hash& h, const Light& light) {
     h.value(light.innerConeDeg);
     h.value(light.outerConeDeg);
     h.text(light.shadow.technique);
-    // The effective options field by field, as JSON writes them (no padding bytes).
+    // The frame's options field by field, as JSON writes them (no padding bytes).
     const OptionTable& table = mapOptionTable();
-    const std::any options = effective(light);
+    const std::any options = o;
     for (const OptionField& field : table.fields) h.text(table.valueText(field, options));
 }
 
 } // namespace
 
-std::uint64_t mapInputs(const FrameInfo& frame, std::span<const int> lights) {
+std::uint64_t mapInputs(const FrameInfo& frame, const std::map<int, MapOptions>& options) {
     Hash h;
     h.value(frame.sceneUpload);
     h.value(frame.clipFromWorld);
     h.value(frame.viewport);
-    for (int index : lights) {
+    for (const auto& [index, o] : options) {
         h.value(index);
-        addLight(h, frame.scene.lights[static_cast<std::size_t>(index)]);
+        addLight(h, frame.scene.lights[static_cast<std::size_t>(index)], o);
     }
     h.value(frame.items.size());
     for (const DrawItem& item : frame.items) {

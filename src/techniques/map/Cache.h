@@ -4,7 +4,10 @@
 // (RenderOptions::cacheShadowMaps).
 #include "techniques/Technique.h"
 
+#include <shadowlab/MapOptions.h>
+
 #include <cstdint>
+#include <map>
 #include <string>
 #include <span>
 
@@ -29,11 +32,12 @@ struct Hash {
     }
 };
 
-/// A hash of everything the maps of `lights` depend on: each light's type,
-/// position, direction, cone, range and effective map options; every item's
+/// A hash of everything the maps of the lights in `options` (index -> the
+/// frame's options, MapLight::options) depend on: each light's type,
+/// position, direction, cone, range and those options; every item's
 /// mesh, transform, shadow flags and alpha material (casters, and the
 /// receivers the fits take); the camera and the frame's size (the fits
 /// follow the view); the scene's upload. Equal inputs give equal hashes.
-std::uint64_t mapInputs(const FrameInfo& frame, std::span<const int> lights);
+std::uint64_t mapInputs(const FrameInfo& frame, const std::map<int, MapOptions>& options);
 
 } // namespace shadowlab::map

@@ -18,6 +18,7 @@
 #include "techniques/map/fit/Cameras.h"
 #include "techniques/map/fit/Region.h"
 #include "techniques/map/fit/Sdsm.h"
+#include "techniques/map/options/OptionTable.h"
 #include "techniques/map/options/Settings.h"
 #include "techniques/map/passes/CasterDraw.h"
 #include "techniques/map/passes/CubePass.h"
@@ -70,10 +71,14 @@ public:
                     throw Error("RenderOptions::reuseShadowMaps: light " + std::to_string(index) + " has no shadow map from the previous frame");
             return;  // the maps and their cameras as the previous frame left them
         }
+        // Each light's options for the frame, worked out once (size 0: the
+        // frame's); everything after reads these (MapLight::options).
+        std::map<int, MapOptions> options;
+        for (int index : lights) options.emplace(index, optionsHere(host, frame, frame.scene.lights[static_cast<std::size_t>(index)]));
         // The same inputs as the maps were drawn from: keep them (cacheShadowMaps).
-        const std::uint64_t inputs = mapInputs(frame, lights);
+        const std::uint64_t inputs = mapInputs(frame, options);
         cached_ = frame.cacheShadowMaps && drawnFrom_ && *drawnFrom_ == inputs && lights_.size() == lights.size();
-        noteHardPcss(host, frame, lights);
+        noteHardPcss(host, frame, options);
         if (cached_) return;
         // The maps are refitted now and hold these inputs once a shadow pass
         // draws them (a frame lit by the reference's visibility draws none).
@@ -81,60 +86,10 @@ public:
         preparedFor_ = inputs;
         res_.software = gl::isSoftwareRasterizer(host.glInfo().renderer);
         res_.samplers.create();
-        // Lights with the same format and size share one texture array;
-        // those with `atlas` share the shadow atlas instead.
-        std::map<ArrayKey, int> layersWanted, firstLightOf;
-        bool atlas = false;
-        for (int index : lights) {
-            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
-            const MapOptions o = effectiveHere(host, frame, light);
-            if (o.atlas) {
-                atlas = true;
-                continue;
-            }
-            const int limit = host.glInfo().maxTextureSize;
-            if (o.size > limit)
-                throw InputError("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
-                            " texels is past this GPU's limit of " + std::to_string(limit));
-            const bool cube = isCube(light);
-            const ArrayKey key = ArrayKey::of(o, cube);
-            layersWanted[key] += cube ? 1 : cascadeCount(light, o);
-            firstLightOf.emplace(key, index);
-        }
-        // Translucent casters (alphaMode blend) colour the light: each
-        // array gets its transmittance layers (made once, kept with the array).
-        res_.translucent = hasTranslucentCasters(frame);
-        res_.holes = hasCastersWithHoles(frame);
-        res_.arrays.allocate(layersWanted, firstLightOf, host.glInfo(), lights.size(), res_.translucent,
-                             atlas ? MapAtlas::bytesFor(frame.scene.shadowAtlas) : 0.0);
-        if (res_.translucent) res_.arrays.addTransmittance();
-        std::map<std::size_t, int> nextLayer;
+        const bool atlas = allocateArrays(host, frame, options);
         std::map<int, MapLight> perLight;
-        for (int index : lights) {
-            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
-            MapLight p;
-            p.options = effectiveHere(host, frame, light);
-            p.cube = isCube(light);
-            p.spot = light.type == LightType::Spot;
-            if (p.options.atlas) {  // its tiles: placed below, with the other atlas lights
-                fitCameras(p, light, frame);
-                perLight.emplace(index, std::move(p));
-                continue;
-            }
-            p.array = res_.arrays.indexOf(ArrayKey::of(p.options, p.cube));
-            p.layer = nextLayer[p.array];
-            nextLayer[p.array] += p.cube ? 1 : cascadeCount(light, p.options);
-            checkSplitsInView(p.options, light, frame.scene.camera, index);
-            fitCameras(p, light, frame);
-            if (auto old = lights_.find(index); old != lights_.end()) {
-                // Fit "sdsm" refits in the shadow pass (renderShadowPass).
-                if (usesSamples(p, light) && old->second.cascades.size() == p.cascades.size()) p.keepCamerasOf(old->second);
-                if (!usesSamples(p, light)) p.gpuFit = nullptr;
-                p.keepTargetsOf(old->second, !p.cube || cubeWindowDepth(p.options) == cubeWindowDepth(old->second.options));
-            }
-            attachTargets(p, res_.arrays[p.array]);
-            perLight.emplace(index, std::move(p));
-        }
+        std::map<std::size_t, int> nextLayer;
+        for (const auto& [index, o] : options) perLight.emplace(index, lightFor(frame, index, o, nextLayer));
         lights_ = std::move(perLight);
         if (atlas) {
             std::map<int, MapLight*> inAtlas;
@@ -190,13 +145,9 @@ public:
         drawnFrom_ = atlas_.behind() ? std::optional<std::uint64_t>() : std::optional<std::uint64_t>(preparedFor_);
     }
 
-    std::string lightPassDefines(const Light& light) const override {
-        return LightPassVariant::of(light, res_.software, res_.translucent).defines();
-    }
+    std::string lightPassDefines(const LightView& view) const override { return lightPassVariant(view).defines(); }
 
-    gl::IncludeAliases lightPassIncludes(const Light& light) const override {
-        return {{"@map_filter", LightPassVariant::of(light, res_.software, res_.translucent).kernelFile()}};
-    }
+    gl::IncludeAliases lightPassIncludes(const LightView& view) const override { return {{"@map_filter", lightPassVariant(view).kernelFile()}}; }
 
     std::optional<std::vector<glm::ivec4>> shadowedPixels(const FrameInfo& frame, const LightView& view) const override {
         // A frame through the previous frame's maps keeps their cameras, not
@@ -206,7 +157,7 @@ public:
         return map::shadowedPixels(found->second, view.light, frame, res_.arrays[found->second.array].size());
     }
 
-    bool joinsLightList(const Light& light) const override { return effective(light).atlas; }
+    bool joinsLightList(const LightView& view) const override { return lights_.at(view.index).options.atlas; }
 
     glm::vec4 listedShadow(const LightView& view) const override { return MapAtlas::shadowOf(lights_.at(view.index)); }
 
@@ -221,8 +172,7 @@ public:
         }
         const MapArray& g = res_.arrays[p.array];
         res_.block.upload(p, g, view.light, res_.translucent);
-        map::bindLightPass(p, g, res_.samplers, res_.translucent, bilinearGrid(p.options, res_.software),
-                           plainFetch(p.options, p.cube, res_.software));
+        map::bindLightPass(p, g, res_.samplers, res_.translucent, depthTaps(p.options, p.cube, res_.software));
     }
 
     void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, const DebugImageKinds& kinds,
@@ -256,18 +206,85 @@ public:
 
 private:
     // PCSS on a light of size 0 stays hard: said every frame, kept maps or not.
-    static void noteHardPcss(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) {
-        for (int index : lights) {
+    static void noteHardPcss(TechniqueHost& host, const FrameInfo& frame, const std::map<int, MapOptions>& options) {
+        for (const auto& [index, o] : options) {
             const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
-            if (effective(light).filter == MapFilter::Pcss && !(light.size > 0.0f))
+            if (o.filter == MapFilter::Pcss && !(light.size > 0.0f))
                 host.note("lights[" + std::to_string(index) + "].shadow.map.filter \"pcss\": the light's size is 0, so its shadows stay hard (set lights[" +
                           std::to_string(index) + "].size: a radius, or a directional light's angular diameter in degrees)");
         }
     }
 
-    // The light's options, and a size that follows the frame (size 0) resolved.
-    static MapOptions effectiveHere(TechniqueHost& host, const FrameInfo& frame, const Light& light) {
-        MapOptions o = effective(light);
+    // The texture arrays for the lights' maps (lights with the same format
+    // and size share one; those with `atlas` share the shadow atlas
+    // instead), with transmittance layers when the frame has translucent
+    // casters (alphaMode blend: they colour the light). Whether any light
+    // is in the atlas.
+    bool allocateArrays(TechniqueHost& host, const FrameInfo& frame, const std::map<int, MapOptions>& options) {
+        std::map<ArrayKey, int> layersWanted, firstLightOf;
+        bool atlas = false;
+        for (const auto& [index, o] : options) {
+            const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+            if (o.atlas) {
+                atlas = true;
+                continue;
+            }
+            const int limit = host.glInfo().maxTextureSize;
+            if (o.size > limit)
+                throw InputError("lights[" + std::to_string(index) + "].shadow.map.size: " + std::to_string(o.size) +
+                            " texels is past this GPU's limit of " + std::to_string(limit));
+            const bool cube = isCube(o, light);
+            const ArrayKey key = ArrayKey::of(o, cube);
+            layersWanted[key] += cube ? 1 : cascadeCount(light, o);
+            firstLightOf.emplace(key, index);
+        }
+        res_.translucent = hasTranslucentCasters(frame);
+        res_.holes = hasCastersWithHoles(frame);
+        res_.arrays.allocate(layersWanted, firstLightOf, host.glInfo(), options.size(), res_.translucent,
+                             atlas ? MapAtlas::bytesFor(frame.scene.shadowAtlas) : 0.0);
+        if (res_.translucent) res_.arrays.addTransmittance();
+        return atlas;
+    }
+
+    // Light `index`'s state for this frame: its options, its layers of its
+    // array (nextLayer: each array's next free layer), its cameras fitted,
+    // what it keeps of last frame's, its framebuffers. An atlas light gets
+    // its cameras here and its tiles with the others' (MapAtlas::layout).
+    MapLight lightFor(const FrameInfo& frame, int index, const MapOptions& o, std::map<std::size_t, int>& nextLayer) {
+        const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
+        MapLight p;
+        p.options = o;
+        p.cube = isCube(p.options, light);
+        p.spot = light.type == LightType::Spot;
+        if (p.options.atlas) {
+            fitCameras(p, light, frame);
+            return p;
+        }
+        p.array = res_.arrays.indexOf(ArrayKey::of(p.options, p.cube));
+        p.layer = nextLayer[p.array];
+        nextLayer[p.array] += p.cube ? 1 : cascadeCount(light, p.options);
+        checkSplitsInView(p.options, light, frame.scene.camera, index);
+        fitCameras(p, light, frame);
+        if (auto old = lights_.find(index); old != lights_.end()) {
+            // Fit "sdsm" refits in the shadow pass (renderShadowPass).
+            if (usesSamples(p, light) && old->second.cascades.size() == p.cascades.size()) p.keepCamerasOf(old->second);
+            if (!usesSamples(p, light)) p.gpuFit = nullptr;
+            p.keepTargetsOf(old->second, !p.cube || cubeWindowDepth(p.options) == cubeWindowDepth(old->second.options));
+        }
+        attachTargets(p, res_.arrays[p.array]);
+        return p;
+    }
+
+    // The light pass's variant for a light this frame prepared.
+    LightPassVariant lightPassVariant(const LightView& view) const {
+        return LightPassVariant::of(lights_.at(view.index).options, view.light, res_.software, res_.translucent);
+    }
+
+    // The light's options for this frame: its own (the preset was applied
+    // as the scene was read), with a size that follows the frame (size 0)
+    // resolved.
+    static MapOptions optionsHere(TechniqueHost& host, const FrameInfo& frame, const Light& light) {
+        MapOptions o = light.shadow.get<MapOptions>();
         // size 0: the frame's (Wolberg's lecture: the window's own size; otherwise frameMapSize's texels per pixel).
         if (o.size == 0)
             o.size = std::clamp(isLecture2D(o, light) ? std::max(frame.viewport.x, frame.viewport.y) : frameMapSize(frame.viewport.x, frame.viewport.y), 16,
@@ -285,35 +302,14 @@ private:
     bool cached_ = false;                     ///< this frame keeps them
 };
 
-// The registry's baseline: the plainest map of the same size (one 2D map,
-// depth, the default filter: the lecture's technique), which cascades, PCSS
-// and moment maps are timed against.
-ShadowBaseline plainestMap(const Light& light) {
-    const MapOptions& o = light.shadow.get<MapOptions>();
-    MapOptions plainest;
-    plainest.size = o.size;
-    ShadowBaseline baseline{light.shadow, o.cascades != 1 || o.filter != plainest.filter || o.representation != plainest.representation};
-    baseline.shadow.options[MapOptions::kTechnique] = plainest;
-    return baseline;
-}
-
 } // namespace
 
 TechniqueEntry mapTechnique() {
     TechniqueEntry entry = entryOf<ShadowMap>("map", &mapOptionTable(), "shadow_map.glsl");
     entry.unsupported = &map::unsupported;
     entry.vertexShaderFile = "shadow_map_vertex.glsl";
-    entry.baseline = &plainestMap;
-    entry.resolve = [](std::any& options, const std::vector<std::string>& written, const Light& light) {
-        MapOptions o = std::any_cast<const MapOptions&>(options);
-        // filter "pcf" (the options table's alias: grid, kernel 8 where none is
-        // written) is the lectures' 64 taps: on a point light's cube, a 4x4x4
-        // grid (Lawonn's), not 8^3. Only the alias gives a grid kernel 8 the
-        // block did not write (the grid's own default is 3).
-        const bool kernelWritten = std::find(written.begin(), written.end(), "kernel") != written.end();
-        if (light.type == LightType::Point && o.filter == MapFilter::Grid && o.kernel == 8 && !kernelWritten) o.kernel = 4;
-        options = withPreset(o, light.type == LightType::Point, written);
-    };
+    entry.baseline = &map::plainestMap;
+    entry.resolve = &map::resolveOptions;
     return entry;
 }
 

@@ -58,14 +58,13 @@ private:
 
 } // namespace
 
-LightPassVariant LightPassVariant::of(const Light& light, bool softwareRasterizer, bool translucentCasters) {
-    const MapOptions o = effective(light);
+LightPassVariant LightPassVariant::of(const MapOptions& o, const Light& light, bool softwareRasterizer, bool translucentCasters) {
     LightPassVariant v;
     v.filter = o.filter;
     v.kernel = o.kernel;
     v.format = o.format;
     v.gridBilinear = bilinearGrid(o, softwareRasterizer);
-    v.cube = isCube(light);
+    v.cube = isCube(o, light);
     v.cascades = cascadeCount(light, o);
     v.representation = v.cube ? MapRepresentation::Depth : o.representation;
     v.momentFormat = o.momentFormat;

@@ -73,9 +73,10 @@ struct LightPassVariant {
     /// A moment map whose moments the light pass takes from the depth
     /// (passes/Arrays.h: momentsFromDepth), not from a texture of moments
     bool momentsFromDepth = false;
-    /// The variant of `light` (its effective options); `softwareRasterizer`
-    /// picks the grid's taps; `translucentCasters`, whether the frame has any.
-    static LightPassVariant of(const Light& light, bool softwareRasterizer, bool translucentCasters);
+    /// The variant of `light` with options `o` (MapLight::options);
+    /// `softwareRasterizer` picks the grid's taps; `translucentCasters`,
+    /// whether the frame has any.
+    static LightPassVariant of(const MapOptions& o, const Light& light, bool softwareRasterizer, bool translucentCasters);
     std::string defines() const;
     /// shadow_map.glsl's "@map_filter" slot: the filter's kernel file, or the moments'.
     std::string kernelFile() const;

@@ -3,8 +3,10 @@
 
 #include "core/AtlasLayout.h"
 #include "core/LightTiles.h"
+#include "gl/Calls.h"
 #include "techniques/map/Cache.h"
 #include "techniques/map/Variants.h"
+#include "techniques/map/atlas/Tiles.h"
 #include "techniques/map/fit/Cameras.h"
 
 #include <shadowlab/Error.h>
@@ -21,115 +23,85 @@
 
 namespace shadowlab::map {
 
-namespace {
-
-// How many pixels across the light's reach covers on screen (0: out of view).
-float screenExtent(const Light& light, const FrameInfo& frame) {
-    const auto ndc = screenRectOf(reachOf(light), frame.viewFromWorld, frame.clipFromView);
-    if (!ndc) return 0.0f;
-    const glm::vec2 pixels = (glm::vec2(ndc->z, ndc->w) - glm::vec2(ndc->x, ndc->y)) * 0.5f * glm::vec2(frame.viewport);
-    return std::max(pixels.x, pixels.y);
-}
-
-// A tile's record: its camera's clip space moved into its square of the
-// atlas (xy to its uv, z to 0..1), its outermost texels' centres, the
-// centres of the outermost texels its casters may cover (projectedRect's
-// margin keeps the casters a texel inside them, and a bilinear lookup
-// between those centres reads only cleared texels; at the tile's edge they
-// are the tile's own outermost centres), and the world size of a texel
-// per unit of distance along the camera's axis (2 / (side P[1][1]): a cube
-// face's P[1][1] is 1).
-shared::AtlasTile tileOf(const glm::mat4& clipFromWorld, float projectionY, glm::ivec2 origin, int side, int atlas, const TexelRect& covered) {
-    const float s = static_cast<float>(atlas);
-    const glm::vec2 lo = glm::vec2(origin) / s, extent = glm::vec2(static_cast<float>(side) / s);
-    const glm::mat4 toTile = glm::translate(glm::mat4(1.0f), glm::vec3(lo + 0.5f * extent, 0.5f)) *
-                             glm::scale(glm::mat4(1.0f), glm::vec3(0.5f * extent, 0.5f));
-    shared::AtlasTile t{};
-    t.atlasFromWorld = toTile * clipFromWorld;
-    const float half = 0.5f / s;
-    t.uvClamp = glm::vec4(lo + half, lo + extent - half);
-    const glm::vec2 o(origin);
-    t.casters = covered.empty() ? glm::vec4(2.0f, 2.0f, -2.0f, -2.0f)
-                                : glm::vec4((o + glm::vec2(covered.x0, covered.y0) + 0.5f) / s, (o + glm::vec2(covered.x1, covered.y1) - 0.5f) / s);
-    t.params = glm::vec4(2.0f / (static_cast<float>(side) * projectionY), covered.empty() ? 0.0f : 1.0f, 0.0f, 0.0f);
-    return t;
-}
-
-// Whether item i is drawn into tile t of light p: a caster its camera can
-// see (a cube face's by its face mask, a spot's by its frustum: the same
-// culling as the light's own map).
-bool castsIntoTile(const FrameInfo& frame, const MapLight& p, int t, std::size_t i) {
-    if (!frame.items[i].castsShadows) return false;
-    return p.cube ? (p.faceMask(i) & (1u << t)) != 0 : castsInto(p.camera, frame, i, false);
-}
-
-constexpr float kFar = 1.0f;  // the depth a cleared texel holds: no caster before the far plane
-
-gl::Sampler makeSampler(bool compare) {
-    gl::Sampler s;
-    const GLenum filter = compare ? GL_LINEAR : GL_NEAREST;
-    glSamplerParameteri(s.id(), GL_TEXTURE_MIN_FILTER, filter);
-    glSamplerParameteri(s.id(), GL_TEXTURE_MAG_FILTER, filter);
-    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    if (compare) {
-        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    }
-    return s;
-}
-
-} // namespace
 
 void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int, MapLight*>& lights) {
     const ShadowAtlasSettings& settings = frame.scene.shadowAtlas;
-    const int limit = host.glInfo().maxTextureSize;
+    makeTexture(settings, host.glInfo().maxTextureSize);
+    const Requests requests = gatherRequests(frame, lights);
+    const double texelBudget = settings.budgetPerPixel > 0.0f ? static_cast<double>(settings.budgetPerPixel) * frame.viewport.x * frame.viewport.y : 0.0;
+    const AtlasLayout layout = place(requests, settings, texelBudget);
+    tiles_.clear();
+    pending_.clear();
+    Assigned assigned;
+    assigned.casters = casterInputs(frame);
+    for (std::size_t k = 0; k < requests.order.size(); ++k) assignTiles(frame, requests, k, *lights.at(requests.order[k]), layout, assigned);
+    applyBudget(host, frame, assigned);
+    // Where this frame's drawn tiles are cleared (draw, with the first light):
+    // only the texels their casters may cover; the lookup finds the rest lit.
+    clears_.clear();
+    for (const auto& [index, p] : lights)
+        for (int t = 0; t < p->atlasTiles; ++t) {
+            const auto f = static_cast<std::size_t>(t);
+            const TexelRect& c = p->atlasCovered[f];
+            if (!p->atlasDraw[f] || c.empty()) continue;
+            const glm::ivec2 o = p->atlasOrigins[f];
+            clears_.emplace_back(o.x + c.x0, o.y + c.y0, c.x1 - c.x0, c.y1 - c.y0);
+        }
+    noteFit(host, frame, assigned, layout, texelBudget);
+    gl::reserveBuffer(tileBuffer_, tileBytes_, std::max<std::size_t>(tiles_.size(), 1) * sizeof(shared::AtlasTile));
+    if (!tiles_.empty())
+        gl::namedBufferSubData(tileBuffer_.id(), 0, static_cast<GLsizeiptr>(tiles_.size() * sizeof(shared::AtlasTile)), tiles_.data());
+    texelsUsed_ = layout.texelsUsed;
+}
+
+void MapAtlas::makeTexture(const ShadowAtlasSettings& settings, int limit) {
     if (settings.size > limit)
         throw InputError("shadowAtlas.size: " + std::to_string(settings.size) + " texels is past this GPU's limit of " + std::to_string(limit));
     if (size_ != settings.size) {
         depth_ = gl::Texture(GL_TEXTURE_2D);
-        glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, settings.size, settings.size);
+        gl::textureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, settings.size, settings.size);
         fbo_ = gl::Framebuffer();
-        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-        glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
-        glNamedFramebufferReadBuffer(fbo_.id(), GL_NONE);
+        gl::namedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+        gl::namedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
+        gl::namedFramebufferReadBuffer(fbo_.id(), GL_NONE);
         gl::checkFramebuffer(fbo_, "shadow atlas");
         size_ = settings.size;
         drawn_.clear();  // a new texture holds no maps
-        lastRequests_.clear();
+        last_.requests.clear();
     }
     if (!nearest_) {
-        nearest_ = makeSampler(false);
-        compare_ = makeSampler(true);
+        nearest_ = atlasSampler(false);
+        compare_ = atlasSampler(true);
     }
+}
+
+MapAtlas::Requests MapAtlas::gatherRequests(const FrameInfo& frame, const std::map<int, MapLight*>& lights) {
     // Each light's requests: a spot's tile at the side its reach on screen
     // asks for; each face of a point light's cube at the side of what that
     // face sees of its reach (the receivers within it) on screen, at most
     // the whole reach's. A light out of view asks for none.
+    const ShadowAtlasSettings& settings = frame.scene.shadowAtlas;
     Bounds receivers;
     for (std::size_t i = 0; i < frame.items.size(); ++i)
         if (frame.items[i].receivesShadows) receivers.add(frame.itemBounds[i]);
     // The sides asked for last frame hold while the atlas's sizing settings do.
     const glm::vec3 sizing(settings.texelsPerPixel, static_cast<float>(settings.minTile), static_cast<float>(settings.maxTile));
-    if (sizing != lastSizing_) lastSides_.clear();
-    lastSizing_ = sizing;
-    std::vector<AtlasRequest> requests;
-    std::vector<std::pair<int, AtlasRequest>> asked;  // each request with its light's index
-    std::vector<int> order;
-    std::vector<std::size_t> firstRequest;  // per light (in order): its first request; a cube's six are one a face
-    for (auto& [index, p] : lights) {
+    if (sizing != last_.sizing) last_.sides.clear();
+    last_.sizing = sizing;
+    Requests out;
+    for (const auto& [index, p] : lights) {
         const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
         const float extent = screenExtent(light, frame);
         // Tiles are powers of two (core/AtlasLayout): map.size caps them at
         // the power of two within it (a 768 map's tiles are at most 512).
         const int maxSide = static_cast<int>(std::bit_floor(static_cast<unsigned>(std::min(settings.maxTile, p->options.size))));
         const int minSide = std::min(settings.minTile, maxSide);
-        order.push_back(index);
-        firstRequest.push_back(requests.size());
-        std::array<int, 6>& last = lastSides_[index];  // the sides it asked for last frame (0: none)
-        const auto ask = [&requests, &asked, owner = index](AtlasRequest r) {  // (clang cannot capture the binding itself)
-            requests.push_back(r);
-            asked.emplace_back(owner, r);
+        out.order.push_back(index);
+        out.first.push_back(out.requests.size());
+        std::array<int, 6>& last = last_.sides[index];  // the sides it asked for last frame (0: none)
+        const auto ask = [&out, owner = index](AtlasRequest r) {  // (clang cannot capture the binding itself)
+            out.requests.push_back(r);
+            out.asked.emplace_back(owner, r);
         };
         if (!(extent > 0.0f)) {
             ask({0, minSide});
@@ -149,160 +121,131 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
             ask({1, last[f]});
         }
     }
-    for (auto it = lastSides_.begin(); it != lastSides_.end();)  // lights gone from the atlas
-        it = lights.count(it->first) ? std::next(it) : lastSides_.erase(it);
+    for (auto it = last_.sides.begin(); it != last_.sides.end();)  // lights gone from the atlas
+        it = lights.count(it->first) ? std::next(it) : last_.sides.erase(it);
+    return out;
+}
+
+AtlasLayout MapAtlas::place(const Requests& r, const ShadowAtlasSettings& settings, double texelBudget) {
     // The same lights asking for the same tiles: the same places, so that
     // kept maps stay where their records say.
-    const double texelBudget = settings.budgetPerPixel > 0.0f ? static_cast<double>(settings.budgetPerPixel) * frame.viewport.x * frame.viewport.y : 0.0;
-    const bool samePlaces = texelBudget == lastBudget_ && asked.size() == lastRequests_.size() &&
-                            std::equal(asked.begin(), asked.end(), lastRequests_.begin(), [](const auto& a, const auto& b) {
+    const bool samePlaces = texelBudget == last_.budget && r.asked.size() == last_.requests.size() &&
+                            std::equal(r.asked.begin(), r.asked.end(), last_.requests.begin(), [](const auto& a, const auto& b) {
                                 return a.first == b.first && a.second.tiles == b.second.tiles && a.second.side == b.second.side;
                             });
-    const AtlasLayout layout = samePlaces ? lastLayout_ : packAtlas(requests, settings.size, settings.minTile, texelBudget);
+    const AtlasLayout layout = samePlaces ? last_.layout : packAtlas(r.requests, settings.size, settings.minTile, texelBudget);
     if (!samePlaces) drawn_.clear();  // the tiles moved: nothing is where it was
-    lastRequests_ = asked;
-    lastLayout_ = layout;
-    lastBudget_ = texelBudget;
+    last_.requests = r.asked;
+    last_.layout = layout;
+    last_.budget = texelBudget;
     if (!layout.fits) {
         std::size_t tiles = 0;
-        for (const AtlasRequest& r : requests) tiles += static_cast<std::size_t>(r.tiles);
+        for (const AtlasRequest& request : r.requests) tiles += static_cast<std::size_t>(request.tiles);
         throw InputError("shadowAtlas.size: " + std::to_string(tiles) + " tiles of at least " + std::to_string(settings.minTile) + "^2 texels (shadowAtlas.minTile) do not fit in " +
                     std::to_string(settings.size) + "^2; raise shadowAtlas.size or lower shadowAtlas.minTile");
     }
-    tiles_.clear();
-    pending_.clear();
-    std::string shrunk;
-    int shrunkCount = 0;
-    const std::uint64_t casters = casterInputs(frame);
-    struct Changed {
-        MapLight* p;
-        int index, tile;
-        std::uint64_t since;
-    };
-    std::vector<Changed> changed;  // kept tiles whose inputs changed: drawn again within the budget
-    int mustDraw = 0;
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        MapLight& p = *lights.at(order[k]);
-        const std::size_t r0 = firstRequest[k];
-        p.atlasFirst = static_cast<int>(tiles_.size());
-        p.atlasTiles = requests[r0].tiles == 0 ? 0 : (p.cube ? 6 : 1);
-        p.atlasSides.fill(0);
-        int largestAsked = 0, given = 0;  // its largest tile's side, asked for and placed
-        for (int t = 0; t < p.atlasTiles; ++t) {
-            const auto f = static_cast<std::size_t>(t);
-            const AtlasPlacement& place = layout.placed[r0 + f];  // one request a tile
-            largestAsked = std::max(largestAsked, place.shrunkFrom);
-            given = std::max(given, place.side);
-            p.atlasSides[f] = place.side;
-            p.atlasOrigins[f] = place.origins[0];
-            // The texels its casters may cover: only those are cleared and drawn.
-            const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
-            TexelRect covered{};
-            Hash key;
-            key.value(clip).value(casters).value(p.options.slopeBias).value(p.options.offsetUnits).value(p.options.cullFront).value(place.side).value(place.origins[0]);
-            std::vector<std::size_t>& seen = p.atlasCasters[f];
-            seen.clear();
-            for (std::size_t i = 0; i < frame.items.size(); ++i)
-                if (castsIntoTile(frame, p, t, i)) {
-                    covered = covered.united(projectedRect(clip, frame.itemBounds[i], place.side));
-                    key.value(i);
-                    seen.push_back(i);
-                }
-            p.atlasCovered[f] = covered;
-            p.atlasKey[f] = key.h;
-            const shared::AtlasTile record = tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[0], place.side, size_, covered);
-            pending_.push_back(record);
-            tiles_.push_back(record);
-            // Kept, drawn again, or drawn again if the budget allows.
-            const Drawn& before = drawn_[order[k]][f];
-            p.atlasDraw[f] = true;
-            if (!frame.cacheShadowMaps || !before.valid) {
-                ++mustDraw;
-            } else if (before.key == key.h) {
-                p.atlasDraw[f] = false;
-            } else {
-                changed.push_back({&p, order[k], t, before.frame});
+    return layout;
+}
+
+void MapAtlas::assignTiles(const FrameInfo& frame, const Requests& requests, std::size_t k, MapLight& p, const AtlasLayout& layout, Assigned& out) {
+    const int index = requests.order[k];
+    const std::size_t first = requests.first[k];
+    p.atlasFirst = static_cast<int>(tiles_.size());
+    p.atlasTiles = requests.requests[first].tiles == 0 ? 0 : (p.cube ? 6 : 1);
+    p.atlasSides.fill(0);
+    int largestAsked = 0, given = 0;  // its largest tile's side, asked for and placed
+    for (int t = 0; t < p.atlasTiles; ++t) {
+        const auto f = static_cast<std::size_t>(t);
+        const AtlasPlacement& place = layout.placed[first + f];  // one request a tile
+        largestAsked = std::max(largestAsked, place.shrunkFrom);
+        given = std::max(given, place.side);
+        p.atlasSides[f] = place.side;
+        p.atlasOrigins[f] = place.origins[0];
+        // The texels its casters may cover: only those are cleared and drawn.
+        const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
+        TexelRect covered{};
+        Hash key;
+        key.value(clip).value(out.casters).value(p.options.slopeBias).value(p.options.offsetUnits).value(p.options.cullFront).value(place.side).value(place.origins[0]);
+        std::vector<std::size_t>& seen = p.atlasCasters[f];
+        seen.clear();
+        for (std::size_t i = 0; i < frame.items.size(); ++i)
+            if (castsIntoTile(frame, p, t, i)) {
+                covered = covered.united(projectedRect(clip, frame.itemBounds[i], place.side));
+                key.value(i);
+                seen.push_back(i);
             }
-        }
-        if (given < largestAsked) {
-            if (++shrunkCount <= 8)
-                shrunk += (shrunk.empty() ? "" : ", ") + std::string("lights[") + std::to_string(order[k]) + "] " + std::to_string(largestAsked) + " -> " + std::to_string(given);
+        p.atlasCovered[f] = covered;
+        p.atlasKey[f] = key.h;
+        const shared::AtlasTile record = tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[0], place.side, size_, covered);
+        pending_.push_back(record);
+        tiles_.push_back(record);
+        // Kept, drawn again, or drawn again if the budget allows.
+        const Drawn& before = drawn_[index][f];
+        p.atlasDraw[f] = true;
+        if (!frame.cacheShadowMaps || !before.valid) {
+            ++out.mustDraw;
+        } else if (before.key == key.h) {
+            p.atlasDraw[f] = false;
+        } else {
+            out.changed.push_back({&p, index, t, before.frame});
         }
     }
+    if (given < largestAsked && ++out.shrunkCount <= 8)
+        out.shrunk += (out.shrunk.empty() ? "" : ", ") + std::string("lights[") + std::to_string(index) + "] " + std::to_string(largestAsked) + " -> " + std::to_string(given);
+}
+
+void MapAtlas::applyBudget(TechniqueHost& host, const FrameInfo& frame, Assigned& assigned) {
     // The budget: the changed tiles undrawn longest first, the rest keep
     // their map and the record it was drawn with.
     const int budget = frame.scene.shadowAtlas.updateBudget;
     behind_ = false;
-    if (budget > 0 && frame.cacheShadowMaps) {
-        std::stable_sort(changed.begin(), changed.end(), [](const Changed& a, const Changed& b) { return a.since < b.since; });
-        int room = std::max(budget - mustDraw, 0);
-        for (const Changed& c : changed) {
-            if (room > 0) {
-                --room;
-                continue;
-            }
-            const auto f = static_cast<std::size_t>(c.tile);
-            const Drawn& before = drawn_[c.index][f];
-            c.p->atlasDraw[f] = false;
-            behind_ = true;
-            c.p->atlasCovered[f] = before.covered;
-            tiles_[static_cast<std::size_t>(c.p->atlasFirst + c.tile)] = before.record;
+    if (budget <= 0 || !frame.cacheShadowMaps) return;
+    std::vector<Changed>& changed = assigned.changed;
+    std::stable_sort(changed.begin(), changed.end(), [](const Changed& a, const Changed& b) { return a.since < b.since; });
+    int room = std::max(budget - assigned.mustDraw, 0);
+    for (const Changed& c : changed) {
+        if (room > 0) {
+            --room;
+            continue;
         }
-        if (mustDraw > budget)
-            host.note("shadowAtlas.updateBudget: " + std::to_string(mustDraw) + " tiles were new to their place in the atlas and drawn, more than the budget of " +
-                      std::to_string(budget) + " a frame (a tile's place changes when a light's size on screen does)");
+        const auto f = static_cast<std::size_t>(c.tile);
+        const Drawn& before = drawn_[c.index][f];
+        c.p->atlasDraw[f] = false;
+        behind_ = true;
+        c.p->atlasCovered[f] = before.covered;
+        tiles_[static_cast<std::size_t>(c.p->atlasFirst + c.tile)] = before.record;
     }
-    // Where this frame's drawn tiles are cleared (draw, with the first light):
-    // only the texels their casters may cover; the lookup finds the rest lit.
-    clears_.clear();
-    for (const auto& [index, p] : lights)
-        for (int t = 0; t < p->atlasTiles; ++t) {
-            const auto f = static_cast<std::size_t>(t);
-            const TexelRect& c = p->atlasCovered[f];
-            if (!p->atlasDraw[f] || c.empty()) continue;
-            const glm::ivec2 o = p->atlasOrigins[f];
-            clears_.emplace_back(o.x + c.x0, o.y + c.y0, c.x1 - c.x0, c.y1 - c.y0);
-        }
+    if (assigned.mustDraw > budget)
+        host.note("shadowAtlas.updateBudget: " + std::to_string(assigned.mustDraw) + " tiles were new to their place in the atlas and drawn, more than the budget of " +
+                  std::to_string(budget) + " a frame (a tile's place changes when a light's size on screen does)");
+}
+
+void MapAtlas::noteFit(TechniqueHost& host, const FrameInfo& frame, const Assigned& assigned, const AtlasLayout& layout, double texelBudget) const {
+    const ShadowAtlasSettings& settings = frame.scene.shadowAtlas;
     const bool byBudget = texelBudget > 0.0 && texelBudget < static_cast<double>(size_) * size_;
     const std::string fitTo = byBudget ? "the budget of " + std::to_string(static_cast<long long>(texelBudget)) + " texels (shadowAtlas.budgetPerPixel " +
                                              text::numberText(settings.budgetPerPixel) + " x " + std::to_string(frame.viewport.x) + "x" +
                                              std::to_string(frame.viewport.y) + " pixels)"
                                        : std::to_string(size_) + "^2 texels";
-    if (shrunkCount > 0)
-        host.note("shadowAtlas: " + std::to_string(shrunkCount) + " light(s) got smaller tiles than their size on screen asks for, to fit " + fitTo + " (" +
-                  shrunk + (shrunkCount > 8 ? ", and " + std::to_string(shrunkCount - 8) + " more" : "") + "); raise " +
+    if (assigned.shrunkCount > 0)
+        host.note("shadowAtlas: " + std::to_string(assigned.shrunkCount) + " light(s) got smaller tiles than their size on screen asks for, to fit " + fitTo + " (" +
+                  assigned.shrunk + (assigned.shrunkCount > 8 ? ", and " + std::to_string(assigned.shrunkCount - 8) + " more" : "") + "); raise " +
                   (byBudget ? "shadowAtlas.budgetPerPixel" : "shadowAtlas.size") + " or lower shadowAtlas.texelsPerPixel");
     if (layout.overBudget)
         host.note("shadowAtlas: the tiles at shadowAtlas.minTile (" + std::to_string(settings.minTile) + ") alone take " +
                   std::to_string(static_cast<long long>(layout.texelsUsed)) + " texels, more than " + fitTo + "; lower shadowAtlas.minTile");
-    gl::reserveBuffer(tileBuffer_, tileBytes_, std::max<std::size_t>(tiles_.size(), 1) * sizeof(shared::AtlasTile));
-    if (!tiles_.empty())
-        glNamedBufferSubData(tileBuffer_.id(), 0, static_cast<GLsizeiptr>(tiles_.size() * sizeof(shared::AtlasTile)), tiles_.data());
-    texelsUsed_ = layout.texelsUsed;
 }
 
 void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight& p, int index) {
-    // The opaque casters in one batch, one call per tile; those with holes one by one.
-    const gl::Program& batched = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_batch.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
-    const gl::Program& single = host.program(
-        {{{GL_VERTEX_SHADER, "shadow_atlas_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{MapFormat::Depth32F, true}.defines()});  // casters with holes
     batch_.update(frame);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    gl::RenderState state;
-    state.noColor();
-    state.polygonOffset = !p.options.cullFront && (p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f);
-    state.offsetFactor = p.options.slopeBias;
-    state.offsetUnits = p.options.offsetUnits;
-    state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
-    state.clipDistances = 4;  // each tile's sides (shadow_atlas_depth.vert)
     // The clears of every light's tiles, with the first light drawn this
     // frame: glClearTexSubImage before any caster is queued (llvmpipe fills
     // the texels on the CPU; after a draw into the atlas it would first
     // wait for the rasteriser, once per call). Then this light's share of
     // them, kept or drawn.
-    for (const glm::ivec4& r : clears_) glClearTexSubImage(depth_.id(), 0, r.x, r.y, 0, r.z, r.w, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &kFar);
+    for (const glm::ivec4& r : clears_) gl::clearTexSubImage(depth_.id(), 0, r.x, r.y, 0, r.z, r.w, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &kAtlasFar);
     clears_.clear();
-    std::size_t drawn = 0;
     double cleared = 0.0;
     int kept = 0, redrawn = 0;
     for (int t = 0; t < p.atlasTiles; ++t) {
@@ -316,6 +259,31 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         const TexelRect& c = p.atlasCovered[f];
         if (!c.empty()) cleared += static_cast<double>(c.x1 - c.x0) * static_cast<double>(c.y1 - c.y0);
     }
+    const std::size_t drawn = drawTiles(host, frame, p);
+    host.count("triangles", static_cast<double>(drawn));
+    host.count("atlasTiles", static_cast<double>(p.atlasTiles));
+    double texels = 0.0;
+    for (int t = 0; t < p.atlasTiles; ++t) texels += static_cast<double>(p.atlasSides[static_cast<std::size_t>(t)]) * p.atlasSides[static_cast<std::size_t>(t)];
+    host.count("tileSide", static_cast<double>(*std::max_element(p.atlasSides.begin(), p.atlasSides.end())));  // its largest
+    host.count("tileTexels", texels);
+    host.count("clearedTexels", cleared);
+    host.count("tilesDrawn", redrawn);
+    host.count("tilesKept", kept);
+    if (p.atlasFirst == 0) host.count("atlasTexels", texelsUsed_);  // the whole atlas's, once a frame: with its first tile
+}
+
+std::size_t MapAtlas::drawTiles(TechniqueHost& host, const FrameInfo& frame, const MapLight& p) {
+    // The opaque casters in one batch, one call per tile; those with holes one by one.
+    const gl::Program& batched = host.program({{{GL_VERTEX_SHADER, "shadow_atlas_batch.vert"}, {GL_FRAGMENT_SHADER, "shadow_atlas_batch.frag"}}, ""});
+    const gl::Program& single = host.program(
+        {{{GL_VERTEX_SHADER, "shadow_atlas_depth.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_depth.frag"}}, DepthPassVariant{MapFormat::Depth32F, true}.defines()});  // casters with holes
+    gl::RenderState state;
+    state.noColor();
+    state.polygonOffset = !p.options.cullFront && (p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f);
+    state.offsetFactor = p.options.slopeBias;
+    state.offsetUnits = p.options.offsetUnits;
+    state.cull = p.options.cullFront ? gl::Cull::Front : gl::Cull::None;
+    state.clipDistances = 4;  // each tile's sides (shadow_atlas_depth.vert)
     // cullFront: closed casters by their far sides (mirrored ones with back
     // faces culled), open ones whole with the offset (passes/CasterDraw.h).
     gl::RenderState mirrored = state;
@@ -324,6 +292,17 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     open.cull = gl::Cull::None;
     open.polygonOffset = p.options.slopeBias != 0.0f || p.options.offsetUnits != 0.0f;
     const auto winding = [&](std::size_t i) { return i < frame.itemWinding.size() ? frame.itemWinding[i] : 0; };
+    std::size_t drawn = 0;
+    // The casters `wanted` (in order): the opaque in one batch, those with holes one by one.
+    const auto drawCasters = [&](const std::vector<std::size_t>& wanted) {
+        drawn += batch_.draw(batched, wanted);
+        if (std::all_of(wanted.begin(), wanted.end(), [&](std::size_t i) { return batch_.holds(i); })) return;
+        host.drawItems(ItemFilter::Casters, single, [&](std::size_t i) {
+            const bool draw = !batch_.holds(i) && std::binary_search(wanted.begin(), wanted.end(), i);
+            if (draw) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
+            return draw;
+        });
+    };
     host.apply(state);
     for (int t = 0; t < p.atlasTiles; ++t) {
         const auto f = static_cast<std::size_t>(t);
@@ -331,18 +310,8 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         const glm::ivec2 o = p.atlasOrigins[f];
         glViewport(o.x, o.y, p.atlasSides[f], p.atlasSides[f]);
         const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
-        glProgramUniformMatrix4fv(batched.id(), 0, 1, GL_FALSE, &clip[0][0]);
-        glProgramUniformMatrix4fv(single.id(), 0, 1, GL_FALSE, &clip[0][0]);
-        // The casters `wanted` (in order): the opaque in one batch, those with holes one by one.
-        const auto drawCasters = [&](const std::vector<std::size_t>& wanted) {
-            drawn += batch_.draw(batched, wanted);
-            if (std::all_of(wanted.begin(), wanted.end(), [&](std::size_t i) { return batch_.holds(i); })) return;
-            host.drawItems(ItemFilter::Casters, single, [&](std::size_t i) {
-                const bool draw = !batch_.holds(i) && std::binary_search(wanted.begin(), wanted.end(), i);
-                if (draw) drawn += frame.scene.meshes[static_cast<std::size_t>(frame.items[i].mesh)].triangleCount();
-                return draw;
-            });
-        };
+        gl::programUniformMatrix4fv(batched.id(), 0, 1, GL_FALSE, &clip[0][0]);
+        gl::programUniformMatrix4fv(single.id(), 0, 1, GL_FALSE, &clip[0][0]);
         // The casters this tile's camera can see (layout found them).
         if (!p.options.cullFront) {
             drawCasters(p.atlasCasters[f]);
@@ -358,22 +327,13 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
         }
         host.apply(state);
     }
-    host.count("triangles", static_cast<double>(drawn));
-    host.count("atlasTiles", static_cast<double>(p.atlasTiles));
-    double texels = 0.0;
-    for (int t = 0; t < p.atlasTiles; ++t) texels += static_cast<double>(p.atlasSides[static_cast<std::size_t>(t)]) * p.atlasSides[static_cast<std::size_t>(t)];
-    host.count("tileSide", static_cast<double>(*std::max_element(p.atlasSides.begin(), p.atlasSides.end())));  // its largest
-    host.count("tileTexels", texels);
-    host.count("clearedTexels", cleared);
-    host.count("tilesDrawn", redrawn);
-    host.count("tilesKept", kept);
-    if (p.atlasFirst == 0) host.count("atlasTexels", texelsUsed_);  // the whole atlas's, once a frame: with its first tile
+    return drawn;
 }
 
 void MapAtlas::bind() const {
-    glBindTextureUnit(SL_UNIT_ATLAS, depth_.id());
+    gl::bindTextureUnit(SL_UNIT_ATLAS, depth_.id());
     glBindSampler(SL_UNIT_ATLAS, nearest_.id());
-    glBindTextureUnit(SL_UNIT_ATLAS_COMPARE, depth_.id());
+    gl::bindTextureUnit(SL_UNIT_ATLAS_COMPARE, depth_.id());
     glBindSampler(SL_UNIT_ATLAS_COMPARE, compare_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_ATLAS_TILES, tileBuffer_.id());
 }

@@ -16,7 +16,10 @@
 #include "shadowlab_shared.h"
 
 #include <array>
+#include <cstdint>
 #include <map>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace shadowlab::map {
@@ -53,6 +56,44 @@ public:
     const std::vector<shared::AtlasTile>& tiles() const { return tiles_; }
 
 private:
+    // What layout asks the packer for, light by light (gatherRequests).
+    struct Requests {
+        std::vector<AtlasRequest> requests;
+        std::vector<std::pair<int, AtlasRequest>> asked;  ///< each request with its light's index
+        std::vector<int> order;                           ///< the lights, in the order they asked
+        std::vector<std::size_t> first;                   ///< per light (in order): its first request; a cube's six are one a face
+    };
+    // A kept tile whose inputs changed: drawn again within the update budget.
+    struct Changed {
+        MapLight* p;
+        int index, tile;
+        std::uint64_t since;  ///< the frame it was last drawn in
+    };
+    // What assigning the placed tiles to their lights found (assignTiles).
+    struct Assigned {
+        std::uint64_t casters = 0;     ///< the frame's casters as one hash (casterInputs)
+        std::vector<Changed> changed;  ///< kept tiles whose inputs changed
+        int mustDraw = 0;              ///< tiles new to their place, drawn whatever the budget
+        int shrunkCount = 0;           ///< lights whose tiles are smaller than asked for
+        std::string shrunk;            ///< the first eight of them, "lights[i] asked -> given"
+    };
+
+    // The texture at settings.size (limit: the GPU's), its framebuffer and samplers.
+    void makeTexture(const ShadowAtlasSettings& settings, int limit);
+    // Each light's tiles at the side its reach on screen asks for.
+    Requests gatherRequests(const FrameInfo& frame, const std::map<int, MapLight*>& lights);
+    // The requests placed: last frame's places when the same lights ask for the same tiles.
+    AtlasLayout place(const Requests& requests, const ShadowAtlasSettings& settings, double texelBudget);
+    // Light requests.order[k]'s tiles: their places, cameras' records, the
+    // texels its casters cover, and whether each is kept or drawn.
+    void assignTiles(const FrameInfo& frame, const Requests& requests, std::size_t k, MapLight& p, const AtlasLayout& layout, Assigned& out);
+    // At most shadowAtlas.updateBudget changed tiles drawn again, the longest undrawn first.
+    void applyBudget(TechniqueHost& host, const FrameInfo& frame, Assigned& assigned);
+    // Light p's casters drawn into its tiles that this frame draws; the triangles drawn.
+    std::size_t drawTiles(TechniqueHost& host, const FrameInfo& frame, const MapLight& p);
+    // The notes for lights whose tiles were shrunk, and for a minTile over the budget.
+    void noteFit(TechniqueHost& host, const FrameInfo& frame, const Assigned& assigned, const AtlasLayout& layout, double texelBudget) const;
+
     gl::Texture depth_{gl::NoCreate};
     gl::Framebuffer fbo_{gl::NoCreate};
     gl::Buffer tileBuffer_{gl::NoCreate};
@@ -71,12 +112,18 @@ private:
         TexelRect covered{};
     };
     std::map<int, std::array<Drawn, 6>> drawn_;
-    std::vector<std::pair<int, AtlasRequest>> lastRequests_;  ///< the last layout's lights and requests
-    AtlasLayout lastLayout_;
-    double lastBudget_ = 0.0;  ///< the texel budget the last layout was packed to
+    /// What the last layout kept for the next (its hysteresis): the next
+    /// asks for the same sides while they still fit, and keeps the same
+    /// places while the same lights ask for the same tiles.
+    struct LastFrame {
+        std::vector<std::pair<int, AtlasRequest>> requests;  ///< its lights and requests
+        AtlasLayout layout;
+        double budget = 0.0;                       ///< the texel budget it was packed to
+        std::map<int, std::array<int, 6>> sides;   ///< per light, the sides its tiles asked for (tileSideKeeping)
+        glm::vec3 sizing{0.0f};                    ///< the texelsPerPixel, minTile and maxTile they were asked with
+    };
+    LastFrame last_;
     bool behind_ = false;
-    std::map<int, std::array<int, 6>> lastSides_;  ///< per light, the sides its tiles asked for last frame (tileSideKeeping)
-    glm::vec3 lastSizing_{0.0f};                     ///< the texelsPerPixel, minTile and maxTile they were asked with
     std::vector<glm::ivec4> clears_;  ///< the texels (x, y, width, height) the next draw clears first: every drawn tile's covered rectangle
     std::vector<shared::AtlasTile> pending_;  ///< this frame's records of the tiles it draws (tiles_ holds a kept tile's old one)
     std::vector<shared::AtlasTile> tiles_;

@@ -1,6 +1,8 @@
 // Technique "map": the shadow atlas as images (atlas/Images.h).
 #include "techniques/map/atlas/Images.h"
 
+#include "gl/Calls.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -20,7 +22,7 @@ DebugImage atlasImage(const MapAtlas& atlas, const std::map<int, const MapLight*
     out.kind = DebugImageKind::Atlas;
     out.values.resize(static_cast<std::size_t>(used.x) * static_cast<std::size_t>(used.y));
     if (atlas.size() > 0)
-        glGetTextureSubImage(atlas.texture().id(), 0, 0, 0, 0, used.x, used.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(out.values.size() * sizeof(float)),
+        gl::getTextureSubImage(atlas.texture().id(), 0, 0, 0, 0, used.x, used.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(out.values.size() * sizeof(float)),
                              out.values.data());
     const int step = std::max(1, (std::max(used.x, used.y) + maxSide - 1) / maxSide);
     const int width = (used.x + step - 1) / step, height = (used.y + step - 1) / step;
@@ -83,7 +85,7 @@ DebugImage atlasLightTiles(const MapAtlas& atlas, const MapLight& p) {
         const glm::ivec2 o = p.atlasOrigins[static_cast<std::size_t>(t)];
         const int side = p.atlasSides[static_cast<std::size_t>(t)];
         const std::size_t area = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
-        glGetTextureSubImage(atlas.texture().id(), 0, o.x, o.y, 0, side, side, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(area * sizeof(float)),
+        gl::getTextureSubImage(atlas.texture().id(), 0, o.x, o.y, 0, side, side, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(area * sizeof(float)),
                              out.values.data() + first[static_cast<std::size_t>(t)]);
     }
     out.image.width = column.back() + p.atlasSides[static_cast<std::size_t>(tiles) - 1];

@@ -1,6 +1,7 @@
 // Technique "map": its debug images (debug/Images.h).
 #include "techniques/map/debug/Images.h"
 
+#include "gl/Calls.h"
 #include "techniques/map/Variants.h"
 #include "techniques/map/fit/Cameras.h"
 #include "techniques/map/options/Settings.h"
@@ -23,15 +24,15 @@ std::vector<float> readLayer(const MapArray& g, int layer) {
     std::vector<float> depth(n);
     if (g.format() == MapFormat::Rgba8) {
         std::vector<std::uint8_t> rgba(n * 4);
-        glGetTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_RGBA, GL_UNSIGNED_BYTE,
+        gl::getTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_RGBA, GL_UNSIGNED_BYTE,
                              static_cast<GLsizei>(rgba.size()), rgba.data());
         for (std::size_t i = 0; i < n; ++i) depth[i] = rgba[4 * i] / 255.0f + rgba[4 * i + 1] / 65025.0f + rgba[4 * i + 2] / 16581375.0f;
     } else if (g.format() == MapFormat::R8) {
         std::vector<std::uint8_t> r(n);
-        glGetTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_RED, GL_UNSIGNED_BYTE, static_cast<GLsizei>(n), r.data());
+        gl::getTextureSubImage(g.packed.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_RED, GL_UNSIGNED_BYTE, static_cast<GLsizei>(n), r.data());
         for (std::size_t i = 0; i < n; ++i) depth[i] = r[i] / 255.0f;
     } else {
-        glGetTextureSubImage(g.depth.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+        gl::getTextureSubImage(g.depth.id(), 0, 0, 0, layer, g.size(), g.size(), 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                              static_cast<GLsizei>(n * sizeof(float)), depth.data());
     }
     return depth;
@@ -106,33 +107,33 @@ ImageRGBA8 frameView(TechniqueHost& host, const FrameInfo& frame, const LightVie
                      const char* fragmentFile, std::vector<float>* values = nullptr) {
     const glm::ivec2 size = frame.viewport;
     gl::Texture colour(GL_TEXTURE_2D), depth(GL_TEXTURE_2D), measure(GL_TEXTURE_2D);
-    glTextureStorage2D(colour.id(), 1, GL_RGBA8, size.x, size.y);
-    glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT24, size.x, size.y);
-    glTextureStorage2D(measure.id(), 1, GL_R32F, size.x, size.y);
+    gl::textureStorage2D(colour.id(), 1, GL_RGBA8, size.x, size.y);
+    gl::textureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT24, size.x, size.y);
+    gl::textureStorage2D(measure.id(), 1, GL_R32F, size.x, size.y);
     gl::Framebuffer fbo;
-    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
-    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT1, measure.id(), 0);
-    glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+    gl::namedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
+    gl::namedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT1, measure.id(), 0);
+    gl::namedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(fbo.id(), values ? 2 : 1, buffers);
+    gl::namedFramebufferDrawBuffers(fbo.id(), values ? 2 : 1, buffers);
     gl::checkFramebuffer(fbo, "frame view framebuffer");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
     glViewport(0, 0, size.x, size.y);
     host.apply(gl::RenderState{});
     const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f}, none[4] = {-1.0f, -1.0f, -1.0f, -1.0f}, one = 1.0f;
-    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, background);
-    if (values) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, none);
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+    gl::clearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, background);
+    if (values) gl::clearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, none);
+    gl::clearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
     res.block.upload(p, res.arrays[p.array], view.light, res.translucent);
     const int cascades = static_cast<int>(p.cameras().size());
     host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, fragmentFile}},
                                                   FrameViewVariant{p.cube ? 1 : cascades, p.cube}.defines()}));
     ImageRGBA8 image{size.x, size.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size.x) * size.y * 4)};
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(colour.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());
+    gl::getTextureImage(colour.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());
     if (values) {
         values->assign(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y), -1.0f);
-        glGetTextureImage(measure.id(), 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(values->size() * sizeof(float)), values->data());
+        gl::getTextureImage(measure.id(), 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(values->size() * sizeof(float)), values->data());
     }
     // GL's rows go bottom to top; images top to bottom.
     const std::size_t row = static_cast<std::size_t>(size.x) * 4;

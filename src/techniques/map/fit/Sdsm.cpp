@@ -4,6 +4,7 @@
 #include "techniques/map/passes/CasterDraw.h"
 
 #include "core/LightCamera.h"
+#include "gl/Calls.h"
 #include "shadowlab_shared.h"
 
 #include <algorithm>
@@ -61,16 +62,16 @@ void SampleBounds::draw(TechniqueHost& host, const FrameInfo& frame, const glm::
         for (int w = 0; w < windows; ++w) {
             for (std::vector<gl::Texture>* corner : {&targets.lo, &targets.hi}) {
                 gl::Texture& t = corner->emplace_back(GL_TEXTURE_2D);
-                glTextureStorage2D(t.id(), 1, GL_RGBA32F, blocks.x, blocks.y);
+                gl::textureStorage2D(t.id(), 1, GL_RGBA32F, blocks.x, blocks.y);
             }
             // Window w's lowest corners at location 2w, its highest at 2w + 1.
             const auto lo = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + 2 * w);
-            glNamedFramebufferTexture(targets.fbo.id(), lo, targets.lo.back().id(), 0);
-            glNamedFramebufferTexture(targets.fbo.id(), lo + 1, targets.hi.back().id(), 0);
+            gl::namedFramebufferTexture(targets.fbo.id(), lo, targets.lo.back().id(), 0);
+            gl::namedFramebufferTexture(targets.fbo.id(), lo + 1, targets.hi.back().id(), 0);
             buffers.push_back(lo);
             buffers.push_back(lo + 1);
         }
-        glNamedFramebufferDrawBuffers(targets.fbo.id(), static_cast<GLsizei>(buffers.size()), buffers.data());
+        gl::namedFramebufferDrawBuffers(targets.fbo.id(), static_cast<GLsizei>(buffers.size()), buffers.data());
         gl::checkFramebuffer(targets.fbo, "sdsm reduction framebuffer");
     }
     glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo.id());
@@ -87,8 +88,8 @@ void SampleBounds::draw(TechniqueHost& host, const FrameInfo& frame, const glm::
     clipFromWindow[2][2] = 2.0f;
     clipFromWindow[3] = glm::vec4(-1.0f, -1.0f, -1.0f, 1.0f);
     const glm::mat4 lightFromWindow = lightFromWorld * glm::inverse(frame.clipFromWorld) * clipFromWindow;
-    glProgramUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, &lightFromWindow[0][0]);
-    glProgramUniform2i(program.id(), 2, size_.x, size_.y);
+    gl::programUniformMatrix4fv(program.id(), 0, 1, GL_FALSE, &lightFromWindow[0][0]);
+    gl::programUniform2i(program.id(), 2, size_.x, size_.y);
     if (!sampler_) {
         // Nearest; the reduction gathers 2x2 texels: past the frame's edge, the edge.
         sampler_ = gl::Sampler();
@@ -97,17 +98,17 @@ void SampleBounds::draw(TechniqueHost& host, const FrameInfo& frame, const glm::
         glSamplerParameteri(sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glSamplerParameteri(sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, host.frameDepth().id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, host.frameDepth().id());
     glBindSampler(SL_UNIT_SHADOW_FIRST, sampler_.id());
     if (from.fit) {
-        glProgramUniform1i(program.id(), 3, from.firstSlice);
-        glProgramUniform1i(program.id(), 4, from.sliceCount);
+        gl::programUniform1i(program.id(), 3, from.firstSlice);
+        gl::programUniform1i(program.id(), 4, from.sliceCount);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, from.fit->id());
     } else {
-        glProgramUniform2fv(program.id(), 3, windows, &from.depths[0][0]);
+        gl::programUniform2fv(program.id(), 3, windows, &from.depths[0][0]);
     }
     host.drawFullscreenTriangle();
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
     glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
 }
 
@@ -129,9 +130,9 @@ void SampleBounds::uploadBoxes(const FrameInfo& frame, const std::vector<Bounds>
     if (!casters_ || castersBytes_ < bytes) {
         casters_ = gl::Buffer();
         castersBytes_ = std::max<GLsizeiptr>(bytes, 64 * static_cast<GLsizeiptr>(sizeof(glm::vec4)));
-        glNamedBufferStorage(casters_.id(), castersBytes_, nullptr, GL_DYNAMIC_STORAGE_BIT);
+        gl::namedBufferStorage(casters_.id(), castersBytes_, nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
-    glNamedBufferSubData(casters_.id(), 0, bytes, boxes.data());
+    gl::namedBufferSubData(casters_.id(), 0, bytes, boxes.data());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_CASTERS, casters_.id());
 }
 
@@ -140,20 +141,20 @@ namespace {
 // The fit's settings both of shadow_map_sdsm_fit.comp's uses take
 // (locations 0 and 4 to 7, and 8 to 13 when warped).
 void setFitUniforms(GLuint id, const GpuFitInput& in) {
-    glProgramUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.lightView[0][0]);
-    glProgramUniform1f(id, 4, in.diagonal);
-    glProgramUniform1f(id, 5, in.size);
-    glProgramUniform1f(id, 6, in.padding);
-    glProgramUniform1i(id, 7, static_cast<GLint>(in.casters.size()));
+    gl::programUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.lightView[0][0]);
+    gl::programUniform1f(id, 4, in.diagonal);
+    gl::programUniform1f(id, 5, in.size);
+    gl::programUniform1f(id, 6, in.padding);
+    gl::programUniform1i(id, 7, static_cast<GLint>(in.casters.size()));
     if (in.warped) {
         // The samples' box into the turned view, the view back to the world (as the CPU inverts it), the warp.
         const glm::mat4 turnedFromSamples = in.lightView * glm::inverse(in.samplesView), worldFromTurned = glm::inverse(in.lightView);
-        glProgramUniformMatrix4fv(id, 8, 1, GL_FALSE, &worldFromTurned[0][0]);
-        glProgramUniformMatrix4fv(id, 9, 1, GL_FALSE, &turnedFromSamples[0][0]);
-        glProgramUniform3fv(id, 10, 1, &in.eye.x);
-        glProgramUniform3fv(id, 11, 1, &in.forward.x);
-        glProgramUniform1f(id, 12, in.warpNear);
-        glProgramUniform1f(id, 13, in.sinGamma);
+        gl::programUniformMatrix4fv(id, 8, 1, GL_FALSE, &worldFromTurned[0][0]);
+        gl::programUniformMatrix4fv(id, 9, 1, GL_FALSE, &turnedFromSamples[0][0]);
+        gl::programUniform3fv(id, 10, 1, &in.eye.x);
+        gl::programUniform3fv(id, 11, 1, &in.forward.x);
+        gl::programUniform1f(id, 12, in.warpNear);
+        gl::programUniform1f(id, 13, in.sinGamma);
     }
 }
 
@@ -175,46 +176,46 @@ void SampleBounds::fitOnGpu(TechniqueHost& host, const FrameInfo& frame, const G
                  : host.program({{{GL_COMPUTE_SHADER, "shadow_map_sdsm_fit.comp"}}, fitDefines(in, false)});
     program.use();
     const GLuint id = program.id();
-    glProgramUniform2i(id, 1, one_.blocks.x, one_.blocks.y);
+    gl::programUniform2i(id, 1, one_.blocks.x, one_.blocks.y);
     const glm::vec3 lo = boxed.empty() ? glm::vec3(1.0f) : boxed.lo, hi = boxed.empty() ? glm::vec3(-1.0f) : boxed.hi;
-    glProgramUniform3fv(id, 2, 1, &lo.x);
-    glProgramUniform3fv(id, 3, 1, &hi.x);
+    gl::programUniform3fv(id, 2, 1, &lo.x);
+    gl::programUniform3fv(id, 3, 1, &hi.x);
     if (cascades) {
-        glProgramUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.samplesView[0][0]);
-        glProgramUniform1f(id, 4, in.diagonal);
-        glProgramUniform1f(id, 5, in.size);
-        glProgramUniform1f(id, 6, in.padding);
-        glProgramUniform1i(id, 7, in.cascades);
-        glProgramUniform4fv(id, 8, 1, &in.camera.x);
-        glProgramUniform3fv(id, 9, 1, &in.eye.x);
-        glProgramUniform3fv(id, 10, 1, &in.forward.x);
-        glProgramUniform3fv(id, 11, 1, &in.right.x);
-        glProgramUniform3fv(id, 12, 1, &in.up.x);
-        glProgramUniform1f(id, 13, in.reach);
-        glProgramUniform1f(id, 14, in.lambda);
-        glProgramUniform3fv(id, 15, 1, &in.scene.lo.x);
-        glProgramUniform3fv(id, 16, 1, &in.scene.hi.x);
-        if (!in.given.empty()) glProgramUniform1fv(id, 17, static_cast<GLsizei>(in.given.size()), in.given.data());
-        glProgramUniform1i(id, 24, static_cast<GLint>(in.given.size()));
-        glProgramUniform2f(id, 25, in.splitRange.x, in.splitRange.y);
-        if (in.stabilize) glProgramUniform4fv(id, 28, 1, &in.receiversWindow.x);
+        gl::programUniformMatrix4fv(id, 0, 1, GL_FALSE, &in.samplesView[0][0]);
+        gl::programUniform1f(id, 4, in.diagonal);
+        gl::programUniform1f(id, 5, in.size);
+        gl::programUniform1f(id, 6, in.padding);
+        gl::programUniform1i(id, 7, in.cascades);
+        gl::programUniform4fv(id, 8, 1, &in.camera.x);
+        gl::programUniform3fv(id, 9, 1, &in.eye.x);
+        gl::programUniform3fv(id, 10, 1, &in.forward.x);
+        gl::programUniform3fv(id, 11, 1, &in.right.x);
+        gl::programUniform3fv(id, 12, 1, &in.up.x);
+        gl::programUniform1f(id, 13, in.reach);
+        gl::programUniform1f(id, 14, in.lambda);
+        gl::programUniform3fv(id, 15, 1, &in.scene.lo.x);
+        gl::programUniform3fv(id, 16, 1, &in.scene.hi.x);
+        if (!in.given.empty()) gl::programUniform1fv(id, 17, static_cast<GLsizei>(in.given.size()), in.given.data());
+        gl::programUniform1i(id, 24, static_cast<GLint>(in.given.size()));
+        gl::programUniform2f(id, 25, in.splitRange.x, in.splitRange.y);
+        if (in.stabilize) gl::programUniform4fv(id, 28, 1, &in.receiversWindow.x);
         if (!in.stabilize) {
-            glProgramUniformMatrix4fv(id, 26, 1, GL_FALSE, &frame.clipFromView[0][0]);
-            glProgramUniform1f(id, 27, in.blend);
+            gl::programUniformMatrix4fv(id, 26, 1, GL_FALSE, &frame.clipFromView[0][0]);
+            gl::programUniform1f(id, 27, in.blend);
         }
     } else {
         uploadBoxes(frame, in.casters, false);
         setFitUniforms(id, in);
     }
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, one_.lo.front().id());
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, one_.hi.front().id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, one_.lo.front().id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, one_.hi.front().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, out.id());
-    glDispatchCompute(1, 1, 1);
+    gl::dispatchCompute(1, 1, 1);
     // The block takes the fit by a buffer copy (MapBlock::upload), the
     // slices' reduction its windows; the next frame's pass reads the depths it keeps there.
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, 0);
+    gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, 0);
     if (cascades && !in.stabilize) fitSlices(host, frame, in, out);
 }
 
@@ -226,24 +227,24 @@ void SampleBounds::fitSlices(TechniqueHost& host, const FrameInfo& frame, const 
     const GLuint id = program.id();
     setFitUniforms(id, in);
     const glm::mat4 samplesFromClip = in.samplesView * glm::inverse(frame.clipFromWorld);
-    glProgramUniformMatrix4fv(id, 15, 1, GL_FALSE, &samplesFromClip[0][0]);
-    glProgramUniform1i(id, 16, static_cast<GLint>(boxed_.size()));
-    glProgramUniformMatrix4fv(id, 17, 1, GL_FALSE, &in.samplesView[0][0]);
+    gl::programUniformMatrix4fv(id, 15, 1, GL_FALSE, &samplesFromClip[0][0]);
+    gl::programUniform1i(id, 16, static_cast<GLint>(boxed_.size()));
+    gl::programUniformMatrix4fv(id, 17, 1, GL_FALSE, &in.samplesView[0][0]);
     for (int first = 0; first < in.cascades; first += kSlicesAPass) {
         draw(host, frame, in.samplesView, Windows{{}, &out, first, in.cascades}, slices_);
         program.use();
-        glProgramUniform2i(id, 1, slices_.blocks.x, slices_.blocks.y);
+        gl::programUniform2i(id, 1, slices_.blocks.x, slices_.blocks.y);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SL_STORAGE_SDSM_FIT, out.id());
         for (int w = 0; w < kSlicesAPass && first + w < in.cascades; ++w) {
-            glProgramUniform1i(id, 14, first + w);
-            glBindTextureUnit(SL_UNIT_SHADOW_FIRST, slices_.lo[static_cast<std::size_t>(w)].id());
-            glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, slices_.hi[static_cast<std::size_t>(w)].id());
-            glDispatchCompute(1, 1, 1);
+            gl::programUniform1i(id, 14, first + w);
+            gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, slices_.lo[static_cast<std::size_t>(w)].id());
+            gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, slices_.hi[static_cast<std::size_t>(w)].id());
+            gl::dispatchCompute(1, 1, 1);
         }
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        gl::memoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     }
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, 0);
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, 0);
 }
 
 void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& lightFromWorld) const {
@@ -257,7 +258,7 @@ void SampleBounds::addBoxed(Bounds& b, const FrameInfo& frame, const glm::mat4& 
 
 std::vector<glm::mat4> readFittedClips(const gl::Buffer& fit, std::size_t cascades) {
     SdsmFit f;
-    glGetNamedBufferSubData(fit.id(), 0, sizeof f, &f);
+    gl::getNamedBufferSubData(fit.id(), 0, sizeof f, &f);
     if (cascades <= 1) return {f.clipFromWorld};
     return {f.cascadeClip, f.cascadeClip + std::min<std::size_t>(cascades, SL_MAP_MAX_CASCADES)};
 }
@@ -270,7 +271,7 @@ gl::Buffer& GpuFit::buffer() {
     if (!fit_) {
         fit_ = gl::Buffer();
         const SdsmFit zero{};
-        glNamedBufferStorage(fit_.id(), sizeof zero, &zero, 0);
+        gl::namedBufferStorage(fit_.id(), sizeof zero, &zero, 0);
     }
     return fit_;
 }
@@ -292,10 +293,10 @@ void GpuFit::readSeenFarLater() {
     if (!copy_) {
         copy_ = gl::Buffer();
         const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
-        glNamedBufferStorage(copy_.id(), sizeof(float), nullptr, flags);
-        mapped_ = static_cast<const float*>(glMapNamedBufferRange(copy_.id(), 0, sizeof(float), flags));
+        gl::namedBufferStorage(copy_.id(), sizeof(float), nullptr, flags);
+        mapped_ = static_cast<const float*>(gl::mapNamedBufferRange(copy_.id(), 0, sizeof(float), flags));
     }
-    glCopyNamedBufferSubData(buffer().id(), copy_.id(), offsetof(SdsmFit, seenFar), 0, sizeof(float));
+    gl::copyNamedBufferSubData(buffer().id(), copy_.id(), offsetof(SdsmFit, seenFar), 0, sizeof(float));
     fence_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
 }
 

@@ -1,6 +1,7 @@
 // Technique "map": the shadow passes' floors (floors/Floors.h).
 #include "techniques/map/floors/Floors.h"
 
+#include "gl/Calls.h"
 #include "techniques/map/Variants.h"
 #include "techniques/map/fit/Cameras.h"
 #include "techniques/map/passes/CasterDraw.h"
@@ -11,12 +12,12 @@ namespace {
 
 // As drawLookup reads a floor's map: nearest, no comparison, depth 1 (lit) outside.
 void nearestWithBorder(const gl::Texture& t) {
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    gl::textureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl::textureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl::textureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    gl::textureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
     const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glTextureParameterfv(t.id(), GL_TEXTURE_BORDER_COLOR, white);
+    gl::textureParameterfv(t.id(), GL_TEXTURE_BORDER_COLOR, white);
 }
 
 } // namespace
@@ -24,11 +25,11 @@ void nearestWithBorder(const gl::Texture& t) {
 void MapFloors::ensureTarget(const MapArray& g) {
     if (!target_ || size_ != g.size() || format_ != g.format()) {
         target_ = gl::Texture(GL_TEXTURE_2D);
-        glTextureStorage2D(target_.id(), 1, depthFormat(g.format()), g.size(), g.size());
+        gl::textureStorage2D(target_.id(), 1, depthFormat(g.format()), g.size(), g.size());
         nearestWithBorder(target_);
         fbo_ = gl::Framebuffer();
-        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, target_.id(), 0);
-        glNamedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
+        gl::namedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, target_.id(), 0);
+        gl::namedFramebufferDrawBuffer(fbo_.id(), GL_NONE);
         size_ = g.size();
         format_ = g.format();
     }
@@ -37,10 +38,10 @@ void MapFloors::ensureTarget(const MapArray& g) {
 void MapFloors::ensureCube(const MapArray& g) {
     if (!cube_ || cubeSize_ != g.size() || cubeFormat_ != g.format()) {
         cube_ = gl::Texture(GL_TEXTURE_CUBE_MAP);
-        glTextureStorage2D(cube_.id(), 1, depthFormat(g.format()), g.size(), g.size());
+        gl::textureStorage2D(cube_.id(), 1, depthFormat(g.format()), g.size(), g.size());
         nearestWithBorder(cube_);
         cubeFbo_ = gl::Framebuffer();
-        glNamedFramebufferDrawBuffer(cubeFbo_.id(), GL_NONE);
+        gl::namedFramebufferDrawBuffer(cubeFbo_.id(), GL_NONE);
         cubeSize_ = g.size();
         cubeFormat_ = g.format();
     }
@@ -62,9 +63,9 @@ gl::RenderState MapFloors::clear(TechniqueHost& host, const gl::Framebuffer& fbo
     host.apply(state);
     const float one = 1.0f;
     if (!part) {
-        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+        gl::clearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
     } else if (!part->empty()) {
-        glClearTexSubImage(target_.id(), 0, part->x0, part->y0, 0, part->x1 - part->x0, part->y1 - part->y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+        gl::clearTexSubImage(target_.id(), 0, part->x0, part->y0, 0, part->x1 - part->x0, part->y1 - part->y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
     }
     state.noColor();
     state.depthClamp = depthClamp;
@@ -102,31 +103,31 @@ void MapFloors::drawLookup(TechniqueHost& host, const FrameInfo& frame, const st
     if (!viewFbo_ || viewSize_ != frame.viewport) {
         viewSize_ = frame.viewport;
         viewColor_ = gl::Texture(GL_TEXTURE_2D);
-        glTextureStorage2D(viewColor_.id(), 1, GL_RGBA8, viewSize_.x, viewSize_.y);
+        gl::textureStorage2D(viewColor_.id(), 1, GL_RGBA8, viewSize_.x, viewSize_.y);
         viewDepth_ = gl::Texture(GL_TEXTURE_2D);
-        glTextureStorage2D(viewDepth_.id(), 1, GL_DEPTH_COMPONENT32F, viewSize_.x, viewSize_.y);
+        gl::textureStorage2D(viewDepth_.id(), 1, GL_DEPTH_COMPONENT32F, viewSize_.x, viewSize_.y);
         viewFbo_ = gl::Framebuffer();
-        glNamedFramebufferTexture(viewFbo_.id(), GL_COLOR_ATTACHMENT0, viewColor_.id(), 0);
-        glNamedFramebufferTexture(viewFbo_.id(), GL_DEPTH_ATTACHMENT, viewDepth_.id(), 0);
+        gl::namedFramebufferTexture(viewFbo_.id(), GL_COLOR_ATTACHMENT0, viewColor_.id(), 0);
+        gl::namedFramebufferTexture(viewFbo_.id(), GL_DEPTH_ATTACHMENT, viewDepth_.id(), 0);
         gl::checkFramebuffer(viewFbo_, "lookup floor framebuffer");
     }
     glBindFramebuffer(GL_FRAMEBUFFER, viewFbo_.id());
     glViewport(0, 0, viewSize_.x, viewSize_.y);
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, cube ? cube_.id() : target_.id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, cube ? cube_.id() : target_.id());
     glBindSampler(SL_UNIT_SHADOW_FIRST, 0);
     for (const bool fetch : {false, true}) {
         const auto part = host.timeScope(fetch ? "fetch" : "bare");
         host.apply(gl::RenderState{});
         const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f}, one = 1.0f;
-        glClearNamedFramebufferfv(viewFbo_.id(), GL_COLOR, 0, zero);
-        glClearNamedFramebufferfv(viewFbo_.id(), GL_DEPTH, 0, &one);
+        gl::clearNamedFramebufferfv(viewFbo_.id(), GL_COLOR, 0, zero);
+        gl::clearNamedFramebufferfv(viewFbo_.id(), GL_DEPTH, 0, &one);
         const gl::Program& program = host.program(
             {{{GL_VERTEX_SHADER, "shadow_map_lookup_floor.vert"}, {GL_FRAGMENT_SHADER, "shadow_map_lookup_floor.frag"}},
              LookupFloorVariant{fetch, cube}.defines()});
-        if (cube) glProgramUniform3fv(program.id(), 0, 1, &(*cubeCentre)[0]);
+        if (cube) gl::programUniform3fv(program.id(), 0, 1, &(*cubeCentre)[0]);
         host.drawItems(ItemFilter::Opaque, program);
     }
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, 0);
 }
 
 void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& frame, const MapArray& g, const MapLight& p,
@@ -142,7 +143,7 @@ void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& 
             // The faces the light's pass draws, as it does (the lookup floor
             // reads what the others held: its cost is the same).
             if (!used[static_cast<std::size_t>(f)]) continue;
-            glNamedFramebufferTextureLayer(cubeFbo_.id(), GL_DEPTH_ATTACHMENT, cube_.id(), 0, f);
+            gl::namedFramebufferTextureLayer(cubeFbo_.id(), GL_DEPTH_ATTACHMENT, cube_.id(), 0, f);
             const gl::RenderState state = clear(host, cubeFbo_, false);
             // The bare vertex shader reads map.lightClipFromWorld: this face's camera.
             block.writeWithLightClip(p.cubeCamera.faceClipFromWorld[static_cast<std::size_t>(f)]);

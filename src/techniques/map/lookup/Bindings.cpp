@@ -4,6 +4,7 @@
 #include "techniques/map/options/Filters.h"
 #include "techniques/map/options/Settings.h"
 
+#include "gl/Calls.h"
 #include "shadowlab_shared.h"
 
 namespace shadowlab::map {
@@ -29,9 +30,9 @@ gl::Sampler makeSampler(GLenum minFilter, GLenum magFilter, bool compare, GLenum
 // The translucent casters' transmittance and nearest depth, two units up.
 void bindTransmittance(const MapArray& g, const MapSamplers& samplers, bool translucent) {
     if (!translucent || !g.transmit) return;
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 2, g.transmit.id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 2, g.transmit.id());
     glBindSampler(SL_UNIT_SHADOW_FIRST + 2, samplers.plainNearest.id());  // outside the map: the border, white
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 3, g.transmitDepth.id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 3, g.transmitDepth.id());
     glBindSampler(SL_UNIT_SHADOW_FIRST + 3, samplers.plainNearest.id());  // and depth 1
 }
 
@@ -39,20 +40,20 @@ void bindTransmittance(const MapArray& g, const MapSamplers& samplers, bool tran
 // depth array on the next unit through a sampler without comparison.
 void bindRawDepth(const MapLight& p, const MapArray& g, const MapSamplers& samplers) {
     if (!filterInfo(p.options.filter).rawDepth || isPacked(g.format())) return;
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, p.layerView ? p.layerView.id() : g.depth.id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, p.layerView ? p.layerView.id() : g.depth.id());
     glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
 }
 
 // Filters read across face edges (RenderState::seamlessCubeMaps; the test with a plane over the seams).
-void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool plain) {
+void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, DepthTaps taps) {
     const bool packed = isPacked(g.format());
-    glBindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : p.layerView ? p.layerView.id() : g.depth.id());
-    const bool linear = filterInfo(p.options.filter).linearCube;
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : p.layerView ? p.layerView.id() : g.depth.id());
+    const bool linear = taps == DepthTaps::Linear;
     // A reversed window depth (cubeWindowDepth): lit where the receiver's is the greater.
     const bool reversed = cubeWindowDepth(p.options);
     const gl::Sampler& compare = linear ? (reversed ? samplers.compareLinearGreater : samplers.compareLinear)
                                         : (reversed ? samplers.compareNearestGreater : samplers.compareNearest);
-    glBindSampler(SL_UNIT_SHADOW_FIRST, packed || plain ? samplers.plainNearest.id() : compare.id());
+    glBindSampler(SL_UNIT_SHADOW_FIRST, packed || taps == DepthTaps::Plain ? samplers.plainNearest.id() : compare.id());
     bindRawDepth(p, g, samplers);
     bindTransmittance(g, samplers, translucent);
 }
@@ -78,28 +79,28 @@ void MapSamplers::create() {
     }
 }
 
-void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool bilinearGrid, bool plain) {
+void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, DepthTaps taps) {
     if (p.cube) {
-        bindCube(p, g, samplers, translucent, plain);
+        bindCube(p, g, samplers, translucent, taps);
         return;
     }
     if (g.hasMoments() && !g.storesMoments()) {
         // The light pass gathers the depth and makes the moments (momentsFromDepth);
         // a gather ignores the filter, and takes the moments' edge.
-        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
+        gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, g.depth.id());
         glBindSampler(SL_UNIT_SHADOW_FIRST, samplers.momentLinear.id());
     } else if (g.hasMoments()) {
-        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.moments.id());
+        gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, g.moments.id());
         glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? samplers.momentLinearMip.id() : samplers.momentLinear.id());
     } else if (isPacked(g.format())) {
-        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
+        gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, g.packed.id());
         glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
     } else {
         // One 2D map: a 2D view of its layer (MapSettings: layerView).
-        glBindTextureUnit(SL_UNIT_SHADOW_FIRST, p.layerView ? p.layerView.id() : g.depth.id());
+        gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, p.layerView ? p.layerView.id() : g.depth.id());
         // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
-        const bool linear = filterInfo(p.options.filter).linear2D(bilinearGrid);
-        glBindSampler(SL_UNIT_SHADOW_FIRST, plain        ? samplers.plainNearest.id()
+        const bool linear = taps == DepthTaps::Linear;
+        glBindSampler(SL_UNIT_SHADOW_FIRST, taps == DepthTaps::Plain ? samplers.plainNearest.id()
                                             : g.mipmaps() ? (linear ? samplers.compareLinearMip.id() : samplers.compareNearestMip.id())
                                                           : (linear ? samplers.compareLinear.id() : samplers.compareNearest.id()));
         bindRawDepth(p, g, samplers);

@@ -4,6 +4,7 @@
 // takes, PCSS's raw depths beside it, the translucent casters' layers.
 #include "gl/Object.h"
 #include "techniques/map/Light.h"
+#include "techniques/map/options/Settings.h"
 #include "techniques/map/passes/Arrays.h"
 
 namespace shadowlab::map {
@@ -23,6 +24,6 @@ struct MapSamplers {
 /// the frame's arrays hold transmittance layers; `bilinearGrid`: the grid
 /// filter takes bilinear compares (MapSettings: bilinearGrid).
 /// `plain`: the depths through a sampler without comparison (MapSettings: plainFetch).
-void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, bool bilinearGrid, bool plain);
+void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, DepthTaps taps);
 
 } // namespace shadowlab::map

@@ -1,10 +1,14 @@
-// Technique "map": its options table (include/shadowlab/MapOptions.h) and
-// the combinations of options it refuses, with the reason.
-#include "techniques/map/options/Settings.h"
+// Technique "map": its options table (include/shadowlab/MapOptions.h), the
+// combinations of options it refuses, with the reason, and what the
+// registry asks of them (options/OptionTable.h).
+#include "techniques/map/options/OptionTable.h"
 
 #include "techniques/map/options/Filters.h"
+#include "techniques/map/options/Settings.h"
 
 #include <shadowlab/Text.h>
+
+#include <algorithm>
 
 namespace shadowlab {
 
@@ -100,7 +104,7 @@ namespace map {
 std::string unsupported(const Light& light) {
     const MapOptions& o = light.shadow.get<MapOptions>();
     if (o.size > 0 && o.size < 16) return "map: size: expected 0 (follow the frame) or 16..16384 texels, got " + std::to_string(o.size);
-    if (isCube(light)) {
+    if (isCube(o, light)) {
         if (o.filter == MapFilter::Dither4)
             return std::string("map: filter \"dither4\" is for 2D maps (directional and spot lights); a point light's cube takes none, hardware, grid, poisson or pcf20");
         if (o.mipmaps) return std::string("map: mipmaps are for 2D maps (directional and spot lights), not a point light's cube");
@@ -109,7 +113,7 @@ std::string unsupported(const Light& light) {
     } else if (o.filter == MapFilter::Pcf20 && o.preset == MapPreset::Default) {
         return std::string("map: filter \"pcf20\" (the lecture's 20 directions) is for point lights' cube maps");
     }
-    if (o.outside == MapOutside::Repeat && (isCube(light) || o.atlas || o.cascades > 1))
+    if (o.outside == MapOutside::Repeat && (isCube(o, light) || o.atlas || o.cascades > 1))
         return std::string("map: outside \"repeat\" is for one 2D map (a directional or spot light without cascades or the atlas); use outside \"lit\"");
     if (o.atlas) {
         if (light.type == LightType::Directional)
@@ -122,9 +126,9 @@ std::string unsupported(const Light& light) {
         if (o.mipmaps) return std::string("map: mipmaps: atlas tiles have none; use mipmaps false with atlas");
     }
     const FilterInfo& filter = filterInfo(o.filter);
-    if (isCube(light) && !filter.forCube)
+    if (isCube(o, light) && !filter.forCube)
         return "map: filter \"" + std::string(filter.name) + "\" is for 2D maps (directional and spot lights), not a point light's cube";
-    if (!isCube(light) && !filter.for2D && o.preset == MapPreset::Default)
+    if (!isCube(o, light) && !filter.for2D && o.preset == MapPreset::Default)
         return "map: filter \"" + std::string(filter.name) + "\" is for point lights' cube maps";
     if (o.representation != MapRepresentation::Depth) {
         if (isPacked(o.format))
@@ -166,6 +170,26 @@ std::string unsupported(const Light& light) {
         return std::string("map: cascadeSplits is given but cascades is 1");
     }
     return std::string();
+}
+
+void resolveOptions(std::any& options, const std::vector<std::string>& written, const Light& light) {
+    MapOptions o = std::any_cast<const MapOptions&>(options);
+    // filter "pcf" (the options table's alias: grid, kernel 8 where none is
+    // written) is the lectures' 64 taps: on a point light's cube, a 4x4x4
+    // grid (Lawonn's), not 8^3. Only the alias gives a grid kernel 8 the
+    // block did not write (the grid's own default is 3).
+    const bool kernelWritten = std::find(written.begin(), written.end(), "kernel") != written.end();
+    if (light.type == LightType::Point && o.filter == MapFilter::Grid && o.kernel == 8 && !kernelWritten) o.kernel = 4;
+    options = withPreset(o, light.type == LightType::Point, written);
+}
+
+ShadowBaseline plainestMap(const Light& light) {
+    const MapOptions& o = light.shadow.get<MapOptions>();
+    MapOptions plainest;
+    plainest.size = o.size;
+    ShadowBaseline baseline{light.shadow, o.cascades != 1 || o.filter != plainest.filter || o.representation != plainest.representation};
+    baseline.shadow.options[MapOptions::kTechnique] = plainest;
+    return baseline;
 }
 
 } // namespace map

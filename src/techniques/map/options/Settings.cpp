@@ -47,11 +47,11 @@ bool bilinearGrid(const MapOptions& o, bool softwareRasterizer) {
     return !isPacked(o.format) && (o.gridTaps == MapGridTaps::Bilinear || (o.gridTaps == MapGridTaps::Auto && !softwareRasterizer));
 }
 
-bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer) {
-    if (!softwareRasterizer || o.format != MapFormat::Depth32F || o.mipmaps) return false;
-    if (!cube && o.representation != MapRepresentation::Depth) return false;
+DepthTaps depthTaps(const MapOptions& o, bool cube, bool softwareRasterizer) {
     const FilterInfo& f = filterInfo(o.filter);
-    return cube ? !f.linearCube : !f.linear2D(bilinearGrid(o, softwareRasterizer));
+    const bool linear = cube ? f.linearCube : f.linear2D(bilinearGrid(o, softwareRasterizer));
+    const bool plain = softwareRasterizer && o.format == MapFormat::Depth32F && !o.mipmaps && (cube || o.representation == MapRepresentation::Depth);
+    return linear ? DepthTaps::Linear : plain ? DepthTaps::Plain : DepthTaps::Nearest;
 }
 
 bool layerView(const MapOptions& o, bool cube, int cascades) {
@@ -228,7 +228,6 @@ MapOptions withPreset(const MapOptions& o, bool pointLight, const std::vector<st
 namespace shadowlab::map {
 
 // The light's options: its preset was resolved when the scene was read (withPreset).
-MapOptions effective(const Light& light) { return light.shadow.get<MapOptions>(); }
 
 // LearnOpenGL's light camera: lookAt((-2, 4, -1), origin, +Y) with
 // ortho(-10, 10, -10, 10, 1, 7.5). Its light position is minus the light's
@@ -300,12 +299,10 @@ std::vector<float> parseSplits(const MapOptions& o, std::string& problem) {
 }
 
 // A point light's map is a cube unless preset lecture-000 asks for 000's single map.
-bool isCube(const Light& light) {
-    return light.type == LightType::Point && light.shadow.get<MapOptions>().preset != MapPreset::Lecture000;
-}
+bool isCube(const MapOptions& o, const Light& light) { return light.type == LightType::Point && o.preset != MapPreset::Lecture000; }
 // Wolberg's 2D settings (the window-sized map, the dither spread).
 bool isLecture2D(const MapOptions& o, const Light& light) {
-    return !isCube(light) && (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000);
+    return !isCube(o, light) && (o.preset == MapPreset::Lecture || o.preset == MapPreset::Lecture000);
 }
 bool usesPresetBias(const MapOptions& o, bool cube) {
     return cube ? o.preset != MapPreset::Default : o.preset == MapPreset::LearnOpenGL;

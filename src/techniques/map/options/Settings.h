@@ -1,7 +1,10 @@
 #pragma once
-// Technique "map": a light's effective options (its preset applied) and
-// what follows from them alone, with no GL: the kind of map it gets, its
-// preset cameras, the filter's footprint and reach, cascadeSplits' values.
+// Technique "map": what follows from a light's options alone, with no GL:
+// the kind of map it gets, its preset cameras, the filter's footprint and
+// reach, cascadeSplits' values. The options are the ones the technique
+// resolved for the frame (MapLight::options: the preset applied as the
+// scene was read, size 0 resolved in ShadowMap::prepare); nothing here
+// reads them from the light.
 #include "core/LightCamera.h"
 
 #include <shadowlab/MapOptions.h>
@@ -13,11 +16,8 @@
 
 namespace shadowlab::map {
 
-/// The light's options (its preset was resolved as the scene was read: withPreset).
-MapOptions effective(const Light& light);
-
 /// A point light's map is a cube unless preset lecture-000 asks for 000's single map.
-bool isCube(const Light& light);
+bool isCube(const MapOptions& o, const Light& light);
 /// Wolberg's 2D settings (the window-sized map, the dither spread).
 bool isLecture2D(const MapOptions& o, const Light& light);
 /// Whether the light pass takes a preset's own bias in place of the normal
@@ -54,14 +54,22 @@ inline bool cubeWindowDepth(const MapOptions& o) { return cubeWindowDepth(o.form
 /// texels for a bilinear fetch, so that the nearest fetches are faster).
 bool bilinearGrid(const MapOptions& o, bool softwareRasterizer);
 
-/// Whether the light pass fetches the nearest stored depth with an
-/// explicit level and compares it in the shader, instead of through a
-/// comparison sampler: on a software rasteriser, for a depth32f map without
-/// mipmaps whose filter takes nearest taps (llvmpipe's comparison sampler
-/// costs more than the fetch and the compare; a GPU keeps the hardware
-/// compare). Gives the same result: a 32-bit float compared the same way,
-/// the same border.
-bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer);
+/// How the light pass's taps read a depth map (2D or cube): the one place
+/// its sampler is chosen (lookup/Bindings.cpp binds it, Variants.h's
+/// MAP_PLAIN_FETCH follows it).
+enum class DepthTaps {
+    Nearest, ///< a comparison sampler, nearest
+    Linear,  ///< a comparison sampler, bilinear (the filter's table: linear2D, linearCube)
+    /// The nearest stored depth fetched with an explicit level and compared
+    /// in the shader: on a software rasteriser, for a depth32f map without
+    /// mipmaps whose filter takes nearest taps (llvmpipe's comparison
+    /// sampler costs more than the fetch and the compare; a GPU keeps the
+    /// hardware compare). Gives the same result: a 32-bit float compared the
+    /// same way, the same border.
+    Plain,
+};
+DepthTaps depthTaps(const MapOptions& o, bool cube, bool softwareRasterizer);
+inline bool plainFetch(const MapOptions& o, bool cube, bool softwareRasterizer) { return depthTaps(o, cube, softwareRasterizer) == DepthTaps::Plain; }
 /// Whether the light pass samples a view of the light's own layers rather
 /// than the depth array (MAP_LAYER_VIEW): one 2D map of depth (not
 /// cascades or moments) as a 2D texture; a cube's six layers as a cube map
@@ -98,9 +106,6 @@ bool earlyOut(const MapOptions& o, bool cube, bool softwareRasterizer);
 /// search's, a straight-edged caster covers every filter tap too (they
 /// compare against the same receiver plane), so the filter is skipped.
 float vogelHullInradius(int n);
-
-/// Why "map" cannot shadow this light with its options, or "" (the registry's unsupported()).
-std::string unsupported(const Light& light);
 
 /// Texels around the fitted region that the filter may read.
 float footprint(const MapOptions& o);

@@ -1,6 +1,7 @@
 // Technique "map": the texture arrays (passes/Arrays.h).
 #include "techniques/map/passes/Arrays.h"
 
+#include "gl/Calls.h"
 #include "techniques/map/options/Settings.h"
 
 #include <shadowlab/Error.h>
@@ -129,23 +130,23 @@ MapArray makeArray(const ArrayKey& key, int layers, std::uint64_t generation) {
     const int levels = key.mipmaps ? 1 + static_cast<int>(std::floor(std::log2(static_cast<double>(size)))) : 1;
     const bool colour = isPacked(key.format) || g.hasMoments();  // the depth array only serves the depth test
     g.depth = gl::Texture(g.target());
-    glTextureStorage3D(g.depth.id(), colour ? 1 : levels, depthFormat(key), size, size,
+    gl::textureStorage3D(g.depth.id(), colour ? 1 : levels, depthFormat(key), size, size,
                        sharedDepthBuffer(key) ? 1 : layers * g.layersPerLight());
     if (isPacked(key.format)) {
         g.packed = gl::Texture(g.target());
-        glTextureStorage3D(g.packed.id(), levels, key.format == MapFormat::R8 ? GL_R8 : GL_RGBA8, size, size, layers * g.layersPerLight());
+        gl::textureStorage3D(g.packed.id(), levels, key.format == MapFormat::R8 ? GL_R8 : GL_RGBA8, size, size, layers * g.layersPerLight());
     }
     if (g.storesMoments()) {
         g.moments = gl::Texture(g.target());
-        glTextureStorage3D(g.moments.id(), levels, momentFormatOf(key), size, size, layers);
+        gl::textureStorage3D(g.moments.id(), levels, momentFormatOf(key), size, size, layers);
         g.blurScratch = gl::Texture(GL_TEXTURE_2D);
-        glTextureStorage2D(g.blurScratch.id(), 1, momentFormatOf(key), size, size);
+        gl::textureStorage2D(g.blurScratch.id(), 1, momentFormatOf(key), size, size);
         g.blurFbo = gl::Framebuffer();
-        glNamedFramebufferTexture(g.blurFbo.id(), GL_COLOR_ATTACHMENT0, g.blurScratch.id(), 0);
-        glNamedFramebufferDrawBuffer(g.blurFbo.id(), GL_COLOR_ATTACHMENT0);
+        gl::namedFramebufferTexture(g.blurFbo.id(), GL_COLOR_ATTACHMENT0, g.blurScratch.id(), 0);
+        gl::namedFramebufferDrawBuffer(g.blurFbo.id(), GL_COLOR_ATTACHMENT0);
         gl::checkFramebuffer(g.blurFbo, "moment blur framebuffer");
         g.momentFbo = gl::Framebuffer();
-        glNamedFramebufferDrawBuffer(g.momentFbo.id(), GL_COLOR_ATTACHMENT0);
+        gl::namedFramebufferDrawBuffer(g.momentFbo.id(), GL_COLOR_ATTACHMENT0);
     }
     return g;
 }
@@ -173,9 +174,9 @@ void MapArrays::addTransmittance() {
     for (MapArray& g : arrays_)
         if (!g.transmit) {
             g.transmit = gl::Texture(g.target());
-            glTextureStorage3D(g.transmit.id(), 1, GL_RGBA8, g.size(), g.size(), g.layers * g.layersPerLight());
+            gl::textureStorage3D(g.transmit.id(), 1, GL_RGBA8, g.size(), g.size(), g.layers * g.layersPerLight());
             g.transmitDepth = gl::Texture(g.target());
-            glTextureStorage3D(g.transmitDepth.id(), 1, GL_R32F, g.size(), g.size(), g.layers * g.layersPerLight());
+            gl::textureStorage3D(g.transmitDepth.id(), 1, GL_R32F, g.size(), g.size(), g.layers * g.layersPerLight());
         }
 }
 

@@ -1,6 +1,7 @@
 // Technique "map": the opaque casters in one batch (passes/CasterBatch.h).
 #include "techniques/map/passes/CasterBatch.h"
 
+#include "gl/Calls.h"
 #include "techniques/map/Cache.h"
 
 #include <cstring>
@@ -43,17 +44,17 @@ void MapCasterBatch::update(const FrameInfo& frame) {
         for (std::uint32_t index : mesh.indices) indices.push_back(base + index);
     }
     vertices_ = gl::Buffer();
-    glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(positions.size(), 1) * sizeof(glm::vec3)),
+    gl::namedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(positions.size(), 1) * sizeof(glm::vec3)),
                          positions.empty() ? nullptr : positions.data(), 0);
     indices_ = gl::Buffer();
-    glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(indices.size(), 1) * sizeof(std::uint32_t)),
+    gl::namedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(indices.size(), 1) * sizeof(std::uint32_t)),
                          indices.empty() ? nullptr : indices.data(), 0);
     vao_ = gl::VertexArray();
-    glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
-    glVertexArrayElementBuffer(vao_.id(), indices_.id());
-    glEnableVertexArrayAttrib(vao_.id(), 0);
-    glVertexArrayAttribFormat(vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao_.id(), 0, 0);
+    gl::vertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
+    gl::vertexArrayElementBuffer(vao_.id(), indices_.id());
+    gl::enableVertexArrayAttrib(vao_.id(), 0);
+    gl::vertexArrayAttribFormat(vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+    gl::vertexArrayAttribBinding(vao_.id(), 0, 0);
     builtFor_ = inputs;
     built_ = true;
 }
@@ -77,7 +78,7 @@ std::size_t MapCasterBatch::draw(const gl::Program& program, const std::vector<s
     if (counts_.empty()) return 0;
     program.use();
     glBindVertexArray(vao_.id());
-    glMultiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(), static_cast<GLsizei>(counts_.size()));
+    gl::multiDrawElements(GL_TRIANGLES, counts_.data(), GL_UNSIGNED_INT, offsets_.data(), static_cast<GLsizei>(counts_.size()));
     glBindVertexArray(0);
     return triangles;
 }

@@ -1,4 +1,5 @@
 // Technique "map": the casters of a depth-only pass by surface (passes/CasterDraw.h).
+#include "gl/Calls.h"
 #include "techniques/map/passes/CasterDraw.h"
 
 #include <algorithm>
@@ -65,6 +66,35 @@ CasterDetail casterDetail(float lodTexels, const CubeCamera& camera, int size, c
     };
 }
 
+namespace {
+
+// The level a depth pass draws item i from, the push that goes with it,
+// and the triangles it has.
+struct ChosenLevel {
+    int level = 0;       ///< 0: the mesh itself; k: host.detailLevels(i)[k - 1]
+    float push = 0.0f;   ///< world units away from the light: the level's error, scaled
+    std::size_t triangles = 0;
+};
+
+// The coarsest level whose error, scaled by the item's largest stretch,
+// is within what `detail` allows for item i (none: the mesh).
+ChosenLevel chooseLevel(TechniqueHost& host, const FrameInfo& frame, const CasterDetail& detail, std::size_t i) {
+    ChosenLevel chosen;
+    const std::size_t mesh = static_cast<std::size_t>(frame.items[i].mesh);
+    chosen.triangles = frame.scene.meshes[mesh].triangleCount();
+    const float allowed = detail ? detail(i) : 0.0f;
+    if (!(allowed > 0.0f)) return chosen;
+    // The levels' errors are the mesh's: scaled by the item's largest stretch.
+    const glm::mat3 m(frame.items[i].worldFromObject);
+    const float scale = std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
+    const std::vector<DetailLevel>& levels = host.detailLevels(i);
+    for (std::size_t k = 0; k < levels.size(); ++k)
+        if (levels[k].error * scale <= allowed) chosen = {static_cast<int>(k + 1), levels[k].error * scale, levels[k].triangles};
+    return chosen;
+}
+
+} // namespace
+
 std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const CasterProgram& program, const CasterFilter& keep,
                              const gl::RenderState& state, const CasterSeenWhole& seenWhole, const CasterDetail& detail,
                              const gl::RenderState* openCasters) {
@@ -91,27 +121,15 @@ std::size_t drawDepthCasters(TechniqueHost& host, const FrameInfo& frame, bool h
     float pushed = 0.0f;
     const auto setPush = [&](float push) {
         if (push == pushed) return;
-        glProgramUniform1f(opaque.id(), kCasterPushLocation, push);
+        gl::programUniform1f(opaque.id(), kCasterPushLocation, push);
         pushed = push;
     };
     // Item i's level (0: its mesh), its push set, its triangles counted.
     const auto level = [&](std::size_t i) -> int {
-        int chosen = 0;
-        float push = 0.0f;
-        const std::size_t mesh = static_cast<std::size_t>(frame.items[i].mesh);
-        std::size_t triangles = frame.scene.meshes[mesh].triangleCount();
-        const float allowed = detail ? detail(i) : 0.0f;
-        if (allowed > 0.0f) {
-            // The levels' errors are the mesh's: scaled by the item's largest stretch.
-            const glm::mat3 m(frame.items[i].worldFromObject);
-            const float scale = std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
-            const std::vector<DetailLevel>& levels = host.detailLevels(i);
-            for (std::size_t k = 0; k < levels.size(); ++k)
-                if (levels[k].error * scale <= allowed) chosen = static_cast<int>(k + 1), push = levels[k].error * scale, triangles = levels[k].triangles;
-        }
-        setPush(push);
-        drawn += triangles;
-        return chosen;
+        const ChosenLevel chosen = chooseLevel(host, frame, detail, i);
+        setPush(chosen.push);
+        drawn += chosen.triangles;
+        return chosen.level;
     };
     // The items `pick` accepts, drawn with `drawState` (applied before the
     // first of them, `state` again after), or the pass's own (nullptr).

@@ -4,6 +4,7 @@
 // touches) or in six; only the texels that held casters or will are cleared.
 #include "techniques/map/passes/CubePass.h"
 
+#include "gl/Calls.h"
 #include "techniques/map/Variants.h"
 #include "techniques/map/fit/Cameras.h"
 #include "techniques/map/options/Settings.h"
@@ -51,9 +52,9 @@ void clearFaces(TechniqueHost& host, const MapArray& g, MapLight& p, const FaceU
         const TexelRect r = p.faceDirty[face].clamped(g.size()).united(use.covered[face]);
         p.faceDirty[face] = use.covered[face];
         if (r.empty()) continue;
-        glClearTexSubImage(g.depth.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
+        gl::clearTexSubImage(g.depth.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
         if (isPacked(g.format()))
-            glClearTexSubImage(g.packed.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_RGBA, GL_FLOAT, one);
+            gl::clearTexSubImage(g.packed.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_RGBA, GL_FLOAT, one);
     }
 }
 
@@ -102,7 +103,7 @@ std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes,
             host, frame, holes, program,
             [&](std::size_t i, const gl::Program& drawing) {
                 if (!p.faceMask(i)) return false;
-                glProgramUniform1ui(drawing.id(), 0, p.faceMask(i));
+                gl::programUniform1ui(drawing.id(), 0, p.faceMask(i));
                 return true;
             },
             state, seenWhole, detail, &open);
@@ -114,8 +115,8 @@ std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes,
     for (int f = 0; f < 6; ++f) {
         if (!use.used[static_cast<std::size_t>(f)]) continue;
         glBindFramebuffer(GL_FRAMEBUFFER, p.faceFbos[static_cast<std::size_t>(f)].id());
-        glProgramUniform1i(program(false).id(), 1, f);
-        if (holes) glProgramUniform1i(program(true).id(), 1, f);
+        gl::programUniform1i(program(false).id(), 1, f);
+        if (holes) gl::programUniform1i(program(true).id(), 1, f);
         drawn += drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state,
                                   seenWhole, detail, &open);
     }

@@ -4,6 +4,7 @@
 // (or depth packed into RGBA8, or moments), a polygon offset against acne.
 #include "techniques/map/passes/Pass2D.h"
 
+#include "gl/Calls.h"
 #include "techniques/map/Variants.h"
 #include "techniques/map/fit/Cameras.h"
 #include "techniques/map/moments/Moments.h"
@@ -23,8 +24,8 @@ namespace {
 void clearLayer(TechniqueHost& host, const MapArray& g, const gl::Framebuffer& fbo) {
     host.apply(gl::RenderState{});
     const float one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, one);
-    if (isPacked(g.format())) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, one);
+    gl::clearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, one);
+    if (isPacked(g.format())) gl::clearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, one);
 }
 
 // The casters' draw state: depth (and the colour the map is, if any), the
@@ -51,7 +52,7 @@ gl::RenderState casterState(const MapArray& g, const MapOptions& o, const LightC
 // neither scissor nor masks touch: a clear of only those texels.
 void clearTexels(const MapArray& g, int layer, const TexelRect& r) {
     const float one = 1.0f;
-    if (!r.empty()) glClearTexSubImage(g.depth.id(), 0, r.x0, r.y0, layer, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+    if (!r.empty()) gl::clearTexSubImage(g.depth.id(), 0, r.x0, r.y0, layer, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
 }
 
 } // namespace
@@ -108,7 +109,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
     if (g.mipmaps()) {
         // Every level from the map: averaged depths or moments (of all layers; each light's pass refreshes them).
         const auto scope = host.timeScope("mipmaps");
-        glGenerateTextureMipmap(packed ? g.packed.id() : g.storesMoments() ? g.moments.id() : g.depth.id());
+        gl::generateTextureMipmap(packed ? g.packed.id() : g.storesMoments() ? g.moments.id() : g.depth.id());
     }
     if (frame.measureFloors) res.floors.draw(host, res.block, frame, g, p);
 }

@@ -1,6 +1,7 @@
 // Technique "map": the framebuffers on each light's layers (passes/Targets.h).
 #include "techniques/map/passes/Targets.h"
 
+#include "gl/Calls.h"
 #include "techniques/map/options/Settings.h"
 
 #include <algorithm>
@@ -13,14 +14,14 @@ namespace {
 // to `fbo`: its depth and the colour the pass writes, if any.
 void attachLayer(gl::Framebuffer& fbo, const MapArray& g, GLuint colour, int layer, const char* what) {
     if (layer < 0) {  // the whole array, layered (gl_Layer picks)
-        glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0);
-        if (colour) glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0);
+        gl::namedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0);
+        if (colour) gl::namedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0);
     } else {
-        glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, sharedDepthBuffer(g.key) ? 0 : layer);
-        if (colour) glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0, layer);
+        gl::namedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, sharedDepthBuffer(g.key) ? 0 : layer);
+        if (colour) gl::namedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, colour, 0, layer);
     }
-    glNamedFramebufferDrawBuffer(fbo.id(), colour ? GL_COLOR_ATTACHMENT0 : GL_NONE);
-    glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
+    gl::namedFramebufferDrawBuffer(fbo.id(), colour ? GL_COLOR_ATTACHMENT0 : GL_NONE);
+    gl::namedFramebufferReadBuffer(fbo.id(), GL_NONE);
     gl::checkFramebuffer(fbo, what);
 }
 

@@ -1,6 +1,7 @@
 // Technique "map": translucent casters' transmittance layers (passes/Translucent.h).
 #include "techniques/map/passes/Translucent.h"
 
+#include "gl/Calls.h"
 #include "techniques/map/Variants.h"
 #include "techniques/map/fit/Cameras.h"
 #include "techniques/map/options/Settings.h"
@@ -18,19 +19,19 @@ namespace {
 // written; transmittances multiply (dst x src), depths keep the least.
 gl::Framebuffer bindTranslucentTarget(TechniqueHost& host, const MapArray& g, int layer, int depthLayer, bool depthClamp, bool reversedDepth) {
     gl::Framebuffer fbo;
-    glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
-    glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
-    glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, depthLayer);
+    gl::namedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, g.transmit.id(), 0, layer);
+    gl::namedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, g.transmitDepth.id(), 0, layer);
+    gl::namedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, g.depth.id(), 0, depthLayer);
     const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
+    gl::namedFramebufferDrawBuffers(fbo.id(), 2, buffers);
     gl::checkFramebuffer(fbo, "translucent casters framebuffer");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
     glViewport(0, 0, g.size(), g.size());
     gl::RenderState state;
     host.apply(state);
     const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, white);
-    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
+    gl::clearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, white);
+    gl::clearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, white);
     state.depthWrite = false;
     state.depthClamp = depthClamp;
     if (reversedDepth) {  // a cube of window depth (cubeWindowDepth): nearer is greater
@@ -71,7 +72,7 @@ void drawCubeTranslucent(TechniqueHost& host, const FrameInfo& frame, const MapA
     for (int f = 0; f < 6; ++f) {
         const int layer = 6 * p.layer + f;
         const gl::Framebuffer fbo = bindTranslucentTarget(host, g, layer, layer, false, cubeWindowDepth(p.options));
-        glProgramUniform1i(program.id(), 1, f);
+        gl::programUniform1i(program.id(), 1, f);
         host.drawItems(ItemFilter::Casters, program, [&](std::size_t i) { return translucentCaster(frame, i) && (p.faceMask(i) & (1u << f)) != 0; });
     }
 }
