@@ -115,6 +115,27 @@ struct RunImages {
     std::vector<ImageRGBA8> errors;
 };
 
+// results.json's rows as Python dicts, each with its run's images
+// ("images": technique, reference; each light's "images": error).
+py::list rowsWithImages(const std::string& results, std::vector<RunImages>& kept) {
+    py::dict all = py::module_::import("json").attr("loads")(results);
+    py::list rows = all["results"];
+    for (std::size_t r = 0; r < kept.size() && r < rows.size(); ++r) {
+        py::dict row = rows[r];
+        py::dict images;
+        images["technique"] = rgba(std::move(kept[r].technique));
+        images["reference"] = rgba(std::move(kept[r].reference));
+        row["images"] = images;
+        py::list lights = row["lights"];
+        for (std::size_t l = 0; l < kept[r].errors.size() && l < lights.size(); ++l) {
+            py::dict light = lights[l], lightImages;
+            lightImages["error"] = rgba(std::move(kept[r].errors[l]));
+            light["images"] = lightImages;
+        }
+    }
+    return rows;
+}
+
 } // namespace
 
 py::list bench(const py::object& scenes, int width, int height, const py::object& vary, const py::dict& overrides, int frames, int warmup,
@@ -185,22 +206,7 @@ py::list bench(const py::object& scenes, int width, int height, const py::object
         if (input) throw InputFailure(pythonNames(failure, options.overrides));
         throw std::runtime_error(pythonNames(failure, options.overrides));
     }
-    py::dict all = py::module_::import("json").attr("loads")(results);
-    py::list rows = all["results"];
-    for (std::size_t r = 0; r < kept.size() && r < rows.size(); ++r) {
-        py::dict row = rows[r];
-        py::dict images;
-        images["technique"] = rgba(std::move(kept[r].technique));
-        images["reference"] = rgba(std::move(kept[r].reference));
-        row["images"] = images;
-        py::list lights = row["lights"];
-        for (std::size_t l = 0; l < kept[r].errors.size() && l < lights.size(); ++l) {
-            py::dict light = lights[l], lightImages;
-            lightImages["error"] = rgba(std::move(kept[r].errors[l]));
-            light["images"] = lightImages;
-        }
-    }
-    return rows;
+    return rowsWithImages(results, kept);
 }
 
 } // namespace shadowlab::python

@@ -2,7 +2,8 @@
 # Installs the Debian packages shadowlab needs to build, test and render
 # (clang and its libFuzzer runtime build the fuzz targets, scripts/fuzz.sh;
 # pybind11 and Python 3's headers, numpy, pytest and matplotlib the Python
-# module and its tests).
+# module and its tests; Universal Ctags the functions' lengths,
+# tests/code/lengths.py).
 # Skips packages that are already installed; uses sudo when not root.
 # Usage: scripts/install-deps.sh [--no-browser]
 #   --no-browser  skip Chromium (only the report screenshot test needs it)
@@ -15,7 +16,7 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev libcli11-dev
   libimgui-dev libembree-dev
   googletest libgtest-dev
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev universal-ctags
   glmark2-data xvfb xauth
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
 )

@@ -4,9 +4,10 @@
 //   colour = globalAmbient*ambient*base
 //          + visibility * light * (diffuse*base*max(N.L,0) + specular*max(N.H,0)^shininess)
 // Variants (ShaderVariant): AMBIENT, LIGHT (0/1: the ambient term, one
-// light's term), LIGHT_LIST (the clustered list's lights), LIGHT_LIST_SHADOWS (some
-// of them with shadows in the shadow atlas, shadow_atlas.glsl), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE, ALPHA_TEST
-// (alphaMode mask: discard under the cutoff),
+// light's term), LIGHT_LIST (the clustered list's lights), LIGHT_LIST_SHADOWS
+// (some of them with shadows: their technique's lookup fills the
+// "@list_shadow" slot), LIGHT_TYPE (SL_LIGHT_*), HAS_BASE_COLOR_TEXTURE,
+// ALPHA_TEST (alphaMode mask: discard under the cutoff),
 // WRITE_SURFACES (world position and geometric normal for the reference),
 // SCREEN_VISIBILITY (visibility from a per-pixel texture: the ray-traced
 // reference), OUTPUT_VISIBILITY (write the visibility term itself, for
@@ -105,7 +106,7 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 // its depth lies in (core/LightTiles.h; src/render/LightList.cpp bins them
 // on the CPU each frame).
 #if LIGHT_LIST_SHADOWS
-#include "shadow_atlas.glsl"
+#include "@list_shadow"
 #endif
 layout(std430) SL_BINDING(SL_STORAGE_LIGHT_LIST) readonly buffer LightList { ListedLight listed[]; };
 layout(std430) SL_BINDING(SL_STORAGE_LIGHT_TILES) readonly buffer LightTiles {
@@ -130,7 +131,7 @@ vec3 listedLightsTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
         vec3 term = lightTermOf(int(l.params.w), l.position.xyz, l.direction.xyz, l.params, l.radiance.rgb, N, V, base, one, L);
 #if LIGHT_LIST_SHADOWS
         if (one && l.shadow.y > 0.0 && draw.baseColor.w > 0.5) {  // receivesShadows (the atlas: spot and point lights)
-            term *= atlasVisibility(l.shadow, l.position.xyz, vWorldPosition, N, L, clamp(dot(N, L), 0.0, 1.0));
+            term *= listedVisibility(l.shadow, l.position.xyz, vWorldPosition, N, L, clamp(dot(N, L), 0.0, 1.0));
         }
 #endif
         if (one) sum += term;

@@ -1,12 +1,13 @@
 // The shadow atlas's lookup (technique map with `atlas`): a light's map is
 // a tile of one depth texture, a point light's cube six tiles, one per
 // face (src/techniques/map/atlas/Atlas.cpp places and draws them). Shared by
-// the light list's loop (lighting.frag, LIGHT_LIST_SHADOWS) and the map
-// technique's own pass for one such light (shadow_map_atlas.glsl).
+// the light list's lookup (shadow_atlas_list.glsl, which fills lighting.frag's
+// "@list_shadow" slot) and the map technique's own pass for one such light
+// (shadow_map_atlas.glsl).
 #ifndef SHADOW_ATLAS_GLSL
 #define SHADOW_ATLAS_GLSL
 
-#include "shadowlab_shared.h"
+#include "shadow_atlas_shared.h"
 
 layout(std430) SL_BINDING(SL_STORAGE_ATLAS_TILES) readonly buffer AtlasTiles { AtlasTile atlasTiles[]; };
 SL_BINDING(SL_UNIT_ATLAS) uniform sampler2D atlasDepth;

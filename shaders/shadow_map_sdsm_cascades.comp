@@ -98,6 +98,90 @@ void frustumBox(float n, float f, out vec3 lo, out vec3 hi) {
     }
 }
 
+// cascadeSplits (core/Cascades.cpp) over the split range's far end:
+// increasing, each slice at least 10^-5 of the range; the last ends at
+// the farther of far and the split range's far end.
+void placeSplits(float near, float far, out float ends[SL_MAP_MAX_CASCADES]) {
+    float splitFar = clamp(far, splitRange.x, splitRange.y);
+    float range = 1e-5 * (splitFar - near);
+    for (int i = 1; i < count; ++i) {
+        float t = float(i) / float(count);
+        float scheme = lambda * near * pow(splitFar / near, t) + (1.0 - lambda) * (near + (splitFar - near) * t);
+        float split = givenCount == count - 1 ? given[i - 1] : scheme;
+        float lowest = (i == 1 ? near : ends[i - 2]) + range;
+        ends[i - 1] = clamp(split, lowest, max(lowest, splitFar - range * float(count - i)));
+    }
+    ends[count - 1] = max(far, splitFar);
+}
+
+#if !SDSM_STABILIZE
+// Each slice's far end, and the window depths whose pixels its samples
+// count: from its near end, or for a slice after the first from where
+// the slice before fades into it over its far blend share
+// (MapCameras: sliceDistances), each way a step of the 24-bit depth
+// wider (a pixel on a split counts for both; map/fit/Sdsm.cpp: depthWindow).
+void sliceWindows(float first, float ends[SL_MAP_MAX_CASCADES]) {
+    const float depthStep = 1.0 / 16777215.0, below1 = 0.99999994;
+    for (int c = 0; c < count; ++c) {
+        fit.cascadeFar[c >> 2][c & 3] = ends[c];
+        float before = c > 0 ? ends[c - 1] : first, start = c > 1 ? ends[c - 2] : 0.0;
+        float from = c == 0 ? first : max(before - blend * (before - start), first);
+        vec2 window = vec2(windowDepthAt(from), windowDepthAt(ends[c]));
+        fit.sliceWindow[c] = vec4(max(window.x - depthStep, 0.0), min(window.y + depthStep, below1), window);
+    }
+}
+#endif
+
+// Stabilised slice c over view depths [n, f], its lookups reading from
+// readFrom: its bounding sphere's box (or the receivers' window where that
+// is narrower), snapped to whole texels, its depth the scene's along the
+// light cut to what its lookups reach (fitCascade, core/Cascades.cpp).
+void fitStabilisedSlice(int c, float n, float f, float readFrom, float k2, vec3 sceneLight, vec3 sceneLightHi) {
+    // The slice's bounding sphere, radius up to 1/64 of a unit.
+    float along = min(0.5 * (f + n) * (1.0 + k2), f);
+    float radius = sqrt((f - along) * (f - along) + k2 * f * f);
+    radius = ceil(radius * 64.0) / 64.0;
+    vec3 sphere = (lightView * vec4(eye + forward * along, 1.0)).xyz;
+    float half_ = radius * size / max(size - 2.0 * padding, 1.0);
+    vec2 halves = vec2(half_), centre = sphere.xy;
+    for (int a = 0; a < 2; ++a)
+        if (receiversWindow[a] > 0.0 && receiversWindow[a] < half_) {
+            halves[a] = receiversWindow[a];
+            centre[a] = receiversWindow[a + 2];
+        }
+    vec2 texels = 2.0 * halves / size;
+    float texel = max(texels.x, texels.y);
+    vec2 snapped = floor(centre / texels + 0.5) * texels;
+    // Depth: the scene's along the light, cut to what the slice's lookups reach, in steps of 1/32 of the box.
+    float from = readFrom > 0.0 ? min(readFrom, n) : n;
+    vec3 wlo, whi;
+    frustumBox(from, f, wlo, whi);
+    wlo = max(wlo, sceneLo);
+    whi = min(whi, sceneHi);
+    vec3 dlo = sceneLight, dhi = sceneLightHi;
+    float depthStep = 0.0625 * half_;
+    if (all(lessThanEqual(wlo, whi)) && depthStep > 0.0) {
+        sdsmBoxThrough(lightView, wlo, whi);
+        dlo.z = max(dlo.z, floor(wlo.z / depthStep) * depthStep);
+        dhi.z = min(dhi.z, ceil(whi.z / depthStep) * depthStep);
+    }
+    float depthPad = 1e-3 * diagonal;
+    float nearPlane = -dhi.z - depthPad, farPlane = -dlo.z + depthPad;
+    mat4 clip = sdsmOrtho(snapped.x - halves.x, snapped.x + halves.x, snapped.y - halves.y, snapped.y + halves.y, nearPlane, farPlane) * lightView;
+    fit.cascadeClip[c] = clip;
+    fit.cascadeShadowFromWorld[c] = kSdsmBias * clip;
+    fit.cascadeFar[c >> 2][c & 3] = f;
+    fit.cascadeTexel[c >> 2][c & 3] = texel;
+    fit.cascadeRange[c] = vec4(nearPlane, farPlane, 0.0, 0.0);
+    if (c == 0) {
+        fit.clipFromWorld = clip;
+        fit.shadowFromWorld = kSdsmBias * clip;
+        fit.texelWorld = texel;
+        fit.nearPlane = nearPlane;
+        fit.farPlane = farPlane;
+    }
+}
+
 void main() {
     vec3 lo, hi;
     mergeBlocks(blocks, lo, hi);
@@ -122,35 +206,12 @@ void main() {
         first = sampled.x;
     }
     fit.seenFar = far;
-    // cascadeSplits (core/LightCamera) over the split range's far end:
-    // increasing, each slice at least 10^-5 of the range.
-    float splitFar = clamp(far, splitRange.x, splitRange.y);
     float ends[SL_MAP_MAX_CASCADES];
-    float range = 1e-5 * (splitFar - near);
-    for (int i = 1; i < count; ++i) {
-        float t = float(i) / float(count);
-        float scheme = lambda * near * pow(splitFar / near, t) + (1.0 - lambda) * (near + (splitFar - near) * t);
-        float split = givenCount == count - 1 ? given[i - 1] : scheme;
-        float lowest = (i == 1 ? near : ends[i - 2]) + range;
-        ends[i - 1] = clamp(split, lowest, max(lowest, splitFar - range * float(count - i)));
-    }
-    ends[count - 1] = max(far, splitFar);
+    placeSplits(near, far, ends);
     if (!(first < ends[0])) first = near;  // nothing seen before the first split: the slice as the tight fit's
     fit.firstNear = first;
 #if !SDSM_STABILIZE
-    // Each slice's far end, and the window depths whose pixels its samples
-    // count: from its near end, or for a slice after the first from where
-    // the slice before fades into it over its far blend share
-    // (MapCameras: sliceDistances), each way a step of the 24-bit depth
-    // wider (a pixel on a split counts for both; map/fit/Sdsm.cpp: depthWindow).
-    const float depthStep = 1.0 / 16777215.0, below1 = 0.99999994;
-    for (int c = 0; c < count; ++c) {
-        fit.cascadeFar[c >> 2][c & 3] = ends[c];
-        float before = c > 0 ? ends[c - 1] : first, start = c > 1 ? ends[c - 2] : 0.0;
-        float from = c == 0 ? first : max(before - blend * (before - start), first);
-        vec2 window = vec2(windowDepthAt(from), windowDepthAt(ends[c]));
-        fit.sliceWindow[c] = vec4(max(window.x - depthStep, 0.0), min(window.y + depthStep, below1), window);
-    }
+    sliceWindows(first, ends);
     return;
 #endif
     float k2 = (1.0 + camera.w * camera.w) * camera.z * camera.z;
@@ -159,48 +220,6 @@ void main() {
     for (int c = 0; c < count; ++c) {
         float n = c == 0 ? first : ends[c - 1], f = ends[c];
         float readFrom = c < 2 ? first : ends[c - 2];
-        // The slice's bounding sphere, radius up to 1/64 of a unit.
-        float along = min(0.5 * (f + n) * (1.0 + k2), f);
-        float radius = sqrt((f - along) * (f - along) + k2 * f * f);
-        radius = ceil(radius * 64.0) / 64.0;
-        vec3 sphere = (lightView * vec4(eye + forward * along, 1.0)).xyz;
-        float half_ = radius * size / max(size - 2.0 * padding, 1.0);
-        vec2 halves = vec2(half_), centre = sphere.xy;
-        for (int a = 0; a < 2; ++a)
-            if (receiversWindow[a] > 0.0 && receiversWindow[a] < half_) {
-                halves[a] = receiversWindow[a];
-                centre[a] = receiversWindow[a + 2];
-            }
-        vec2 texels = 2.0 * halves / size;
-        float texel = max(texels.x, texels.y);
-        vec2 snapped = floor(centre / texels + 0.5) * texels;
-        // Depth: the scene's along the light, cut to what the slice's lookups reach, in steps of 1/32 of the box.
-        float from = readFrom > 0.0 ? min(readFrom, n) : n;
-        vec3 wlo, whi;
-        frustumBox(from, f, wlo, whi);
-        wlo = max(wlo, sceneLo);
-        whi = min(whi, sceneHi);
-        vec3 dlo = sceneLight, dhi = sceneLightHi;
-        float depthStep = 0.0625 * half_;
-        if (all(lessThanEqual(wlo, whi)) && depthStep > 0.0) {
-            sdsmBoxThrough(lightView, wlo, whi);
-            dlo.z = max(dlo.z, floor(wlo.z / depthStep) * depthStep);
-            dhi.z = min(dhi.z, ceil(whi.z / depthStep) * depthStep);
-        }
-        float depthPad = 1e-3 * diagonal;
-        float nearPlane = -dhi.z - depthPad, farPlane = -dlo.z + depthPad;
-        mat4 clip = sdsmOrtho(snapped.x - halves.x, snapped.x + halves.x, snapped.y - halves.y, snapped.y + halves.y, nearPlane, farPlane) * lightView;
-        fit.cascadeClip[c] = clip;
-        fit.cascadeShadowFromWorld[c] = kSdsmBias * clip;
-        fit.cascadeFar[c >> 2][c & 3] = f;
-        fit.cascadeTexel[c >> 2][c & 3] = texel;
-        fit.cascadeRange[c] = vec4(nearPlane, farPlane, 0.0, 0.0);
-        if (c == 0) {
-            fit.clipFromWorld = clip;
-            fit.shadowFromWorld = kSdsmBias * clip;
-            fit.texelWorld = texel;
-            fit.nearPlane = nearPlane;
-            fit.farPlane = farPlane;
-        }
+        fitStabilisedSlice(c, n, f, readFrom, k2, sceneLight, sceneLightHi);
     }
 }

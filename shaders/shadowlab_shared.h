@@ -23,7 +23,7 @@
 #define SL_STORAGE_LIGHT_TILES 1   // uvec4 (tile size px, tiles across, tiles down, slices), vec4 (slices' near, scale), then per cluster (first, count), then light indices
 #define SL_LIGHT_TILE_SIZE 16      // pixels per side of a tile
 #define SL_LIGHT_SLICES 32         // depth slices a tile (core/LightTiles.h)
-#define SL_STORAGE_ATLAS_TILES 2   // AtlasTile[]: the shadow atlas's tiles (technique map, atlas: shadow_atlas.glsl)
+#define SL_STORAGE_LIST_SHADOW 2   // the light list's shadow lookup's own buffer (its technique's: map's atlas tiles, shadow_atlas_shared.h)
 #define SL_STORAGE_SDSM_CASTERS 3  // technique map, fit sdsm on the GPU: the casters' boxes in the light's view (shadow_map_sdsm_fit.comp)
 #define SL_STORAGE_SDSM_FIT 4      // and the camera it fits (map/fit/Sdsm.h: SdsmFit)
 
@@ -32,8 +32,6 @@
 #define SL_UNIT_SCREEN_VISIBILITY 2   // per-pixel visibility from the ray-traced reference (R32F)
 #define SL_UNIT_PROJECTOR 3           // a spot light's projected image (slide projector)
 #define SL_UNIT_SHADOW_FIRST 4        // units a technique's textures use, from here up
-#define SL_UNIT_ATLAS SL_UNIT_SHADOW_FIRST              // the shadow atlas's depth, nearest (shadow_atlas.glsl)
-#define SL_UNIT_ATLAS_COMPARE (SL_UNIT_SHADOW_FIRST + 1) // the same, through a bilinear comparison sampler
 
 // Colour attachments of the frame's framebuffer.
 #define SL_TARGET_COLOR 0     // radiance, SRGB8_ALPHA8 (linear values, encoded on write)
@@ -75,20 +73,7 @@ struct ListedLight {
     SL_VEC4 position;
     SL_VEC4 direction;
     SL_VEC4 params;
-    SL_VEC4 shadow;  // x its first AtlasTile, y its tiles (0: no shadow, 1: a spot's map, 6: a point light's faces), z normal offset in texels, w 1: a bilinear compare (filter hardware), 0: the nearest texel
-};
-
-// The shadow atlas's constant bias: receivers are moved this many of the
-// tile's texels towards the light (shadow_atlas.glsl says why).
-#define SL_ATLAS_CONSTANT_TEXELS 0.5
-
-// One tile of the shadow atlas (std430): a spot's map or one face of a
-// point light's cube (+X, -X, +Y, -Y, +Z, -Z in that order).
-struct AtlasTile {
-    SL_MAT4 atlasFromWorld; // the tile's camera, then into its place: atlas uv in xy, window depth (0..1) in z, after /w; w the distance along the camera's axis
-    SL_VEC4 uvClamp;        // the centres of the tile's outermost texels, atlas uv: min in xy, max in zw
-    SL_VEC4 casters;        // where casters may have been drawn, atlas uv (min xy, max zw), a texel inside what was cleared: lit outside
-    SL_VEC4 params;         // x a texel's world size per unit of w, y 1 when casters were drawn into it (0: lit everywhere), zw unused
+    SL_VEC4 shadow;  // the light's shadow as its technique's list lookup reads it (Technique::listedShadow; y 0: none)
 };
 
 SL_BLOCK(DrawUniforms, SL_BINDING_DRAW, draw) {

@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace shadowlab::bench {
 
@@ -34,20 +36,60 @@ void checkArgs(const BenchOptions& args) {
         throw Error("--flips: needs at least 2 timed frames to compare (got --frames " + std::to_string(args.frames) + ")");
 }
 
+// The runs --skip-unsupported left out while loading: the first ten said.
+void noteSkipped(const BenchHooks& hooks, const json& skipped) {
+    if (!hooks.note) return;
+    for (std::size_t i = 0; i < skipped.size(); ++i) {
+        if (i == 10) {
+            hooks.note("--skip-unsupported: " + std::to_string(skipped.size() - 10) + " more run(s) left out (results.json's \"skipped\")");
+            break;
+        }
+        const std::string file = skipped[i]["sceneFile"].get<std::string>();
+        hooks.note("--skip-unsupported: left out " + (file.empty() ? std::string("the default scene") : file) + ": " + skipped[i]["reason"].get<std::string>());
+    }
+}
+
+// A value's source, as render names it: the --set or --vary value applied
+// last to it (from the scene file: the prefix names it). The values in
+// the order applied, and their labels.
+std::pair<std::vector<std::string>, std::vector<std::string>> valueSources(const BenchOptions& args, const BenchRun& run) {
+    std::vector<std::string> applied = args.overrides, labels;
+    for (const std::string& o : args.overrides) labels.push_back("--set " + o);
+    for (const std::string& c : run.combo) {
+        applied.push_back(c);
+        labels.push_back("--vary " + c);
+    }
+    return {applied, labels};
+}
+
+// Which run a row is: its number (from 0) of how many, and its label.
+struct RunName {
+    std::size_t index, count;
+    const std::string& label;
+};
+
+// A run's row after its last round: its accuracy against the reference,
+// the notes of its technique frame said, its fastest round's frames.
+json lastRecord(Renderer& renderer, Scene& scene, const BenchRun& run, const TimedFrames& fastest, const RunName& name,
+                const BenchOptions& args, const BenchHooks& hooks) {
+    const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args, hooks);
+    if (hooks.checkpoint) hooks.checkpoint();  // a stop asked for during the reference's trace
+    // What the techniques noticed (no planar receiver, no disc): said here and kept in the row.
+    if (hooks.note)
+        for (const std::string& note : accuracy.comparison.techniqueFrame.notes)
+            hooks.note("bench run " + std::to_string(name.index + 1) + "/" + std::to_string(name.count) + " (" + name.label + "): " + note);
+    return runRecord(run, scene, fastest, accuracy, name.index, name.label, args, hooks);
+}
+
+// results.json: the bench's settings, the runs left out and a row per run.
+json resultsJson(const GlInfo& info, const BenchOptions& args, const json& skipped, const json& records);
+
 json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
     checkArgs(args);
     json skipped = json::array();
     std::vector<BenchRun> runs = loadRuns(args, &skipped);  // every scene and combination checked before the long run starts
     if (runs.empty()) throw Error("--skip-unsupported: every run was left out (" + skipped.front()["reason"].get<std::string>() + ")");
-    if (hooks.note)
-        for (std::size_t i = 0; i < skipped.size(); ++i) {
-            if (i == 10) {
-                hooks.note("--skip-unsupported: " + std::to_string(skipped.size() - 10) + " more run(s) left out (results.json's \"skipped\")");
-                break;
-            }
-            const std::string file = skipped[i]["sceneFile"].get<std::string>();
-            hooks.note("--skip-unsupported: left out " + (file.empty() ? std::string("the default scene") : file) + ": " + skipped[i]["reason"].get<std::string>());
-        }
+    noteSkipped(hooks, skipped);
     json records = json::array();
     // Rounds (BenchOptions::rounds): every run timed once a round, the
     // runs in turn; a run keeps its fastest round's frames whole.
@@ -87,13 +129,7 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
                     chosen[r] = round;
                 }
                 if (last) {
-                    const Accuracy accuracy = measureAccuracy(renderer, scene, run.loaded, args, hooks);
-                    if (hooks.checkpoint) hooks.checkpoint();  // a stop asked for during the reference's trace
-                    // What the techniques noticed (no planar receiver, no disc): said here and kept in the row.
-                    if (hooks.note)
-                        for (const std::string& note : accuracy.comparison.techniqueFrame.notes)
-                            hooks.note("bench run " + std::to_string(r + 1) + "/" + std::to_string(runs.size()) + " (" + label + "): " + note);
-                    json record = runRecord(run, scene, fastest[r], accuracy, r, label, args, hooks);
+                    json record = lastRecord(renderer, scene, run, fastest[r], {r, runs.size(), label}, args, hooks);
                     if (args.rounds > 1) {
                         record["round"] = chosen[r];
                         record["frameMsByRound"] = roundMedians[r];
@@ -104,14 +140,7 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
                 // Name the run that failed: its scene and the combination of --vary values.
                 std::string where = run.file.empty() ? std::string("the default scene") : run.file;
                 for (const std::string& c : run.combo) where += ", --vary " + c;
-                // A value's source, as render names it: the --set or --vary value
-                // applied last to it (from the scene file: the prefix names it).
-                std::vector<std::string> applied = args.overrides, labels;
-                for (const std::string& o : args.overrides) labels.push_back("--set " + o);
-                for (const std::string& c : run.combo) {
-                    applied.push_back(c);
-                    labels.push_back("--vary " + c);
-                }
+                const auto [applied, labels] = valueSources(args, run);
                 const std::string message = "bench run " + std::to_string(r + 1) + "/" + std::to_string(runs.size()) + " (" + where +
                                             "): " + withValueSource(e.what(), "", applied, labels);
                 // Found only while drawing (an alpha-tested caster under shadow volumes): left out as a load-time one is.
@@ -131,7 +160,10 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
         }
     }
     if (records.empty()) throw Error("--skip-unsupported: every run was left out (" + skipped.front()["reason"].get<std::string>() + ")");
-    const GlInfo& info = context.info();
+    return resultsJson(context.info(), args, skipped, records);
+}
+
+json resultsJson(const GlInfo& info, const BenchOptions& args, const json& skipped, const json& records) {
     return json{{"tool", "shadowlab bench"},
                 {"renderer", info.renderer},
                 {"glVersion", info.version},

@@ -34,6 +34,18 @@ bool drewDepthPrepass(const FrameStats& frame) {
     return std::any_of(frame.counters.begin(), frame.counters.end(), [](const auto& c) { return c.first == "base.depthPrepass"; });
 }
 
+// A frame that drew a depth pre-pass, again with its maps kept: no shadow
+// pass, so no pre-pass; its base pass's time counted only when it did
+// keep them.
+void timeUnprepassedBase(Renderer& renderer, const Scene& scene, const RenderOptions& clocked, TimedFrames& timed) {
+    RenderOptions kept = clocked;
+    kept.cacheShadowMaps = true;
+    kept.measureFloors = false;
+    const FrameStats again = renderer.render(scene, kept);
+    const auto base = std::find_if(again.passes.begin(), again.passes.end(), [](const PassTiming& p) { return p.name == "base"; });
+    if (!drewDepthPrepass(again) && base != again.passes.end()) timed.unprepassedBaseTimes.push_back(base->ms);
+}
+
 } // namespace
 
 TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, const BenchOptions& args, const BenchHooks& hooks, Renderer* budgeted) {
@@ -101,16 +113,7 @@ TimedFrames timeFrames(Renderer& renderer, Scene& scene, const Scene& loaded, co
         }
         const FrameStats clockedFrame = renderer.render(scene, clocked);
         addClocked(timed, clockedFrame);
-        if (drewDepthPrepass(clockedFrame)) {
-            // The same frame with its maps kept: no shadow pass, so no
-            // pre-pass; counted only when it did keep them.
-            RenderOptions kept = clocked;
-            kept.cacheShadowMaps = true;
-            kept.measureFloors = false;
-            const FrameStats again = renderer.render(scene, kept);
-            const auto base = std::find_if(again.passes.begin(), again.passes.end(), [](const PassTiming& p) { return p.name == "base"; });
-            if (!drewDepthPrepass(again) && base != again.passes.end()) timed.unprepassedBaseTimes.push_back(base->ms);
-        }
+        if (drewDepthPrepass(clockedFrame)) timeUnprepassedBase(renderer, scene, clocked, timed);
         const FrameStats plainClocked = renderer.render(unshadowed, clocked);
         for (const PassTiming& p : plainClocked.passes) timed.unshadowedPassTimes[p.name].push_back(p.ms);
         timed.unshadowedBaseLight = plainClocked.baseLight;

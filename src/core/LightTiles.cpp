@@ -114,6 +114,51 @@ std::uint32_t LightTiles::sliceOf(float d) const {
     return std::min(static_cast<std::uint32_t>(std::min(s, 1.0e6f)), slices - 1);
 }
 
+namespace {
+
+// Each slice's depths, widened by 10^-3 each way (the first from the eye,
+// the last to `far`, the farthest sphere's end).
+std::vector<glm::vec2> sliceDepths(const LightTiles& t, float far) {
+    std::vector<glm::vec2> depths(t.slices);
+    for (std::uint32_t s = 0; s < t.slices; ++s)
+        depths[s] = {s == 0 ? 0.0f : t.sliceNear * std::exp(static_cast<float>(s) / t.sliceScale) * (1.0f - 1e-3f),
+                     (s + 1 == t.slices ? far : t.sliceNear * std::exp(static_cast<float>(s + 1) / t.sliceScale)) * (1.0f + 1e-3f)};
+    return depths;
+}
+
+// The slopes x / d (axis 0) or y / d (axis 1) of the edges of `across`
+// tiles of `tileSize` pixels over `extent` pixels (ndc = P[0][0] x / d -
+// P[2][0] with d = -z, the same for y): across + 1 edges.
+std::vector<float> tileSlopes(const glm::mat4& clipFromView, std::uint32_t tileSize, int across, int extent, int axis) {
+    std::vector<float> s(static_cast<std::size_t>(across) + 1);
+    for (int tile = 0; tile <= across; ++tile) {
+        const float ndc = 2.0f * static_cast<float>(std::min(tile * static_cast<int>(tileSize), extent)) / static_cast<float>(extent) - 1.0f;
+        s[static_cast<std::size_t>(tile)] = (ndc + clipFromView[2][axis]) / clipFromView[axis][axis];
+    }
+    return s;
+}
+
+// out.cells: every cluster's header (first, count) first, then each
+// cluster's light indices in light order (`clusters`: each light's
+// clusters; `perCluster`: each cluster's lights).
+void packCells(LightTiles& out, const std::vector<std::vector<std::uint32_t>>& clusters, const std::vector<std::uint32_t>& perCluster) {
+    const std::size_t count = perCluster.size();
+    out.cells.assign(2 * count, 0);
+    std::uint32_t next = static_cast<std::uint32_t>(2 * count);
+    for (std::size_t t = 0; t < count; ++t) {
+        out.cells[2 * t] = next;
+        next += perCluster[t];
+    }
+    out.entries = next - 2 * count;
+    out.cells.resize(next);
+    std::vector<std::uint32_t> filled(count, 0);
+    for (std::size_t k = 0; k < clusters.size(); ++k)
+        for (const std::uint32_t t : clusters[k]) out.cells[out.cells[2 * t] + filled[t]++] = static_cast<std::uint32_t>(k);
+    for (std::size_t t = 0; t < count; ++t) out.cells[2 * t + 1] = filled[t];
+}
+
+} // namespace
+
 LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, glm::ivec2 size,
                      std::uint32_t tileSize, std::uint32_t slices) {
     LightTiles out;
@@ -143,22 +188,10 @@ LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& view
     if (std::isfinite(nearest) && nearest * 0.99f > out.sliceNear) out.sliceNear = nearest * 0.99f;
     far = std::max(far, 2.0f * out.sliceNear);
     out.sliceScale = static_cast<float>(out.slices) / std::log(far / out.sliceNear);
-    // Each slice's depths, widened by 10^-3 each way (the first from the eye,
-    // the last to the farthest sphere's end); each tile's slopes x / d, y / d
-    // (ndc = P[0][0] x / d - P[2][0] with d = -z, the same for y), widened by 10^-4.
-    std::vector<glm::vec2> depths(out.slices);
-    for (std::uint32_t s = 0; s < out.slices; ++s)
-        depths[s] = {s == 0 ? 0.0f : out.sliceNear * std::exp(static_cast<float>(s) / out.sliceScale) * (1.0f - 1e-3f),
-                     (s + 1 == out.slices ? far : out.sliceNear * std::exp(static_cast<float>(s + 1) / out.sliceScale)) * (1.0f + 1e-3f)};
-    const auto slopes = [&](int across, int extent, int axis) {  // `across` tiles: across + 1 edges
-        std::vector<float> s(static_cast<std::size_t>(across) + 1);
-        for (int tile = 0; tile <= across; ++tile) {
-            const float ndc = 2.0f * static_cast<float>(std::min(tile * static_cast<int>(out.tileSize), extent)) / static_cast<float>(extent) - 1.0f;
-            s[static_cast<std::size_t>(tile)] = (ndc + clipFromView[2][axis]) / clipFromView[axis][axis];
-        }
-        return s;
-    };
-    const std::vector<float> columns = slopes(tiles.x, size.x, 0), rows = slopes(tiles.y, size.y, 1);  // each tile's edges
+    // Each slice's depths and each tile's slopes (widened by 10^-4 where the clusters are tested).
+    const std::vector<glm::vec2> depths = sliceDepths(out, far);
+    const std::vector<float> columns = tileSlopes(clipFromView, out.tileSize, tiles.x, size.x, 0);  // each tile's edges
+    const std::vector<float> rows = tileSlopes(clipFromView, out.tileSize, tiles.y, size.y, 1);
     // Each light's clusters, in cluster order within a slice's rows.
     std::vector<std::vector<std::uint32_t>> clusters(reach.size());
     std::vector<std::uint32_t> perCluster(count, 0);
@@ -198,19 +231,7 @@ LightTiles binLights(const std::vector<LightReach>& reach, const glm::mat4& view
                     ++perCluster[cluster];
                 }
     }
-    // Headers first, then each cluster's indices in light order.
-    out.cells.assign(2 * count, 0);
-    std::uint32_t next = static_cast<std::uint32_t>(2 * count);
-    for (std::size_t t = 0; t < count; ++t) {
-        out.cells[2 * t] = next;
-        next += perCluster[t];
-    }
-    out.entries = next - 2 * count;
-    out.cells.resize(next);
-    std::vector<std::uint32_t> filled(count, 0);
-    for (std::size_t k = 0; k < clusters.size(); ++k)
-        for (const std::uint32_t t : clusters[k]) out.cells[out.cells[2 * t] + filled[t]++] = static_cast<std::uint32_t>(k);
-    for (std::size_t t = 0; t < count; ++t) out.cells[2 * t + 1] = filled[t];
+    packCells(out, clusters, perCluster);
     return out;
 }
 

@@ -149,6 +149,12 @@ void Renderer::Impl::lightListPass(const Scene& s, const std::vector<int>& liste
     variant.ambient = false;
     variant.lightList = true;
     variant.lightListShadows = !shadowed.empty();
+    // One lookup fills the list's slot: one technique's listed shadows a pass.
+    if (shadowed.size() > 1) throw Error("the light list: listed shadows of more than one technique (" + *shadowed.begin() + ", " + *std::next(shadowed.begin()) + ")");
+    if (!shadowed.empty()) {
+        variant.listShadowFile = technique(*shadowed.begin()).listShadowFile();
+        if (variant.listShadowFile.empty()) throw Error("technique " + *shadowed.begin() + ": listed lights with shadows, and no Technique::listShadowFile to look them up");
+    }
     gl::apply(litState());
     drawShaded(variant);
 }

@@ -16,10 +16,11 @@ struct ShaderVariant {
     /// Add the terms of the clustered light list's lights (no shadows; the
     /// light-list pass, LightList.h). Not with `light`.
     bool lightList = false;
-    /// With `lightList`: some listed lights have shadows in the shadow atlas
-    /// (shadow_atlas.glsl; technique map with `atlas`). Only then: a software
-    /// rasteriser pays for a lookup it could skip.
+    /// With `lightList`: some listed lights have shadows, looked up by
+    /// `listShadowFile` (their technique's, Technique::listShadowFile). Only
+    /// then: a software rasteriser pays for a lookup it could skip.
     bool lightListShadows = false;
+    std::string listShadowFile = "shadow_list_none.glsl"; ///< with lightListShadows: fills "@list_shadow"
     LightType lightType = LightType::Directional; ///< with `light`
     std::string techniqueFile = "shadow_none.glsl"; ///< with `light`: fills "@shadow"
     std::string techniqueDefines;   ///< with `light`: the technique's own `#define` lines

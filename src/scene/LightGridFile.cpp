@@ -43,11 +43,9 @@ glm::vec2 corner(const Reader& r, const char* key, glm::vec2 def) {
     return {c.element(0).number(), c.element(1).number()};
 }
 
-} // namespace
-
-std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
-    r.requireObject();
-    r.checkKeys({"count", "seed", "min", "max", "height", "spots", "light"});
+// lightGrid.count: at most the lights the scene has room for beside the
+// `lightsBefore` in `lights` (its default too).
+int gridCount(const Reader& r, std::size_t lightsBefore) {
     const int room = static_cast<int>(kMaxLights - std::min(lightsBefore, kMaxLights));
     if (r.has("count") && r.child("count").value().is_number() && r.child("count").value().get<double>() > room)
         r.child("count").fail("expected at most " + std::to_string(room) + " lights (at most " + std::to_string(kMaxLights) +
@@ -57,8 +55,11 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
     if (!r.has("count") && count > room)
         r.fail("count: not given, and its default " + std::to_string(count) + " is more than the " + std::to_string(room) + " lights left (at most " +
                std::to_string(kMaxLights) + " in a scene, " + std::to_string(lightsBefore) + " in `lights`); give lightGrid.count");
-    const int seed = r.integer("seed", 1, 0, 2147483647);
-    const glm::vec2 lo = corner(r, "min", {-10.0f, -10.0f}), hi = corner(r, "max", {10.0f, 10.0f});
+    return count;
+}
+
+// lightGrid.min and max: a rectangle, its sides within a float's range.
+void checkRectangle(const Reader& r, glm::vec2 lo, glm::vec2 hi) {
     // A bad rectangle is blamed on the corner a --set changed, not on the
     // file's other one (--set lightGrid.min=[24,12] was blamed on the file's max).
     const auto failCorner = [&](const std::string& why) {
@@ -72,9 +73,10 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
     // 3e38 made the lights' positions infinite, blamed on lightGrid.light.position).
     if (!std::isfinite(hi.x - lo.x) || !std::isfinite(hi.y - lo.y))
         failCorner(std::string("the rectangle's side max - min is past a float's range of 3e38 in ") + (std::isfinite(hi.x - lo.x) ? "z" : "x"));
-    const float height = r.number("height", 2.0f);
-    const float spots = r.has("spots") ? r.child("spots").number() : 0.5f;
-    if (!(spots >= 0.0f && spots <= 1.0f)) r.child("spots").fail("expected a share in 0..1, got " + Reader::fmt(spots));
+}
+
+// lightGrid.light: what every grid light starts from (range 4 unless given).
+json lightTemplate(const Reader& r) {
     json base = json::object();
     if (r.has("light")) {
         const Reader l = r.child("light");
@@ -86,6 +88,22 @@ std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
         base = l.value();
     }
     if (!base.contains("range")) base["range"] = 4.0;
+    return base;
+}
+
+} // namespace
+
+std::vector<Light> readLightGrid(const Reader& r, std::size_t lightsBefore) {
+    r.requireObject();
+    r.checkKeys({"count", "seed", "min", "max", "height", "spots", "light"});
+    const int count = gridCount(r, lightsBefore);
+    const int seed = r.integer("seed", 1, 0, 2147483647);
+    const glm::vec2 lo = corner(r, "min", {-10.0f, -10.0f}), hi = corner(r, "max", {10.0f, 10.0f});
+    checkRectangle(r, lo, hi);
+    const float height = r.number("height", 2.0f);
+    const float spots = r.has("spots") ? r.child("spots").number() : 0.5f;
+    if (!(spots >= 0.0f && spots <= 1.0f)) r.child("spots").fail("expected a share in 0..1, got " + Reader::fmt(spots));
+    const json base = lightTemplate(r);
 
     // Nested and even: light k at the k-th point of the Halton sequence in
     // bases 3 (along x) and 5 (along z), moved by a seeded offset (modulo

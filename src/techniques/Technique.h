@@ -155,10 +155,16 @@ public:
     /// the one pass over the clustered light list with the other such lights
     /// (RenderOptions::groupLights): its visibility is 1 everywhere ("none"),
     /// or read from what bindLightList binds by shadows/atlas lookups
-    /// described by listedShadow ("map" with `atlas`: shadow_atlas.glsl).
+    /// described by listedShadow ("map" with `atlas`: listShadowFile).
     virtual bool joinsLightList(const LightView&) const { return false; }
     /// The light's ListedLight::shadow (shadowlab_shared.h): zero for no shadow.
     virtual glm::vec4 listedShadow(const LightView&) const { return glm::vec4(0.0f); }
+    /// The GLSL file that fills lighting.frag's "@list_shadow" slot when
+    /// some listed light of this technique has a shadow: it defines
+    /// `float listedVisibility(vec4 shadow, vec3 lightPosition, vec3 p,
+    /// vec3 n, vec3 L, float NdotL)`, `shadow` being listedShadow's value
+    /// ("map": shadow_atlas_list.glsl). Empty: no listed shadows.
+    virtual std::string listShadowFile() const { return {}; }
     /// Binds what the light list's shadow lookups read (once per frame's
     /// list pass, for each technique with listed lights).
     virtual void bindLightList(TechniqueHost&) {}

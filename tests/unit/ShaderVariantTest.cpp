@@ -65,25 +65,30 @@ TEST(ShaderVariant, PreambleDefinesEverySwitchTheSourcesTest) {
                                "#define BLENDED 0\n"})
         EXPECT_NE(p.find(define), std::string::npos) << define << " in " << p;
     const gl::ProgramKey key = v.program();
-    ASSERT_EQ(key.aliases.size(), 1u);
+    ASSERT_EQ(key.aliases.size(), 2u);
     EXPECT_EQ(key.aliases[0], (std::pair<std::string, std::string>{"@shadow", "shadow_none.glsl"}));
+    EXPECT_EQ(key.aliases[1], (std::pair<std::string, std::string>{"@list_shadow", "shadow_list_none.glsl"}));
 }
 
 TEST(ShaderSource, IncludesExpandWithLineDirectivesPerFile) {
-    const gl::AssembledSource s = gl::assembleShader("lighting.frag", "#define X 1\n", {{"@shadow", "shadow_none.glsl"}});
+    const gl::AssembledSource s =
+        gl::assembleShader("lighting.frag", "#define X 1\n", {{"@shadow", "shadow_none.glsl"}, {"@list_shadow", "shadow_atlas_list.glsl"}});
     EXPECT_EQ(s.text.rfind("#version 450 core\n#define X 1\n#define SL_BINDING(unit) layout(binding = unit)\n", 0), 0u);
     // preamble, lighting.frag, shadowlab_shared.h, light_reach.h and the
     // shadowlab_shared.h it includes (its include guard leaves that copy
     // empty), alpha_test.h and its own copy of shadowlab_shared.h, then the
-    // "@shadow" slot's file, then the light list's shadow_atlas.glsl (and
-    // its shadowlab_shared.h; both inside #if LIGHT_LIST_SHADOWS).
-    ASSERT_EQ(s.files.size(), 10u);
+    // "@shadow" slot's file, then the "@list_shadow" slot's (inside #if
+    // LIGHT_LIST_SHADOWS): shadow_atlas_list.glsl, its shadow_atlas.glsl,
+    // shadow_atlas_shared.h and that one's shadowlab_shared.h.
+    ASSERT_EQ(s.files.size(), 12u);
     EXPECT_EQ(s.files[1], "lighting.frag");
     EXPECT_EQ(s.files[2], "shadowlab_shared.h");
     EXPECT_EQ(s.files[3], "light_reach.h");
     EXPECT_EQ(s.files[5], "alpha_test.h");
     EXPECT_EQ(s.files[7], "shadow_none.glsl");
-    EXPECT_EQ(s.files[8], "shadow_atlas.glsl");
+    EXPECT_EQ(s.files[8], "shadow_atlas_list.glsl");
+    EXPECT_EQ(s.files[9], "shadow_atlas.glsl");
+    EXPECT_EQ(s.files[10], "shadow_atlas_shared.h");
     EXPECT_NE(s.text.find("#line 1 2\n"), std::string::npos);
     EXPECT_EQ(s.text.find("#include \""), std::string::npos);  // quoted includes are all expanded
 }

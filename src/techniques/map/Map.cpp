@@ -161,6 +161,8 @@ public:
 
     glm::vec4 listedShadow(const LightView& view) const override { return MapAtlas::shadowOf(lights_.at(view.index)); }
 
+    std::string listShadowFile() const override { return "shadow_atlas_list.glsl"; }
+
     void bindLightList(TechniqueHost&) override { atlas_.bind(); }
 
     void bindLightPass(TechniqueHost&, const FrameInfo&, const LightView& view) override {

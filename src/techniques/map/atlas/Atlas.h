@@ -13,7 +13,7 @@
 #include "techniques/map/Light.h"
 #include "techniques/map/passes/CasterBatch.h"
 
-#include "shadowlab_shared.h"
+#include "shadow_atlas_shared.h"
 
 #include <array>
 #include <cstdint>
@@ -45,7 +45,7 @@ public:
     /// Whether the last layout left changed tiles undrawn (past the update
     /// budget): the maps do not hold that frame's inputs yet.
     bool behind() const { return behind_; }
-    /// Binds the atlas and its tiles where shadow_atlas.glsl reads them.
+    /// Binds the atlas and its tiles where shadow_atlas.glsl reads them (shadow_atlas_shared.h).
     void bind() const;
     /// ListedLight::shadow for light `p` (shadowlab_shared.h).
     static glm::vec4 shadowOf(const MapLight& p);

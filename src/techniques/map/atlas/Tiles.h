@@ -6,7 +6,7 @@
 #include "techniques/Technique.h"
 #include "techniques/map/Light.h"
 
-#include "shadowlab_shared.h"
+#include "shadow_atlas_shared.h"
 
 #include <glm/glm.hpp>
 

@@ -1,0 +1,24 @@
+#pragma once
+// report.html's text: HTML escaping, images inlined as data URIs, fixed
+// digits, a row's settings (ReportText.cpp).
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace shadowlab::bench {
+
+/// `text` with &, <, > and " escaped for HTML.
+std::string escape(const std::string& text);
+/// `bytes` in base64.
+std::string base64(const std::string& bytes);
+/// The PNG `file` as a data: URI (an error names the file it cannot read).
+std::string dataUri(const std::filesystem::path& file);
+/// `v` with `digits` digits after the point.
+std::string fixed(double v, int digits);
+/// A share as a percentage with three digits.
+std::string percent(double share);
+/// A row's settings as "key=value, ..." ("defaults" for none).
+std::string settingsText(const nlohmann::json& record);
+
+} // namespace shadowlab::bench
