@@ -12,6 +12,9 @@
 
 #include "shadow_map_shared.h"
 
+#define SL_STORAGE_SDSM_CASTERS SL_STORAGE_TECHNIQUE_FIRST      // the casters' boxes in the light's view (shadow_map_sdsm_fit.comp)
+#define SL_STORAGE_SDSM_FIT (SL_STORAGE_TECHNIQUE_FIRST + 1)    // and the camera it fits (SdsmFit, below)
+
 #ifdef __cplusplus
 #include <glm/glm.hpp>
 namespace shadowlab::shared {

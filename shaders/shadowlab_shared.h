@@ -24,8 +24,7 @@
 #define SL_LIGHT_TILE_SIZE 16      // pixels per side of a tile
 #define SL_LIGHT_SLICES 32         // depth slices a tile (core/LightTiles.h)
 #define SL_STORAGE_LIST_SHADOW 2   // the light list's shadow lookup's own buffer (its technique's: map's atlas tiles, shadow_atlas_shared.h)
-#define SL_STORAGE_SDSM_CASTERS 3  // technique map, fit sdsm on the GPU: the casters' boxes in the light's view (shadow_map_sdsm_fit.comp)
-#define SL_STORAGE_SDSM_FIT 4      // and the camera it fits (map/fit/Sdsm.h: SdsmFit)
+#define SL_STORAGE_TECHNIQUE_FIRST 3  // storage a technique's own passes use, from here up (map's fit sdsm: shadow_map_sdsm_shared.h)
 
 // Texture units.
 #define SL_UNIT_BASE_COLOR 0
