@@ -38,7 +38,7 @@ gl::ProgramKey ShaderVariant::program() const {
     gl::ProgramKey key{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}},
                        preamble(),
                        {{"@shadow", technique ? techniqueFile : std::string("shadow_none.glsl")}}};
-    key.aliases.emplace_back("@list_shadow", lightList && !light && lightListShadows ? listShadowFile : std::string("shadow_list_none.glsl"));
+    key.aliases.emplace_back("@list_shadow", lightList && !light && lightListShadows ? listShadowFile : std::string(kNoListShadow));
     if (technique && !techniqueVertexFile.empty()) key.aliases.emplace_back("@shadow_vertex", techniqueVertexFile);
     if (technique) key.aliases.insert(key.aliases.end(), techniqueIncludes.begin(), techniqueIncludes.end());
     return key;

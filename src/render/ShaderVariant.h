@@ -20,7 +20,9 @@ struct ShaderVariant {
     /// `listShadowFile` (their technique's, Technique::listShadowFile). Only
     /// then: a software rasteriser pays for a lookup it could skip.
     bool lightListShadows = false;
-    std::string listShadowFile = "shadow_list_none.glsl"; ///< with lightListShadows: fills "@list_shadow"
+    /// "@list_shadow"'s file when no listed light has a shadow (its listedVisibility is never called).
+    static constexpr const char* kNoListShadow = "shadow_list_none.glsl";
+    std::string listShadowFile = kNoListShadow; ///< with lightListShadows: fills "@list_shadow"
     LightType lightType = LightType::Directional; ///< with `light`
     std::string techniqueFile = "shadow_none.glsl"; ///< with `light`: fills "@shadow"
     std::string techniqueDefines;   ///< with `light`: the technique's own `#define` lines

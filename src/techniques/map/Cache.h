@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <map>
 #include <string>
-#include <span>
 
 namespace shadowlab::map {
 

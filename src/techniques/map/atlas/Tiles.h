@@ -2,7 +2,6 @@
 // Technique "map": the shadow atlas's tiles one by one (atlas/Tiles.cpp):
 // how large a light's reach is on screen, a tile's record for the lookups,
 // which casters a tile draws, the atlas's samplers.
-#include "core/LightTiles.h"
 #include "techniques/Technique.h"
 #include "techniques/map/Light.h"
 
