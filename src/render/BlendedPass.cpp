@@ -54,15 +54,15 @@ void Renderer::Impl::blendedPass(const Scene& s, bool screenVisibility) {
             ShaderVariant variant;
             variant.ambient = false;
             variant.light = true;
-            variant.lightType = currentLight->type;
-            variant.projector = hasProjector(*currentLight);
+            variant.lightType = currentLight().type;
+            variant.projector = hasProjector(currentLight());
             variant.blended = true;
-            Technique& t = technique(currentLight->shadow.technique);
-            if (!screenVisibility && t.sharesBasePass(*currentLight)) {
+            Technique& t = technique(currentLight().shadow.technique);
+            if (!screenVisibility && t.sharesBasePass(currentLight())) {
                 setTechnique(variant);
                 t.bindLightPass(*this, *info, view(i));
             } else if (!screenVisibility) {
-                note("light " + std::to_string(i) + " ('" + currentLight->name + "'): technique '" + currentLight->shadow.technique +
+                note("light " + std::to_string(i) + " ('" + currentLight().name + "'): technique '" + currentLight().shadow.technique +
                      "' keeps its shadow in the stencil of opaque surfaces, so translucent (blend) surfaces are lit unshadowed");
             }
             gl::apply(add);

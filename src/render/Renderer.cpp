@@ -76,14 +76,14 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
     if (baseLight >= 0) {
         setLight(static_cast<std::size_t>(baseLight));
         variant.light = true;
-        variant.lightType = currentLight->type;
-        variant.projector = hasProjector(*currentLight);
+        variant.lightType = currentLight().type;
+        variant.projector = hasProjector(currentLight());
         if (screenVisibility) {
             variant.screenVisibility = true;
             uploadVisibility(*targets, (*screenVisibility)[static_cast<std::size_t>(baseLight)]);
         } else {
             setTechnique(variant);
-            technique(currentLight->shadow.technique).bindLightPass(*this, *info, view(static_cast<std::size_t>(baseLight)));
+            technique(currentLight().shadow.technique).bindLightPass(*this, *info, view(static_cast<std::size_t>(baseLight)));
         }
     }
     glBindFramebuffer(GL_FRAMEBUFFER, targets->frame.id());
@@ -116,7 +116,7 @@ void Renderer::Impl::basePass(const Scene& s, const RenderOptions& options, int 
     // with the surfaces (compare's reference images, drawn as they were).
     const bool regions = baseLight >= 0 && !screenVisibility && options.shadowRegions && !options.surfaces;
     const std::optional<std::vector<PixelRect>> region =
-        regions && !depthPrepassed ? technique(currentLight->shadow.technique).shadowedPixels(*info, view(static_cast<std::size_t>(baseLight)))
+        regions && !depthPrepassed ? technique(currentLight().shadow.technique).shadowedPixels(*info, view(static_cast<std::size_t>(baseLight)))
                                    : std::nullopt;
     if (regions)
         drawShadedByRegion(variant, state, region ? &*region : nullptr);

@@ -79,7 +79,7 @@ gl::RenderState Renderer::Impl::litState() const {
 }
 
 void Renderer::Impl::drawLit(const gl::RenderState& state) {
-    const Light& light = *currentLight;
+    const Light& light = currentLight();
     ShaderVariant variant;
     variant.ambient = false;
     variant.light = true;
@@ -102,11 +102,10 @@ void Renderer::Impl::setTechnique(ShaderVariant& variant) {
 }
 
 void Renderer::Impl::setLight(std::size_t i) {
-    currentLight = &scene->lights[i];
     currentIndex = i;
-    const shared::LightUniforms u = lightUniforms(*currentLight);
+    const shared::LightUniforms u = lightUniforms(currentLight());
     gl::namedBufferSubData(lightUbo.id(), 0, sizeof u, &u);
-    if (hasProjector(*currentLight)) gl::bindTextureUnit(SL_UNIT_PROJECTOR, gpu->texture(currentLight->projectorTexture).id());
+    if (hasProjector(currentLight())) gl::bindTextureUnit(SL_UNIT_PROJECTOR, gpu->texture(currentLight().projectorTexture).id());
 }
 
 void Renderer::Impl::drawShaded(ShaderVariant variant, const std::vector<std::size_t>* only) {

@@ -63,8 +63,8 @@ struct Renderer::Impl final : TechniqueHost {
     std::optional<gl::PassClock> clock;
     LitMode litMode = LitMode::Shade;
     bool depthPrepassed = false;  ///< this frame's depth drawn before the base pass (beginDepthPrepass)
-    const Light* currentLight = nullptr;
-    std::size_t currentIndex = 0; ///< currentLight's index in Scene::lights (setLight)
+    std::size_t currentIndex = 0; ///< the light being drawn, in Scene::lights (setLight)
+    const Light& currentLight() const { return scene->lights[currentIndex]; }
     std::string currentPass;  // for count()
     std::vector<std::pair<std::string, double>> counters;
     std::vector<std::string> notes;
