@@ -7,11 +7,14 @@
 # `compare` rows the technique, reference, error, visibility and reach
 # images and metrics.json (its timing fields, *Ms, left out).
 #
-# Usage: scripts/refactor-check.sh [--base COMMIT] [--only REGEX] [--list] [--bench]
+# Usage: scripts/refactor-check.sh [--base COMMIT] [--only REGEX] [--list] [--bench | --bench-all]
 #   --base COMMIT  the "before" build (default: the commit the map module's inside refactor started from)
 #   --only REGEX   only the cases whose name matches (grep -E)
 #   --list         print the cases and exit
 #   --bench        also time both builds side by side (bench, interleaved rounds)
+#                  on six scenes with the map technique's main variants
+#   --bench-all    the same over every bundled scene (scenes/, scenes/lecture/)
+#                  at its own settings
 # Environment: REFCHECK_WIDTH, REFCHECK_HEIGHT (400x300), REFCHECK_ROUNDS (3, --bench).
 #
 # Writes build-refcheck/{base-src,base}/ (the BASE build, kept between runs),
@@ -35,6 +38,7 @@ while (($#)); do
     --only) only=$2; shift 2 ;;
     --list) list=true; shift ;;
     --bench) bench=true; shift ;;
+    --bench-all) bench=all; shift ;;
     *) echo "refactor-check: unknown argument '$1' (see the usage at the top of $0)" >&2; exit 2 ;;
   esac
 done
@@ -302,10 +306,17 @@ done
 echo "refactor-check: $cases cases, $files_total files, $changed_total changed, $pixels_total pixels changed, $failed failed in both (table: $table)"
 
 # ---------------------------------------------------------------- timing
-if $bench; then
+if [[ $bench != false ]]; then
   rounds=${REFCHECK_ROUNDS:-3}
   rows=("learnopengl-shadow-mapping|--set $T=map" "learnopengl-point-shadows|--set $T=map" "two-boxes-sun|--set $T=map --set $M.filter=grid"
         "spot-objects|--set $T=map" "cascades-field|--set $T=map --set $M.cascades=4" "light-leak|--set $T=map")
+  if [[ $bench == all ]]; then
+    rows=()
+    for f in "$S"/*.json "$S"/lecture/*.json; do
+      f=${f#"$S"/}
+      rows+=("${f%.json}|")
+    done
+  fi
   echo
   echo "| scene | settings | before ms (per round) | after ms (per round) | after / before (fastest rounds) |" | tee "$out/bench.md"
   echo "|---|---|---|---|---:|" | tee -a "$out/bench.md"

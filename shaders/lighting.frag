@@ -103,7 +103,7 @@ vec3 lightTerm(vec3 N, vec3 V, vec3 base, out bool reached) {
 // The lights beyond the base pass's that have no shadow pass after it
 // (none, or a map in the shadow atlas), in one pass: the lights whose
 // reach overlaps this pixel's cluster, its tile and the slice of the view
-// its depth lies in (core/LightTiles.h; src/render/LightList.cpp bins them
+// its depth lies in (geometry/LightTiles.h; src/render/LightList.cpp bins them
 // on the CPU each frame).
 #if LIGHT_LIST_SHADOWS
 #include "@list_shadow"

@@ -98,7 +98,7 @@ void frustumBox(float n, float f, out vec3 lo, out vec3 hi) {
     }
 }
 
-// cascadeSplits (core/Cascades.cpp) over the split range's far end:
+// cascadeSplits (geometry/Cascades.cpp) over the split range's far end:
 // increasing, each slice at least 10^-5 of the range; the last ends at
 // the farther of far and the split range's far end.
 void placeSplits(float near, float far, out float ends[SL_MAP_MAX_CASCADES]) {
@@ -135,7 +135,7 @@ void sliceWindows(float first, float ends[SL_MAP_MAX_CASCADES]) {
 // Stabilised slice c over view depths [n, f], its lookups reading from
 // readFrom: its bounding sphere's box (or the receivers' window where that
 // is narrower), snapped to whole texels, its depth the scene's along the
-// light cut to what its lookups reach (fitCascade, core/Cascades.cpp).
+// light cut to what its lookups reach (fitCascade, geometry/Cascades.cpp).
 void fitStabilisedSlice(int c, float n, float f, float readFrom, float k2, vec3 sceneLight, vec3 sceneLightHi) {
     // The slice's bounding sphere, radius up to 1/64 of a unit.
     float along = min(0.5 * (f + n) * (1.0 + k2), f);

@@ -22,7 +22,7 @@
 #define SL_STORAGE_LIGHT_LIST 0    // ListedLight[]: each light's terms, as LightUniforms without the projector
 #define SL_STORAGE_LIGHT_TILES 1   // uvec4 (tile size px, tiles across, tiles down, slices), vec4 (slices' near, scale), then per cluster (first, count), then light indices
 #define SL_LIGHT_TILE_SIZE 16      // pixels per side of a tile
-#define SL_LIGHT_SLICES 32         // depth slices a tile (core/LightTiles.h)
+#define SL_LIGHT_SLICES 32         // depth slices a tile (geometry/LightTiles.h)
 #define SL_STORAGE_LIST_SHADOW 2   // the light list's shadow lookup's own buffer (its technique's: map's atlas tiles, shadow_atlas_shared.h)
 #define SL_STORAGE_TECHNIQUE_FIRST 3  // storage a technique's own passes use, from here up (map's fit sdsm: shadow_map_sdsm_shared.h)
 

@@ -2,8 +2,8 @@
 
 #include "core/Adjacency.h"
 #include "core/MeshLevels.h"
-#include "core/MeshTwins.h"
-#include "core/Plane.h"
+#include "geometry/MeshTwins.h"
+#include "geometry/Plane.h"
 #include "core/TriangleOrder.h"
 #include "gl/Calls.h"
 
@@ -129,7 +129,7 @@ const std::vector<DetailLevel>& GpuScene::levels(int mesh, const Scene& scene) {
     // A mesh too small for levels has none to build or share.
     if (source.triangleCount() < MeshLevelOptions{}.minTriangles) return m.levels;
     // A mesh identical to one whose levels are built (a file's mesh loaded
-    // for several nodes) shares them (core/MeshTwins.h: by a hash).
+    // for several nodes) shares them (geometry/MeshTwins.h: by a hash).
     const int same = levelTwins_.findOrAdd(mesh, scene.meshes);
     if (same >= 0) {
         // Its index buffer numbers the vertices as this mesh's buffer does

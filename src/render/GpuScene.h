@@ -2,7 +2,7 @@
 // The scene's meshes and textures on the GPU.
 #include "core/Bounds.h"
 #include "core/MeshLevels.h"
-#include "core/MeshTwins.h"
+#include "geometry/MeshTwins.h"
 #include "core/TriangleOrder.h"
 #include "gl/Object.h"
 
@@ -23,8 +23,8 @@ struct GpuMesh {
     /// Scene::meshes[mesh], its number here; empty: the scene's own numbers.
     std::vector<std::uint32_t> remap;
     Bounds bounds;                 ///< object space
-    std::optional<glm::vec4> plane; ///< object space, when the mesh is planar (core/Plane.h)
-    std::vector<glm::vec4> convex;  ///< object space, the planes of a convex mesh (core/Plane.h); empty otherwise
+    std::optional<glm::vec4> plane; ///< object space, when the mesh is planar (geometry/Plane.h)
+    std::vector<glm::vec4> convex;  ///< object space, the planes of a convex mesh (geometry/Plane.h); empty otherwise
     int winding = 0;                ///< closed: +1, counter-clockwise sides out; -1, in; open: 0 (core/Adjacency.h: closedWinding)
     gl::Buffer adjacency{gl::NoCreate}; ///< GL_TRIANGLES_ADJACENCY indices, built on first use
     gl::VertexArray adjacencyArray{gl::NoCreate};

@@ -3,8 +3,8 @@
 // their own after the base pass (Technique::joinsLightList: none, or a map
 // in the shadow atlas) beyond the base pass's light,
 // shaded together in one pass (lighting.frag's LIGHT_LIST variant) instead
-// of a pass each. Binned per frame on the CPU (core/LightTiles.h).
-#include "core/LightTiles.h"
+// of a pass each. Binned per frame on the CPU (geometry/LightTiles.h).
+#include "geometry/LightTiles.h"
 #include "gl/Object.h"
 
 #include <shadowlab/Scene.h>

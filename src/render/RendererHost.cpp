@@ -2,7 +2,7 @@
 // frame's shared steps: lights, technique variants, shaded draws.
 #include "render/RendererImpl.h"
 
-#include "core/Plane.h"
+#include "geometry/Plane.h"
 #include "gl/Calls.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -3,7 +3,7 @@
 // the technique and every technique's options read through its table.
 #include "scene/SceneParts.h"
 
-#include "techniques/Registry.h"
+#include "techniques/Catalog.h"
 
 #include <shadowlab/Techniques.h>
 
@@ -87,10 +87,10 @@ void readShadow(const Reader& r, ShadowSettings& shadow, const Light& light) {
         const Reader block = r.child(t.name);
         std::any options = readOptions(block, *t.options);
         // Options that are others' defaults (map's preset), under the keys the block wrote.
-        if (const TechniqueEntry* entry = findTechniqueEntry(t.name); entry && entry->resolve) {
+        if (const TechniqueKind* kind = findTechniqueKind(t.name); kind && kind->resolve) {
             std::vector<std::string> written;
             for (const auto& item : block.value().items()) written.push_back(item.key());
-            entry->resolve(options, written, light);
+            kind->resolve(options, written, light);
         }
         shadow.options[t.name] = std::move(options);
     }

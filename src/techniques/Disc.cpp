@@ -4,7 +4,7 @@
 // against each. It shares the base pass: no shadow pass, no map.
 #include "techniques/Disc.h"
 
-#include "core/ShadowRegion.h"
+#include "geometry/ShadowRegion.h"
 #include "techniques/NodeNames.h"
 #include "techniques/TechniqueBlock.h"
 
@@ -59,7 +59,6 @@ bool discOf(const DrawItem& item, float radius, Disc& out) {
 
 class DiscShadow final : public Technique {
 public:
-    static constexpr const char* summary = "exact shadows of flat discs in the light pass, no shadow pass or map (Ganovelli et al. exercise 8.6.2-1)";
 
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         Bounds scene;
@@ -177,15 +176,6 @@ private:
 
 } // namespace
 
-const OptionTable& discOptionTable() {
-    static const OptionTable table =
-        OptionTableFor<DiscOptions>("disc")
-            .nodeNames(&DiscOptions::casters, "casters",
-                       "the disc casters (disc shapes); empty: every casting node whose shape is a disc")
-            .build();
-    return table;
-}
-
-TechniqueEntry discTechnique() { return entryOf<DiscShadow>("disc", &discOptionTable(), "shadow_disc.glsl"); }
+TechniqueEntry discTechnique() { return entryOf<DiscShadow>("disc", "shadow_disc.glsl"); }
 
 } // namespace shadowlab

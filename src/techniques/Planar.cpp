@@ -10,7 +10,7 @@
 // draws them dark over the lit scene with depth only instead (Wolberg's look).
 #include "techniques/Planar.h"
 
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 #include "techniques/NodeNames.h"
 #include "techniques/Stencil.h"
 #include "techniques/TechniqueBlock.h"
@@ -26,20 +26,6 @@
 #include <span>
 
 namespace shadowlab {
-
-const OptionTable& planarOptionTable() {
-    static const OptionTable table =
-        OptionTableFor<PlanarOptions>("planar")
-            .nodeNames(&PlanarOptions::receivers, "receivers",
-                       "the receiver planes; empty: every node whose mesh is planar and receives shadows")
-            .choice(&PlanarOptions::style, "style", {"stencil", "lecture"},
-                    "stencil: each receiver pixel darkened once, clipped to the receiver; lecture: Wolberg's dark polygons with depth only (double blending, z-fighting)")
-            .choice(&PlanarOptions::projection, "projection", {"vertex", "geometry"},
-                    "the caster flattened in the vertex shader once per plane, or by a geometry shader onto every plane of a draw (Wolberg's duplication)")
-            .number(&PlanarOptions::darkness, "darkness", 0.0, 1.0, "share of the colour", "style lecture: what each shadow polygon takes away")
-            .build();
-    return table;
-}
 
 namespace {
 
@@ -63,7 +49,6 @@ struct Receiver {
 
 class PlanarShadow final : public Technique {
 public:
-    static constexpr const char* summary = "projected planar shadows: casters flattened onto receiver planes, kept to the receiver by the stencil";
 
     bool sharesBasePass(const Light&) const override { return false; }  // the light goes after the stencil
 
@@ -202,6 +187,6 @@ private:
 
 } // namespace
 
-TechniqueEntry planarTechnique() { return entryOf<PlanarShadow>("planar", &planarOptionTable(), "shadow_planar.glsl"); }
+TechniqueEntry planarTechnique() { return entryOf<PlanarShadow>("planar", "shadow_planar.glsl"); }
 
 } // namespace shadowlab

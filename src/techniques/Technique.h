@@ -25,6 +25,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -36,8 +37,8 @@ struct FrameInfo {
     const Scene& scene;
     const std::vector<DrawItem>& items;      ///< every mesh instance, world transforms resolved
     const std::vector<Bounds>& itemBounds;   ///< world-space bounds of each item
-    const std::vector<std::optional<glm::vec4>>& itemPlanes; ///< world-space plane (n, d) of each planar item (core/Plane.h)
-    const std::vector<std::vector<glm::vec4>>& itemConvex;   ///< world-space planes of each convex item (core/Plane.h), else empty
+    const std::vector<std::optional<glm::vec4>>& itemPlanes; ///< world-space plane (n, d) of each planar item (geometry/Plane.h)
+    const std::vector<std::vector<glm::vec4>>& itemConvex;   ///< world-space planes of each convex item (geometry/Plane.h), else empty
     const std::vector<std::int8_t>& itemWinding;             ///< each closed item's winding in world space (+1: its counter-clockwise sides face out, -1: its clockwise ones; core/Adjacency.h: closedWinding), 0 for an open one
     glm::ivec2 viewport{0};                  ///< the frame's size, pixels
     glm::mat4 viewFromWorld{1.0f};           ///< the camera's
@@ -204,38 +205,25 @@ public:
     virtual void lightFrustums(const LightView&, std::vector<glm::mat4>&) const {}
 };
 
-/// One registry row: everything the renderer, the scene parser and the docs
-/// need to know about a technique.
+/// The GL half of a registered technique (techniques/Registry.h); its
+/// options and the rest of what the scene loader needs are its catalog row
+/// of the same name (TechniqueKind, techniques/Catalog.h).
 struct TechniqueEntry {
     std::string name;                      ///< `lights[i].shadow.technique`
-    std::string summary;                   ///< one line
-    const OptionTable* options = nullptr;  ///< the block `lights[i].shadow.<name>`
     std::string shaderFile;                ///< GLSL defining `vec3 shadowVisibility(vec3 worldPosition, vec3 worldNormal)`
     std::function<std::unique_ptr<Technique>()> create;
-    /// Why the technique cannot shadow this light, or "" (default: it can).
-    std::function<std::string(const Light&)> unsupported = {};
     /// Optional GLSL for scene.vert's "@shadow_vertex?" slot: defines
     /// SHADOW_VERTEX_HOOK and `void shadowVertex(vec3 worldPosition, vec3
     /// worldNormal)`, which writes outputs the fragment file reads (e.g.
     /// light-space coordinates computed per vertex instead of per fragment).
     std::string vertexShaderFile = {};
-    /// The light's shadow at the technique's baseline, the plainest form of
-    /// it that bench times its variants against (shadowBaseline(),
-    /// Techniques.h); default: the light is its own baseline.
-    std::function<ShadowBaseline(const Light&)> baseline = {};
-    /// Called as a scene is read, after the block `lights[i].shadow.<name>`
-    /// (`options`): options that set others' defaults (map's preset) set
-    /// every field but those the block wrote (`written`, its keys, `--set`
-    /// included), for `light`; default: nothing to resolve.
-    std::function<void(std::any& options, const std::vector<std::string>& written, const Light& light)> resolve = {};
 };
 
-/// The registry row of technique class T: its name (`lights[i].shadow.technique`),
-/// one-line summary (T::summary), options table and light-pass GLSL file,
-/// and a factory for T; the optional fields keep their defaults.
+/// The registry row of technique class T: its name, light-pass GLSL file
+/// and a factory for T.
 template <class T>
-TechniqueEntry entryOf(std::string name, const OptionTable* options, std::string shaderFile) {
-    return {std::move(name), T::summary, options, std::move(shaderFile), [] { return std::make_unique<T>(); }};
+TechniqueEntry entryOf(std::string name, std::string shaderFile) {
+    return {std::move(name), std::move(shaderFile), [] { return std::make_unique<T>(); }};
 }
 
 } // namespace shadowlab

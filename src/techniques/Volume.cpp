@@ -21,7 +21,7 @@
 #include "techniques/TechniqueBlock.h"
 
 #include "core/Adjacency.h"
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 
 #include <shadowlab/Error.h>
 #include <shadowlab/VolumeOptions.h>
@@ -37,24 +37,10 @@
 
 namespace shadowlab {
 
-const OptionTable& volumeOptionTable() {
-    static const OptionTable table =
-        OptionTableFor<VolumeOptions>("volume")
-            .choice(&VolumeOptions::method, "method", {"depth-fail", "depth-pass", "book"},
-                    "count the volume faces behind the visible surface (right with the camera in a shadow), or in front of it (no caps; wrong then), or Ganovelli et al. §8.5's finite extrusion counted in two culled passes")
-            .choice(&VolumeOptions::extrusion, "extrusion", {"gpu", "cpu"},
-                    "silhouettes found and extruded by a geometry shader, or on the CPU each frame (the same volumes; bench reports the CPU's triangles per second)")
-            .choice(&VolumeOptions::openMeshes, "openMeshes", {"facing", "triangles"},
-                    "a caster that is not a closed mesh: its light-facing triangles with their open edges extruded, or every triangle its own volume")
-            .build();
-    return table;
-}
-
 namespace {
 
 class ShadowVolume final : public Technique {
 public:
-    static constexpr const char* summary = "stencil shadow volumes: silhouettes extruded to infinity and capped, counted depth-fail (or depth-pass)";
 
     bool sharesBasePass(const Light&) const override { return false; }  // the light goes after the stencil
     bool needsInfiniteFar(const Light&) const override { return true; }
@@ -349,6 +335,6 @@ private:
 
 } // namespace
 
-TechniqueEntry volumeTechnique() { return entryOf<ShadowVolume>("volume", &volumeOptionTable(), "shadow_volume.glsl"); }
+TechniqueEntry volumeTechnique() { return entryOf<ShadowVolume>("volume", "shadow_volume.glsl"); }
 
 } // namespace shadowlab

@@ -4,7 +4,7 @@
 #include "GLTestContext.h"
 #include "Comparisons.h"
 #include "ImageArtifacts.h"
-#include "core/Plane.h"
+#include "geometry/Plane.h"
 
 #include <shadowlab/Compare.h>
 #include <shadowlab/Error.h>

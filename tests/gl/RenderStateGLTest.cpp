@@ -84,8 +84,8 @@ public:
 
 void registerLeaky() {
     static const bool done = [] {
-        registerTechnique({"test-leaky", "test: a shadow pass that leaves GL state set", &leakyTable(), "shadow_none.glsl",
-                           [] { return std::make_unique<Leaky>(); }});
+        registerTechnique({"test-leaky", "test: a shadow pass that leaves GL state set", &leakyTable()},
+                          "shadow_none.glsl", [] { return std::make_unique<Leaky>(); });
         return true;
     }();
     (void)done;

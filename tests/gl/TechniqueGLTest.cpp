@@ -330,15 +330,15 @@ private:
 void registerTestTechniques() {
     static const bool done = [] {
         gl::addShaderFile("shadow_test_stencil_map.glsl", kHook);
-        registerTechnique({"test-stencil-map", "test: a shadow-map array shared by lights, casters stencilled out", &stencilMapTable(),
-                           "shadow_test_stencil_map.glsl", [] { return std::make_unique<StencilMap>(); }});
-        registerTechnique({"test-heavy", "test: a deliberately slow shadow pass", &heavyTable(), "shadow_none.glsl",
-                           [] { return std::make_unique<Heavy>(); },
-                           [](const Light& l) { return l.type == LightType::Point ? std::string("test-heavy: no point lights") : std::string(); }});
+        registerTechnique({"test-stencil-map", "test: a shadow-map array shared by lights, casters stencilled out", &stencilMapTable()},
+                          "shadow_test_stencil_map.glsl", [] { return std::make_unique<StencilMap>(); });
+        registerTechnique({"test-heavy", "test: a deliberately slow shadow pass", &heavyTable(),
+                           [](const Light& l) { return l.type == LightType::Point ? std::string("test-heavy: no point lights") : std::string(); }},
+                          "shadow_none.glsl", [] { return std::make_unique<Heavy>(); });
         static const OptionTable adjacencyTable = OptionTableFor<AdjacencyOptions>("test-adjacency").build();
         gl::addShaderFile("shadow_test_tint.glsl", kTintHook);
-        registerTechnique({"test-adjacency", "test: adjacency draws, a tinted hook, frame facts", &adjacencyTable, "shadow_test_tint.glsl",
-                           [] { return std::make_unique<AdjacencyProbe>(); }});
+        registerTechnique({"test-adjacency", "test: adjacency draws, a tinted hook, frame facts", &adjacencyTable},
+                          "shadow_test_tint.glsl", [] { return std::make_unique<AdjacencyProbe>(); });
         return true;
     }();
     (void)done;

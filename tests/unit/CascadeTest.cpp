@@ -2,8 +2,8 @@
 // fitCascade), GPU-free: where the slices split, that each cascade holds its
 // slice, and that a stabilised cascade's texel grid stays put in the world
 // while the camera moves and turns (the cause of shimmer when it does not).
-#include "core/Cascades.h"
-#include "core/LightCamera.h"
+#include "geometry/Cascades.h"
+#include "geometry/LightCamera.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// The clustered light list's binning (core/LightTiles.h): conservative, so
+// The clustered light list's binning (geometry/LightTiles.h): conservative, so
 // a light is listed in the cluster (tile and depth slice) of every pixel
 // it can reach.
-#include "core/LightTiles.h"
+#include "geometry/LightTiles.h"
 
 #include <shadowlab/Scene.h>
 

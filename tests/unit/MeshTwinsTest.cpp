@@ -1,6 +1,6 @@
-// Finding an earlier identical mesh (core/MeshTwins.h) by a hash, without
+// Finding an earlier identical mesh (geometry/MeshTwins.h) by a hash, without
 // comparing every pair of meshes: counted comparisons, not time.
-#include "core/MeshTwins.h"
+#include "geometry/MeshTwins.h"
 
 #include <shadowlab/Shapes.h>
 

@@ -1,7 +1,7 @@
-// Planar meshes and which casters a shadow map must draw (core/Plane.h,
-// castersThatMatter in core/LightCamera.h).
-#include "core/LightCamera.h"
-#include "core/Plane.h"
+// Planar meshes and which casters a shadow map must draw (geometry/Plane.h,
+// castersThatMatter in geometry/LightCamera.h).
+#include "geometry/LightCamera.h"
+#include "geometry/Plane.h"
 
 #include <shadowlab/Shapes.h>
 

@@ -1,7 +1,7 @@
 // Rectangles of pixels (core/ScreenRect.h): what a box covers on the
 // screen, and the base pass's shadowed rectangles merged into few.
 #include "core/ScreenRect.h"
-#include "core/ShadowRegion.h"
+#include "geometry/ShadowRegion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,7 +82,7 @@ TEST(ScreenRectTest, ManyRectanglesBecomeTheOneAroundThemAll) {
     EXPECT_EQ(mergedRects(many, 8), std::vector<PixelRect>{PixelRect(0, 0, 3 * static_cast<int>(kMergeAtMost) + 1, 1)});
 }
 
-// A caster in pieces (core/ShadowRegion.h: piecesSeenFrom): sides at most
+// A caster in pieces (geometry/ShadowRegion.h: piecesSeenFrom): sides at most
 // half its distance from the light, at most `most` a side, filling the box
 // exactly (each cut the same float on both sides, nothing between them).
 TEST(ShadowRegionTest, APieceOfACasterIsAtMostHalfItsDistanceWide) {

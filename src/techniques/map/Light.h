@@ -2,7 +2,7 @@
 // Technique "map": what the technique keeps per light from frame to frame:
 // its effective options, its cameras (one, a cascade each, or a cube's
 // six), its place in a texture array and the framebuffers on that place.
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 #include "gl/Object.h"
 
 #include <shadowlab/MapOptions.h>

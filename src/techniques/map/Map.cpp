@@ -62,8 +62,6 @@ void checkSplitsInView(const MapOptions& o, const Light& light, const Camera& ca
 
 class ShadowMap final : public Technique {
 public:
-    static constexpr const char* summary = "a shadow map per light: orthographic for directional, perspective for spot, a cube for point lights";
-
     void prepare(TechniqueHost& host, const FrameInfo& frame, std::span<const int> lights) override {
         if (frame.reuseShadowMaps) {
             for (int index : lights)
@@ -307,11 +305,8 @@ private:
 } // namespace
 
 TechniqueEntry mapTechnique() {
-    TechniqueEntry entry = entryOf<ShadowMap>("map", &mapOptionTable(), "shadow_map.glsl");
-    entry.unsupported = &map::unsupported;
+    TechniqueEntry entry = entryOf<ShadowMap>("map", "shadow_map.glsl");
     entry.vertexShaderFile = "shadow_map_vertex.glsl";
-    entry.baseline = &map::plainestMap;
-    entry.resolve = &map::resolveOptions;
     return entry;
 }
 

@@ -2,7 +2,7 @@
 #include "techniques/map/atlas/Atlas.h"
 
 #include "core/AtlasLayout.h"
-#include "core/LightTiles.h"
+#include "geometry/LightTiles.h"
 #include "gl/Calls.h"
 #include "techniques/map/Cache.h"
 #include "techniques/map/Variants.h"

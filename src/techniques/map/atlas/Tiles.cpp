@@ -1,7 +1,7 @@
 // Technique "map": the shadow atlas's tiles one by one (atlas/Tiles.h).
 #include "techniques/map/atlas/Tiles.h"
 
-#include "core/LightTiles.h"
+#include "geometry/LightTiles.h"
 #include "techniques/map/fit/Cameras.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,7 +1,7 @@
 // Technique "map": the lights' cameras and their casters (fit/Cameras.h).
 #include "techniques/map/fit/Cameras.h"
 
-#include "core/Cascades.h"
+#include "geometry/Cascades.h"
 #include "techniques/map/options/Filters.h"
 #include "techniques/map/options/Settings.h"
 

@@ -1,7 +1,7 @@
 // Technique "map": the screen rectangle a light's shadows can fall in (fit/Region.h).
 #include "techniques/map/fit/Region.h"
 
-#include "core/ShadowRegion.h"
+#include "geometry/ShadowRegion.h"
 
 #include "techniques/map/fit/Cameras.h"
 #include "techniques/map/options/Filters.h"

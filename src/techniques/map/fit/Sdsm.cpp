@@ -3,7 +3,7 @@
 
 #include "techniques/map/passes/CasterDraw.h"
 
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 #include "gl/Calls.h"
 #include "shadowlab_shared.h"
 

@@ -13,8 +13,8 @@
 // take their own bounds, a second reduction counting for each slice only
 // the pixels at its distances.
 #include "core/Bounds.h"
-#include "core/Cascades.h"
-#include "core/LightCamera.h"
+#include "geometry/Cascades.h"
+#include "geometry/LightCamera.h"
 #include "shadow_map_sdsm_shared.h"
 #include "techniques/Technique.h"
 

@@ -3,6 +3,8 @@
 // registry asks of them (options/OptionTable.h).
 #include "techniques/map/options/OptionTable.h"
 
+#include "techniques/Kinds.h"
+
 #include "techniques/map/options/Filters.h"
 #include "techniques/map/options/Settings.h"
 
@@ -193,5 +195,10 @@ ShadowBaseline plainestMap(const Light& light) {
 }
 
 } // namespace map
+
+TechniqueKind mapKind() {
+    return {"map", "a shadow map per light: orthographic for directional, perspective for spot, a cube for point lights", &mapOptionTable(),
+            &map::unsupported, &map::plainestMap, &map::resolveOptions};
+}
 
 } // namespace shadowlab

@@ -5,8 +5,6 @@
 // the scene is read, and the plainest map bench times the others against.
 // These, and ShadowMap::prepare, are the only readers of a light's options
 // from the light; everything else reads MapLight::options.
-#include "techniques/Technique.h"
-
 #include <shadowlab/MapOptions.h>
 #include <shadowlab/Techniques.h>
 
@@ -19,7 +17,7 @@ namespace shadowlab::map {
 /// Why "map" cannot shadow this light with its options, or "" (the registry's unsupported()).
 std::string unsupported(const Light& light);
 
-/// The light's options as the scene is read (TechniqueEntry::resolve):
+/// The light's options as the scene is read (TechniqueKind::resolve):
 /// `written`, the keys its block gave; the preset's values under them
 /// (withPreset), and filter "pcf" on a point light's cube a 4x4x4 grid.
 void resolveOptions(std::any& options, const std::vector<std::string>& written, const Light& light);

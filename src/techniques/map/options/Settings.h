@@ -5,7 +5,7 @@
 // resolved for the frame (MapLight::options: the preset applied as the
 // scene was read, size 0 resolved in ShadowMap::prepare); nothing here
 // reads them from the light.
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 
 #include <shadowlab/MapOptions.h>
 #include <shadowlab/Scene.h>

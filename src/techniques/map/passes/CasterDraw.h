@@ -32,7 +32,7 @@
 // lit point of it comes out shadowed. cascades-field's bunnies, 70k
 // triangles each, are 20-130 texels across in its cascades.
 #include "core/Bounds.h"
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 #include "techniques/Technique.h"
 
 #include <cstddef>

@@ -2,7 +2,7 @@
 // Cascaded shadow maps of a directional light (Cascades.cpp): the view's
 // depth range in slices, where the receivers the view sees start and end,
 // and each slice's light camera, tight or stabilised.
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 
 #include <glm/glm.hpp>
 

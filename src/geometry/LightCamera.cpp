@@ -1,8 +1,8 @@
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 
-#include "core/LightFitParts.h"
+#include "geometry/LightFitParts.h"
 
-#include "core/Plane.h"
+#include "geometry/Plane.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,5 +1,5 @@
 // The pieces the light cameras' fits share (LightFitParts.h).
-#include "core/LightFitParts.h"
+#include "geometry/LightFitParts.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

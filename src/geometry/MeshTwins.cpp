@@ -1,5 +1,5 @@
 // An earlier identical mesh by a hash of indices and positions (MeshTwins.h).
-#include "core/MeshTwins.h"
+#include "geometry/MeshTwins.h"
 
 #include "core/FloatBits.h"
 

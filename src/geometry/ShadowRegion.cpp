@@ -1,5 +1,5 @@
 // Where on the screen a light's shadows can fall (ShadowRegion.h).
-#include "core/ShadowRegion.h"
+#include "geometry/ShadowRegion.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -3,7 +3,7 @@
 // the scene's box, the receivers the view may see, a directional light's
 // view before its box, the nearest part of a box in a view's pyramid
 // (LightFitParts.cpp).
-#include "core/LightCamera.h"
+#include "geometry/LightCamera.h"
 
 #include <glm/glm.hpp>
 

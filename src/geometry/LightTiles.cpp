@@ -1,4 +1,4 @@
-#include "core/LightTiles.h"
+#include "geometry/LightTiles.h"
 
 #include <glm/gtc/constants.hpp>
 

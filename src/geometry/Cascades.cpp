@@ -1,8 +1,8 @@
 // Cascaded shadow maps of a directional light (Cascades.h).
-#include "core/Cascades.h"
+#include "geometry/Cascades.h"
 
-#include "core/LightFitParts.h"
-#include "core/Plane.h"
+#include "geometry/LightFitParts.h"
+#include "geometry/Plane.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -1,4 +1,4 @@
-#include "core/Plane.h"
+#include "geometry/Plane.h"
 
 #include <cmath>
 
