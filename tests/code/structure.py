@@ -14,6 +14,8 @@ import os
 import re
 import sys
 
+from floors import cycles as graph_cycles
+
 MODULE = os.path.join("src", "techniques", "map")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"techniques/map/([^"]+)"', re.MULTILINE)
 
@@ -57,21 +59,7 @@ def cycles(root, files):
             for target in INCLUDE.findall(src.read()):
                 if unit(target) != unit(f):
                     edges.setdefault(unit(f), set()).add(unit(target))
-    found, state = [], {}
-
-    def visit(u, path):
-        state[u] = 1
-        for v in sorted(edges.get(u, ())):
-            if state.get(v) == 1:
-                found.append(path[path.index(v):] + [v] if v in path else [u, v])
-            elif v not in state:
-                visit(v, path + [v])
-        state[u] = 2
-
-    for u in sorted(edges):
-        if u not in state:
-            visit(u, [u])
-    return found
+    return graph_cycles(edges)
 
 
 def main():

@@ -131,11 +131,11 @@ public:
             if (seenFar > 0.0f) input.splitRange = glm::vec2(seenFar);
             samples_.fitOnGpu(host, frame, input, fitted.buffer());
             if (cascades) fitted.readSeenFarLater();
-            p.gpuFit = &fitted.buffer();
+            p.setGpuFit(&fitted.buffer());
         }
         if (p.options.atlas)
             atlas_.draw(host, frame, p, view.index);
-        else if (p.cube)
+        else if (p.cube())
             renderCubePass(host, frame, view, res_, p);
         else
             renderMapPass(host, frame, view, res_, p);
@@ -172,7 +172,7 @@ public:
         }
         const MapArray& g = res_.arrays[p.array];
         res_.block.upload(p, g, view.light, res_.translucent);
-        map::bindLightPass(p, g, res_.samplers, res_.translucent, depthTaps(p.options, p.cube, res_.software));
+        map::bindLightPass(p, g, res_.samplers, res_.translucent, depthTaps(p.options, p.cube(), res_.software));
     }
 
     void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& view, const DebugImageKinds& kinds,
@@ -196,10 +196,10 @@ public:
         const auto found = lights_.find(view.index);
         if (found == lights_.end()) return;
         const MapLight& p = found->second;
-        if (p.cube)
-            out.insert(out.end(), p.cubeCamera.faceClipFromWorld.begin(), p.cubeCamera.faceClipFromWorld.end());
-        else if (p.gpuFit)
-            for (const glm::mat4& clip : readFittedClips(*p.gpuFit, p.cascades.size())) out.push_back(clip);  // the cameras the GPU fitted
+        if (p.cube())
+            out.insert(out.end(), p.cubeCamera().faceClipFromWorld.begin(), p.cubeCamera().faceClipFromWorld.end());
+        else if (p.gpuFit())
+            for (const glm::mat4& clip : readFittedClips(*p.gpuFit(), p.cascadeCount())) out.push_back(clip);  // the cameras the GPU fitted
         else
             for (const LightCamera& camera : p.cameras()) out.push_back(camera.clipFromWorld());
     }
@@ -254,22 +254,27 @@ private:
         const Light& light = frame.scene.lights[static_cast<std::size_t>(index)];
         MapLight p;
         p.options = o;
-        p.cube = isCube(p.options, light);
-        p.spot = light.type == LightType::Spot;
+        if (isCube(p.options, light))
+            p.kind = CubeMap{};
+        else if (cascadeCount(light, p.options) > 1)
+            p.kind = CascadeSet{};
+        else
+            p.kind = FlatMap{.spot = light.type == LightType::Spot};
         if (p.options.atlas) {
+            p.atlas.emplace();  // its tiles: Atlas::layout, with the others'
             fitCameras(p, light, frame);
             return p;
         }
-        p.array = res_.arrays.indexOf(ArrayKey::of(p.options, p.cube));
+        p.array = res_.arrays.indexOf(ArrayKey::of(p.options, p.cube()));
         p.layer = nextLayer[p.array];
-        nextLayer[p.array] += p.cube ? 1 : cascadeCount(light, p.options);
+        nextLayer[p.array] += p.cube() ? 1 : cascadeCount(light, p.options);
         checkSplitsInView(p.options, light, frame.scene.camera, index);
         fitCameras(p, light, frame);
         if (auto old = lights_.find(index); old != lights_.end()) {
             // Fit "sdsm" refits in the shadow pass (renderShadowPass).
-            if (usesSamples(p, light) && old->second.cascades.size() == p.cascades.size()) p.keepCamerasOf(old->second);
-            if (!usesSamples(p, light)) p.gpuFit = nullptr;
-            p.keepTargetsOf(old->second, !p.cube || cubeWindowDepth(p.options) == cubeWindowDepth(old->second.options));
+            if (usesSamples(p, light) && old->second.cascadeCount() == p.cascadeCount()) p.keepCamerasOf(old->second);
+            if (!usesSamples(p, light)) p.setGpuFit(nullptr);
+            p.keepTargetsOf(old->second, !p.cube() || cubeWindowDepth(p.options) == cubeWindowDepth(old->second.options));
         }
         attachTargets(p, res_.arrays[p.array]);
         return p;

@@ -40,11 +40,11 @@ void MapAtlas::layout(TechniqueHost& host, const FrameInfo& frame, std::map<int,
     // only the texels their casters may cover; the lookup finds the rest lit.
     clears_.clear();
     for (const auto& [index, p] : lights)
-        for (int t = 0; t < p->atlasTiles; ++t) {
+        for (int t = 0; t < p->atlas->count; ++t) {
             const auto f = static_cast<std::size_t>(t);
-            const TexelRect& c = p->atlasCovered[f];
-            if (!p->atlasDraw[f] || c.empty()) continue;
-            const glm::ivec2 o = p->atlasOrigins[f];
+            const TexelRect& c = p->atlas->covered[f];
+            if (!p->atlas->draw[f] || c.empty()) continue;
+            const glm::ivec2 o = p->atlas->origins[f];
             clears_.emplace_back(o.x + c.x0, o.y + c.y0, c.x1 - c.x0, c.y1 - c.y0);
         }
     noteFit(host, frame, assigned, layout, texelBudget);
@@ -108,7 +108,7 @@ MapAtlas::Requests MapAtlas::gatherRequests(const FrameInfo& frame, const std::m
             last.fill(0);
             continue;
         }
-        if (!p->cube) {
+        if (!p->cube()) {
             last[0] = tileSideKeeping(extent, settings.texelsPerPixel, minSide, maxSide, last[0]);
             ask({1, last[0]});
             continue;
@@ -150,23 +150,23 @@ AtlasLayout MapAtlas::place(const Requests& r, const ShadowAtlasSettings& settin
 void MapAtlas::assignTiles(const FrameInfo& frame, const Requests& requests, std::size_t k, MapLight& p, const AtlasLayout& layout, Assigned& out) {
     const int index = requests.order[k];
     const std::size_t first = requests.first[k];
-    p.atlasFirst = static_cast<int>(tiles_.size());
-    p.atlasTiles = requests.requests[first].tiles == 0 ? 0 : (p.cube ? 6 : 1);
-    p.atlasSides.fill(0);
+    p.atlas->first = static_cast<int>(tiles_.size());
+    p.atlas->count = requests.requests[first].tiles == 0 ? 0 : (p.cube() ? 6 : 1);
+    p.atlas->sides.fill(0);
     int largestAsked = 0, given = 0;  // its largest tile's side, asked for and placed
-    for (int t = 0; t < p.atlasTiles; ++t) {
+    for (int t = 0; t < p.atlas->count; ++t) {
         const auto f = static_cast<std::size_t>(t);
         const AtlasPlacement& place = layout.placed[first + f];  // one request a tile
         largestAsked = std::max(largestAsked, place.shrunkFrom);
         given = std::max(given, place.side);
-        p.atlasSides[f] = place.side;
-        p.atlasOrigins[f] = place.origins[0];
+        p.atlas->sides[f] = place.side;
+        p.atlas->origins[f] = place.origins[0];
         // The texels its casters may cover: only those are cleared and drawn.
-        const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
+        const glm::mat4 clip = p.cube() ? p.cubeCamera().faceClipFromWorld[f] : p.camera.clipFromWorld();
         TexelRect covered{};
         Hash key;
         key.value(clip).value(out.casters).value(p.options.slopeBias).value(p.options.offsetUnits).value(p.options.cullFront).value(place.side).value(place.origins[0]);
-        std::vector<std::size_t>& seen = p.atlasCasters[f];
+        std::vector<std::size_t>& seen = p.atlas->casters[f];
         seen.clear();
         for (std::size_t i = 0; i < frame.items.size(); ++i)
             if (castsIntoTile(frame, p, t, i)) {
@@ -174,18 +174,18 @@ void MapAtlas::assignTiles(const FrameInfo& frame, const Requests& requests, std
                 key.value(i);
                 seen.push_back(i);
             }
-        p.atlasCovered[f] = covered;
-        p.atlasKey[f] = key.h;
-        const shared::AtlasTile record = tileOf(clip, p.cube ? 1.0f : p.camera.clipFromView[1][1], place.origins[0], place.side, size_, covered);
+        p.atlas->covered[f] = covered;
+        p.atlas->key[f] = key.h;
+        const shared::AtlasTile record = tileOf(clip, p.cube() ? 1.0f : p.camera.clipFromView[1][1], place.origins[0], place.side, size_, covered);
         pending_.push_back(record);
         tiles_.push_back(record);
         // Kept, drawn again, or drawn again if the budget allows.
         const Drawn& before = drawn_[index][f];
-        p.atlasDraw[f] = true;
+        p.atlas->draw[f] = true;
         if (!frame.cacheShadowMaps || !before.valid) {
             ++out.mustDraw;
         } else if (before.key == key.h) {
-            p.atlasDraw[f] = false;
+            p.atlas->draw[f] = false;
         } else {
             out.changed.push_back({&p, index, t, before.frame});
         }
@@ -210,10 +210,10 @@ void MapAtlas::applyBudget(TechniqueHost& host, const FrameInfo& frame, Assigned
         }
         const auto f = static_cast<std::size_t>(c.tile);
         const Drawn& before = drawn_[c.index][f];
-        c.p->atlasDraw[f] = false;
+        c.p->atlas->draw[f] = false;
         behind_ = true;
-        c.p->atlasCovered[f] = before.covered;
-        tiles_[static_cast<std::size_t>(c.p->atlasFirst + c.tile)] = before.record;
+        c.p->atlas->covered[f] = before.covered;
+        tiles_[static_cast<std::size_t>(c.p->atlas->first + c.tile)] = before.record;
     }
     if (assigned.mustDraw > budget)
         host.note("shadowAtlas.updateBudget: " + std::to_string(assigned.mustDraw) + " tiles were new to their place in the atlas and drawn, more than the budget of " +
@@ -248,28 +248,28 @@ void MapAtlas::draw(TechniqueHost& host, const FrameInfo& frame, const MapLight&
     clears_.clear();
     double cleared = 0.0;
     int kept = 0, redrawn = 0;
-    for (int t = 0; t < p.atlasTiles; ++t) {
+    for (int t = 0; t < p.atlas->count; ++t) {
         const auto f = static_cast<std::size_t>(t);
-        if (!p.atlasDraw[f]) {
+        if (!p.atlas->draw[f]) {
             ++kept;  // its map from an earlier frame (cacheShadowMaps)
             continue;
         }
-        drawn_[index][f] = {true, p.atlasKey[f], frame.frameIndex, pending_[static_cast<std::size_t>(p.atlasFirst + t)], p.atlasCovered[f]};
+        drawn_[index][f] = {true, p.atlas->key[f], frame.frameIndex, pending_[static_cast<std::size_t>(p.atlas->first + t)], p.atlas->covered[f]};
         ++redrawn;
-        const TexelRect& c = p.atlasCovered[f];
+        const TexelRect& c = p.atlas->covered[f];
         if (!c.empty()) cleared += static_cast<double>(c.x1 - c.x0) * static_cast<double>(c.y1 - c.y0);
     }
     const std::size_t drawn = drawTiles(host, frame, p);
     host.count("triangles", static_cast<double>(drawn));
-    host.count("atlasTiles", static_cast<double>(p.atlasTiles));
+    host.count("atlasTiles", static_cast<double>(p.atlas->count));
     double texels = 0.0;
-    for (int t = 0; t < p.atlasTiles; ++t) texels += static_cast<double>(p.atlasSides[static_cast<std::size_t>(t)]) * p.atlasSides[static_cast<std::size_t>(t)];
-    host.count("tileSide", static_cast<double>(*std::max_element(p.atlasSides.begin(), p.atlasSides.end())));  // its largest
+    for (int t = 0; t < p.atlas->count; ++t) texels += static_cast<double>(p.atlas->sides[static_cast<std::size_t>(t)]) * p.atlas->sides[static_cast<std::size_t>(t)];
+    host.count("tileSide", static_cast<double>(*std::max_element(p.atlas->sides.begin(), p.atlas->sides.end())));  // its largest
     host.count("tileTexels", texels);
     host.count("clearedTexels", cleared);
     host.count("tilesDrawn", redrawn);
     host.count("tilesKept", kept);
-    if (p.atlasFirst == 0) host.count("atlasTexels", texelsUsed_);  // the whole atlas's, once a frame: with its first tile
+    if (p.atlas->first == 0) host.count("atlasTexels", texelsUsed_);  // the whole atlas's, once a frame: with its first tile
 }
 
 std::size_t MapAtlas::drawTiles(TechniqueHost& host, const FrameInfo& frame, const MapLight& p) {
@@ -304,22 +304,22 @@ std::size_t MapAtlas::drawTiles(TechniqueHost& host, const FrameInfo& frame, con
         });
     };
     host.apply(state);
-    for (int t = 0; t < p.atlasTiles; ++t) {
+    for (int t = 0; t < p.atlas->count; ++t) {
         const auto f = static_cast<std::size_t>(t);
-        if (!p.atlasDraw[f] || p.atlasCovered[f].empty()) continue;
-        const glm::ivec2 o = p.atlasOrigins[f];
-        glViewport(o.x, o.y, p.atlasSides[f], p.atlasSides[f]);
-        const glm::mat4 clip = p.cube ? p.cubeCamera.faceClipFromWorld[f] : p.camera.clipFromWorld();
+        if (!p.atlas->draw[f] || p.atlas->covered[f].empty()) continue;
+        const glm::ivec2 o = p.atlas->origins[f];
+        glViewport(o.x, o.y, p.atlas->sides[f], p.atlas->sides[f]);
+        const glm::mat4 clip = p.cube() ? p.cubeCamera().faceClipFromWorld[f] : p.camera.clipFromWorld();
         gl::programUniformMatrix4fv(batched.id(), 0, 1, GL_FALSE, &clip[0][0]);
         gl::programUniformMatrix4fv(single.id(), 0, 1, GL_FALSE, &clip[0][0]);
         // The casters this tile's camera can see (layout found them).
         if (!p.options.cullFront) {
-            drawCasters(p.atlasCasters[f]);
+            drawCasters(p.atlas->casters[f]);
             continue;
         }
         for (const int sides : {1, -1, 0}) {
             std::vector<std::size_t> group;
-            for (std::size_t i : p.atlasCasters[f])
+            for (std::size_t i : p.atlas->casters[f])
                 if (winding(i) == sides) group.push_back(i);
             if (group.empty()) continue;
             host.apply(sides > 0 ? state : sides < 0 ? mirrored : open);
@@ -339,7 +339,7 @@ void MapAtlas::bind() const {
 }
 
 glm::vec4 MapAtlas::shadowOf(const MapLight& p) {
-    return {static_cast<float>(p.atlasFirst), static_cast<float>(p.atlasTiles), p.options.normalBias, p.options.filter == MapFilter::Hardware ? 1.0f : 0.0f};
+    return {static_cast<float>(p.atlas->first), static_cast<float>(p.atlas->count), p.options.normalBias, p.options.filter == MapFilter::Hardware ? 1.0f : 0.0f};
 }
 
 } // namespace shadowlab::map

@@ -14,8 +14,8 @@ DebugImage atlasImage(const MapAtlas& atlas, const std::map<int, const MapLight*
     // The used part: the tiles' bounding rectangle (Z-order keeps them near the origin).
     glm::ivec2 used(1);
     for (const auto& [index, p] : lights)
-        for (int t = 0; t < p->atlasTiles; ++t)
-            used = glm::max(used, p->atlasOrigins[static_cast<std::size_t>(t)] + glm::ivec2(p->atlasSides[static_cast<std::size_t>(t)]));
+        for (int t = 0; t < p->atlas->count; ++t)
+            used = glm::max(used, p->atlas->origins[static_cast<std::size_t>(t)] + glm::ivec2(p->atlas->sides[static_cast<std::size_t>(t)]));
     used = glm::min(used, glm::ivec2(std::max(atlas.size(), 1)));
     DebugImage out;
     out.name = "atlas";
@@ -40,15 +40,15 @@ DebugImage atlasImage(const MapAtlas& atlas, const std::map<int, const MapLight*
     for (const auto& [index, p] : lights) {
         const float h = std::fmod(0.618034f * static_cast<float>(hue++), 1.0f);
         const glm::vec3 colour = glm::clamp(glm::abs(glm::fract(glm::vec3(h) + glm::vec3(1.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 6.0f - 3.0f) - 1.0f, 0.0f, 1.0f);
-        for (int t = 0; t < p->atlasTiles; ++t) {
-            const glm::ivec2 o = p->atlasOrigins[static_cast<std::size_t>(t)];
+        for (int t = 0; t < p->atlas->count; ++t) {
+            const glm::ivec2 o = p->atlas->origins[static_cast<std::size_t>(t)];
             float lo = 1.0f;
-            const TexelRect& cover = p->atlasCovered[static_cast<std::size_t>(t)];
+            const TexelRect& cover = p->atlas->covered[static_cast<std::size_t>(t)];
             for (int y = o.y + cover.y0; y < o.y + cover.y1; y += step)
                 for (int x = o.x + cover.x0; x < o.x + cover.x1; x += step) lo = std::min(lo, at(x, y));
-            const int x0 = (o.x + step - 1) / step, y0 = (o.y + step - 1) / step, x1 = (o.x + p->atlasSides[static_cast<std::size_t>(t)]) / step,
-                      y1 = (o.y + p->atlasSides[static_cast<std::size_t>(t)]) / step;
-            const TexelRect& c = p->atlasCovered[static_cast<std::size_t>(t)];
+            const int x0 = (o.x + step - 1) / step, y0 = (o.y + step - 1) / step, x1 = (o.x + p->atlas->sides[static_cast<std::size_t>(t)]) / step,
+                      y1 = (o.y + p->atlas->sides[static_cast<std::size_t>(t)]) / step;
+            const TexelRect& c = p->atlas->covered[static_cast<std::size_t>(t)];
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
                     const bool edge = x == x0 || y == y0 || x == x1 - 1 || y == y1 - 1;
@@ -67,7 +67,7 @@ DebugImage atlasLightTiles(const MapAtlas& atlas, const MapLight& p) {
     DebugImage out;
     out.name = "atlas-tiles";
     out.kind = DebugImageKind::ShadowMap;  // the light's map: its tiles
-    const int tiles = p.atlasTiles;
+    const int tiles = p.atlas->count;
     if (tiles == 0 || atlas.size() == 0) return out;
     // Each tile's first value and its column in the image: side by side, bottom-aligned.
     std::vector<std::size_t> first(static_cast<std::size_t>(tiles) + 1, 0);
@@ -75,28 +75,28 @@ DebugImage atlasLightTiles(const MapAtlas& atlas, const MapLight& p) {
     int height = 0;
     const int gap = 2;
     for (int t = 0; t < tiles; ++t) {
-        const int side = p.atlasSides[static_cast<std::size_t>(t)];
+        const int side = p.atlas->sides[static_cast<std::size_t>(t)];
         first[static_cast<std::size_t>(t) + 1] = first[static_cast<std::size_t>(t)] + static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
-        if (t > 0) column[static_cast<std::size_t>(t)] = column[static_cast<std::size_t>(t) - 1] + p.atlasSides[static_cast<std::size_t>(t) - 1] + gap;
+        if (t > 0) column[static_cast<std::size_t>(t)] = column[static_cast<std::size_t>(t) - 1] + p.atlas->sides[static_cast<std::size_t>(t) - 1] + gap;
         height = std::max(height, side);
     }
     out.values.resize(first.back());
     for (int t = 0; t < tiles; ++t) {
-        const glm::ivec2 o = p.atlasOrigins[static_cast<std::size_t>(t)];
-        const int side = p.atlasSides[static_cast<std::size_t>(t)];
+        const glm::ivec2 o = p.atlas->origins[static_cast<std::size_t>(t)];
+        const int side = p.atlas->sides[static_cast<std::size_t>(t)];
         const std::size_t area = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
         gl::getTextureSubImage(atlas.texture().id(), 0, o.x, o.y, 0, side, side, 1, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(area * sizeof(float)),
                              out.values.data() + first[static_cast<std::size_t>(t)]);
     }
-    out.image.width = column.back() + p.atlasSides[static_cast<std::size_t>(tiles) - 1];
+    out.image.width = column.back() + p.atlas->sides[static_cast<std::size_t>(tiles) - 1];
     out.image.height = height;
     out.image.pixels.assign(static_cast<std::size_t>(out.image.width) * static_cast<std::size_t>(height) * 4, 255);
     for (int t = 0; t < tiles; ++t) {
-        const int side = p.atlasSides[static_cast<std::size_t>(t)];
+        const int side = p.atlas->sides[static_cast<std::size_t>(t)];
         const std::size_t area = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
         float* d = out.values.data() + first[static_cast<std::size_t>(t)];
         // Outside what was cleared and drawn this frame: the far plane (nothing there).
-        const TexelRect& c = p.atlasCovered[static_cast<std::size_t>(t)];
+        const TexelRect& c = p.atlas->covered[static_cast<std::size_t>(t)];
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x)
                 if (x < c.x0 || x >= c.x1 || y < c.y0 || y >= c.y1) d[static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x)] = 1.0f;

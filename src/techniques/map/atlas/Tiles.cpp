@@ -35,7 +35,7 @@ shared::AtlasTile tileOf(const glm::mat4& clipFromWorld, float projectionY, glm:
 
 bool castsIntoTile(const FrameInfo& frame, const MapLight& p, int t, std::size_t i) {
     if (!frame.items[i].castsShadows) return false;
-    return p.cube ? (p.faceMask(i) & (1u << t)) != 0 : castsInto(p.camera, frame, i, false);
+    return p.cube() ? (p.faceMask(i) & (1u << t)) != 0 : castsInto(p.camera, frame, i, false);
 }
 
 gl::Sampler atlasSampler(bool compare) {

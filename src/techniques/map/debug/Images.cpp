@@ -70,7 +70,7 @@ ImageRGBA8 cubeCross(const MapArray& g, const MapLight& p, std::vector<float>& v
     for (int f = 0; f < 6; ++f) {
         std::vector<float>& depth = faces[static_cast<std::size_t>(f)];
         depth = readLayer(g, 6 * p.layer + f);
-        if (cubeWindowDepth(p.options)) windowToDistance(depth, g.size(), p.cubeCamera);
+        if (cubeWindowDepth(p.options)) windowToDistance(depth, g.size(), p.cubeCamera());
         for (float d : depth)
             if (d < 1.0f) {
                 lo = std::min(lo, d);
@@ -127,7 +127,7 @@ ImageRGBA8 frameView(TechniqueHost& host, const FrameInfo& frame, const LightVie
     res.block.upload(p, res.arrays[p.array], view.light, res.translucent);
     const int cascades = static_cast<int>(p.cameras().size());
     host.drawItems(ItemFilter::Opaque, host.program({{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, fragmentFile}},
-                                                  FrameViewVariant{p.cube ? 1 : cascades, p.cube}.defines()}));
+                                                  FrameViewVariant{p.cube() ? 1 : cascades, p.cube()}.defines()}));
     ImageRGBA8 image{size.x, size.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size.x) * size.y * 4)};
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     gl::getTextureImage(colour.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.pixels.size()), image.pixels.data());
@@ -180,12 +180,12 @@ void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& v
                  const DebugImageKinds& kinds, std::vector<DebugImage>& out) {
     const MapArray& g = res.arrays[p.array];
     const std::span<const LightCamera> cameras = p.cameras();
-    if (p.cube && kinds.wants(DebugImageKind::CubeCross)) {
+    if (p.cube() && kinds.wants(DebugImageKind::CubeCross)) {
         std::vector<float> values;
         ImageRGBA8 cross = cubeCross(g, p, values);
         out.push_back({"cube", std::move(cross), std::move(values), DebugImageKind::CubeCross});
     }
-    if (!p.cube && kinds.wants(DebugImageKind::ShadowMap))
+    if (!p.cube() && kinds.wants(DebugImageKind::ShadowMap))
         for (std::size_t c = 0; c < cameras.size(); ++c)
             out.push_back({cameras.size() > 1 ? "cascade" + std::to_string(c) + "-map" : std::string("map"), mapImage(g, p.layer + static_cast<int>(c), cameras[c], drawnTexels(frame, g, p, cameras[c])), {}, DebugImageKind::ShadowMap});
     if (kinds.wants(DebugImageKind::TexelDensity)) {
@@ -193,7 +193,7 @@ void debugImages(TechniqueHost& host, const FrameInfo& frame, const LightView& v
         ImageRGBA8 density = frameView(host, frame, view, res, p, "shadow_map_density.frag", &footprint);
         out.push_back({"texel-density", std::move(density), std::move(footprint), DebugImageKind::TexelDensity});
     }
-    if (!p.cube && cameras.size() > 1 && kinds.wants(DebugImageKind::Cascades))
+    if (!p.cube() && cameras.size() > 1 && kinds.wants(DebugImageKind::Cascades))
         out.push_back({"cascades", frameView(host, frame, view, res, p, "shadow_map_cascades.frag"), {}, DebugImageKind::Cascades});
 }
 

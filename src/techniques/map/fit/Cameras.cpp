@@ -74,28 +74,29 @@ void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const 
     std::string problem;  // checked when the scene was read (the registry's unsupported())
     const std::vector<float> given = parseSplits(p.options, problem);
     const float near = cascadeStart(camera, in, p.options.stabilize, given.empty() ? far : given.front());
-    p.cascadeStart = near;
-    p.cascadeFar = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
-    p.cascades.clear();
+    CascadeSet& set = *p.cascadeSet();
+    set.start = near;
+    set.far = cascadeSplits(near, far, p.options.cascades, p.options.cascadeLambda, given);
+    set.cameras.clear();
     // A slice's lookups reach into the next cascade over its far blend
     // share: cascade c is read from slice c - 1's near end on for its depth
     // range (conservative), and from where that share starts (the shader's
     // cascadeBlend: that share of the slice, at its far end, the slice
     // before it counted from 0), a thousandth nearer, for its casters.
     const LightWarp viewWarp = lightWarp(frame, p.options);
-    for (std::size_t c = 0; c < p.cascadeFar.size(); ++c) {
-        const float sliceNear = c == 0 ? near : p.cascadeFar[c - 1];
-        const float blended = c == 0 ? near : sliceNear - std::max(p.options.cascadeBlend, 0.0f) * (sliceNear - (c < 2 ? 0.0f : p.cascadeFar[c - 2]));
+    for (std::size_t c = 0; c < set.far.size(); ++c) {
+        const float sliceNear = c == 0 ? near : set.far[c - 1];
+        const float blended = c == 0 ? near : sliceNear - std::max(p.options.cascadeBlend, 0.0f) * (sliceNear - (c < 2 ? 0.0f : set.far[c - 2]));
         // A warped slice's near plane stands for the slice's own near end at the least.
         LightWarp warp = viewWarp;
         warp.nearDistance = std::max(warp.nearDistance, sliceNear);
-        p.cascades.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, p.cascadeFar[c], p.options.stabilize, in,
-                                        c < 2 ? near : p.cascadeFar[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr,
-                                        std::max(0.999f * blended, near)));
+        set.cameras.push_back(fitCascade(glm::normalize(light.direction), camera, aspect, sliceNear, set.far[c], p.options.stabilize, in,
+                                         c < 2 ? near : set.far[c - 2], p.options.warp == MapWarp::Lispsm ? &warp : nullptr,
+                                         std::max(0.999f * blended, near)));
     }
-    p.camera = p.cascades.front();
+    p.camera = set.cameras.front();
     const glm::mat4& v = frame.viewFromWorld;
-    p.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
+    set.viewForward = -glm::vec3(v[0][2], v[1][2], v[2][2]);
 }
 
 // The map's fit option as core/LightCamera takes it.
@@ -127,16 +128,17 @@ void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame,
     const FitInput in = fitInputOf(p, frame);
     const Camera& camera = frame.scene.camera;
     const float aspect = aspectOf(frame);
-    const float near = p.cascadeStart;  // fitCascades' (the GPU's camera.x: gpuFitInput)
+    CascadeSet& set = *p.cascadeSet();
+    const float near = set.start;  // fitCascades' (the GPU's camera.x: gpuFitInput)
     // The GPU splits over seenFar when it is known (its far end a frame
     // before), and its last slice ends anywhere up to the reach; not known,
     // over this frame's far end, anywhere up to the reach (the splits above).
     const bool known = seenFar > 0.0f;
-    std::vector<float> ends = p.cascadeFar;
+    std::vector<float> ends = set.far;
     if (known) {
         std::string problem;  // checked when the scene was read
         ends = cascadeSplits(near, seenFar, p.options.cascades, p.options.cascadeLambda, parseSplits(p.options, problem));
-        ends.back() = std::max(ends.back(), p.cascadeFar.back());
+        ends.back() = std::max(ends.back(), set.far.back());
     }
     // A thousandth more at either end: the GPU's splits are the same sums in
     // other float arithmetic; the first slice and the second's lookups from
@@ -148,7 +150,7 @@ void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame,
         const float readFrom = known && c > 1 ? ends[c - 2] * 0.999f : near;
         const float sliceFar = std::max(std::min(ends[c] * 1.001f, camera.farPlane), sliceNear * 1.001f);
         if (p.options.stabilize) {
-            p.cascades[c] = fitCascade(direction, camera, aspect, std::max(sliceNear, near), sliceFar, true, in, std::max(readFrom, near));
+            set.cameras[c] = fitCascade(direction, camera, aspect, std::max(sliceNear, near), sliceFar, true, in, std::max(readFrom, near));
             continue;
         }
         // Not stabilised: the GPU fits the slice to its samples, which lie
@@ -175,9 +177,9 @@ void fitCullingCascades(MapLight& p, const Light& light, const FrameInfo& frame,
             const float pad = std::max(region.hi.x - region.lo.x, region.hi.y - region.lo.y) * (in.paddingTexels + 2.0f) / static_cast<float>(std::max(in.size, 1));
             cam.clipFromView = glm::ortho(region.lo.x - pad, region.hi.x + pad, region.lo.y - pad, region.hi.y + pad, cam.nearPlane, cam.farPlane);
         }
-        p.cascades[c] = cam;
+        set.cameras[c] = cam;
     }
-    p.camera = p.cascades.front();
+    p.camera = set.cameras.front();
 }
 
 Bounds sdsmReach(const Light& light, const FrameInfo& frame, const glm::mat4& clipFromWorld) {
@@ -259,15 +261,15 @@ GpuFitInput gpuFitInput(const MapLight& p, const Light& light, const FrameInfo& 
 
 void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples) {
     const FitInput in = fitInputOf(p, frame, samples);
-    if (p.cube) {
+    if (p.cube()) {
         const auto [nearPlane, farPlane] = cubeNearFar(p.options);
-        p.cubeCamera = fitCube(light, lightFit(p.options.fit), in, nearPlane, farPlane);
+        p.cubeMap().camera = fitCube(light, lightFit(p.options.fit), in, nearPlane, farPlane);
     }
     if (p.options.preset == MapPreset::LearnOpenGL && light.type == LightType::Directional)
         p.camera = learnOpenGlCamera(light, p.options.size);
-    else if (light.type == LightType::Point && !p.cube)  // preset "lecture-000"
+    else if (light.type == LightType::Point && !p.cube())  // preset "lecture-000"
         p.camera = lecturePointCamera(light, p.options.size);
-    else if (p.cube)
+    else if (p.cube())
         ;  // the cube's cameras above
     else if (light.type == LightType::Spot)
         p.camera = fitSpot(light, lightFit(p.options.fit), in);
@@ -279,10 +281,12 @@ void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const B
     }
     // The presets' fixed cameras skip what shadows nothing too (a ground
     // plane under everything): their maps stay the peers', drawn with less.
-    if (!p.cube && p.camera.casts.empty()) {
+    if (!p.cube() && p.camera.casts.empty()) {
         p.camera.casts = castersThatMatter(towardsLight(light), p.camera.viewFromWorld, in);
     }
-    p.nearestCaster = p.options.filter == MapFilter::Pcss && (p.cube || light.type == LightType::Spot) ? nearestCaster(p, light, frame) : 0.0f;
+    const float nearest = p.options.filter == MapFilter::Pcss && (p.cube() || light.type == LightType::Spot) ? nearestCaster(p, light, frame) : 0.0f;
+    if (FlatMap* flat = std::get_if<FlatMap>(&p.kind)) flat->nearestCaster = nearest;
+    if (p.cube()) p.cubeMap().nearestCaster = nearest;
 }
 
 float nearestCaster(const MapLight& p, const Light& light, const FrameInfo& frame) {
@@ -291,7 +295,7 @@ float nearestCaster(const MapLight& p, const Light& light, const FrameInfo& fram
     for (std::size_t i = 0; i < frame.items.size(); ++i) {
         if (!frame.items[i].castsShadows) continue;
         const Bounds& box = frame.itemBounds[i];
-        if (p.cube) {
+        if (p.cube()) {
             if (p.faceMask(i) == 0) continue;
             nearest = std::min(nearest, glm::length(glm::max(glm::max(box.lo - light.position, light.position - box.hi), glm::vec3(0.0f))));
         } else if (castsInto(p.camera, frame, i, false)) {
@@ -302,7 +306,7 @@ float nearestCaster(const MapLight& p, const Light& light, const FrameInfo& fram
     }
     if (!std::isfinite(nearest)) return 0.0f;
     // Nothing nearer than the camera's near plane is drawn.
-    return std::max(nearest, p.cube ? p.cubeCamera.nearPlane : p.camera.nearPlane);
+    return std::max(nearest, p.cube() ? p.cubeCamera().nearPlane : p.camera.nearPlane);
 }
 
 bool castsInto(const LightCamera& camera, const FrameInfo& frame, std::size_t i, bool moments) {
@@ -329,7 +333,7 @@ std::optional<TexelRect> lookupTexels(const LightCamera& camera, const MapOption
 }
 
 std::optional<TexelRect> drawnTexels(const FrameInfo& frame, const MapArray& g, const MapLight& p, const LightCamera& camera) {
-    if (!frame.shadowRegions || g.hasMoments() || g.mipmaps() || isPacked(g.format()) || p.gpuFit) return std::nullopt;
+    if (!frame.shadowRegions || g.hasMoments() || g.mipmaps() || isPacked(g.format()) || p.gpuFit()) return std::nullopt;
     if (p.options.outside == MapOutside::Repeat) return std::nullopt;  // a lookup outside reads the map tiled: any texel
     return lookupTexels(camera, p.options, g.size());
 }

@@ -10,7 +10,7 @@
 
 namespace shadowlab::map {
 
-/// Fits `p`'s cameras for `light` (p.options and p.cube already set): a
+/// Fits `p`'s cameras for `light` (p.options and p.cube() already set): a
 /// cube's six faces, a spot's frustum, a directional light's box or
 /// cascades, or a preset's fixed camera.
 /// `samples`: points in sdsmLightView()'s space that replace the

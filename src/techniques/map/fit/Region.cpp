@@ -30,7 +30,7 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
     if (o.atlas || o.representation != MapRepresentation::Depth) return std::nullopt;
     if (o.slopeBias < 0.0f || o.offsetUnits < 0.0f) return std::nullopt;  // stored depths nearer than the casters
     const glm::vec3 lamp = light.position;
-    const float far = p.cubeCamera.farPlane, perDistance = 2.0f / static_cast<float>(size);
+    const float far = p.cubeCamera().farPlane, perDistance = 2.0f / static_cast<float>(size);
     const bool pcss = o.filter == MapFilter::Pcss;
     // The receivers: the nearest to the light, the farthest from the viewer
     // (a filter radius grows with it); every item: the farthest from the light.
@@ -56,8 +56,8 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
     const bool radial = o.filter == MapFilter::Grid || o.filter == MapFilter::Pcf20 || o.filter == MapFilter::Poisson;
     const float reach = radial ? 1.7320508f * o.diskRadius * (1.0f + std::max(o.diskGrowth, 0.0f) * viewerFar / far) : 0.0f;
     if (pcss) {
-        if (!(p.nearestCaster > 0.0f) || !(nearestReceiver > 0.0f)) return std::nullopt;
-        angle += light.size / std::min(p.nearestCaster, nearestReceiver);
+        if (!(p.nearestCaster() > 0.0f) || !(nearestReceiver > 0.0f)) return std::nullopt;
+        angle += light.size / std::min(p.nearestCaster(), nearestReceiver);
     }
     // How much nearer the light than a caster a receiver it shadows may be
     // (world units): the constant bias (the presets' in world units, else
@@ -70,7 +70,7 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
     // Each caster's box widened by the taps' reach where it lies farthest;
     // too wide for a perspective view, its corners' rays tilted by the
     // reach at each receiver.
-    const TapReach taps{texelAngle, reach, pcss ? light.size : 0.0f, pcss ? p.nearestCaster : 1.0f};
+    const TapReach taps{texelAngle, reach, pcss ? light.size : 0.0f, pcss ? p.nearestCaster() : 1.0f};
     const auto nearPlaneFor = [&](float nearestDepth) {
         return pcss ? 0.5f * std::min(nearestDepth, nearestReceiver) : std::max(nearestDepth - slack, 1e-3f * nearestDepth);
     };
@@ -100,9 +100,9 @@ std::optional<std::vector<PixelRect>> cubeShadowedPixels(const MapLight& p, cons
 }
 
 std::optional<std::vector<PixelRect>> shadowedPixels(const MapLight& p, const Light& light, const FrameInfo& frame, int size) {
-    if (p.cube) return cubeShadowedPixels(p, light, frame, size);
+    if (p.cube()) return cubeShadowedPixels(p, light, frame, size);
     const MapOptions& o = p.options;
-    if (o.atlas || p.gpuFit) return std::nullopt;
+    if (o.atlas || p.gpuFit()) return std::nullopt;
     if (o.outside == MapOutside::Repeat) return std::nullopt;  // shadows anywhere outside the map, by design
     if (o.representation != MapRepresentation::Depth || o.filter == MapFilter::Dither4) return std::nullopt;
     if (o.slopeBias < 0.0f || o.offsetUnits < 0.0f) return std::nullopt;  // stored depths nearer than the casters

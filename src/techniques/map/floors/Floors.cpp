@@ -89,7 +89,7 @@ void MapFloors::draw(TechniqueHost& host, MapBlock& block, const FrameInfo& fram
             drawDepthCasters(
                 host, frame, true, [&](bool) -> const gl::Program& { return bare; },
                 [&](std::size_t i, const gl::Program&) { return castsInto(camera, frame, i, g.hasMoments()); }, state,
-                [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); }, casterDetail(p.gpuFit ? 0.0f : p.options.lodTexels, camera, frame));
+                [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); }, casterDetail(p.gpuFit() ? 0.0f : p.options.lodTexels, camera, frame));
         }
     }
     // The target holds the last camera's casters (a cascade's: the farthest),
@@ -146,16 +146,16 @@ void MapFloors::drawCube(TechniqueHost& host, MapBlock& block, const FrameInfo& 
             gl::namedFramebufferTextureLayer(cubeFbo_.id(), GL_DEPTH_ATTACHMENT, cube_.id(), 0, f);
             const gl::RenderState state = clear(host, cubeFbo_, false);
             // The bare vertex shader reads map.lightClipFromWorld: this face's camera.
-            block.writeWithLightClip(p.cubeCamera.faceClipFromWorld[static_cast<std::size_t>(f)]);
+            block.writeWithLightClip(p.cubeCamera().faceClipFromWorld[static_cast<std::size_t>(f)]);
             // The casters the pass draws, without the far sides it leaves out.
             drawDepthCasters(
                 host, frame, true, [&](bool) -> const gl::Program& { return bare; },
                 [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state,
-                [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); }, casterDetail(p.options.lodTexels, p.cubeCamera, g.size(), frame));
+                [&](std::size_t i) { return seesWhole(p.cubeCamera(), frame.itemBounds[i]); }, casterDetail(p.options.lodTexels, p.cubeCamera(), g.size(), frame));
         }
         block.restore();
     }
-    drawLookup(host, frame, p.cubeCamera.position);
+    drawLookup(host, frame, p.cubeCamera().position);
 }
 
 } // namespace shadowlab::map

@@ -40,14 +40,14 @@ void bindTransmittance(const MapArray& g, const MapSamplers& samplers, bool tran
 // depth array on the next unit through a sampler without comparison.
 void bindRawDepth(const MapLight& p, const MapArray& g, const MapSamplers& samplers) {
     if (!filterInfo(p.options.filter).rawDepth || isPacked(g.format())) return;
-    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, p.layerView ? p.layerView.id() : g.depth.id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST + 1, p.targets.layerView ? p.targets.layerView.id() : g.depth.id());
     glBindSampler(SL_UNIT_SHADOW_FIRST + 1, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
 }
 
 // Filters read across face edges (RenderState::seamlessCubeMaps; the test with a plane over the seams).
 void bindCube(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, DepthTaps taps) {
     const bool packed = isPacked(g.format());
-    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : p.layerView ? p.layerView.id() : g.depth.id());
+    gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, packed ? g.packed.id() : p.targets.layerView ? p.targets.layerView.id() : g.depth.id());
     const bool linear = taps == DepthTaps::Linear;
     // A reversed window depth (cubeWindowDepth): lit where the receiver's is the greater.
     const bool reversed = cubeWindowDepth(p.options);
@@ -80,7 +80,7 @@ void MapSamplers::create() {
 }
 
 void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samplers, bool translucent, DepthTaps taps) {
-    if (p.cube) {
+    if (p.cube()) {
         bindCube(p, g, samplers, translucent, taps);
         return;
     }
@@ -97,7 +97,7 @@ void bindLightPass(const MapLight& p, const MapArray& g, const MapSamplers& samp
         glBindSampler(SL_UNIT_SHADOW_FIRST, g.mipmaps() ? samplers.plainNearestMip.id() : samplers.plainNearest.id());
     } else {
         // One 2D map: a 2D view of its layer (MapSettings: layerView).
-        gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, p.layerView ? p.layerView.id() : g.depth.id());
+        gl::bindTextureUnit(SL_UNIT_SHADOW_FIRST, p.targets.layerView ? p.targets.layerView.id() : g.depth.id());
         // Bilinear compares: the hardware filter, and the grid's paired taps (shadow_map.glsl).
         const bool linear = taps == DepthTaps::Linear;
         glBindSampler(SL_UNIT_SHADOW_FIRST, taps == DepthTaps::Plain ? samplers.plainNearest.id()

@@ -44,7 +44,7 @@ const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::
 
 // A cube's members: its faces' cameras, its far plane, bias and filter radius.
 void cubeMembers(shared::MapUniforms& u, const MapLight& p, const MapArray& g) {
-    const CubeCamera& c = p.cubeCamera;
+    const CubeCamera& c = p.cubeCamera();
     for (std::size_t f = 0; f < 6; ++f) u.faceClipFromWorld[f] = c.faceClipFromWorld[f];
     const bool presetBias = usesPresetBias(p.options, true);
     // The presets give their constant bias in world units (Lawonn, LearnOpenGL: 0.15).
@@ -61,14 +61,17 @@ void cubeMembers(shared::MapUniforms& u, const MapLight& p, const MapArray& g) {
 
 // The cascades' members: each one's texture-space matrix, far end, texel and planes.
 void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
-    const glm::dmat4 worldFromFirst = p.cascades.empty() ? glm::dmat4(1.0) : glm::inverse(glm::dmat4(kBias * p.cascades.front().clipFromWorld()));
-    for (std::size_t c = 0; c < p.cascades.size(); ++c) {
-        u.cascadeShadowFromWorld[c] = kBias * p.cascades[c].clipFromWorld();
+    static const CascadeSet none;  // a light without cascades: none, and the default view direction
+    const CascadeSet& set = p.cascadeSet() ? *p.cascadeSet() : none;
+    const std::vector<LightCamera>& cascades = set.cameras;
+    const glm::dmat4 worldFromFirst = cascades.empty() ? glm::dmat4(1.0) : glm::inverse(glm::dmat4(kBias * cascades.front().clipFromWorld()));
+    for (std::size_t c = 0; c < cascades.size(); ++c) {
+        u.cascadeShadowFromWorld[c] = kBias * cascades[c].clipFromWorld();
         // Warped: its texel's size per point (shadow_map_bias.glsl: mapWarpedTexel). The
         // cascades share cascade 0's light view, whose warpAcross and warpU (the flag) upload() sets.
-        if (p.cascades[c].warped) {
-            u.cascadeWarpPlane[c] = p.cascades[c].warpPlane;
-            u.cascadeWarp[c] = glm::vec4(p.cascades[c].warpU, p.cascades[c].warpV, 0.0f, 0.0f);
+        if (cascades[c].warped) {
+            u.cascadeWarpPlane[c] = cascades[c].warpPlane;
+            u.cascadeWarp[c] = glm::vec4(cascades[c].warpU, cascades[c].warpV, 0.0f, 0.0f);
         }
         // Its texture space from the first cascade's (shadowFromWorld: p.camera
         // is the first): the diagonal and the translation of M_c M_0^-1, in
@@ -76,16 +79,16 @@ void cascadeMembers(shared::MapUniforms& u, const MapLight& p) {
         // rest is 0 (CascadeTest.UnwarpedCascadesShareOneLightViewUpToScaleAndOffset).
         const glm::dmat4 fromFirst = glm::dmat4(u.cascadeShadowFromWorld[c]) * worldFromFirst;
         // w: its texel along the light view's y (offset's w: along x; shadow_map_2d.glsl weighs them by the normal).
-        const glm::vec2 axes = p.cascades[c].texelAxes.x > 0.0f ? p.cascades[c].texelAxes : glm::vec2(p.cascades[c].texelSize);
+        const glm::vec2 axes = cascades[c].texelAxes.x > 0.0f ? cascades[c].texelAxes : glm::vec2(cascades[c].texelSize);
         u.cascadeScale[c] = glm::vec4(fromFirst[0][0], fromFirst[1][1], fromFirst[2][2], axes.y);
         u.cascadeOffset[c] = glm::vec4(glm::dvec3(fromFirst[3]), axes.x);
-        u.cascadeFar[c / 4][static_cast<int>(c % 4)] = p.cascadeFar[c];
-        u.cascadeTexel[c / 4][static_cast<int>(c % 4)] = p.cascades[c].texelSize;
+        u.cascadeFar[c / 4][static_cast<int>(c % 4)] = set.far[c];
+        u.cascadeTexel[c / 4][static_cast<int>(c % 4)] = cascades[c].texelSize;
     }
-    u.viewForward = glm::normalize(p.viewForward);
+    u.viewForward = glm::normalize(set.viewForward);
     u.cascadeBlend = p.options.cascadeBlend;
     u.cascadeRounds = 2.0f;  // the slice's cascade, then the next where it fades (shadow_map_2d.glsl)
-    for (std::size_t c = 0; c < p.cascades.size(); ++c) u.cascadeRange[c] = glm::vec4(p.cascades[c].nearPlane, p.cascades[c].farPlane, 0.0f, 0.0f);
+    for (std::size_t c = 0; c < cascades.size(); ++c) u.cascadeRange[c] = glm::vec4(cascades[c].nearPlane, cascades[c].farPlane, 0.0f, 0.0f);
 }
 
 } // namespace
@@ -108,7 +111,7 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.perspective = p.camera.perspective ? 1.0f : 0.0f;
     u.constantBias = p.options.constantBias;
     u.normalBiasTexels = p.options.normalBias;
-    if (usesPresetBias(p.options, p.cube) && !p.cube) {
+    if (usesPresetBias(p.options, p.cube()) && !p.cube()) {
         // LearnOpenGL's bias: max(0.05 (1 - N.L), 0.005), nothing else (MAP_PRESET_BIAS).
         u.constantBias = 0.0f;
         u.slopeDepthBias = 0.05f;
@@ -120,29 +123,29 @@ void MapBlock::upload(const MapLight& p, const MapArray& g, const Light& light, 
     u.texelUv = 1.0f / static_cast<float>(g.size());
     u.poissonRadius = p.options.radius;
     u.filterTaps = static_cast<float>(p.options.samples);
-    u.kernelRounds = static_cast<float>(kernelRounds(p.options, p.cube));
+    u.kernelRounds = static_cast<float>(kernelRounds(p.options, p.cube()));
     if (light.type == LightType::Directional)
         u.towardsLight = -glm::normalize(light.direction);
     else
         u.lightPosition = light.position;
     u.shadowedLight = p.options.shadowedLight;
     u.lightAxis = p.camera.axis();
-    if (p.cube) cubeMembers(u, p, g);
+    if (p.cube()) cubeMembers(u, p, g);
     cascadeMembers(u, p);
     // PCSS: the light's size as the similar triangles take it.
     const float size = light.type == LightType::Directional ? std::tan(glm::radians(0.5f * light.size)) : light.size;
     u.lightSize = size;
-    u.nearPlane = p.cube ? p.cubeCamera.nearPlane : p.camera.nearPlane;  // a cube's reversed window depth needs both (cubeWindowDepth)
-    u.farPlane = p.cube ? p.cubeCamera.farPlane : p.camera.farPlane;
+    u.nearPlane = p.cube() ? p.cubeCamera().nearPlane : p.camera.nearPlane;  // a cube's reversed window depth needs both (cubeWindowDepth)
+    u.farPlane = p.cube() ? p.cubeCamera().farPlane : p.camera.farPlane;
     u.blockerTaps = static_cast<float>(p.options.blockerSamples);
     u.blockerHull = vogelHullInradius(p.options.blockerSamples);
-    u.blockerNear = p.nearestCaster;
+    u.blockerNear = p.nearestCaster();
     u.bleedReduction = p.options.bleedReduction;
     u.transmittance = translucent ? 1.0f : 0.0f;
     uniforms_ = u;
     block_.write(u);
-    fitted_ = p.gpuFit;
-    fittedCascades_ = !p.cascades.empty();
+    fitted_ = p.gpuFit();
+    fittedCascades_ = p.cascadeCount() > 0;
     fittedWarp_ = p.camera.warped;
     copyFit();
 }
@@ -170,8 +173,8 @@ void MapBlock::copyFit() {
 
 void MapBlock::uploadAtlas(const MapLight& p, const Light& light) {
     shared::MapUniforms u{};
-    u.layer = static_cast<float>(p.atlasFirst);
-    u.atlasTiles = static_cast<float>(p.atlasTiles);
+    u.layer = static_cast<float>(p.atlas->first);
+    u.atlasTiles = static_cast<float>(p.atlas->count);
     u.atlasBilinear = p.options.filter == MapFilter::Hardware ? 1.0f : 0.0f;
     u.normalBiasTexels = p.options.normalBias;
     u.lightPosition = light.position;
@@ -186,8 +189,8 @@ void MapBlock::setLightClip(const glm::mat4& lightClipFromWorld) {
 }
 
 void MapBlock::setCamera(const MapLight& p, std::size_t c) {
-    if (p.gpuFit)
-        block_.copyPart(*p.gpuFit, p.cascades.empty() ? offsetof(SdsmFit, clipFromWorld) : offsetof(SdsmFit, cascadeClip) + c * sizeof(glm::mat4),
+    if (p.gpuFit())
+        block_.copyPart(*p.gpuFit(), p.cascadeCount() == 0 ? offsetof(SdsmFit, clipFromWorld) : offsetof(SdsmFit, cascadeClip) + c * sizeof(glm::mat4),
                         offsetof(shared::MapUniforms, lightClipFromWorld), sizeof(glm::mat4));
     else
         setLightClip(p.cameras()[c].clipFromWorld());

@@ -36,7 +36,7 @@ FaceUse faceUse(const FrameInfo& frame, const MapLight& p, int size) {
             if (mask & (1u << f)) {
                 use.used[f] = true;
                 use.triangles[f] += triangles;
-                use.covered[f] = use.covered[f].united(projectedRect(p.cubeCamera.faceClipFromWorld[f], frame.itemBounds[i], size));
+                use.covered[f] = use.covered[f].united(projectedRect(p.cubeCamera().faceClipFromWorld[f], frame.itemBounds[i], size));
             }
     }
     return use;
@@ -49,8 +49,8 @@ void clearFaces(TechniqueHost& host, const MapArray& g, MapLight& p, const FaceU
     const float far = cubeWindowDepth(p.options) ? 0.0f : 1.0f;  // the reversed window depth's far plane is 0
     for (int f = 0; f < 6; ++f) {
         const auto face = static_cast<std::size_t>(f);
-        const TexelRect r = p.faceDirty[face].clamped(g.size()).united(use.covered[face]);
-        p.faceDirty[face] = use.covered[face];
+        const TexelRect r = p.cubeMap().faceDirty[face].clamped(g.size()).united(use.covered[face]);
+        p.cubeMap().faceDirty[face] = use.covered[face];
         if (r.empty()) continue;
         gl::clearTexSubImage(g.depth.id(), 0, r.x0, r.y0, 6 * p.layer + f, r.x1 - r.x0, r.y1 - r.y0, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
         if (isPacked(g.format()))
@@ -81,8 +81,8 @@ gl::RenderState windowDepthState(gl::RenderState state, const MapOptions& o) {
 std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes, const MapArray& g, const MapLight& p, const FaceUse& use,
                         const gl::RenderState& state) {
     const bool onePass = p.options.cubePasses == MapCubePasses::One;
-    const auto seenWhole = [&](std::size_t i) { return seesWhole(p.cubeCamera, frame.itemBounds[i]); };
-    const CasterDetail detail = casterDetail(p.options.lodTexels, p.cubeCamera, g.size(), frame);
+    const auto seenWhole = [&](std::size_t i) { return seesWhole(p.cubeCamera(), frame.itemBounds[i]); };
+    const CasterDetail detail = casterDetail(p.options.lodTexels, p.cubeCamera(), g.size(), frame);
     // cullFront: an open caster has no back face, so it is drawn whole (the
     // cube's slope bias is the same either way).
     gl::RenderState open = state;
@@ -98,7 +98,7 @@ std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes,
                                   {GL_FRAGMENT_SHADER, "shadow_map_cube.frag"}},
                                  defines(cut)});
         };
-        glBindFramebuffer(GL_FRAMEBUFFER, p.fbo.id());
+        glBindFramebuffer(GL_FRAMEBUFFER, p.targets.fbo.id());
         return drawDepthCasters(
             host, frame, holes, program,
             [&](std::size_t i, const gl::Program& drawing) {
@@ -114,7 +114,7 @@ std::size_t drawCasters(TechniqueHost& host, const FrameInfo& frame, bool holes,
     std::size_t drawn = 0;
     for (int f = 0; f < 6; ++f) {
         if (!use.used[static_cast<std::size_t>(f)]) continue;
-        glBindFramebuffer(GL_FRAMEBUFFER, p.faceFbos[static_cast<std::size_t>(f)].id());
+        glBindFramebuffer(GL_FRAMEBUFFER, p.cubeMap().faceFbos[static_cast<std::size_t>(f)].id());
         gl::programUniform1i(program(false).id(), 1, f);
         if (holes) gl::programUniform1i(program(true).id(), 1, f);
         drawn += drawDepthCasters(host, frame, holes, program, [&](std::size_t i, const gl::Program&) { return (p.faceMask(i) & (1u << f)) != 0; }, state,

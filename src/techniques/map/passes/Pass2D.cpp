@@ -69,7 +69,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
     const std::span<const LightCamera> cameras = p.cameras();
     for (std::size_t c = 0; c < cameras.size(); ++c) {
         const LightCamera& camera = cameras[c];
-        const gl::Framebuffer& fbo = p.cascades.empty() ? p.fbo : p.cascadeFbos[c];
+        const gl::Framebuffer& fbo = p.cascadeCount() == 0 ? p.targets.fbo : p.cascadeSet()->fbos[c];
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, g.size(), g.size());
         const std::optional<TexelRect> part = drawnTexels(frame, g, p, camera);
@@ -91,7 +91,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
         if (!part || !part->empty())
             drawnHere = drawDepthCasters(
                 host, frame, res.holes, program, [&](std::size_t i, const gl::Program&) { return castsInto(camera, frame, i, g.hasMoments()); },
-                state, [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); }, casterDetail(p.gpuFit ? 0.0f : p.options.lodTexels, camera, frame),
+                state, [&](std::size_t i) { return seesWhole(camera, frame.itemBounds[i]); }, casterDetail(p.gpuFit() ? 0.0f : p.options.lodTexels, camera, frame),
                 &open);
         if (cameras.size() > 1) {
             host.count("cascade" + std::to_string(c) + ".triangles", static_cast<double>(drawnHere));
@@ -100,7 +100,7 @@ void renderMapPass(TechniqueHost& host, const FrameInfo& frame, const LightView&
             host.count("cascade" + std::to_string(c) + ".drawnShare", texels / (static_cast<double>(g.size()) * g.size()));
         }
         drawn += drawnHere;
-        if (g.storesMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot);
+        if (g.storesMoments()) makeMoments(host, res.block, g, p.layer + static_cast<int>(c), p.options.blur, p.spot());
         if (res.translucent) drawTranslucent(host, res.block, frame, g, p, c);
     }
     host.count("triangles", static_cast<double>(drawn));
