@@ -11,7 +11,7 @@ CLI::App* addView(CLI::App& app, ViewArgs& args) {
     view->add_option("--height", args.height, "Window height")->check(CLI::Range(64, 16384))->capture_default_str();
     view->add_option("--frames", args.frames, "Quit after this many frames (0: run until closed)")->check(CLI::Range(0, 1000000))->capture_default_str();
     view->add_option("--screenshot", args.screenshot, "With --frames: write the window's last frame (panel included) as this PNG");
-    view->add_option("--script", args.script, "Run a file of actions, one per frame: set KEY=VALUE, wait N, screenshot FILE, quit");
+    view->add_option("--script", args.script, "Run a file of actions, one per frame: set KEY=VALUE, wait N, screenshot FILE, save FILE, layout FILE (the panel's windows and options as JSON), show-maps, show-light, show-density (hide-...), compare [DIR], resize W H, minimize, restore, collapse-panel, expand-panel, uploads, quit");
     return view;
 }
 

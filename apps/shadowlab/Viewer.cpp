@@ -184,7 +184,10 @@ int ViewerSession::run() {
         ImGui::NewFrame();
         handleMouse(height);
         bool screenshotKey = handleKeys();
+        shownWindows.clear();
+        shownOptions.clear();
         drawPanel(height, screenshotKey);
+        drawMapsWindow(width, height);
         renderFrame(width, height);
         drawOverlay(width, height);
         ImGui::Render();
@@ -274,6 +277,15 @@ void ViewerSession::endFrame(int width, int height, bool screenshotKey) {
             throw Error(args.script + ":" + std::to_string(script[nextAction].line) + ": screenshot: " + e.what());
         }
         ++nextAction;  // named on stdout once it is in place (commit), not before: a failing later line keeps none
+    }
+    if (waitFrames == 0 && !resizing() && nextAction < script.size() && script[nextAction].verb == "layout") {
+        const std::string json = layoutJson();
+        try {
+            scriptOutputs.write(script[nextAction].argument, [&](const std::filesystem::path& to) { writeFileAtomically(to, json); });
+        } catch (const Error& e) {
+            throw Error(args.script + ":" + std::to_string(script[nextAction].line) + ": layout: " + e.what());
+        }
+        ++nextAction;
     }
     ++frame;
     if (waitFrames > 0) --waitFrames;

@@ -1,13 +1,17 @@
-// The viewer's panel (Dear ImGui), at a fixed place on the left: frame and
-// pass times, the buttons and switches, the comparison with the reference,
-// and per light its technique with every option from the technique's table,
-// its debug images and its position. Each change is an override line.
+// The viewer's panel (Dear ImGui), at a fixed place on the left (it
+// collapses to its title bar): frame and pass times, the buttons and
+// switches, the comparison with the reference, and per light its technique
+// with every option from the technique's table (those that do not apply to
+// the light greyed out, with why; those its preset set marked) and its
+// position. Each change is an override line. The debug images have a
+// window of their own (ViewerMaps.cpp).
 #include "ViewerSession.h"
 
 #include <shadowlab/Error.h>
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <sstream>
 
@@ -17,22 +21,20 @@ namespace {
 
 constexpr float kPanelWidth = 340.0f;  ///< the panel's fixed place: x in [0, kPanelWidth)
 
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
-
 } // namespace
 
 void ViewerSession::drawPanel(int height, bool& screenshotKey) {
     // The panel, at a fixed place on the left.
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, static_cast<float>(height)));
-    ImGui::Begin("shadowlab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    if (collapsePanel >= 0) ImGui::SetNextWindowCollapsed(collapsePanel == 1, ImGuiCond_Always);
+    collapsePanel = -1;
+    const bool open = ImGui::Begin("shadowlab", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    noteWindow("shadowlab");
+    if (!open) {  // collapsed to its title bar
+        ImGui::End();
+        return;
+    }
     ImGui::TextUnformatted(scene.name.c_str());
     if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", error.c_str());
     ImGui::Text("%.1f ms a frame, t = %.2f s %s", frameTimes.empty() ? 0.0 : static_cast<double>(frameTimes.back()), seconds, playing ? "(playing)" : "");
@@ -51,8 +53,19 @@ void ViewerSession::drawPanel(int height, bool& screenshotKey) {
         }
     const bool summed = shadowPasses > 12;
     if (summed) ImGui::Text("  %-22s %6.2f ms", ("shadow[*] (" + std::to_string(shadowPasses) + " passes)").c_str(), shadowMs);
-    for (const PassTiming& p : stats.passes)
-        if (!summed || p.name.rfind("shadow[", 0) != 0) ImGui::Text("  %-22s %6.2f ms", p.name.c_str(), p.ms);
+    // A pass that kept the last frame's map (nothing it depends on changed) says so.
+    const auto cached = [&](const std::string& pass) {
+        for (const auto& [name, value] : stats.counters)
+            if (name == pass + ".cached" && value > 0.0) return true;
+        return false;
+    };
+    for (const PassTiming& p : stats.passes) {
+        if (summed && p.name.rfind("shadow[", 0) == 0) continue;
+        if (cached(p.name))
+            ImGui::Text("  %-22s cached", p.name.c_str());
+        else
+            ImGui::Text("  %-22s %6.2f ms", p.name.c_str(), p.ms);
+    }
     if (ImGui::Button("reset camera (R)")) {
         orbit.from(scene.camera);
         cameraMoved = false;
@@ -72,17 +85,6 @@ void ViewerSession::drawPanel(int height, bool& screenshotKey) {
         referenceAskedAt = frame;
     }
     drawComparison();
-    // The shadow atlas (technique map, atlas), which its lights share: shown
-    // here once, each light's own tiles under the light.
-    if (showDebug)
-        for (std::size_t d = 0; d < debugImages.size() && d < debugTextures.size(); ++d)
-            if (debugImages[d].kind == DebugImageKind::Atlas &&
-                ImGui::CollapsingHeader("shadow atlas", ImGuiTreeNodeFlags_DefaultOpen)) {
-                const float w = kPanelWidth - 30.0f;
-                const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
-                ImGui::TextUnformatted("each light's tiles outlined in a colour of its own");
-                ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(debugTextures[d].id())), ImVec2(w, h));
-            }
     ImGui::Text("GL objects: %ld", liveGlObjects());
     if (fromFile) {
         ImGui::SameLine();
@@ -133,23 +135,13 @@ void ViewerSession::drawLight(std::size_t l, const std::vector<TechniqueInfo>& a
         // Its technique, then every option of it from its table.
         if (ImGui::BeginCombo("technique", light.shadow.technique.c_str())) {
             for (const TechniqueInfo& t : all)
-                if (ImGui::Selectable(t.name.c_str(), t.name == light.shadow.technique)) apply(at + ".shadow.technique", jsonString(t.name));
+                if (ImGui::Selectable(t.name.c_str(), t.name == light.shadow.technique)) apply(at + ".shadow.technique", jsonQuoted(t.name));
             ImGui::EndCombo();
         }
-        drawOptions(light, at);
+        drawOptions(light, static_cast<int>(l), at);
         ImGui::RadioButton("selected (shift + drag moves it)", &selectedLight, static_cast<int>(l));
         bool fromThis = viewFromLight == static_cast<int>(l);
         if (ImGui::Checkbox("view from this light", &fromThis)) viewFromLight = fromThis ? static_cast<int>(l) : -1;
-        // Its debug images (a map, a cube's cross), refreshed every few frames.
-        if (showDebug)
-            for (std::size_t d = 0; d < debugImages.size() && d < debugTextures.size(); ++d)
-                if (debugImages[d].light == static_cast<int>(l) &&
-                    debugImages[d].kind != DebugImageKind::Atlas) {
-                    const float w = kPanelWidth - 30.0f;
-                    const float h = w * static_cast<float>(debugImages[d].image.height) / static_cast<float>(std::max(debugImages[d].image.width, 1));
-                    ImGui::TextUnformatted(debugImages[d].name.c_str());
-                    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(debugTextures[d].id())), ImVec2(w, h));
-                }
         // Where the light is: point and spot lights move with the sliders.
         if (light.type != LightType::Directional) {
             glm::vec3 p = light.position;
@@ -163,26 +155,36 @@ void ViewerSession::drawLight(std::size_t l, const std::vector<TechniqueInfo>& a
     ImGui::PopID();
 }
 
-// A light's technique's options, from its table.
-void ViewerSession::drawOptions(const Light& light, const std::string& at) {
+// A light's technique's options, from its table: the values in effect (a
+// preset's applied), those the preset set marked, those that do nothing
+// for this light greyed out with the reason in their tooltip.
+void ViewerSession::drawOptions(const Light& light, int index, const std::string& at) {
     const TechniqueInfo* technique = findTechnique(light.shadow.technique);
     const OptionTable* table = technique ? technique->options : nullptr;
-    if (table) {
-        const auto stored = light.shadow.options.find(table->block);
-        const std::any current = stored != light.shadow.options.end() ? stored->second : table->makeDefault();
-        for (const OptionField& f : table->fields) {
-            const std::string key = at + ".shadow." + table->block + "." + f.key;
-            drawOption(f, current, key);
-        }
+    if (!table) return;
+    const auto stored = light.shadow.options.find(table->block);
+    const std::any current = stored != light.shadow.options.end() ? stored->second : table->makeDefault();
+    const std::vector<std::string> fromPreset = presetKeys(light);
+    for (const OptionField& f : table->fields) {
+        const std::string key = at + ".shadow." + table->block + "." + f.key;
+        const std::string unused = optionUnused(light, f.key);
+        const bool preset = std::find(fromPreset.begin(), fromPreset.end(), f.key) != fromPreset.end();
+        shownOptions.push_back({index, f.key, unused, preset});
+        ImGui::BeginDisabled(!unused.empty());
+        drawOption(f, current, key, preset ? f.key + " (preset)###" + f.key : f.key);
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("%s%s%s%s%s%s%s", unused.empty() ? "" : "not used: ", unused.c_str(), unused.empty() ? "" : ". ", f.doc.c_str(),
+                              f.unit.empty() ? "" : "; ", f.unit.c_str(), preset ? " (set by the preset)" : "");
     }
 }
 
-// One option, as the control of its kind; `key` is its override path.
-void ViewerSession::drawOption(const OptionField& f, const std::any& current, const std::string& key) {
+// One option, as the control of its kind labelled `label`; `key` is its override path.
+void ViewerSession::drawOption(const OptionField& f, const std::any& current, const std::string& key, const std::string& label) {
     switch (f.kind) {
     case OptionKind::Number: {
         float v = static_cast<float>(f.get(current));
-        if (ImGui::SliderFloat(f.key.c_str(), &v, static_cast<float>(f.minimum), static_cast<float>(f.maximum), "%.4g")) {
+        if (ImGui::SliderFloat(label.c_str(), &v, static_cast<float>(f.minimum), static_cast<float>(f.maximum), "%.4g")) {
             std::ostringstream s;
             s << v;
             apply(key, s.str());
@@ -191,20 +193,20 @@ void ViewerSession::drawOption(const OptionField& f, const std::any& current, co
     }
     case OptionKind::Integer: {
         int v = static_cast<int>(f.get(current));
-        if (ImGui::InputInt(f.key.c_str(), &v, 1, 100, ImGuiInputTextFlags_EnterReturnsTrue))
+        if (ImGui::InputInt(label.c_str(), &v, 1, 100, ImGuiInputTextFlags_EnterReturnsTrue))
             apply(key, std::to_string(std::clamp(v, static_cast<int>(f.minimum), static_cast<int>(f.maximum))));
         break;
     }
     case OptionKind::Boolean: {
         bool v = f.get(current) != 0.0;
-        if (ImGui::Checkbox(f.key.c_str(), &v)) apply(key, v ? "true" : "false");
+        if (ImGui::Checkbox(label.c_str(), &v)) apply(key, v ? "true" : "false");
         break;
     }
     case OptionKind::Choice: {
         const auto index = static_cast<std::size_t>(f.get(current));
-        if (ImGui::BeginCombo(f.key.c_str(), index < f.choices.size() ? f.choices[index].c_str() : "?")) {
+        if (ImGui::BeginCombo(label.c_str(), index < f.choices.size() ? f.choices[index].c_str() : "?")) {
             for (std::size_t c = 0; c < f.choices.size(); ++c)
-                if (ImGui::Selectable(f.choices[c].c_str(), c == index)) apply(key, jsonString(f.choices[c]));
+                if (ImGui::Selectable(f.choices[c].c_str(), c == index)) apply(key, jsonQuoted(f.choices[c]));
             ImGui::EndCombo();
         }
         break;
@@ -213,11 +215,10 @@ void ViewerSession::drawOption(const OptionField& f, const std::any& current, co
         char buffer[256] = {};
         const std::string v = f.getText(current);
         v.copy(buffer, sizeof buffer - 1);
-        if (ImGui::InputText(f.key.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) apply(key, jsonString(buffer));
+        if (ImGui::InputText(label.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) apply(key, jsonQuoted(buffer));
         break;
     }
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s%s%s", f.doc.c_str(), f.unit.empty() ? "" : "; ", f.unit.c_str());
 }
 
 } // namespace shadowlab::viewer

@@ -54,18 +54,19 @@ std::vector<Action> readScript(const std::string& path) {
             char* end = nullptr;
             const long n = std::strtol(a.argument.c_str(), &end, 10);
             if (a.argument.empty() || *end != '\0' || n < 0 || n > 100000) throw Error(where + "wait: expected a number of frames 0..100000, got '" + a.argument + "'");
-        } else if (a.verb == "screenshot" || a.verb == "save") {
+        } else if (a.verb == "screenshot" || a.verb == "save" || a.verb == "layout") {
             if (a.argument.empty()) throw Error(where + a.verb + ": expected a file name");
             // A screenshot is a PNG, as render -o's: refused before the first frame.
             if (a.verb == "screenshot") tool::checkOutput(a.argument, where + "screenshot");
-            // The scene JSON's name: not a directory, in one that exists.
-            if (a.verb == "save") {
+            // The scene JSON's or the layout's name: not a directory, in one that exists.
+            if (a.verb == "save" || a.verb == "layout") {
+                const std::string what = where + a.verb + " " + a.argument;
                 const std::filesystem::path file(a.argument), dir = file.parent_path();
                 // pathStatus: a name in a loop of links or too long is this line's error too.
-                if (std::filesystem::is_directory(tool::pathStatus(file, where + "save " + a.argument)))
-                    throw Error(where + "save " + a.argument + ": is a directory (expected a file name for the scene JSON)");
-                if (!dir.empty() && !std::filesystem::is_directory(tool::pathStatus(dir, where + "save " + a.argument)))
-                    throw Error(where + "save " + a.argument + ": directory " + dir.string() + " does not exist");
+                if (std::filesystem::is_directory(tool::pathStatus(file, what)))
+                    throw Error(what + ": is a directory (expected a file name for the " + (a.verb == "save" ? "scene JSON)" : "layout JSON)"));
+                if (!dir.empty() && !std::filesystem::is_directory(tool::pathStatus(dir, what)))
+                    throw Error(what + ": directory " + dir.string() + " does not exist");
             }
         } else if (a.verb == "resize") {
             std::istringstream size(a.argument);
@@ -83,10 +84,11 @@ std::vector<Action> readScript(const std::string& path) {
             if (!a.argument.empty() && !std::filesystem::is_directory(tool::pathStatus(a.argument, where + "compare " + a.argument)))
                 throw Error(where + "compare " + a.argument + ": not a directory (the error images go there; create it first)");
         } else if (a.verb != "quit" && a.verb != "minimize" && a.verb != "restore" && a.verb != "show-maps" && a.verb != "show-light" &&
-                   a.verb != "show-density" && a.verb != "hide-maps" && a.verb != "hide-light" && a.verb != "hide-density" && a.verb != "uploads") {
+                   a.verb != "show-density" && a.verb != "hide-maps" && a.verb != "hide-light" && a.verb != "hide-density" && a.verb != "uploads" &&
+                   a.verb != "collapse-panel" && a.verb != "expand-panel") {
             throw Error(where + "unknown action '" + a.verb +
-                        "' (expected set, wait, screenshot, save, show-maps, show-light, show-density, hide-maps, hide-light, hide-density, compare, uploads, "
-                        "resize, minimize, restore or quit)");
+                        "' (expected set, wait, screenshot, save, layout, show-maps, show-light, show-density, hide-maps, hide-light, hide-density, compare, "
+                        "uploads, resize, minimize, restore, collapse-panel, expand-panel or quit)");
         } else if (!a.argument.empty()) {
             throw Error(where + a.verb + ": expected nothing after it, got '" + a.argument + "'");
         }
@@ -107,7 +109,7 @@ void ViewerSession::runScript() {
             scriptSets.emplace_back(a.argument, args.script + ":" + std::to_string(a.line) + ": set " + a.argument);
         } else if (a.verb == "wait") {
             waitFrames = std::stoi(a.argument);
-        } else if (a.verb == "screenshot") {
+        } else if (a.verb == "screenshot" || a.verb == "layout") {
             --nextAction;  // taken after this frame is drawn
             break;
         } else if (a.verb == "save") {
@@ -151,6 +153,8 @@ void ViewerSession::runScript() {
             compareDirectory = a.argument;
             compareLabel = args.script + ":" + std::to_string(a.line) + ": compare " + a.argument;
             break;
+        } else if (a.verb == "collapse-panel" || a.verb == "expand-panel") {
+            collapsePanel = a.verb == "collapse-panel" ? 1 : 0;
         } else if (a.verb == "minimize") {
             glfwIconifyWindow(window);
         } else if (a.verb == "restore") {

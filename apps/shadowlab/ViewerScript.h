@@ -11,7 +11,9 @@ namespace shadowlab::viewer {
 // (frames), "screenshot FILE", "save FILE" (the scene with the settings made,
 // as JSON), "show-maps", "show-light", "show-density", "compare [DIR]" (waits
 // for the reference; prints the numbers, writes error-<i>.png into DIR),
-// "resize W H", "minimize", "restore", "quit"; "#" starts a comment.
+// "resize W H", "minimize", "restore", "collapse-panel", "expand-panel",
+// "layout FILE" (the panel's windows' rectangles and each option shown,
+// used or why not, as JSON), "quit"; "#" starts a comment.
 struct Action {
     std::string verb, argument;
     int line = 0;

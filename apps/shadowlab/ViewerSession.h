@@ -37,6 +37,9 @@
 
 namespace shadowlab::viewer {
 
+/// `s` as a JSON string (quoted, escaped): override values and the layout file.
+std::string jsonQuoted(const std::string& s);
+
 // The settings made in the viewer, in the order made (a later one of the
 // same key replaces an earlier one), after the command line's --set lines.
 struct Overrides {
@@ -133,8 +136,12 @@ private:
     void drawPanel(int height, bool& screenshotKey);
     void drawComparison();
     void drawLight(std::size_t l, const std::vector<TechniqueInfo>& all);
-    void drawOptions(const Light& light, const std::string& at);
-    void drawOption(const OptionField& f, const std::any& current, const std::string& key);
+    void drawOptions(const Light& light, int index, const std::string& at);
+    void drawOption(const OptionField& f, const std::any& current, const std::string& key, const std::string& label);
+    // ViewerMaps.cpp
+    void drawMapsWindow(int width, int height);
+    void noteWindow(const char* name);
+    std::string layoutJson() const;
     // ViewerOverlay.cpp
     void drawOverlay(int width, int height);
 
@@ -176,8 +183,9 @@ private:
     int viewFromLight = -1;   // a light's own camera as the viewer's, -1: the orbit
     int selectedLight = 0;    // the light Shift + drag moves, and whose cone is drawn
     bool showLight = false;   // the selected light in wireframe over the picture
-    bool showDebug = false;   // the techniques' debug images (maps, cube crosses) in the panel
+    bool showDebug = false;   // the techniques' debug images (maps, cube crosses) in a window of their own
     bool showDensity = false; // the selected light's texel density over the picture
+    int collapsePanel = -1;   // the script's collapse-panel (1) or expand-panel (0), for the next frame; -1: as the user left it
     ImageTexture densityTexture;
     std::vector<DebugImage> debugImages;
     std::vector<ImageTexture> debugTextures;  // one per debug image, for ImGui::Image
@@ -197,6 +205,17 @@ private:
     // at a later line leaves none of them, as a failed render leaves no frame.
     tool::PendingFiles scriptOutputs;
     std::chrono::steady_clock::time_point lastFrame;
+    // What the last frame's panel showed, for the script's "layout FILE":
+    // its windows' screen rectangles (x, y from the top left, w, h, in
+    // pixels) and each light's options with the reason one is unused
+    // (optionUnused) and whether its value came from a preset.
+    struct ShownOption {
+        int light = 0;
+        std::string key, unused;
+        bool preset = false;
+    };
+    std::vector<std::pair<std::string, glm::vec4>> shownWindows;
+    std::vector<ShownOption> shownOptions;
 };
 
 } // namespace shadowlab::viewer

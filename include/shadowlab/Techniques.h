@@ -32,6 +32,16 @@ SHADOWLAB_API std::string techniquesMarkdown();
 /// handle yet), or an empty string when it can.
 SHADOWLAB_API std::string unsupportedReason(std::string_view technique, const Light& light);
 
+/// Why option `key` of `light`'s technique block (`lights[i].shadow.<technique>.<key>`)
+/// has no effect on this light with its other options, in a few words
+/// ("directional lights only", "filter grid only"), or "" when it may: for
+/// panels that grey out what does not apply (the viewer's).
+SHADOWLAB_API std::string optionUnused(const Light& light, std::string_view key);
+/// The keys of `light`'s technique block whose values its preset set (map's
+/// `preset`: a value other than the option's default that the light has),
+/// for panels that mark them; none without a preset.
+SHADOWLAB_API std::vector<std::string> presetKeys(const Light& light);
+
 /// A light's shadow at its technique's baseline: the plainest form of the
 /// technique, which bench times a frame against (results.json's
 /// `frameOverHardMap`; for `map`, one 2D map of the same size with the

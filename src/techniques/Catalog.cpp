@@ -107,6 +107,16 @@ std::string unsupportedReason(std::string_view technique, const Light& light) {
     return k->unsupported ? k->unsupported(light) : std::string();
 }
 
+std::string optionUnused(const Light& light, std::string_view key) {
+    const TechniqueKind* k = findTechniqueKind(light.shadow.technique);
+    return k && k->unused ? k->unused(light, key) : std::string();
+}
+
+std::vector<std::string> presetKeys(const Light& light) {
+    const TechniqueKind* k = findTechniqueKind(light.shadow.technique);
+    return k && k->presetKeys ? k->presetKeys(light) : std::vector<std::string>();
+}
+
 ShadowBaseline shadowBaseline(const Light& light) {
     const TechniqueKind* k = findTechniqueKind(light.shadow.technique);
     return k && k->baseline ? k->baseline(light) : ShadowBaseline{light.shadow, false};

@@ -33,6 +33,12 @@ struct TechniqueKind {
     /// every field but those the block wrote (`written`, its keys, `--set`
     /// included), for `light`; default: nothing to resolve.
     std::function<void(std::any& options, const std::vector<std::string>& written, const Light& light)> resolve = {};
+    /// Why option `key` of the block has no effect on this light with its
+    /// options (optionUnused(), Techniques.h); default: every option does.
+    std::function<std::string(const Light& light, std::string_view key)> unused = {};
+    /// The keys of the block whose value the light's preset set
+    /// (presetKeys(), Techniques.h); default: none.
+    std::function<std::vector<std::string>(const Light& light)> presetKeys = {};
 };
 
 /// The kind named `name`, or nullptr. Pointers stay valid for the program's life.

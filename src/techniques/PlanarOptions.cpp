@@ -20,8 +20,20 @@ const OptionTable& planarOptionTable() {
     return table;
 }
 
+namespace {
+
+// Which options take effect: darkness only in style "lecture".
+std::string planarUnused(const Light& light, std::string_view key) {
+    const auto it = light.shadow.options.find(PlanarOptions::kTechnique);
+    const PlanarOptions* o = it == light.shadow.options.end() ? nullptr : std::any_cast<PlanarOptions>(&it->second);
+    const bool lecture = o && o->style == PlanarStyle::Lecture;
+    return key == "darkness" && !lecture ? "style lecture only" : "";
+}
+
+} // namespace
+
 TechniqueKind planarKind() {
-    return {"planar", "projected planar shadows: casters flattened onto receiver planes, kept to the receiver by the stencil", &planarOptionTable()};
+    return {"planar", "projected planar shadows: casters flattened onto receiver planes, kept to the receiver by the stencil", &planarOptionTable(), {}, {}, {}, &planarUnused};
 }
 
 } // namespace shadowlab

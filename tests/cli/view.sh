@@ -70,6 +70,45 @@ printf 'compare cmp2\n' > steps5.txt
 "$tool" render "$src/scenes/spot-objects.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' -o re.png >/dev/null || exit 1
 tinted=$("$diff" e.png re.png --from-x $panel)
 (( tinted > 10000 )) || { echo "the texel-density tint changed only $tinted pixels"; exit 1; }
+# The panel a newcomer can read (issue 62), at 1280x720: the shadow-map
+# window lies on screen; a point light's cascade options are disabled (a
+# sun's are not); a preset's values are marked; the panel collapses and the
+# maps window stays. `layout FILE` writes what the frame showed.
+printf 'set lights[0].shadow.map.preset="lecture"\nshow-maps\nwait 3\nlayout point.json\nscreenshot panel.png\nquit\n' > steps8.txt
+"$tool" view "$src/scenes/learnopengl-point-shadows.json" --width 1280 --height 720 --script steps8.txt >out8.txt 2>err.txt || { echo "layout in the viewer: $(cat err.txt)"; exit 1; }
+printf 'show-maps\nwait 3\nlayout sun.json\ncollapse-panel\nwait 2\nlayout collapsed.json\nquit\n' > steps9.txt
+"$tool" view "$src/scenes/cascades-field.json" --width 1280 --height 720 --script steps9.txt >out9.txt 2>err.txt || { echo "layout in the viewer: $(cat err.txt)"; exit 1; }
+python3 - point.json sun.json collapsed.json <<'CHECK' || exit 1
+import json, sys
+point, sun, collapsed = (json.load(open(f)) for f in sys.argv[1:4])
+def window(layout, name):
+    w = [w for w in layout["windows"] if w["name"] == name]
+    assert w, f"no window {name!r}: {layout['windows']}"
+    return w[0]
+def option(layout, key):
+    o = [o for o in layout["options"] if o["light"] == 0 and o["key"] == key]
+    assert o, f"no option {key!r} shown for light 0"
+    return o[0]
+for layout in (point, sun):
+    m = window(layout, "shadow maps")
+    assert m["x"] >= 0 and m["y"] >= 0 and m["x"] + m["width"] <= 1280 and m["y"] + m["height"] <= 720, f"the maps window is off screen: {m}"
+    assert m["width"] >= 200 and m["height"] >= 300, f"the maps window is too small to see a map: {m}"
+for key in ("cascades", "cascadeLambda", "stabilize", "warp", "representation"):
+    o = option(point, key)
+    assert not o["enabled"] and o["unused"], f"{key} is enabled for a point light: {o}"
+for key in ("faceCulling", "diskRadius"):
+    assert option(point, key)["enabled"], f"{key} is disabled for a point light's cube"
+assert option(sun, "cascades")["enabled"] and option(sun, "cascadeLambda")["enabled"], "a sun's cascade options are disabled"
+assert not option(sun, "faceCulling")["enabled"], "faceCulling is enabled for a sun"
+marked = [o["key"] for o in point["options"] if o["light"] == 0 and o["preset"]]
+assert "filter" in marked and "constantBias" in marked, f"preset lecture's values on a cube not marked: {marked}"
+assert not any(o["preset"] for o in sun["options"]), "options marked as a preset's without a preset"
+panel, folded = window(sun, "shadowlab"), window(collapsed, "shadowlab")
+assert panel["height"] >= 600 and folded["height"] < 60, f"the panel did not collapse: {panel} then {folded}"
+assert not collapsed["options"], "a collapsed panel still lists options"
+window(collapsed, "shadow maps")
+print("layout: maps window", window(point, "shadow maps"), "; preset keys", marked)
+CHECK
 # Resize, minimise, restore.
 printf 'show-maps\nshow-light\ncompare\nwait 12\nresize 500 300\nwait 3\nminimize\nwait 3\nrestore\nwait 12\nscreenshot c.png\nquit\n' > steps2.txt
 "$tool" view "$src/scenes/torus-floating.json" --width 640 --height 360 --set 'lights[0].shadow.technique="map"' --set lights[0].shadow.map.size=256 --script steps2.txt >/dev/null 2>err.txt || { echo "resize/minimise: $(cat err.txt)"; exit 1; }

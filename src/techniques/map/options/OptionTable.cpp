@@ -4,6 +4,7 @@
 #include "techniques/map/options/OptionTable.h"
 
 #include "techniques/Kinds.h"
+#include "techniques/map/options/Applies.h"
 
 #include "techniques/map/options/Filters.h"
 #include "techniques/map/options/Settings.h"
@@ -198,7 +199,7 @@ ShadowBaseline plainestMap(const Light& light) {
 
 TechniqueKind mapKind() {
     return {"map", "a shadow map per light: orthographic for directional, perspective for spot, a cube for point lights", &mapOptionTable(),
-            &map::unsupported, &map::plainestMap, &map::resolveOptions};
+            &map::unsupported, &map::plainestMap, &map::resolveOptions, &map::unusedOption, &map::presetKeys};
 }
 
 } // namespace shadowlab

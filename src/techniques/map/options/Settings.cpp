@@ -132,8 +132,6 @@ float reach(const MapOptions& o) {
     return filterInfo(o.filter).reach(o);
 }
 
-namespace {
-
 // Every field `o`'s preset sets, set (docs/techniques/map.md cites each value);
 // withPreset keeps the fields the scene wrote.
 MapOptions presetValues(MapOptions o, bool pointLight) {
@@ -194,8 +192,6 @@ MapOptions presetValues(MapOptions o, bool pointLight) {
     }
     return o;
 }
-
-} // namespace
 
 } // namespace shadowlab::map
 

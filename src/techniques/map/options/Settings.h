@@ -27,6 +27,9 @@ bool isLecture2D(const MapOptions& o, const Light& light);
 bool usesPresetBias(const MapOptions& o, bool cube);
 /// The presets' fixed near and far planes for a cube (Lawonn and LearnOpenGL: 1 and 25); 0: fitted.
 std::pair<float, float> cubeNearFar(const MapOptions& o);
+/// Every field `o`'s preset sets, set to the preset's value (withPreset
+/// keeps the fields the scene wrote); preset "default": `o` itself.
+MapOptions presetValues(MapOptions o, bool pointLight);
 /// The maps of a directional light's cascades (1 for any other light).
 int cascadeCount(const Light& light, const MapOptions& o);
 /// cascadeSplits' distances; `problem` says what is wrong with them, if anything.
