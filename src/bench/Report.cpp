@@ -1,6 +1,7 @@
 // report.html: one self-contained page (images inlined as data URIs, plot as
 // inline SVG, no scripts from elsewhere) that opens from disk.
 #include "bench/ReportPlots.h"
+#include "bench/ReportTable.h"
 #include "bench/ReportText.h"
 
 #include <shadowlab/Bench.h>
@@ -36,6 +37,7 @@ figure { display: inline-block; margin: 4px; } figure img { width: 320px; displa
 figcaption { font-size: 12px; color: #555; }
 .legend span { display: inline-block; padding: 0 6px; margin-right: 6px; color: #fff; }
 .cost { display: flex; height: 12px; width: 160px; background: #f4f4f4; } .cost span { display: block; height: 12px; }
+ul.lights { margin: 4px 0; padding-left: 18px; min-width: 600px; white-space: normal; font-size: 12px; } details p { font-size: 12px; margin: 2px 0; }
 .c-floor { background: #4c72b0; } .c-pass { background: #9ab3dd; } .c-lfloor { background: #a0522d; } .c-lookup { background: #dd8452; } .c-rest { background: #bbb; }
 </style></head><body>
 <h1>shadowlab bench</h1>
@@ -60,109 +62,9 @@ figcaption { font-size: 12px; color: #555; }
     h << "</p>\n";
 }
 
-// Where a row's time goes: its top-level passes' medians summed by kind.
-struct PassSums {
-    double shadowMs = 0, baseMs = 0, lightMs = 0;
-};
-
-PassSums passSums(const json& r) {
-    PassSums sums;
-    for (const auto& [name, st] : r["passMs"].items()) {
-        const bool floorScope = name.ends_with("].floor") || name.ends_with("].lookupFloor");
-        if (name.rfind("shadow", 0) == 0 && floorScope) sums.shadowMs -= st["median"].get<double>();  // bench's floors, drawn inside the pass
-        if (name.find('.') != std::string::npos) continue;  // nested scopes are inside their pass
-        if (name.rfind("shadow", 0) == 0) sums.shadowMs += st["median"].get<double>();
-        if (name == "base") sums.baseMs += st["median"].get<double>();
-        if (name.rfind("light", 0) == 0) sums.lightMs += st["median"].get<double>();
-    }
-    return sums;
-}
-
-// Where light `l`'s share of row `r`'s frame goes, as a bar `scale` px per
-// ms: the shadow pass's floor (a bare depth draw of the same casters), the
-// pass above it, the lookups (its pass minus the same pass unshadowed),
-// split at their floor (one nearest fetch a pixel) where bench measured
-// one, and the rest of the frame. The passes are clocked apart from the frame
-// (cpu-finish adds a glFinish around each), so the parts may not add up
-// to it: the rest is what is left, at least 0.
-std::string costBar(const json& r, const json& l, double scale) {
-    const double frame = r["frameMs"]["median"].get<double>();
-    // A pass or floor clocked below 0 (their differences, on a busy machine) counts as 0.
-    const double pass = std::max(l.value("shadowPassMs", 0.0), 0.0), floor = std::clamp(l.value("shadowFloorMs", 0.0), 0.0, pass);
-    const double lookup = std::max(l.value("lookupMs", 0.0), 0.0), rest = std::max(frame - pass - lookup, 0.0);
-    const double lookupFloor = std::clamp(l.value("lookupFloorMs", 0.0), 0.0, lookup);
-    std::ostringstream s;
-    s << "<div class=\"cost\" title=\"shadow pass floor " << fixed(floor, 1) << " ms, pass above its floor " << fixed(pass - floor, 1)
-      << " ms, lookup floor " << fixed(lookupFloor, 1) << " ms, lookups above their floor " << fixed(lookup - lookupFloor, 1) << " ms, rest of the frame "
-      << fixed(rest, 1) << " ms\">";
-    const std::pair<const char*, double> parts[] = {{"c-floor", floor},         {"c-pass", pass - floor},           {"c-lfloor", lookupFloor},
-                                                    {"c-lookup", lookup - lookupFloor}, {"c-rest", rest}};
-    for (const auto& [cls, ms] : parts) s << "<span class=\"" << cls << "\" style=\"width:" << fixed(ms * scale, 1) << "px\"></span>";
-    s << "</div>";
-    return s.str();
-}
-
-// Row `index`'s line for its light `l` in the table.
-void lightRow(std::ostream& h, const json& records, int index, const json& l, double fastest, double scale, bool flips) {
-    const json& r = records[static_cast<std::size_t>(index)];
-    const auto [shadowMs, baseMs, lightMs] = passSums(r);
-    const json& g = r["frameMs"];
-    h << "<tr><td>" << index << "</td><td class=\"l\">" << escape(r["scene"].get<std::string>()) << "</td><td class=\"l\">"
-      << escape(settingsText(r)) << "</td><td class=\"l\">" << escape(l["name"].get<std::string>()) << " ("
-      << escape(l["type"].get<std::string>()) << (l["soft"].get<bool>() ? ", soft" : "") << ")</td><td class=\"l\">"
-      << escape(l["technique"].get<std::string>()) << "</td><td>" << r["triangles"] << "</td><td>"
-      << fixed(g["median"], 1) << " (" << fixed(g["min"], 1) << "&ndash;" << fixed(g["max"], 1) << ")</td><td>"
-      << (fastest > 0.0 ? fixed(g["median"].get<double>() / fastest, 2) : std::string("&ndash;")) << "</td><td>"
-      << (r.contains("frameOverUnshadowed") ? fixed(r["frameOverUnshadowed"], 2) : std::string("&ndash;")) << "</td><td>"
-      << (r.contains("floorFrameOverUnshadowed") ? fixed(r["floorFrameOverUnshadowed"], 2) : std::string("&ndash;")) << "</td><td>"
-      << fixed(shadowMs, 1) << "</td><td>" << (l.contains("shadowFloorMs") ? fixed(l["shadowFloorMs"], 1) : std::string("&ndash;")) << "</td><td>"
-      << (l.contains("lookupMs") ? fixed(l["lookupMs"], 1) : std::string("&ndash;")) << "</td><td>"
-      << (l.contains("lookupFloorMs") ? fixed(l["lookupFloorMs"], 1) : std::string("&ndash;")) << "</td><td>"
-      << (l.contains("shadowCounters") && l["shadowCounters"].contains("mapBytes") ? fixed(l["shadowCounters"]["mapBytes"].get<double>() / 1048576.0, 1)
-                                                                                   : std::string("&ndash;"))
-      << "</td><td>" << costBar(r, l, scale) << "</td><td>" << fixed(baseMs, 1) << "</td><td>" << fixed(lightMs, 1) << "</td><td class=\"l\">"
-      << escape(r["clock"].get<std::string>())
-      << "</td><td>" << percent(l["falseLit"]) << "</td><td>" << percent(l["falseShadow"]) << "</td><td>"
-      << percent(l["falseLitAwayFromEdges"]) << "</td><td>" << percent(l["falseShadowAwayFromEdges"]) << "</td><td>"
-      << fixed(l["meanAbsError"], 4) << "</td><td>" << fixed(l["rmse"], 4)
-      << (l.value("coloured", false) ? " (r " + fixed(l["rmseRgb"][0], 4) + ", g " + fixed(l["rmseRgb"][1], 4) + ", b " + fixed(l["rmseRgb"][2], 4) + ")"
-                                     : std::string())
-      << "</td><td>"
-      << (l.contains("leakedInUmbra") ? percent(l["leakedInUmbra"]) : std::string("&ndash;")) << "</td><td>"
-      << (l.value("soft", false) && l.contains("penumbraRatio") ? fixed(l["penumbraRatio"], 2) : std::string("&ndash;")) << "</td><td>"
-      << (l.contains("texelFootprintP95") ? fixed(l["texelFootprintP50"], 2) + " / " + fixed(l["texelFootprintP95"], 2) : std::string("&ndash;")) << "</td><td>"
-      << (r.contains("frameOverHardMap") ? fixed(r["frameOverHardMap"], 2) : std::string("&ndash;")) << "</td><td>"
-      << (onFront(records, static_cast<std::size_t>(index)) ? "&#9679;" : "") << "</td>";
-    if (flips && l.contains("flips"))
-        h << "<td>" << percent(l["flips"]["median"]) << "</td><td>" << percent(l["flips"]["max"]) << "</td><td>"
-          << percent(l["referenceChanges"]["median"]) << "</td>";
-    h << "</tr>\n";
-}
-
-// The table: one line per row and light.
-void resultsTable(std::ostream& h, const json& records, bool flips) {
-    double fastest = 0.0, slowest = 0.0;
-    for (const json& r : records) {
-        const double m = r["frameMs"]["median"].get<double>();
-        if (m > 0.0 && (fastest == 0.0 || m < fastest)) fastest = m;
-        slowest = std::max(slowest, m);
-    }
-    const double scale = slowest > 0.0 ? 160.0 / slowest : 0.0;  // the slowest frame fills the bar
-    h << "<h2>Time and error</h2>\n<p class=\"legend\">Where the time goes (bar: the slowest frame is 160 px): "
-         "<span class=\"c-floor\">shadow pass floor</span><span class=\"c-pass\">pass above its floor</span>"
-         "<span class=\"c-lfloor\">lookup floor</span><span class=\"c-lookup\">lookups above their floor</span><span class=\"c-rest\">rest of the frame</span></p>\n"
-         "<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>light</th><th>technique</th>"
-         "<th>triangles</th><th>frame ms</th><th>&times; fastest</th><th>&times; unshadowed</th><th>floor &times; unshadowed</th><th>shadow ms</th><th>shadow floor ms</th><th>lookup ms</th><th>lookup floor ms</th><th>map MiB</th><th>where the time goes</th><th>base ms</th><th>lighting ms</th><th>clock</th>"
-         "<th>false lit %</th><th>false shadow %</th><th>false lit % (away from edges)</th><th>false shadow % (away from edges)</th>"
-         "<th>MAE</th><th>RMSE</th><th>leak % (umbra)</th><th>penumbra &times; truth</th><th>texel footprint px (median / p95)</th><th>&times; hard map</th><th>front</th>"
-      << (flips ? "<th>flips % (median)</th><th>flips % (max)</th><th>reference changed % (median)</th>" : "") << "</tr>\n";
-    int index = 0;
-    for (const json& r : records) {
-        for (const json& l : r["lights"]) lightRow(h, records, index, l, fastest, scale, flips);
-        ++index;
-    }
-    h << "</table></div>\n";
-}
+// The images' width in the page, pixels (figure img's CSS width): they are
+// inlined at that size, the rendered frames as JPEG.
+constexpr int kThumbnailWidth = 320;
 
 // Every row's technique, reference and error images, inlined.
 void imageSections(std::ostream& h, const json& records, const fs::path& directory) {
@@ -172,13 +74,13 @@ void imageSections(std::ostream& h, const json& records, const fs::path& directo
     for (const json& r : records) {
         h << "<section class=\"row\"><h3>" << index << ". " << escape(r["scene"].get<std::string>()) << " &mdash; "
           << escape(settingsText(r)) << "</h3>\n";
-        auto figure = [&](const std::string& file, const std::string& caption) {
-            h << "<figure><img alt=\"" << escape(caption) << "\" src=\"" << dataUri(directory / file) << "\"><figcaption>"
+        auto figure = [&](const std::string& file, const std::string& caption, bool photo) {
+            h << "<figure><img alt=\"" << escape(caption) << "\" src=\"" << thumbnailUri(directory / file, kThumbnailWidth, photo) << "\"><figcaption>"
               << escape(caption) << "</figcaption></figure>\n";
         };
-        figure(r["techniqueImage"], "technique");
-        figure(r["referenceImage"], "ray-traced reference");
-        for (const json& l : r["lights"]) figure(l["errorImage"], "error: " + l["name"].get<std::string>());
+        figure(r["techniqueImage"], "technique", true);
+        figure(r["referenceImage"], "ray-traced reference", true);
+        for (const json& l : r["lights"]) figure(l["errorImage"], "error: " + l["name"].get<std::string>(), false);
         h << "</section>\n";
         ++index;
     }

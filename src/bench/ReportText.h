@@ -12,8 +12,10 @@ namespace shadowlab::bench {
 std::string escape(const std::string& text);
 /// `bytes` in base64.
 std::string base64(const std::string& bytes);
-/// The PNG `file` as a data: URI (an error names the file it cannot read).
-std::string dataUri(const std::filesystem::path& file);
+/// The PNG `file` at most `width` pixels wide (averaged down), as a data:
+/// URI: a JPEG at quality 85 when `photo` (a rendered frame), else a PNG
+/// (an error image's flat colours). Keeps a report of many images small.
+std::string thumbnailUri(const std::filesystem::path& file, int width, bool photo);
 /// `v` with `digits` digits after the point.
 std::string fixed(double v, int digits);
 /// A share as a percentage with three digits.
