@@ -92,11 +92,12 @@ void writeReport(const json& results, const fs::path& directory) {
     introduction(h, results);
     const bool flips = results.value("flips", false);
     resultsTable(h, records, flips);
-    h << "<h2>Time against error</h2>\n<p>Each point is a row of the table (its number); lower left is better. "
-         "Orange, and &#9679; in the table's front column: the rows on their scene's time&ndash;error front (the Pareto front), "
-         "those no other row of the same scene beats in both frame time and error: for a frame-time budget, the least error "
-         "is among them. Error: misclassified away from edges for hard lights, RMSE for soft ones, averaged over the lights.</p>\n"
-      << scatterPlot(records);
+    h << "<h2>Time against error</h2>\n<p>Each point is a row of the table (its number; a number that would overlap another is left "
+         "to the point's tooltip); lower left is better. One plot per measure: the misclassified share away from edges for the rows' "
+         "hard lights, the visibility RMSE for their soft ones. Orange, and &#9679; in the table's front column: the rows on their "
+         "scene's time&ndash;error front (the Pareto front), those no other row of the same scene beats in both frame time and error "
+         "(the two measures averaged over a row's lights): for a frame-time budget, the least error is among them.</p>\n"
+      << scatterPlot(records, false) << scatterPlot(records, true);
     h << lightCountSection(records);
     imageSections(h, records, directory);
     // Lets a test (or a person) see that every image decoded.
@@ -105,6 +106,14 @@ window.addEventListener('load', () => {
   const images = Array.from(document.images);
   const ok = images.filter(i => i.complete && i.naturalWidth > 0).length;
   document.body.dataset.imagesLoaded = ok + '/' + images.length;
+  // Where the table's accuracy columns and the plots lie on the page (CSS
+  // pixels from its top left), for a test in a browser of a given size.
+  const rect = e => { const r = e.getBoundingClientRect(); return {x: r.left + scrollX, y: r.top + scrollY, width: r.width, height: r.height}; };
+  const heads = Array.from(document.querySelectorAll('#results th'));
+  const accuracy = heads.filter(th => /misclassified|false lit|false shadow|RMSE/.test(th.textContent)).map(rect);
+  const plots = Array.from(document.querySelectorAll('svg[id^="scatter"], svg#lightcount')).map(e => Object.assign({id: e.id}, rect(e)));
+  const rows = document.querySelectorAll('#results > tbody > tr, #results > tr').length;
+  document.body.dataset.layout = JSON.stringify({viewport: {width: innerWidth, height: innerHeight}, accuracy, plots, rows});
 });
 </script>
 </body></html>

@@ -4,6 +4,8 @@
 #include "bench/ReportText.h"
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -25,6 +27,9 @@ double errorOf(const json& record) {
         sum += l.value("soft", false) ? l["rmse"].get<double>() : l["falseLitAwayFromEdges"].get<double>() + l["falseShadowAwayFromEdges"].get<double>();
     return record["lights"].empty() ? 0.0 : sum / static_cast<double>(record["lights"].size());
 }
+
+// Digits after the point that tell an axis's ticks `step` apart.
+int digitsFor(double step) { return std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 6); }
 
 double niceStep(double range) {
     const double raw = range / 5.0;
@@ -65,6 +70,29 @@ std::vector<CountSeries> countSeries(const json& records) {
 
 } // namespace
 
+Accuracy accuracyOf(const json& r) {
+    Accuracy a;
+    double lit = 0, shadow = 0, rmse = 0;
+    int hard = 0, soft = 0;
+    for (const json& l : r["lights"]) {
+        if (l.value("soft", false)) {
+            rmse += l["rmse"].get<double>();
+            ++soft;
+        } else {
+            lit += l["falseLitAwayFromEdges"].get<double>();
+            shadow += l["falseShadowAwayFromEdges"].get<double>();
+            ++hard;
+        }
+    }
+    if (hard > 0) {
+        a.falseLit = lit / hard;
+        a.falseShadow = shadow / hard;
+        a.misclassified = a.falseLit + a.falseShadow;
+    }
+    if (soft > 0) a.rmse = rmse / soft;
+    return a;
+}
+
 bool onFront(const json& records, std::size_t i) {
     const json& r = records[i];
     const double t = r["frameMs"]["median"].get<double>(), e = errorOf(r);
@@ -77,45 +105,77 @@ bool onFront(const json& records, std::size_t i) {
     return true;
 }
 
-std::string scatterPlot(const json& records) {
+namespace {
+
+// A point's label, `width` x 10 px, at the first of four places around the
+// point (right above, left above, right below, left below) that overlaps
+// no label placed before; none when all four do (the point's tooltip still names it).
+std::optional<std::pair<double, double>> labelPlace(double x, double y, double width, std::vector<std::array<double, 4>>& placed) {
+    const std::pair<double, double> offsets[] = {{7, -6}, {-7 - width, -6}, {7, 14}, {-7 - width, 14}};
+    for (const auto& [dx, dy] : offsets) {
+        const std::array<double, 4> box{x + dx, y + dy - 10, x + dx + width, y + dy};
+        const bool free = std::none_of(placed.begin(), placed.end(), [&](const std::array<double, 4>& o) {
+            return box[0] < o[2] && o[0] < box[2] && box[1] < o[3] && o[1] < box[3];
+        });
+        if (free) {
+            placed.push_back(box);
+            return std::make_pair(x + dx, y + dy);
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+std::string scatterPlot(const json& records, bool soft) {
+    const auto value = [&](const json& r) {
+        const Accuracy a = accuracyOf(r);
+        return 100.0 * (soft ? a.rmse : a.misclassified);
+    };
+    std::vector<std::size_t> rows;
+    for (std::size_t i = 0; i < records.size(); ++i)
+        if (value(records[i]) >= 0.0) rows.push_back(i);
+    if (rows.empty()) return {};
     const double W = 640, H = 360, left = 70, right = 20, top = 20, bottom = 50;
     double maxX = 0, maxY = 0;
-    for (const json& r : records) {
-        maxX = std::max(maxX, r["frameMs"]["median"].get<double>());
-        maxY = std::max(maxY, 100.0 * errorOf(r));
+    for (std::size_t i : rows) {
+        maxX = std::max(maxX, records[i]["frameMs"]["median"].get<double>());
+        maxY = std::max(maxY, value(records[i]));
     }
     const double stepX = niceStep(std::max(maxX, 1e-3)), stepY = niceStep(std::max(maxY, 1e-3));
     maxX = std::ceil(std::max(maxX, 1e-3) / stepX) * stepX;
     maxY = std::ceil(std::max(maxY, 1e-3) / stepY) * stepY;
     auto px = [&](double x) { return left + (W - left - right) * x / maxX; };
     auto py = [&](double y) { return H - bottom - (H - top - bottom) * y / maxY; };
+    const std::string what = soft ? "visibility RMSE of soft lights (%)" : "misclassified away from edges, hard lights (%)";
     std::ostringstream s;
-    s << "<svg id=\"scatter\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
-      << "\" role=\"img\" aria-label=\"frame time against misclassified pixels\">\n";
+    s << "<svg id=\"" << (soft ? "scatter-soft" : "scatter") << "\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
+      << "\" role=\"img\" aria-label=\"frame time against " << what << "\">\n";
     s << "<rect x=\"0\" y=\"0\" width=\"" << W << "\" height=\"" << H << "\" fill=\"#fff\"/>\n";
-    for (double x = 0; x <= maxX + 1e-9; x += stepX) {
-        s << "<line x1=\"" << px(x) << "\" y1=\"" << top << "\" x2=\"" << px(x) << "\" y2=\"" << H - bottom
-          << "\" stroke=\"#e4e4e4\"/><text x=\"" << px(x) << "\" y=\"" << H - bottom + 16
-          << "\" text-anchor=\"middle\" font-size=\"11\">" << fixed(x, stepX < 1 ? 2 : 0) << "</text>\n";
+    for (double x = 0; x <= maxX + 1e-9; x += stepX)
+        s << "<line x1=\"" << px(x) << "\" y1=\"" << top << "\" x2=\"" << px(x) << "\" y2=\"" << H - bottom << "\" stroke=\"#e4e4e4\"/><text x=\"" << px(x)
+          << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\" font-size=\"11\">" << fixed(x, digitsFor(stepX)) << "</text>\n";
+    for (double y = 0; y <= maxY + 1e-9; y += stepY)
+        s << "<line x1=\"" << left << "\" y1=\"" << py(y) << "\" x2=\"" << W - right << "\" y2=\"" << py(y) << "\" stroke=\"#e4e4e4\"/><text x=\"" << left - 6
+          << "\" y=\"" << py(y) + 4 << "\" text-anchor=\"end\" font-size=\"11\">" << fixed(y, digitsFor(stepY)) << "</text>\n";
+    s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 12 << "\" text-anchor=\"middle\" font-size=\"12\">frame time, median (ms)</text>\n";
+    s << "<text transform=\"translate(16," << (top + H - bottom) / 2 << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"12\">" << what << "</text>\n";
+    std::vector<std::array<double, 4>> placed;
+    for (std::size_t i : rows) {
+        const double x = px(records[i]["frameMs"]["median"].get<double>()), y = py(value(records[i]));
+        placed.push_back({x - 5, y - 5, x + 5, y + 5});  // labels keep off the points too
     }
-    for (double y = 0; y <= maxY + 1e-9; y += stepY) {
-        s << "<line x1=\"" << left << "\" y1=\"" << py(y) << "\" x2=\"" << W - right << "\" y2=\"" << py(y)
-          << "\" stroke=\"#e4e4e4\"/><text x=\"" << left - 6 << "\" y=\"" << py(y) + 4
-          << "\" text-anchor=\"end\" font-size=\"11\">" << fixed(y, stepY < 1 ? 2 : 0) << "</text>\n";
-    }
-    s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 12
-      << "\" text-anchor=\"middle\" font-size=\"12\">frame time, median (ms)</text>\n";
-    s << "<text transform=\"translate(16," << (top + H - bottom) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"12\">misclassified away from edges, or RMSE (%)</text>\n";
-    int index = 0;
-    for (const json& r : records) {
-        const double x = px(r["frameMs"]["median"].get<double>()), y = py(100.0 * errorOf(r));
-        const bool front = onFront(records, static_cast<std::size_t>(index));
+    for (std::size_t i : rows) {
+        const json& r = records[i];
+        const double x = px(r["frameMs"]["median"].get<double>()), y = py(value(r));
+        const bool front = onFront(records, i);
         s << "<g class=\"point" << (front ? " front" : "") << "\"><circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"5\" fill=\""
-          << (front ? "#dd6b20" : "#2b6cb0") << "\" fill-opacity=\"0.75\"><title>"
-          << escape(r["scene"].get<std::string>() + " (" + settingsText(r) + ")") << "</title></circle><text x=\"" << x + 7
-          << "\" y=\"" << y - 6 << "\" font-size=\"10\">" << index << "</text></g>\n";
-        ++index;
+          << (front ? "#dd6b20" : "#2b6cb0") << "\" fill-opacity=\"0.75\"><title>" << i << ". "
+          << escape(r["scene"].get<std::string>() + " (" + settingsText(r) + ")") << "</title></circle>";
+        const std::string label = std::to_string(i);
+        if (const auto at = labelPlace(x, y, 6.5 * static_cast<double>(label.size()), placed))
+            s << "<text x=\"" << at->first << "\" y=\"" << at->second << "\" font-size=\"10\">" << label << "</text>";
+        s << "</g>\n";
     }
     s << "</svg>\n";
     return s.str();
@@ -155,7 +215,7 @@ std::string lightCountSection(const json& records) {
     for (double y = 0; y <= maxY + 1e-9; y += stepY)
         s << "<line x1=\"" << left << "\" y1=\"" << py(y) << "\" x2=\"" << W - right << "\" y2=\"" << py(y)
           << "\" stroke=\"#e4e4e4\"/><text x=\"" << left - 6 << "\" y=\"" << py(y) + 4 << "\" text-anchor=\"end\" font-size=\"11\">"
-          << fixed(y, stepY < 1 ? 2 : 0) << "</text>\n";
+          << fixed(y, digitsFor(stepY)) << "</text>\n";
     s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 12 << "\" text-anchor=\"middle\" font-size=\"12\">lights (lightGrid.count)</text>\n";
     s << "<text transform=\"translate(16," << (top + H - bottom) / 2
       << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"12\">frame time, median (ms)</text>\n";

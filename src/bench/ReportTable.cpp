@@ -65,36 +65,6 @@ std::string costBar(const json& r, const Costs& c, double scale) {
     return s.str();
 }
 
-// A run's accuracy over its lights: the misclassified share away from
-// edges (hard lights' mean), false lit and false shadow (the same), and
-// the visibility RMSE (soft lights' mean); -1 where no light has it.
-struct Accuracy {
-    double misclassified = -1, falseLit = -1, falseShadow = -1, rmse = -1;
-};
-
-Accuracy accuracyOf(const json& r) {
-    Accuracy a;
-    double lit = 0, shadow = 0, rmse = 0;
-    int hard = 0, soft = 0;
-    for (const json& l : r["lights"]) {
-        if (l.value("soft", false)) {
-            rmse += l["rmse"].get<double>();
-            ++soft;
-        } else {
-            lit += l["falseLitAwayFromEdges"].get<double>();
-            shadow += l["falseShadowAwayFromEdges"].get<double>();
-            ++hard;
-        }
-    }
-    if (hard > 0) {
-        a.falseLit = lit / hard;
-        a.falseShadow = shadow / hard;
-        a.misclassified = a.falseLit + a.falseShadow;
-    }
-    if (soft > 0) a.rmse = rmse / soft;
-    return a;
-}
-
 std::string shareOrDash(double share) { return share < 0.0 ? std::string("&ndash;") : percent(share); }
 std::string msOrDash(bool has, double ms) { return has ? fixed(ms, 1) : std::string("&ndash;"); }
 

@@ -210,6 +210,7 @@ timeout 120 chromium "${flags[@]}" --dump-dom "file://$work/bench/report.html" >
 rows=$(grep -o '<tr>' dom.html | wc -l)
 [[ $rows -ge 5 ]] || fail "report table has $rows rows (expected a header and 4 rows)"
 grep -q '<svg id="scatter"' dom.html || fail "no scatter plot"
+grep -q '<svg id="scatter-soft"' dom.html && fail "a plot of soft lights' RMSE for runs with no soft light"
 points=$(grep -o '<circle' dom.html | wc -l)
 [[ $points -eq 4 ]] || fail "scatter plot has $points points, expected 4"
 # Each row's stacked bar of where its time goes: the pass's floor, the pass
@@ -235,6 +236,29 @@ size=$(stat -c %s report.png)
 [[ $size -gt 50000 ]] || fail "screenshot is only $size bytes (a blank page is ~10 kB)"
 if [[ -n "${SHADOWLAB_KEEP_SCREENSHOT:-}" ]]; then cp report.png "$SHADOWLAB_KEEP_SCREENSHOT"; fi
 passed=$((passed + 1))
+# A report a newcomer can read (issue 62), for a sweep of many lights: one
+# table row per run (its lights folded in), at most 40 rows in all; in a
+# 1280x800 window the accuracy columns lie within the width and the first
+# plot within the first two screens (the page writes where they lie into
+# data-layout); under 5 MB.
+"$tool" bench "$src/scenes/many-lights.json" --vary lightGrid.count=8,16,32,64 --frames 2 --warmup 0 --width 800 --height 600 -o sweep >/dev/null 2>err.txt \
+  || fail "bench many-lights sweep: $(cat err.txt)"
+bytes=$(stat -c %s sweep/report.html)
+(( bytes < 5 * 1024 * 1024 )) || fail "the many-lights sweep's report is $bytes bytes (at most 5 MB)"
+timeout 120 chromium "${flags[@]}" --window-size=1280,800 --dump-dom "file://$work/sweep/report.html" > sweep-dom.html 2>/dev/null || fail "chromium --dump-dom (sweep) failed"
+python3 - sweep-dom.html <<'PY' || fail "the sweep's report layout"
+import html, json, re, sys
+page = open(sys.argv[1]).read()
+rows = len(re.findall(r"<tr[ >]", page))
+assert rows <= 40, f"{rows} table rows (at most 40)"
+layout = json.loads(html.unescape(re.search(r'data-layout="([^"]*)"', page).group(1)))
+assert layout["rows"] == 5, f"the runs' table has {layout['rows']} rows (a header and 4 runs)"
+width, height = layout["viewport"]["width"], layout["viewport"]["height"]
+assert layout["accuracy"] and all(c["x"] + c["width"] <= width for c in layout["accuracy"]), f"accuracy columns past {width} px: {layout['accuracy']}"
+first = min(layout["plots"], key=lambda p: p["y"])
+assert first["y"] < 2 * height, f"the first plot starts at {first['y']} px, past two screens of {height}"
+print(f"sweep report: {rows} rows, accuracy columns end at {max(c['x'] + c['width'] for c in layout['accuracy']):.0f} px, first plot at {first['y']:.0f} px")
+PY
 # A killed bench's OUT.partial-PID/ is removed by the next bench to OUT;
 # one of a bench still running (here: this shell's PID) is left alone.
 sh -c 'exit 0' & dead=$!
