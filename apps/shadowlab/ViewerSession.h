@@ -37,7 +37,7 @@
 
 namespace shadowlab::viewer {
 
-/// `s` as a JSON string (quoted, escaped): override values and the layout file.
+/// `s` as a JSON string (quoted, escaped): override values and the layout file (ViewerLayout.cpp).
 std::string jsonQuoted(const std::string& s);
 
 // The settings made in the viewer, in the order made (a later one of the
@@ -140,6 +140,7 @@ private:
     void drawOption(const OptionField& f, const std::any& current, const std::string& key, const std::string& label);
     // ViewerMaps.cpp
     void drawMapsWindow(int width, int height);
+    // ViewerLayout.cpp
     void noteWindow(const char* name);
     std::string layoutJson() const;
     // ViewerOverlay.cpp

@@ -33,7 +33,10 @@ std::string planarUnused(const Light& light, std::string_view key) {
 } // namespace
 
 TechniqueKind planarKind() {
-    return {"planar", "projected planar shadows: casters flattened onto receiver planes, kept to the receiver by the stencil", &planarOptionTable(), {}, {}, {}, &planarUnused};
+    return {.name = "planar",
+            .summary = "projected planar shadows: casters flattened onto receiver planes, kept to the receiver by the stencil",
+            .options = &planarOptionTable(),
+            .unused = &planarUnused};
 }
 
 } // namespace shadowlab

@@ -92,6 +92,7 @@ def option(layout, key):
 for layout in (point, sun):
     m = window(layout, "shadow maps")
     assert m["x"] >= 0 and m["y"] >= 0 and m["x"] + m["width"] <= 1280 and m["y"] + m["height"] <= 720, f"the maps window is off screen: {m}"
+    # 200 x 300 px: room for a map image a few hundred texels across and its name (the window asks for 300 x the frame's height).
     assert m["width"] >= 200 and m["height"] >= 300, f"the maps window is too small to see a map: {m}"
 for key in ("cascades", "cascadeLambda", "stabilize", "warp", "representation"):
     o = option(point, key)
@@ -104,6 +105,8 @@ marked = [o["key"] for o in point["options"] if o["light"] == 0 and o["preset"]]
 assert "filter" in marked and "constantBias" in marked, f"preset lecture's values on a cube not marked: {marked}"
 assert not any(o["preset"] for o in sun["options"]), "options marked as a preset's without a preset"
 panel, folded = window(sun, "shadowlab"), window(collapsed, "shadowlab")
+# Open, the panel spans the 720-px frame; collapsed, only its title bar (one
+# line of ImGui's default 13-px font, about 19 px) is left: under 60 px either way.
 assert panel["height"] >= 600 and folded["height"] < 60, f"the panel did not collapse: {panel} then {folded}"
 assert not collapsed["options"], "a collapsed panel still lists options"
 window(collapsed, "shadow maps")

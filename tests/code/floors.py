@@ -4,15 +4,15 @@ Every file in src/ and include/shadowlab/ sits on one floor and includes
 only headers of its own floor or of the floors it stands on:
 
   floor       files                                          stands on
-  base        src/core/, include/shadowlab/{BASE}            -
-  scene       include/shadowlab/{SCENE}                      base
+  base        src/core/, the public headers in BASE          -
+  scene       the public headers in SCENE                    base
   geometry    src/geometry/                                  base, scene
   catalog     src/techniques/Catalog.*, Kinds.h,             base, scene, geometry
               techniques/*Options.cpp, techniques/*/options/
   loader      src/scene/                                     base, scene, geometry, catalog
-  gl          src/gl/, include/shadowlab/{GL}                base
+  gl          src/gl/, the public headers in GL              base
   techniques  the rest of src/techniques/                    all of the above
-  render      src/render/, include/shadowlab/Renderer.h      all of the above
+  render      src/render/, Renderer.h (TOP)                  all of the above
   reference   src/reference/, Compare.h                      all of the above
   bench       src/bench/, Bench.h                            all of the above
 

@@ -172,10 +172,11 @@ struct MapLight {
     /// Fit "sdsm": the cameras the last shadow pass drew from, kept until
     /// this frame's pass refits them, so that a frame without shadow passes
     /// (lit by the reference, or through the previous frame's maps) reads
-    /// the maps with the cameras they were drawn from. `old` is of the same kind.
+    /// the maps with the cameras they were drawn from (a cascade set's
+    /// slices from a cascade set's).
     void keepCamerasOf(const MapLight& old) {
         camera = old.camera;
-        if (CascadeSet* c = cascadeSet()) {
+        if (CascadeSet* c = cascadeSet(); c && old.cascadeSet()) {
             const CascadeSet& o = *old.cascadeSet();
             c->cameras = o.cameras;
             c->far = o.far;

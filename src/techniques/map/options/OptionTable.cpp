@@ -198,8 +198,14 @@ ShadowBaseline plainestMap(const Light& light) {
 } // namespace map
 
 TechniqueKind mapKind() {
-    return {"map", "a shadow map per light: orthographic for directional, perspective for spot, a cube for point lights", &mapOptionTable(),
-            &map::unsupported, &map::plainestMap, &map::resolveOptions, &map::unusedOption, &map::presetKeys};
+    return {.name = "map",
+            .summary = "a shadow map per light: orthographic for directional, perspective for spot, a cube for point lights",
+            .options = &mapOptionTable(),
+            .unsupported = &map::unsupported,
+            .baseline = &map::plainestMap,
+            .resolve = &map::resolveOptions,
+            .unused = &map::unusedOption,
+            .presetKeys = &map::presetKeys};
 }
 
 } // namespace shadowlab
