@@ -3,7 +3,7 @@
 # (clang and its libFuzzer runtime build the fuzz targets, scripts/fuzz.sh;
 # pybind11 and Python 3's headers, numpy, pytest and matplotlib the Python
 # module and its tests; Universal Ctags the functions' lengths,
-# tests/code/lengths.py).
+# tests/code/lengths.py; Chart.js, inlined into bench's report at build time).
 # Skips packages that are already installed; uses sudo when not root.
 # Usage: scripts/install-deps.sh [--no-browser]
 #   --no-browser  skip Chromium (only the report screenshot test needs it)
@@ -14,7 +14,7 @@ packages=(
   libepoxy-dev libegl-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libgbm1
   libglfw3-dev libglm-dev libstb-dev libpng-dev
   libtinygltf-dev nlohmann-json3-dev libcli11-dev
-  libimgui-dev libembree-dev
+  libimgui-dev libembree-dev libjs-chart.js
   googletest libgtest-dev
   clang libclang-rt-14-dev universal-ctags
   glmark2-data xvfb xauth

@@ -1,5 +1,5 @@
 #pragma once
-// report.html's plots, as inline SVG (ReportPlots.cpp).
+// report.html's plots: their data, drawn by the page with Chart.js (ReportPlots.cpp).
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
@@ -18,14 +18,16 @@ Accuracy accuracyOf(const nlohmann::json& record);
 /// Whether row i is on its scene's time-error front: no other row of the
 /// same scene file is at least as fast and at least as exact, and better in one.
 bool onFront(const nlohmann::json& records, std::size_t i);
-/// Frame time against error, a point per row with such lights (the
-/// front's points marked, labels placed where they overlap no other):
-/// `soft` false, the misclassified share of hard lights (id "scatter");
-/// true, the RMSE of soft lights (id "scatter-soft"). Empty when no row
-/// has such a light.
-std::string scatterPlot(const nlohmann::json& records, bool soft);
-/// The frame time against the number of lights, a line per technique,
-/// with its table (empty when the rows do not vary the lights).
-std::string lightCountSection(const nlohmann::json& records);
+/// The plots' data, for the page's script (src/bench/report/page.js):
+/// "plots", frame time against error a point per row with such lights
+/// (id "scatter": the misclassified share of hard lights; "scatter-soft":
+/// the RMSE of soft ones), each point's row, name and whether it is on its
+/// scene's front; "lightCount", the rows that vary lightGrid.count as
+/// series of (lights, frame median ms), a colour each.
+nlohmann::json plotData(const nlohmann::json& records);
+/// The light-count table's rows (each point's frame and its ratio to the
+/// point with half the lights), in the series' colours; empty when no row
+/// sets lightGrid.count.
+std::string lightCountRows(const nlohmann::json& records);
 
 } // namespace shadowlab::bench

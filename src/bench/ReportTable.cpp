@@ -141,27 +141,15 @@ void runRow(std::ostream& h, const json& records, std::size_t index, double fast
 
 } // namespace
 
-void resultsTable(std::ostream& h, const json& records, bool flips) {
+void resultsRows(std::ostream& h, const json& records, bool flips) {
     double slowest = 0.0;
     for (const json& r : records) slowest = std::max(slowest, r["frameMs"]["median"].get<double>());
     const double scale = slowest > 0.0 ? 160.0 / slowest : 0.0;  // the slowest frame fills the bar
     const std::map<std::string, double> fastest = fastestByScene(records);
-    h << "<h2>Accuracy and time</h2>\n<p>One row per run, its lights' figures in the row's last cell (click to open). Misclassified, false lit "
-         "and false shadow: shares of receiver pixels away from shadow edges, the mean over hard lights; RMSE: of visibility, the mean over soft "
-         "lights. &times; fastest: against the fastest run of the same scene. Times are medians; the parts of the frame are clocked apart, so "
-         "a difference that comes out below 0, or a floor above its pass, is shown as 0 or as the pass.</p>\n"
-         "<p class=\"legend\">Where the time goes (bar: the slowest frame is 160 px): "
-         "<span class=\"c-floor\">shadow pass floor</span><span class=\"c-pass\">pass above its floor</span>"
-         "<span class=\"c-lfloor\">lookup floor</span><span class=\"c-lookup\">lookups above their floor</span><span class=\"c-rest\">rest of the frame</span></p>\n"
-         "<div class=\"scroll\"><table id=\"results\">\n<tr><th>#</th><th>scene</th><th>settings</th><th>technique</th>"
-         "<th>misclassified %</th><th>false lit %</th><th>false shadow %</th><th>RMSE</th><th>frame ms</th><th>&times; fastest</th>"
-         "<th>&times; unshadowed</th><th>where the time goes</th><th>shadow ms</th><th>shadow floor ms</th><th>lookup ms</th><th>lookup floor ms</th>"
-         "<th>map MiB</th><th>front</th><th>lights</th></tr>\n";
     for (std::size_t i = 0; i < records.size(); ++i) {
         const auto it = fastest.find(records[i]["sceneFile"].get<std::string>());
         runRow(h, records, i, it == fastest.end() ? 0.0 : it->second, scale, flips);
     }
-    h << "</table></div>\n";
 }
 
 } // namespace shadowlab::bench

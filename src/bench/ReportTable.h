@@ -7,8 +7,9 @@
 
 namespace shadowlab::bench {
 
-/// The table: a row per run (scene and settings), the accuracy first; its
-/// lights' own figures in a detail that opens inside the row.
-void resultsTable(std::ostream& h, const nlohmann::json& records, bool flips);
+/// The table's rows (its heading is the page template's): a row per run
+/// (scene and settings), the accuracy first; its lights' own figures in a
+/// detail that opens inside the row.
+void resultsRows(std::ostream& h, const nlohmann::json& records, bool flips);
 
 } // namespace shadowlab::bench
