@@ -7,7 +7,7 @@
 # `compare` rows the technique, reference, error, visibility and reach
 # images and metrics.json (its timing fields, *Ms, left out).
 #
-# Usage: scripts/refactor-check.sh [--base COMMIT] [--only REGEX] [--list] [--bench | --bench-all]
+# Usage: scripts/refactor-check.sh [--base COMMIT] [--only REGEX] [--list] [--bench | --bench-all | --bench-scene NAME]
 #   --base COMMIT  the "before" build (default: the commit the map module's inside refactor started from)
 #   --only REGEX   only the cases whose name matches (grep -E)
 #   --list         print the cases and exit
@@ -15,7 +15,12 @@
 #                  on six scenes with the map technique's main variants
 #   --bench-all    the same over every bundled scene (scenes/, scenes/lecture/)
 #                  at its own settings
-# Environment: REFCHECK_WIDTH, REFCHECK_HEIGHT (400x300), REFCHECK_ROUNDS (3, --bench).
+#   --bench-scene NAME  the same for one bundled scene (e.g. learnopengl-point-shadows,
+#                  lecture/peter-panning): to time one again with more rounds
+# Environment: REFCHECK_WIDTH, REFCHECK_HEIGHT (400x300), REFCHECK_ROUNDS (3) and
+# REFCHECK_FRAMES (40 timed frames a round) for the timing. The table gives
+# the ratio of the fastest rounds and of the rounds' medians: on a shared
+# machine a single fast round of one build moves the first, not the second.
 #
 # Writes build-refcheck/{base-src,base}/ (the BASE build, kept between runs),
 # build-refcheck/out/{base,head}/CASE/ and build-refcheck/out/table.md: one
@@ -32,6 +37,7 @@ base=48fd5a681ba65b6dd686b98382158905c58cce53
 only=""
 list=false
 bench=false
+bench_scene=""
 while (($#)); do
   case $1 in
     --base) base=$(git rev-parse --verify "$2^{commit}"); shift 2 ;;
@@ -39,6 +45,7 @@ while (($#)); do
     --list) list=true; shift ;;
     --bench) bench=true; shift ;;
     --bench-all) bench=all; shift ;;
+    --bench-scene) bench=one; bench_scene=$2; shift 2 ;;
     *) echo "refactor-check: unknown argument '$1' (see the usage at the top of $0)" >&2; exit 2 ;;
   esac
 done
@@ -308,6 +315,7 @@ echo "refactor-check: $cases cases, $files_total files, $changed_total changed, 
 # ---------------------------------------------------------------- timing
 if [[ $bench != false ]]; then
   rounds=${REFCHECK_ROUNDS:-3}
+  frames=${REFCHECK_FRAMES:-40}
   rows=("learnopengl-shadow-mapping|--set $T=map" "learnopengl-point-shadows|--set $T=map" "two-boxes-sun|--set $T=map --set $M.filter=grid"
         "spot-objects|--set $T=map" "cascades-field|--set $T=map --set $M.cascades=4" "light-leak|--set $T=map")
   if [[ $bench == all ]]; then
@@ -316,10 +324,13 @@ if [[ $bench != false ]]; then
       f=${f#"$S"/}
       rows+=("${f%.json}|")
     done
+  elif [[ $bench == one ]]; then
+    [[ -f "$S/$bench_scene.json" ]] || { echo "refactor-check: --bench-scene: no scene $S/$bench_scene.json" >&2; exit 2; }
+    rows=("$bench_scene|")
   fi
   echo
-  echo "| scene | settings | before ms (per round) | after ms (per round) | after / before (fastest rounds) |" | tee "$out/bench.md"
-  echo "|---|---|---|---|---:|" | tee -a "$out/bench.md"
+  echo "| scene | settings | before ms (per round) | after ms (per round) | after / before (fastest rounds) | after / before (medians of the rounds) |" | tee "$out/bench.md"
+  echo "|---|---|---|---|---:|---:|" | tee -a "$out/bench.md"
   for row in "${rows[@]}"; do
     scene=${row%%|*} sets=${row#*|}
     before=() after=()
@@ -328,12 +339,12 @@ if [[ $bench != false ]]; then
         tool=$base_tool
         [[ $which == head ]] && tool=$head_tool
         # shellcheck disable=SC2086
-        "$tool" bench "$S/$scene.json" $sets --width 800 --height 600 --frames 40 -o "$out/bench-$which" > /dev/null 2> "$out/bench-$which.log"
+        "$tool" bench "$S/$scene.json" $sets --width 800 --height 600 --frames "$frames" -o "$out/bench-$which" > /dev/null 2> "$out/bench-$which.log"
         ms=$(python3 -c 'import json,sys; print("%.2f" % json.load(open(sys.argv[1]))["results"][0]["frameMs"]["median"])' "$out/bench-$which/results.json")
         if [[ $which == base ]]; then before+=("$ms"); else after+=("$ms"); fi
       done
     done
-    ratio=$(python3 -c 'import sys; a=[float(x) for x in sys.argv[1].split()]; b=[float(x) for x in sys.argv[2].split()]; print("%.3f" % (min(b) / min(a)))' "${before[*]}" "${after[*]}")
+    ratio=$(python3 -c 'import sys, statistics as s; a=[float(x) for x in sys.argv[1].split()]; b=[float(x) for x in sys.argv[2].split()]; print("%.3f | %.3f" % (min(b) / min(a), s.median(b) / s.median(a)))' "${before[*]}" "${after[*]}")
     echo "| $scene | \`$sets\` | ${before[*]} | ${after[*]} | $ratio |" | tee -a "$out/bench.md"
   done
 fi
