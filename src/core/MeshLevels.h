@@ -13,7 +13,8 @@
 // that would turn a triangle over or pinch the surface is refused.
 //
 // The cost is about n log n in the triangles, the memory linear, and the
-// result the same every run: a heap holds each vertex once, keyed by its
+// result the same every run (a large mesh is built in two halves on two
+// threads, MeshLevelOptions::splitTriangles): a heap holds each vertex once, keyed by its
 // cheapest collapse (ties by vertex number); no vertex gathers more than 32
 // triangles; each removed vertex is held by one triangle of the level and
 // measured again only when a collapse changes that triangle (MeshLevel::error).
@@ -48,6 +49,11 @@ struct MeshLevelOptions {
     std::size_t minTriangles = 4096;   ///< meshes with fewer triangles get no levels
     double reduction = 0.5;            ///< each level keeps at most this share of the triangles of the one before (0.1..0.9)
     std::size_t fewestTriangles = 256; ///< no level is made below this many triangles
+    /// A mesh of at least this many triangles is simplified in two halves at
+    /// once, on two threads (split at the median along its longest side; the
+    /// cut's vertices never move, so each level's error bound holds for the
+    /// whole and the levels are the same every run); 0: never.
+    std::size_t splitTriangles = 262144;
 };
 
 /// What building a mesh's levels took, counted in steps rather than timed
