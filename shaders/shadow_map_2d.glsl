@@ -14,6 +14,18 @@
 // the offsets per fragment; the far cascadeBlend share of each slice fades
 // into the next.
 
+#if MAP_MIPMAPS && MAP_MOMENTS == 0
+// A mipmapped depth map: the level is read through this gradient, the
+// shorter of the map point's changes per pixel (mapLevelGradient), which
+// mapVisibility sets before its taps.
+vec2 mapTapGradient = vec2(0.0);
+#define MAP_TAP_GRAD , mapTapGradient, mapTapGradient
+#define MAP_TEXTURE textureGrad
+#else
+#define MAP_TAP_GRAD
+#define MAP_TEXTURE texture
+#endif
+
 #if MAP_MOMENTS > 0
 // The moments, or the depth they are taken from (MAP_MOMENTS_FROM_DEPTH).
 SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapMoments;
@@ -21,7 +33,7 @@ SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapMoments;
 SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArray mapPacked;
 // 1 where the receiver at depth `ref` is nearer than the map's occluder.
 float mapTap(float layer, vec2 uv, float ref) {
-    return ref <= unpackDepth(texture(mapPacked, vec3(uv, layer))) ? 1.0 : 0.0;
+    return ref <= unpackDepth(MAP_TEXTURE(mapPacked, vec3(uv, layer) MAP_TAP_GRAD)) ? 1.0 : 0.0;
 }
 #elif MAP_PLAIN_FETCH
 // A software rasteriser: the nearest depth at level 0, compared here
@@ -37,10 +49,10 @@ float mapTap(float layer, vec2 uv, float ref) { return ref <= textureLod(mapDept
 #endif
 #elif MAP_LAYER_VIEW
 SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DShadow mapDepth;
-float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec3(uv, ref)); }
+float mapTap(float layer, vec2 uv, float ref) { return MAP_TEXTURE(mapDepth, vec3(uv, ref) MAP_TAP_GRAD); }
 #else
 SL_BINDING(SL_UNIT_SHADOW_FIRST) uniform sampler2DArrayShadow mapDepth;
-float mapTap(float layer, vec2 uv, float ref) { return texture(mapDepth, vec4(uv, layer, ref)); }
+float mapTap(float layer, vec2 uv, float ref) { return MAP_TEXTURE(mapDepth, vec4(uv, layer, ref) MAP_TAP_GRAD); }
 #endif
 
 // The map a test reads: its array layer, its camera's near and far
@@ -140,6 +152,7 @@ float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, flo
     float texel = dot(vec2(offset.w, scale.w), vCascadeAxes);  // the x and y texels, weighed by the normal
 #if MAP_MIPMAPS
     texel *= mapLevelScale(scale.xy * dx.xy, scale.xy * dy.xy);
+    mapTapGradient = mapLevelGradient(scale.xy * dx.xy, scale.xy * dy.xy);
 #endif
     return mapTest(m, vec4(scale.xyz * (vCascadePoint + texel * vCascadeOffset) + offset.xyz, 1.0), NdotL, transmit);
 #else
@@ -150,6 +163,7 @@ float cascadeTest(int c, bool quad, vec3 worldPosition, vec3 n, float NdotL, flo
 #if MAP_MIPMAPS
     mat3 toUv = mat3(map.cascadeShadowFromWorld[c]);
     texel *= mapLevelScale((toUv * dx).xy, (toUv * dy).xy);
+    mapTapGradient = mapLevelGradient((toUv * dx).xy, (toUv * dy).xy);
 #endif
     vec3 p = mapReceiverPlaneOffset(mapNormalOffset(worldPosition, n, NdotL, texel), map.towardsLight, texel, tanTheta);
     MapLookup m = mapLookup(map.layer + float(c));
@@ -226,6 +240,7 @@ float mapVisibility(vec3 worldPosition, vec3 worldNormal, inout vec3 transmit) {
     // The offsets reach the texel of the level read (shadow_map_bias.glsl).
     vec2 uv = shadowCoord.xy / shadowCoord.w;
     float levelScale = mapLevelScale(dFdx(uv), dFdy(uv)) - 1.0;
+    mapTapGradient = mapLevelGradient(dFdx(uv), dFdy(uv));
     coord += levelScale * vShadowOffset;
 #if MAP_RAY_DEPTH_OFFSET
     coord.z += levelScale * vShadowDepthOffset;

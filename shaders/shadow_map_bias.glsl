@@ -48,14 +48,21 @@ float mapAxesTexel(mat4 shadowFromWorld, vec3 n) {
     return s > 1e-4 ? dot(g, texels) / s : max(texels.x, texels.y);
 }
 
-// A mipmapped map (MAP_MIPMAPS): how many level-0 texels a texel of the
-// level the lookup reads spans, 2^level, for a point whose map uv changes
-// by duvdx, duvdy per pixel. The level as a NEAREST_MIPMAP sampler picks
-// it, from the larger footprint (level 0 where a texel covers a pixel or
-// more). Averaged depths are the depth at the coarse texel's centre, so the
-// offsets against acne must reach that texel's size, not level 0's.
+// A mipmapped map (MAP_MIPMAPS): the map point's change per pixel the
+// level is chosen by, the shorter of its changes in x and y (duvdx,
+// duvdy): where the view grazes a surface the longer one spans many
+// texels, and a level that coarse would blur the map across several
+// pixels in the other direction too (a caster's edge blended with the
+// depth behind it, its shadow shrunk); the shorter keeps a level's texel
+// about a pixel where it is read (the taps pass it as both gradients).
+vec2 mapLevelGradient(vec2 duvdx, vec2 duvdy) { return dot(duvdx, duvdx) <= dot(duvdy, duvdy) ? duvdx : duvdy; }
+
+// How many level-0 texels a texel of that level spans, 2^level (level 0
+// where a texel covers a pixel or more). Averaged depths are the depth at
+// the coarse texel's centre, so the offsets against acne must reach that
+// texel's size, not level 0's.
 float mapLevelScale(vec2 duvdx, vec2 duvdy) {
-    float rho = max(length(duvdx), length(duvdy)) / map.texelUv;
+    float rho = length(mapLevelGradient(duvdx, duvdy)) / map.texelUv;
     return exp2(max(floor(log2(max(rho, 1e-8)) + 0.5), 0.0));
 }
 

@@ -145,6 +145,18 @@ TEST_F(MapDefectsGLTest, MipmappedMapsShowNoAcne) {
         }
 }
 
+// A mipmapped map read at the level of the pixel's larger footprint: where
+// the view grazes the ground that level's texels spanned several pixels
+// across too, blending a caster's edge with the depth behind it, and
+// long-view's shadows shrank (0.941 % false lit away from edges at
+// 800x600). The level now follows the shorter footprint (0.015 %).
+TEST_F(MapDefectsGLTest, MipmappedMapsKeepShadowsWhereTheViewGrazes) {
+    const Scene scene = loadSceneFile(sceneFile("long-view.json"), {"lights[0].shadow.technique=map", "lights[0].shadow.map.mipmaps=true"});
+    const Comparison c = compareScene(scene, 800, 600);
+    EXPECT_GT(c.lights[0].referenceShadowedPixels, 3000u) << "the shadows are in view";
+    EXPECT_LE(awayFromEdges(c.lights[0]), kBar);
+}
+
 // The map's size follows the frame by default (MapOptions::size 0): the
 // far scene at 1920x1080 is within max(1.25x its 800x600 figure, 0.05 %)
 // (with 768^2 at 1080p glass-panel misclassified 0.061 %, 0.028 % since

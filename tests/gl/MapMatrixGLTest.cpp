@@ -28,11 +28,9 @@
 //   offsets, so light leaks there, as Ganovelli et al. §8.4.1.1 says back
 //   faces do; wider under a low sun: at 800x600 bunny 0.064 %,
 //   cascades-field 0.111 %, long-view 0.096 %, the rest at most 0.027 %; open casters, which it used
-//   to lose, are drawn whole now, MapDefectsGLTest), and mipmaps
-//   (Ganovelli et al. exercise 8.6.1-4: averaged depths are not a prefiltered
-//   shadow; a coarse level blends a caster's edge with the depth behind
-//   it, and shadows shrink by its texels, 0.05-1.7 % false lit here; the
-//   acne of an unscaled bias is gone, MapDefectsGLTest).
+//   to lose, are drawn whole now, MapDefectsGLTest). mipmaps is judged:
+//   its level follows the pixel's shorter footprint and its offsets the
+//   level's texel (MapDefectsGLTest).
 // - A value the scene refuses (a cube's dither4, cascades on a spot) is
 //   counted as refused: the loader's one-line error is the answer.
 // - Scenes that ship cascades (cascades-field, long-view) are not judged
@@ -134,7 +132,6 @@ std::string exemptWhy(const MapOptions& o) {
     if (o.outside == MapOutside::Repeat) return "outside repeat: copies LearnOpenGL's over-sampling";
     if (o.cullFront) return "cullFront: back faces trade acne for light leaks where closed casters stand on receivers";
     if (o.fit == MapFit::Scene) return "fit scene: the lecture's box around the whole scene";
-    if (o.mipmaps) return "mipmaps: averaged depths blur a caster's edge into what lies behind it";
     if (o.format == MapFormat::R8) return "r8: 8 bits of depth";
     if (o.representation != MapRepresentation::Depth && o.momentFormat == MapMomentFormat::Rgba16f) return "16-bit moments";
     return "";
