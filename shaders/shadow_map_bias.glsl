@@ -49,13 +49,15 @@ float mapAxesTexel(mat4 shadowFromWorld, vec3 n) {
 }
 
 // A mipmapped map (MAP_MIPMAPS): the map point's change per pixel the
-// level is chosen by, the shorter of its changes in x and y (duvdx,
-// duvdy): where the view grazes a surface the longer one spans many
-// texels, and a level that coarse would blur the map across several
-// pixels in the other direction too (a caster's edge blended with the
-// depth behind it, its shadow shrunk); the shorter keeps a level's texel
-// about a pixel where it is read (the taps pass it as both gradients).
-vec2 mapLevelGradient(vec2 duvdx, vec2 duvdy) { return dot(duvdx, duvdx) <= dot(duvdy, duvdy) ? duvdx : duvdy; }
+// level is chosen by: the shorter of its changes in x and y (duvdx,
+// duvdy), over sqrt 2. Where the view grazes a surface the longer one
+// spans many texels, and a level that coarse would blur the map across
+// several pixels in the other direction too (a caster's edge blended with
+// the depth behind it, its shadow shrunk). A nearest-level sampler rounds
+// log2 of the footprint; over sqrt 2 it rounds down instead: the finest
+// level whose texel is no wider than the pixel's shorter footprint, so a
+// blended edge stays within a pixel (the taps pass it as both gradients).
+vec2 mapLevelGradient(vec2 duvdx, vec2 duvdy) { return 0.70710678 * (dot(duvdx, duvdx) <= dot(duvdy, duvdy) ? duvdx : duvdy); }
 
 // How many level-0 texels a texel of that level spans, 2^level (level 0
 // where a texel covers a pixel or more). Averaged depths are the depth at

@@ -149,7 +149,8 @@ TEST_F(MapDefectsGLTest, MipmappedMapsShowNoAcne) {
 // the view grazes the ground that level's texels spanned several pixels
 // across too, blending a caster's edge with the depth behind it, and
 // long-view's shadows shrank (0.941 % false lit away from edges at
-// 800x600). The level now follows the shorter footprint (0.015 %).
+// 800x600). The level now follows the shorter footprint, rounded down to
+// a texel no wider than it (0.014 %).
 TEST_F(MapDefectsGLTest, MipmappedMapsKeepShadowsWhereTheViewGrazes) {
     const Scene scene = loadSceneFile(sceneFile("long-view.json"), {"lights[0].shadow.technique=map", "lights[0].shadow.map.mipmaps=true"});
     const Comparison c = compareScene(scene, 800, 600);
