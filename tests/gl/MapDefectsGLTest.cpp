@@ -180,6 +180,18 @@ TEST_F(MapDefectsGLTest, TheDefaultMapFollowsTheFrame) {
     }
 }
 
+// Fit "scene" with the size that follows the frame: the map grows by how
+// much wider the scene's box is than the tight fit's, so the part the view
+// reads keeps about the tight fit's texels a pixel. Before, the frame's
+// 768^2 over the bunny's whole scene misclassified 0.157 % away from edges
+// at 800x600 (now 0.025 %, the tight fit's 0.024 %).
+TEST_F(MapDefectsGLTest, ASceneFitMapGrowsByTheShareTheViewSees) {
+    const Scene scene = loadSceneFile(sceneFile("bunny.json"), {"lights[0].shadow.technique=map", "lights[0].shadow.map.fit=\"scene\""});
+    const Comparison c = compareScene(scene, 800, 600);
+    EXPECT_GT(c.lights[0].referenceShadowedPixels, 3000u) << "the shadows are in view";
+    EXPECT_LE(awayFromEdges(c.lights[0]), kBar);
+}
+
 // A preset is a set of defaults under the scene's own keys: the lecture's
 // 60 % shadowed light gives way to a --set, and so does LearnOpenGL's 1024^2
 // map; a key the scene does not write takes the preset's value.

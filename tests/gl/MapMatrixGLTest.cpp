@@ -20,10 +20,9 @@
 //   screen: the filter's footprint in texels times the scene's p95 texel
 //   footprint in pixels (at least 1 pixel, at most 64), where a soft edge
 //   is meant to differ from the hard truth.
-// - Exempt beyond the list, said in its closing note: fit "scene"
-//   (Ganovelli et al.'s box around the whole scene, kept as the lecture draws
-//   it: its texels are as coarse as the scene is wide; 0.05-0.08 % here),
-//   cullFront (a closed caster's back face meets the ground it stands on,
+// - fit "scene" is judged: with size 0 its map grows by how much wider the
+//   scene's box is than the tight fit's (sceneFitWidening, up to 4096^2).
+// - Exempt beyond the list, said in its closing note: cullFront (a closed caster's back face meets the ground it stands on,
 //   and near that foot the two depths are nearer than the lookup's
 //   offsets, so light leaks there, as Ganovelli et al. §8.4.1.1 says back
 //   faces do; wider under a low sun: at 800x600 bunny 0.064 %,
@@ -131,7 +130,6 @@ std::string exemptWhy(const MapOptions& o) {
     if (o.preset != MapPreset::Default) return "preset: copies a tutorial's flaws";
     if (o.outside == MapOutside::Repeat) return "outside repeat: copies LearnOpenGL's over-sampling";
     if (o.cullFront) return "cullFront: back faces trade acne for light leaks where closed casters stand on receivers";
-    if (o.fit == MapFit::Scene) return "fit scene: the lecture's box around the whole scene";
     if (o.format == MapFormat::R8) return "r8: 8 bits of depth";
     if (o.representation != MapRepresentation::Depth && o.momentFormat == MapMomentFormat::Rgba16f) return "16-bit moments";
     return "";

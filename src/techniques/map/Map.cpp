@@ -31,6 +31,7 @@
 #include <shadowlab/Text.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -290,10 +291,17 @@ private:
     // resolved.
     static MapOptions optionsHere(TechniqueHost& host, const FrameInfo& frame, const Light& light) {
         MapOptions o = light.shadow.get<MapOptions>();
-        // size 0: the frame's (Wolberg's lecture: the window's own size; otherwise frameMapSize's texels per pixel).
-        if (o.size == 0)
-            o.size = std::clamp(isLecture2D(o, light) ? std::max(frame.viewport.x, frame.viewport.y) : frameMapSize(frame.viewport.x, frame.viewport.y), 16,
+        // size 0: the frame's (Wolberg's lecture: the window's own size;
+        // otherwise frameMapSize's texels per pixel, over the part of the
+        // map the view reads: fit "scene" widens it by sceneFitWidening,
+        // in steps of 256 texels, up to kFrameMapMaximum).
+        if (o.size == 0) {
+            const int frameSide = frameMapSize(frame.viewport.x, frame.viewport.y);
+            const float widened = static_cast<float>(frameSide) * sceneFitWidening(o, light, frame);
+            const int side = widened > static_cast<float>(frameSide) ? std::min((static_cast<int>(std::ceil(widened)) + 255) / 256 * 256, kFrameMapMaximum) : frameSide;
+            o.size = std::clamp(isLecture2D(o, light) ? std::max(frame.viewport.x, frame.viewport.y) : std::max(side, frameSide), 16,
                                 host.glInfo().maxTextureSize);
+        }
         return o;
     }
 

@@ -118,6 +118,17 @@ bool usesSamples(const MapLight& p, const Light& light) {
     return p.options.fit == MapFit::Sdsm && p.options.preset == MapPreset::Default && light.type == LightType::Directional;
 }
 
+float sceneFitWidening(const MapOptions& o, const Light& light, const FrameInfo& frame) {
+    if (o.fit != MapFit::Scene || light.type != LightType::Directional || o.preset != MapPreset::Default || o.warp != MapWarp::None ||
+        cascadeCount(light, o) > 1)
+        return 1.0f;
+    const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
+    const glm::vec3 direction = glm::normalize(light.direction);
+    const float scene = fitDirectional(direction, LightFit::Scene, in).texelSize;
+    const float tight = fitDirectional(direction, LightFit::Tight, in).texelSize;
+    return tight > 0.0f && scene > tight ? scene / tight : 1.0f;
+}
+
 glm::mat4 sdsmLightView(const Light& light, const FrameInfo& frame) {
     const FitInput in{frame.itemBounds, frame.items, frame.itemPlanes, frame.itemConvex, frame.clipFromWorld};
     return directionalLightView(glm::normalize(light.direction), in);

@@ -18,6 +18,14 @@ namespace shadowlab::map {
 /// with sdsmReach's; its cameras are fitted on the GPU: MapSdsm).
 void fitCameras(MapLight& p, const Light& light, const FrameInfo& frame, const Bounds* samples = nullptr);
 
+/// Fit "scene" with a size that follows the frame (MapOptions::size 0):
+/// how many times wider the scene's box is, across a directional light,
+/// than the tight fit's box around what the view sees (at least 1). The
+/// frame's size times it gives the part of the map the view reads as many
+/// texels a pixel as the tight fit's. 1 for other lights, cascades, warps
+/// and presets.
+float sceneFitWidening(const MapOptions& o, const Light& light, const FrameInfo& frame);
+
 /// Whether `p` takes fit "sdsm" (a directional light, no preset).
 bool usesSamples(const MapLight& p, const Light& light);
 

@@ -37,7 +37,7 @@ const OptionTable& mapOptionTable() {
     static const OptionTable table =
         OptionTableFor<MapOptions>("map")
             .integer(&MapOptions::size, "size", 0, 16384, "texels",
-                     "side of the square shadow map (a cube map: of each face), 16..16384; 0 (the default): follows the frame, 0.96 texels per pixel of its larger side, at least 768 and at most 4096 (docs/techniques/map.md)")
+                     "side of the square shadow map (a cube map: of each face), 16..16384; 0 (the default): follows the frame, 0.96 texels per pixel of its larger side, at least 768 and at most 4096; with fit scene, times how much wider the scene's box is than the tight fit's, in steps of 256, at most 4096 (docs/techniques/map.md)")
             .choice(&MapOptions::format, "format", {"depth16", "depth24", "depth32f", "rgba8", "r8"},
                     "depth texture format; rgba8 packs depth into colour (Ganovelli et al. §8.3.1); r8 keeps 8 bits of depth, enough only when every caster is nearer the light than what it shadows (Ganovelli et al. exercise 8.6.2-1, variation 2)")
             .choice(&MapOptions::fit, "fit", {"tight", "scene", "sdsm"},
