@@ -35,6 +35,7 @@ set(SHADOWLAB_SCENE_SOURCES
   ${_scene_dir}/scene/GltfImporter.cpp
   ${_scene_dir}/scene/GltfData.cpp
   ${_scene_dir}/scene/GltfSchema.cpp
+  ${_scene_dir}/scene/GltfScene.cpp
   ${_scene_dir}/scene/SceneJson.cpp
   ${_scene_dir}/scene/CameraFile.cpp
   ${_scene_dir}/scene/LightFile.cpp

@@ -1,6 +1,8 @@
 // The tool's subcommands' shared checks and helpers (Commands.h).
 #include "Commands.h"
 
+#include <cstdio>
+
 #include <cmath>
 #include <iostream>
 #include <set>
@@ -21,7 +23,9 @@ void checkFps(double fps) {
 }
 
 Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
-    return path.empty() ? defaultScene(overrides) : loadSceneFile(path, overrides);
+    Scene scene = path.empty() ? defaultScene(overrides) : loadSceneFile(path, overrides);
+    for (const std::string& note : scene.notes) std::fprintf(stderr, "shadowlab: note: %s\n", note.c_str());
+    return scene;
 }
 
 void requireNoGlErrors(const Context& context) {

@@ -253,6 +253,10 @@ struct SHADOWLAB_API Scene {
     std::vector<Node> nodes;          ///< parents come before their children
     std::vector<Light> lights;
     ShadowAtlasSettings shadowAtlas;  ///< for the lights whose map is in the atlas (MapOptions::atlas)
+    /// What loading chose where the file was silent, one line each (a glTF
+    /// file with no light gets the default sun, with no camera one that
+    /// frames it): for the caller to show.
+    std::vector<std::string> notes;
 
     /// Every node with a mesh, with world transforms resolved (parents first).
     std::vector<DrawItem> drawItems() const;

@@ -4,6 +4,7 @@
 // that knows its JSON path (SceneJson.h).
 #include <shadowlab/SceneFile.h>
 
+#include "scene/GltfScene.h"
 #include "scene/Overrides.h"
 #include "scene/SceneParts.h"
 
@@ -173,6 +174,14 @@ Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overri
     if (status.type() == fs::file_type::none) throw Error(name + ": " + ec.message());  // a name too long, a loop of links
     if (!fs::exists(status)) throw Error(name + ": file not found");
     if (!fs::is_regular_file(status)) throw Error(name + ": not a regular file");
+    if (isGltfPath(path)) {
+        // A glTF file as a whole scene: its document, then loaded as a scene file's.
+        std::vector<std::string> notes;
+        const json document = gltfSceneDocument(path, {}, notes);
+        Scene scene = parseScene(document.dump(), name, path.parent_path(), overrides);
+        scene.notes = std::move(notes);
+        return scene;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(name + ": cannot open for reading");
     std::stringstream text;
