@@ -36,6 +36,8 @@ set(SHADOWLAB_SCENE_SOURCES
   ${_scene_dir}/scene/GltfData.cpp
   ${_scene_dir}/scene/GltfSchema.cpp
   ${_scene_dir}/scene/GltfScene.cpp
+  ${_scene_dir}/scene/GltfIncludes.cpp
+  ${_scene_dir}/scene/GltfExport.cpp
   ${_scene_dir}/scene/SceneJson.cpp
   ${_scene_dir}/scene/CameraFile.cpp
   ${_scene_dir}/scene/LightFile.cpp

@@ -20,6 +20,7 @@ CLI::App* addBench(CLI::App& app, BenchArgs& args, std::string& output) {
     CLI::App* bench = app.add_subcommand("bench", "Time and accuracy of every combination of settings, with results.json and report.html");
     bench->add_option("scenes", args.scenes, "Scene files (JSON); the built-in default scene when omitted");
     bench->add_option("--set", args.overrides, "Override a scene value for every run")->take_all();
+    bench->add_option("--camera", args.gltfCamera, "A glTF file's camera: its index among those the file's scene places, from 0 (default: the first)")->check(CLI::Range(0, 65535));
     bench->add_option("--vary", args.vary, "key=v1,v2,...: run once per value (several --vary: every combination)")->take_all();
     bench->add_option("--frames", args.frames, "Timed frames per combination; timed frame k at --time + k / --fps")
         ->check(CLI::Range(1, 100000))->capture_default_str();

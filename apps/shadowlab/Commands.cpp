@@ -22,8 +22,9 @@ void checkFps(double fps) {
     if (!std::isfinite(fps) || !(fps > 0.0)) throw Error("--fps " + text::numberText(fps) + ": expected a finite number of frames per second > 0");
 }
 
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides) {
-    Scene scene = path.empty() ? defaultScene(overrides) : loadSceneFile(path, overrides);
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides, int camera) {
+    if (path.empty() && camera >= 0) throw Error("--camera " + std::to_string(camera) + ": needs a glTF file (the default scene has one camera)");
+    Scene scene = path.empty() ? defaultScene(overrides) : loadSceneFile(path, overrides, SceneFileOptions{camera});
     for (const std::string& note : scene.notes) std::fprintf(stderr, "shadowlab: note: %s\n", note.c_str());
     return scene;
 }

@@ -21,8 +21,9 @@ void printNotes(const std::vector<std::string>& notes);
 void checkTime(double seconds, const std::string& flag);
 /// --fps: a finite number of frames per second > 0.
 void checkFps(double fps);
-/// The scene file at `path` with `overrides` (--set), or the default scene when `path` is empty.
-Scene loadScene(const std::string& path, const std::vector<std::string>& overrides);
+/// The scene file at `path` with `overrides` (--set), or the default scene
+/// when `path` is empty; `camera` >= 0: a glTF file's camera N (--camera).
+Scene loadScene(const std::string& path, const std::vector<std::string>& overrides, int camera = -1);
 /// Throws when the context's debug output reported a GL error.
 void requireNoGlErrors(const Context& context);
 /// Two --set of one path are refused: the later would replace the earlier

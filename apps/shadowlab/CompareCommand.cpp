@@ -65,6 +65,7 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& args) {
     compare->add_option("--samples", args.softSamples, "Reference rays per pixel for lights with a size")
         ->check(CLI::Range(1, kMaxSoftSamples))->capture_default_str();
     compare->add_option("--set", args.overrides, "Override a scene value by JSON path")->take_all();
+    compare->add_option("--camera", args.camera, "A glTF file's camera: its index among those the file's scene places, from 0 (default: the first)")->check(CLI::Range(0, 65535));
     compare->add_option("--time", args.timeSeconds, "Seconds since the start of the animation: where the light and camera paths are")
         ->capture_default_str();
     return compare;
@@ -73,7 +74,7 @@ CLI::App* addCompare(CLI::App& app, CompareArgs& args) {
 int runCompare(const CompareArgs& args) {
     checkTime(args.timeSeconds, "--time");
     // Both sides, technique and reference, see the lights and the camera at --time.
-    const Scene scene = sceneAtTime(loadScene(args.scene, args.overrides), args.timeSeconds);
+    const Scene scene = sceneAtTime(loadScene(args.scene, args.overrides, args.camera), args.timeSeconds);
     const fs::path dir = checkOutputDirectory(args.output);
     checkMemory(args.width, args.height);
     checkReferenceRays(args.width, args.height, args.softSamples);

@@ -15,6 +15,7 @@ struct CompareArgs {
     int height = 540;
     int softSamples = 256;
     std::vector<std::string> overrides;
+    int camera = -1;  ///< --camera: a glTF file's camera; -1 its first
     double timeSeconds = 0.0; ///< --time: the lights and the camera where their paths put them at this time, seconds
 };
 

@@ -61,11 +61,13 @@ fs::file_status pathStatus(const fs::path& path, const std::string& label) {
     return status;
 }
 
-fs::path checkOutput(const std::string& output, const std::string& flag) {
+fs::path checkOutput(const std::string& output, const std::string& flag, const std::string& extension) {
     const fs::path path(output);
     const std::string label = flag + " " + output;
-    if (fs::is_directory(pathStatus(path, label))) throw Error(label + ": is a directory (expected a .png file name)");
-    if (path.extension() != ".png" && path.extension() != ".PNG") throw Error(label + ": expected a .png file name");
+    if (fs::is_directory(pathStatus(path, label))) throw Error(label + ": is a directory (expected a " + extension + " file name)");
+    std::string given = path.extension().string();
+    for (char& c : given) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (given != extension) throw Error(label + ": expected a " + extension + " file name");
     const fs::path dir = path.parent_path();
     if (!dir.empty() && !fs::is_directory(pathStatus(dir, label)))
         throw Error(label + ": directory " + dir.string() + " does not exist");

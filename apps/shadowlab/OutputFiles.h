@@ -33,7 +33,7 @@ std::filesystem::file_status pathStatus(const std::filesystem::path& path, const
 
 /// Checks an output PNG path (given by `flag`) before any work is done, so
 /// bad paths fail fast: a .png name in an existing directory.
-std::filesystem::path checkOutput(const std::string& output, const std::string& flag);
+std::filesystem::path checkOutput(const std::string& output, const std::string& flag, const std::string& extension = ".png");
 
 /// Checks an output directory (-o): not an existing file, its parent there.
 std::filesystem::path checkOutputDirectory(const std::string& output);

@@ -75,6 +75,7 @@ CLI::App* addRender(CLI::App& app, RenderArgs& args) {
     render->add_option("--width", args.width, "Image width in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     render->add_option("--height", args.height, "Image height in pixels")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     render->add_option("--set", args.overrides, "Override a scene value by JSON path, e.g. lights[0].intensity=2")->take_all();
+    render->add_option("--camera", args.camera, "A glTF file's camera: its index among those the file's scene places, from 0 (default: the first)")->check(CLI::Range(0, 65535));
     render->add_option("--view-from-light", args.viewFromLight, "See the scene from light I's camera (spot: along its cone; directional: along its direction)")
         ->check(CLI::Range(0, static_cast<int>(kMaxLights) - 1));
     render->add_option("--debug", args.debug,
@@ -94,7 +95,7 @@ CLI::App* addRender(CLI::App& app, RenderArgs& args) {
 int runRender(const RenderArgs& args) {
     checkTime(args.timeSeconds, "--time");
     checkFps(args.fps);
-    const Scene loaded = loadScene(args.scene, args.overrides);
+    const Scene loaded = loadScene(args.scene, args.overrides, args.camera);
     // Without -o: <scene>.png, or <scene>-%03d.png for a sequence.
     std::string stem = args.scene.empty() ? std::string("default") : fs::path(args.scene).stem().string();
     for (std::size_t at = stem.find('%'); at != std::string::npos; at = stem.find('%', at + 2)) stem.insert(at, "%");

@@ -14,6 +14,7 @@ struct RenderArgs {
     int width = 1280;
     int height = 720;
     std::vector<std::string> overrides;
+    int camera = -1;          ///< --camera: a glTF file's camera; -1 its first
     std::string debugImages;  ///< directory for the techniques' debug images; empty = none
     std::vector<std::string> debug; ///< --debug: which debug images to write beside the output (shadow-maps, texel-density, all)
     int viewFromLight = -1;   ///< --view-from-light: the light whose view replaces the camera; -1 none

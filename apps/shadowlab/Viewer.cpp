@@ -83,7 +83,10 @@ ViewerSession::ViewerSession(const ViewArgs& viewArgs)
     fileTime = fromFile ? fs::last_write_time(args.scene) : fs::file_time_type{};
 }
 
-Scene ViewerSession::load() const { return fromFile ? loadSceneFile(args.scene, overrides.all()) : defaultScene(overrides.all()); }
+Scene ViewerSession::load() const {
+    if (!fromFile && args.camera >= 0) throw Error("--camera " + std::to_string(args.camera) + ": needs a glTF file (the default scene has one camera)");
+    return fromFile ? loadSceneFile(args.scene, overrides.all(), SceneFileOptions{args.camera}) : defaultScene(overrides.all());
+}
 
 // Reads the scene again with every override; on failure keeps the last good one.
 void ViewerSession::reload() {

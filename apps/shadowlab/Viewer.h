@@ -9,6 +9,7 @@ namespace shadowlab {
 struct ViewArgs {
     std::string scene;                   ///< scene file; the built-in default scene when empty
     std::vector<std::string> overrides;  ///< --set lines, applied before the panel's own
+    int camera = -1;                     ///< --camera: a glTF file's camera; -1 its first
     int width = 1280, height = 720;      ///< window size, screen coordinates
     int frames = 0;                      ///< > 0: quit after this many frames (with --screenshot: write it first)
     std::string screenshot;              ///< with --frames: the window's last frame as a PNG

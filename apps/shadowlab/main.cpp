@@ -3,12 +3,14 @@
 //          [--time T] [--frames N --fps F -o frame_%03d.png]
 //   compare [SCENE.json] [-o DIR] [--set ...] [--time T]  technique vs ray-traced reference
 //   bench [SCENES...] [--set ...] [--vary key=v1,v2] [--frames N] [--rounds R] [--time T --fps F] [--flips] [-o DIR]
+//   export [SCENE] -o out.gltf [--set ...]  the scene as one glTF file with its camera and lights
 //   info
 // Every failure prints one line `shadowlab: error: ...` and exits non-zero;
 // no output file is written unless the whole render succeeded.
 #include "BenchCommand.h"
 #include "Commands.h"
 #include "CompareCommand.h"
+#include "ExportCommand.h"
 #include "InfoCommands.h"
 #include "Interrupt.h"
 #include "OutputFiles.h"
@@ -45,11 +47,13 @@ struct Commands {
     RenderArgs render;
     CompareArgs compare;
     BenchArgs bench;
+    ExportArgs exportScene;
     std::string benchOutput = "bench";
     bool techniquesMarkdown = false;
     CLI::App* renderCommand = nullptr;
     CLI::App* compareCommand = nullptr;
     CLI::App* benchCommand = nullptr;
+    CLI::App* exportCommand = nullptr;
     CLI::App* techniquesCommand = nullptr;
     CLI::App* infoCommand = nullptr;
 #if SHADOWLAB_VIEWER
@@ -62,6 +66,7 @@ void addCommands(CLI::App& app, Commands& c) {
     c.renderCommand = addRender(app, c.render);
     c.compareCommand = addCompare(app, c.compare);
     c.benchCommand = addBench(app, c.bench, c.benchOutput);
+    c.exportCommand = addExport(app, c.exportScene);
     c.techniquesCommand = app.add_subcommand("techniques", "List the shadow techniques and their options");
     c.techniquesCommand->add_flag("--markdown", c.techniquesMarkdown, "Print the options tables as docs/scene-format.md carries them");
     c.infoCommand = app.add_subcommand("info", "Print the OpenGL implementation, its limits and the build options");
@@ -101,7 +106,9 @@ int run(const Commands& c) {
     requireNonEmpty(c.compareCommand, "scene", c.compare.scene, "compare: scene");
     requireNonEmpty(c.compareCommand, "--output", c.compare.output, "-o");
     requireNonEmpty(c.benchCommand, "--output", c.benchOutput, "-o");
-    for (const std::vector<std::string>* sets : {&c.render.overrides, &c.compare.overrides, &c.bench.overrides}) requireDistinctSets(*sets);
+    requireNonEmpty(c.exportCommand, "scene", c.exportScene.scene, "export: scene");
+    requireNonEmpty(c.exportCommand, "--output", c.exportScene.output, "-o");
+    for (const std::vector<std::string>* sets : {&c.render.overrides, &c.compare.overrides, &c.bench.overrides, &c.exportScene.overrides}) requireDistinctSets(*sets);
 #if SHADOWLAB_VIEWER
     requireDistinctSets(c.view.overrides);
 #endif
@@ -118,6 +125,7 @@ int run(const Commands& c) {
         args.output = c.benchOutput;
         return runBenchCommand(args);
     }
+    if (*c.exportCommand) return runExport(c.exportScene);
     if (*c.infoCommand) return runInfo();
 #if SHADOWLAB_VIEWER
     if (*c.viewCommand) {

@@ -22,6 +22,7 @@ struct BenchOptions {
     std::vector<std::string> scenes;     ///< scene files; empty = the built-in default scene
     /// `key=value` overrides for every run, as --set takes them (errors name them `--set key=value`).
     std::vector<std::string> overrides;
+    int gltfCamera = -1;                 ///< a glTF scene file's camera (SceneFileOptions::gltfCamera, `--camera`); -1: its first
     /// `key=v1,v2,...` (commas inside [] {} "" do not split): every
     /// combination of the values is a run, per scene (errors name them `--vary ...`).
     std::vector<std::string> vary;

@@ -26,6 +26,18 @@ constexpr std::size_t kMaxLights = 256;
 /// the bad value and what was expected.
 SHADOWLAB_API Scene loadSceneFile(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
 
+/// How loadSceneFile opens a file beyond its overrides.
+struct SceneFileOptions {
+    /// A glTF file's camera: the index among the cameras its default scene
+    /// places, in node order (`--camera N`); -1 (the default): the first.
+    /// Given for a scene file, an error: a scene file includes a glTF's
+    /// camera with "camera": {"gltf": FILE, "index": N}.
+    int gltfCamera = -1;
+};
+
+/// loadSceneFile with `options`.
+SHADOWLAB_API Scene loadSceneFile(const std::filesystem::path& path, const std::vector<std::string>& overrides, const SceneFileOptions& options);
+
 /// Parses scene JSON text. `sourceName` names it in errors; `baseDir`
 /// resolves relative mesh and texture paths.
 SHADOWLAB_API Scene parseScene(const std::string& jsonText, const std::string& sourceName,

@@ -37,6 +37,14 @@ void checkArgs(const BenchOptions& args) {
 }
 
 // The runs --skip-unsupported left out while loading: the first ten said.
+// What each scene file's loading chose (a glTF with no light or camera), once a file.
+void noteSceneChoices(const BenchHooks& hooks, const std::vector<BenchRun>& runs) {
+    if (!hooks.note) return;
+    for (std::size_t r = 0; r < runs.size(); ++r)
+        if (r == 0 || runs[r].file != runs[r - 1].file)
+            for (const std::string& note : runs[r].loaded.notes) hooks.note(note);
+}
+
 void noteSkipped(const BenchHooks& hooks, const json& skipped) {
     if (!hooks.note) return;
     for (std::size_t i = 0; i < skipped.size(); ++i) {
@@ -90,6 +98,7 @@ json run(Context& context, const BenchOptions& args, const BenchHooks& hooks) {
     std::vector<BenchRun> runs = loadRuns(args, &skipped);  // every scene and combination checked before the long run starts
     if (runs.empty()) throw Error("--skip-unsupported: every run was left out (" + skipped.front()["reason"].get<std::string>() + ")");
     noteSkipped(hooks, skipped);
+    noteSceneChoices(hooks, runs);
     json records = json::array();
     // Rounds (BenchOptions::rounds): every run timed once a round, the
     // runs in turn; a run keeps its fastest round's frames whole.

@@ -128,8 +128,10 @@ std::vector<BenchRun> loadRuns(const BenchOptions& args, nlohmann::json* skipped
         for (const auto& combo : combos) {
             std::vector<std::string> overrides = args.overrides;
             overrides.insert(overrides.end(), combo.begin(), combo.end());
+            if (file.empty() && args.gltfCamera >= 0)
+                throw Error("--camera " + std::to_string(args.gltfCamera) + ": needs a glTF file (the default scene has one camera)");
             try {
-                runs.push_back({file, combo, file.empty() ? defaultScene(overrides) : loadSceneFile(file, overrides)});
+                runs.push_back({file, combo, file.empty() ? defaultScene(overrides) : loadSceneFile(file, overrides, SceneFileOptions{args.gltfCamera})});
             } catch (const Error& e) {
                 // A varied value is applied like --set; name the flag the user wrote,
                 // and the scene and combination the check failed in.

@@ -182,6 +182,27 @@ std::vector<std::uint32_t> GltfImporter::readIndices(int index, std::size_t vert
     return indices;
 }
 
+void GltfImporter::blinnPhongExtras(const tinygltf::Value& extras, const std::string& at, Material& m) const {
+    if (!extras.IsObject() || !extras.Has("shadowlab")) return;
+    const tinygltf::Value& own = extras.Get("shadowlab");
+    const std::string where = at + ".extras.shadowlab";
+    if (!own.IsObject()) fail(where + ": expected an object");
+    auto number = [&](const tinygltf::Value& v, const std::string& key) {
+        if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()) || v.GetNumberAsDouble() < 0.0) fail(where + "." + key + ": expected a number of at least 0");
+        return static_cast<float>(v.GetNumberAsDouble());
+    };
+    for (const auto& [key, field] : {std::pair{"ambient", &m.ambient}, std::pair{"diffuse", &m.diffuse}, std::pair{"specular", &m.specular}}) {
+        if (!own.Has(key)) continue;
+        const tinygltf::Value& v = own.Get(key);
+        if (!v.IsArray() || v.ArrayLen() != 3) fail(where + "." + key + ": expected 3 numbers");
+        for (int c = 0; c < 3; ++c) (*field)[c] = number(v.Get(c), key);
+    }
+    if (own.Has("shininess")) {
+        m.shininess = number(own.Get("shininess"), "shininess");
+        if (!(m.shininess > 0.0f)) fail(where + ".shininess: expected a number greater than 0");
+    }
+}
+
 Material GltfImporter::material(const tinygltf::Material& src, std::size_t index) {
     Material m;
     m.name = src.name;
@@ -202,6 +223,7 @@ Material GltfImporter::material(const tinygltf::Material& src, std::size_t index
     if (!(src.alphaCutoff >= 0.0 && src.alphaCutoff <= 1.0))
         fail(at + ".alphaCutoff: expected a number in 0..1, got " + text::numberText(src.alphaCutoff));
     m.alphaCutoff = static_cast<float>(src.alphaCutoff);
+    blinnPhongExtras(src.extras, at, m);
     const int tex = pbr.baseColorTexture.index;
     if (tex >= 0 && tex < static_cast<int>(gltf_.textures.size())) {
         const int source = gltf_.textures[tex].source;

@@ -132,6 +132,16 @@ int GltfImporter::addNode(int index, int parent) {
         if (src.scale.size() == 3)
             node.scale = glm::vec3(static_cast<float>(src.scale[0]), static_cast<float>(src.scale[1]), static_cast<float>(src.scale[2]));
     }
+    // A file shadowlab wrote (GltfExport.h): the node's castsShadows and receivesShadows.
+    if (src.extras.IsObject() && src.extras.Has("shadowlab")) {
+        const tinygltf::Value& own = src.extras.Get("shadowlab");
+        if (!own.IsObject()) fail(nodeName(index) + ": extras.shadowlab: expected an object");
+        for (const auto& [key, flag] : {std::pair{"castsShadows", &node.castsShadows}, std::pair{"receivesShadows", &node.receivesShadows}}) {
+            if (!own.Has(key)) continue;
+            if (!own.Get(key).IsBool()) fail(nodeName(index) + ": extras.shadowlab." + key + ": expected true or false");
+            *flag = own.Get(key).Get<bool>();
+        }
+    }
     if (src.mesh >= 0) {
         if (src.mesh >= static_cast<int>(gltf_.meshes.size())) fail("node " + std::to_string(index) + ": mesh index out of range");
         const tinygltf::Mesh& mesh = gltf_.meshes[src.mesh];

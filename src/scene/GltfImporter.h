@@ -62,6 +62,10 @@ private:
     // JSON refuses the same values (MaterialFile.cpp).
     Material material(const tinygltf::Material& src, std::size_t index);
 
+    /// A material's extras.shadowlab (a file shadowlab wrote, GltfExport.h):
+    /// its Blinn-Phong ambient, diffuse, specular and shininess.
+    void blinnPhongExtras(const tinygltf::Value& extras, const std::string& at, Material& m) const;
+
     /// Converts (once) image `index` to RGBA8 and returns its index in out_.textures.
     int image(int index);
 

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 namespace shadowlab {
 
@@ -42,12 +43,17 @@ public:
     GltfSceneReader(std::string file, json doc) : file_(std::move(file)), doc_(std::move(doc)) {}
 
     json document(const fs::path& path, const GltfSceneOptions& options, std::vector<std::string>& notes) {
+        dir_ = fs::absolute(path).parent_path();
         walk();
         json scene = json::object();
         scene["name"] = path.stem().string();
         scene["nodes"] = json::array({json{{"name", path.filename().string()}, {"mesh", fs::absolute(path).string()}}});
-        scene["lights"] = lights(notes);
-        scene["camera"] = camera(options.camera, notes);
+        scene["lights"] = lights(notes, options.defaults);
+        scene["camera"] = camera(options.camera, notes, options.defaults);
+        // A file shadowlab wrote (GltfExport.h): the scene's own keys.
+        const json& own = shadowlabExtras(doc_, "extras.shadowlab");
+        for (const char* key : {"name", "ambient", "background", "shadowAtlas"})
+            if (own.contains(key)) scene[key] = own[key];
         return scene;
     }
 
@@ -74,6 +80,31 @@ private:
         const json lights = ext.value("KHR_lights_punctual", json::object());
         return lights.is_object() ? lights.value("lights", json::array()) : json::array();
     }
+
+    // `object`'s extras.shadowlab (GltfExport.h): an object of scene-file
+    // keys, or an empty object when there is none.
+    const json& shadowlabExtras(const json& object, const std::string& at) const {
+        static const json none = json::object();
+        const auto extras = object.find("extras");
+        if (extras == object.end() || !extras->is_object()) return none;
+        const auto own = extras->find("shadowlab");
+        if (own == extras->end()) return none;
+        if (!own->is_object()) fail(at, "expected an object of scene-file keys");
+        return *own;
+    }
+
+    // extras.shadowlab's `key` as a finite vector, if it is one.
+    static std::optional<glm::dvec3> vectorOf(const json& own, const char* key) {
+        const auto v = own.find(key);
+        if (v == own.end() || !v->is_array() || v->size() != 3 || !std::all_of(v->begin(), v->end(), [](const json& x) { return x.is_number(); }))
+            return std::nullopt;
+        const glm::dvec3 out((*v)[0].get<double>(), (*v)[1].get<double>(), (*v)[2].get<double>());
+        return std::isfinite(out.x + out.y + out.z) ? std::optional(out) : std::nullopt;
+    }
+    // Whether unit vector `a` is along unit vector `b`, to float precision.
+    static bool along(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a) > 0.0 && glm::length(glm::normalize(a) - b) <= 1e-5; }
+    // Whether point `a` is at `b`, to float precision.
+    static bool closeTo(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b) <= 1e-5 * std::max(1.0, glm::length(b)); }
 
     int index(const json& value, std::size_t count, const std::string& at, const char* what) const {
         if (!value.is_number_integer() || value.get<long long>() < 0 || value.get<long long>() >= static_cast<long long>(count))
@@ -167,7 +198,7 @@ private:
     // distance falloff): each one's illuminance at the scene's centre
     // (directional: its lux; point and spot: candela over the squared
     // distance), the brightest one intensity 1 and the others in proportion.
-    json lights(std::vector<std::string>& notes) const {
+    json lights(std::vector<std::string>& notes, bool defaults) const {
         const json list = punctualLights();
         json out = json::array();
         std::vector<double> lux;
@@ -186,8 +217,14 @@ private:
                 colour = {(*c)[0].get<double>(), (*c)[1].get<double>(), (*c)[2].get<double>()};
             }
             json light{{"name", !l.value("name", std::string()).empty() ? l.value("name", std::string()) : placed.node}, {"type", type}, {"color", vec(colour)}};
-            const glm::dvec3 position(placed.world[3]);
-            const glm::dvec3 forward = glm::normalize(glm::dvec3(placed.world * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
+            // A file shadowlab wrote (GltfExport.h): the scene's own position
+            // and direction beside the node's matrix, where they agree with it
+            // (a light another tool moved keeps its node's pose).
+            const json& own = shadowlabExtras(l, at + ".extras.shadowlab");
+            glm::dvec3 position(placed.world[3]);
+            glm::dvec3 forward = glm::normalize(glm::dvec3(placed.world * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
+            if (const auto p = vectorOf(own, "position"); p && closeTo(*p, position)) position = *p;
+            if (const auto d = vectorOf(own, "direction"); d && along(*d, forward)) forward = *d;
             if (type != "point") light["direction"] = vec(forward);
             if (type != "directional") {
                 light["position"] = vec(position);
@@ -208,8 +245,17 @@ private:
             out.push_back(std::move(light));
         }
         const double brightest = lux.empty() ? 0.0 : *std::max_element(lux.begin(), lux.end());
-        for (std::size_t k = 0; k < out.size(); ++k) out[k]["intensity"] = brightest > 0.0 ? lux[k] / brightest : 0.0;
-        if (out.empty()) {
+        for (std::size_t k = 0; k < out.size(); ++k) {
+            out[k]["intensity"] = brightest > 0.0 ? lux[k] / brightest : 0.0;
+            // A file shadowlab wrote: the light's own intensity, size and shadow settings.
+            const int l = placed_[k].light;
+            const json& own = shadowlabExtras(list[static_cast<std::size_t>(l)], "extensions.KHR_lights_punctual.lights[" + std::to_string(l) + "].extras.shadowlab");
+            for (const char* key : {"intensity", "size", "shadow", "projector"})
+                if (own.contains(key)) out[k][key] = own[key];
+            // The projected image beside the file, wherever the scene including it is.
+            if (own.contains("projector") && own["projector"].is_string()) out[k]["projector"] = (dir_ / own["projector"].get<std::string>()).string();
+        }
+        if (out.empty() && defaults) {
             notes.push_back(file_ + ": no KHR_lights_punctual light in its scene: lit by the default sun");
             out.push_back({{"name", "sun"}, {"type", "directional"}, {"direction", json::array({-0.4, -1.0, -0.3})}});
         }
@@ -218,10 +264,11 @@ private:
 
     // Camera `which` of those the default scene places, or one framing the
     // bounds. glTF cameras look down their node's -Z with +Y up.
-    json camera(int which, std::vector<std::string>& notes) const {
+    json camera(int which, std::vector<std::string>& notes, bool defaults) const {
         const json& list = array(doc_, "cameras");
+        if (cameras_.empty() && !defaults) return nullptr;
         if (cameras_.empty()) {
-            if (which != 0) fail("cameras", "--camera " + std::to_string(which) + ": the scene places no camera");
+            if (which != 0) fail("cameras", "camera " + std::to_string(which) + ": the scene places no camera");
             notes.push_back(file_ + ": no camera in its scene: one framing its bounds");
             const glm::dvec3 c = centre();
             const double r = radius();
@@ -229,7 +276,7 @@ private:
                     {"near", 0.01 * r}, {"far", 8.0 * r}};
         }
         if (which < 0 || which >= static_cast<int>(cameras_.size()))
-            fail("cameras", "--camera " + std::to_string(which) + ": the scene places " + std::to_string(cameras_.size()) + " camera(s), from 0");
+            fail("cameras", "camera " + std::to_string(which) + ": the scene places " + std::to_string(cameras_.size()) + " camera(s), counted from 0");
         const auto& [index, world] = cameras_[static_cast<std::size_t>(which)];
         const std::string at = "cameras[" + std::to_string(index) + "]";
         const json& cam = list[static_cast<std::size_t>(index)];
@@ -249,7 +296,17 @@ private:
         }
         const glm::dvec3 forward = glm::normalize(glm::dvec3(world * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
         const glm::dvec3 up = glm::normalize(glm::dvec3(world * glm::dvec4(0.0, 1.0, 0.0, 0.0)));
-        return {{"position", vec(position)}, {"target", vec(position + forward * std::max(glm::length(centre() - position), 1.0))}, {"up", vec(up)},
+        glm::dvec3 eye = position, target = position + forward * std::max(glm::length(centre() - position), 1.0), upHint = up;
+        // A file shadowlab wrote (GltfExport.h): the scene's own eye, target
+        // and up hint, where they agree with the node's pose.
+        const json& own = shadowlabExtras(cam, at + ".extras.shadowlab");
+        const auto e = vectorOf(own, "position"), t = vectorOf(own, "target"), h = vectorOf(own, "up");
+        if (e && t && h && closeTo(*e, position) && along(*t - *e, forward) && along(*h - glm::dot(*h, forward) * forward, up)) {
+            eye = *e;
+            target = *t;
+            upHint = *h;
+        }
+        return {{"position", vec(eye)}, {"target", vec(target)}, {"up", vec(upHint)},
                 {"fovY", yfov * 180.0 / kPi}, {"near", znear}, {"far", zfar}};
     }
 
@@ -260,6 +317,7 @@ private:
     };
 
     std::string file_;
+    fs::path dir_;  ///< the file's directory, absolute
     json doc_;
     std::vector<std::pair<int, glm::dmat4>> cameras_;
     std::vector<Placed> placed_;

@@ -17,7 +17,18 @@ bool isGltfPath(const std::filesystem::path& path);
 
 struct GltfSceneOptions {
     int camera = 0; ///< which of the cameras the default scene places (in node order), from 0
+    /// Whether a file with no light gets the default sun and one with no
+    /// camera a framing one (each with a note); false: no light, and a null
+    /// camera (a scene file including a glTF's lights or camera).
+    bool defaults = true;
 };
+
+/// A scene document's glTF includes (docs/scene-format.md): each light
+/// {"gltf": FILE} in `lights` replaced by FILE's lights, and a camera
+/// {"gltf": FILE, "index": N} by FILE's camera N, FILE relative to
+/// `baseDir`. Notes of what was chosen go to `notes`. Throws Error naming
+/// `source`, the JSON path and the glTF file's own error.
+void expandGltfIncludes(nlohmann::json& doc, const std::string& source, const std::filesystem::path& baseDir, std::vector<std::string>& notes);
 
 /// The scene document of the glTF file `path`, and in `notes` one line for
 /// each thing chosen for it (no light: the default sun; no camera: one that

@@ -22,6 +22,8 @@ struct ImportedModel {
         glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
         glm::vec3 scale{1.0f};
         std::vector<Primitive> primitives;
+        bool castsShadows = true;    ///< glTF: the node's extras.shadowlab.castsShadows (GltfExport.h); default true
+        bool receivesShadows = true; ///< glTF: the node's extras.shadowlab.receivesShadows; default true
     };
     std::vector<Mesh> meshes;
     std::vector<Material> materials;   ///< baseColorTexture indexes `textures`

@@ -111,8 +111,8 @@ void SceneBuilder::importMesh(const Reader& r, int parent, int materialOverride,
         node.translation = in.translation;
         node.rotation = in.rotation;
         node.scale = in.scale;
-        node.castsShadows = owner.castsShadows;
-        node.receivesShadows = owner.receivesShadows;
+        node.castsShadows = owner.castsShadows && in.castsShadows;
+        node.receivesShadows = owner.receivesShadows && in.receivesShadows;
         sceneIndex[i] = static_cast<int>(scene_.nodes.size());
         scene_.nodes.push_back(node);
         const std::string source = r.path() + " (" + file.string() + ": node '" + in.name + "')";
@@ -124,8 +124,8 @@ void SceneBuilder::importMesh(const Reader& r, int parent, int materialOverride,
             p.parent = sceneIndex[i];
             p.mesh = meshBase + prim.mesh;
             p.material = materialOverride >= 0 ? materialOverride : (prim.material >= 0 ? materialBase + prim.material : -1);
-            p.castsShadows = owner.castsShadows;
-            p.receivesShadows = owner.receivesShadows;
+            p.castsShadows = node.castsShadows;
+            p.receivesShadows = node.receivesShadows;
             scene_.nodes.push_back(p);
             nodeSources_.push_back(source);
         }

@@ -82,6 +82,8 @@ json parseDocument(ParseContext& ctx, const std::string& jsonText, const std::st
         throw Error(text::escapeControl(sourceName + ": invalid JSON: " + what));
     }
     if (!doc.is_object()) throw Error(sourceName + ": expected a JSON object at the top level, got " + typeName(doc));
+    // A glTF's lights and camera, included by name, before --set addresses them.
+    expandGltfIncludes(doc, sourceName, ctx.baseDir, ctx.notes);
     try {
         ctx.overrides = applyOverrides(doc, overrides);
     } catch (const Error& e) {
@@ -98,7 +100,7 @@ struct Document {
     ParseContext ctx;
     json doc;
     Document(const std::string& jsonText, const std::string& sourceName, const fs::path& baseDir, const std::vector<std::string>& overrides)
-        : ctx{sourceName, baseDir, {}}, doc(parseDocument(ctx, jsonText, sourceName, overrides)) {}
+        : ctx{sourceName, baseDir, {}, {}}, doc(parseDocument(ctx, jsonText, sourceName, overrides)) {}
     Document(const Document&) = delete;
     Document& operator=(const Document&) = delete;
     Reader root() const {
@@ -145,6 +147,7 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
     const Reader root = d.root();
     Scene scene;
     scene.name = root.string("name", fs::path(sourceName).stem().string());
+    scene.notes = ctx.notes;
     if (root.has("camera")) readCamera(root.child("camera"), scene.camera);
     scene.ambient = root.color("ambient", scene.ambient);
     scene.background = root.color("background", scene.background);
@@ -167,7 +170,9 @@ std::vector<Light> parseSceneLights(const std::string& jsonText, const std::stri
     return std::move(scene.lights);
 }
 
-Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overrides) {
+Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overrides) { return loadSceneFile(path, overrides, SceneFileOptions{}); }
+
+Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overrides, const SceneFileOptions& options) {
     const std::string name = path.string();
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
@@ -177,11 +182,13 @@ Scene loadSceneFile(const fs::path& path, const std::vector<std::string>& overri
     if (isGltfPath(path)) {
         // A glTF file as a whole scene: its document, then loaded as a scene file's.
         std::vector<std::string> notes;
-        const json document = gltfSceneDocument(path, {}, notes);
+        const json document = gltfSceneDocument(path, GltfSceneOptions{std::max(options.gltfCamera, 0), true}, notes);
         Scene scene = parseScene(document.dump(), name, path.parent_path(), overrides);
-        scene.notes = std::move(notes);
+        scene.notes.insert(scene.notes.begin(), notes.begin(), notes.end());
         return scene;
     }
+    if (options.gltfCamera >= 0)
+        throw Error(name + ": a camera index is for glTF files; a scene file includes a glTF's camera with \"camera\": {\"gltf\": FILE, \"index\": N}");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(name + ": cannot open for reading");
     std::stringstream text;

@@ -24,6 +24,7 @@ struct ParseContext {
     std::string source;  // file name for messages
     std::filesystem::path baseDir;
     std::vector<overrides::Override> overrides;
+    std::vector<std::string> notes;  // what was chosen for the scene (a glTF include's far plane), Scene::notes
 
     /// Throws shadowlab::Error naming the source, `path` and `message`, or
     /// the `--set` flag whose value the path lies in.

@@ -31,7 +31,7 @@ import re
 import sys
 
 BASE = ["Export", "Error", "Text", "Options", "Image", "FileWrite"]
-SCENE = ["Scene", "SceneFile", "Shapes", "Techniques", "MapOptions", "VolumeOptions", "PlanarOptions", "DiscOptions"]
+SCENE = ["Scene", "SceneFile", "GltfExport", "Shapes", "Techniques", "MapOptions", "VolumeOptions", "PlanarOptions", "DiscOptions"]
 GL = ["Context", "ImageTexture", "DebugImage", "Limits"]
 TOP = {"Renderer": "render", "Compare": "reference", "Bench": "bench"}
 

@@ -33,10 +33,6 @@ constexpr double kBar = 0.0005;  // the bundled scenes' accuracy bar: 0.05 % of 
 
 fs::path sceneFile(const std::string& name) { return fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / name; }
 
-bool notesContain(const FrameStats& stats, const std::string& text) {
-    return std::any_of(stats.notes.begin(), stats.notes.end(), [&](const std::string& n) { return n.find(text) != std::string::npos; });
-}
-
 } // namespace
 
 class MapDefectsGLTest : public GLTest {};

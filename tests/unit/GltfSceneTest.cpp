@@ -5,6 +5,9 @@
 #include "scene/GltfScene.h"
 
 #include <shadowlab/Error.h>
+#include <shadowlab/GltfExport.h>
+#include <shadowlab/MapOptions.h>
+#include <shadowlab/Techniques.h>
 #include <shadowlab/SceneFile.h>
 
 #include <gtest/gtest.h>
@@ -144,6 +147,10 @@ TEST_F(GltfSceneTest, BadLightsAndCamerasNameTheirPath) {
         {[](json& m) { m["extensions"]["KHR_lights_punctual"]["lights"][1]["type"] = "area"; }, lights + ".type: \"area\" is not"},
         {[](json& m) { m["extensions"]["KHR_lights_punctual"]["lights"][1]["intensity"] = -1; }, lights + ".intensity: must not be negative"},
         {[](json& m) { m["extensions"]["KHR_lights_punctual"]["lights"][1]["range"] = 0; }, lights + ".range: must be greater than 0"},
+        {[](json& m) { m["extensions"]["KHR_lights_punctual"]["lights"][1]["range"] = -2; }, lights + ".range: must be greater than 0"},
+        {[](json& m) { m["extensions"]["KHR_lights_punctual"]["lights"][1]["extras"]["shadowlab"] = 3; }, lights + ".extras.shadowlab: expected an object"},
+        {[](json& m) { m["extensions"]["KHR_lights_punctual"]["lights"][1]["extras"]["shadowlab"]["shadow"]["technique"] = "nope"; },
+         "lights[1].shadow.technique"},
         {[](json& m) { m["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["outerConeAngle"] = 1.6; }, lights + ".spot.outerConeAngle"},
         {[](json& m) { m["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.6; }, lights + ".spot.innerConeAngle"},
         {[](json& m) { m["nodes"][2]["extensions"]["KHR_lights_punctual"]["light"] = 7; }, "nodes[2].extensions.KHR_lights_punctual.light: 7 is not one of"},
@@ -157,5 +164,128 @@ TEST_F(GltfSceneTest, BadLightsAndCamerasNameTheirPath) {
         const std::string message = errorOf(m);
         EXPECT_NE(message.find("model.gltf: " + expected), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << "one line";
+    }
+}
+
+// A scene written by writeGltfScene (GltfExport.h) comes back whole, as
+// .gltf and as .glb: its camera, its lights with their shadow settings,
+// its materials' Blinn-Phong terms, the nodes that cast no shadow, the
+// scene's ambient and background (room-point: a bulb that casts none, a
+// cube map with options of its own, set here).
+TEST_F(GltfSceneTest, AnExportedSceneComesBackWhole) {
+    const fs::path source = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes" / "room-point.json";
+    const Scene scene = loadSceneFile(source, {"lights[0].shadow.map.filter=\"poisson\"", "lights[0].shadow.map.samples=24", "ambient=[0.1,0.2,0.3]",
+                                               "lights[0].intensity=0.7", "lights[0].size=0.05"});
+    for (const char* name : {"room.gltf", "room.glb"}) {
+        SCOPED_TRACE(name);
+        const fs::path file = dir_ / name;
+        EXPECT_TRUE(writeGltfScene(scene, file).empty());
+        const Scene back = loadSceneFile(file);
+        EXPECT_TRUE(back.notes.empty()) << back.notes.front();
+        EXPECT_EQ(back.name, scene.name);
+        EXPECT_EQ(back.ambient, scene.ambient);
+        EXPECT_EQ(back.background, scene.background);
+        EXPECT_EQ(back.camera.position, scene.camera.position);
+        EXPECT_EQ(back.camera.target, scene.camera.target);
+        EXPECT_EQ(back.camera.up, scene.camera.up);
+        EXPECT_FLOAT_EQ(back.camera.fovYDeg, scene.camera.fovYDeg);
+        EXPECT_EQ(back.camera.nearPlane, scene.camera.nearPlane);
+        EXPECT_EQ(back.camera.farPlane, scene.camera.farPlane);
+        ASSERT_EQ(back.lights.size(), scene.lights.size());
+        for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+            const Light &a = scene.lights[l], &b = back.lights[l];
+            EXPECT_EQ(b.type, a.type);
+            EXPECT_EQ(b.position, a.position);
+            EXPECT_FLOAT_EQ(b.intensity, a.intensity);
+            EXPECT_FLOAT_EQ(b.size, a.size);
+            EXPECT_EQ(b.shadow.technique, a.shadow.technique);
+            const OptionTable& table = mapOptionTable();
+            for (const OptionField& f : table.fields)
+                EXPECT_EQ(table.valueText(f, b.shadow.get<MapOptions>()), table.valueText(f, a.shadow.get<MapOptions>())) << f.key;
+        }
+        // Every draw item keeps its material and its shadow flags.
+        const std::vector<DrawItem> items = scene.drawItems(), backItems = back.drawItems();
+        ASSERT_EQ(backItems.size(), items.size());
+        int nonCasters = 0;
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            EXPECT_EQ(backItems[i].castsShadows, items[i].castsShadows) << i;
+            EXPECT_EQ(backItems[i].receivesShadows, items[i].receivesShadows) << i;
+            nonCasters += items[i].castsShadows ? 0 : 1;
+            const Material d;
+            const Material& a = items[i].material >= 0 ? scene.materials[static_cast<std::size_t>(items[i].material)] : d;
+            const Material& b = backItems[i].material >= 0 ? back.materials[static_cast<std::size_t>(backItems[i].material)] : d;
+            EXPECT_EQ(b.baseColor, a.baseColor) << i;
+            EXPECT_EQ(b.specular, a.specular) << i;
+            EXPECT_EQ(b.ambient, a.ambient) << i;
+            EXPECT_FLOAT_EQ(b.shininess, a.shininess) << i;
+        }
+        EXPECT_GT(nonCasters, 0) << "room-point's bulb casts no shadow";
+    }
+}
+
+TEST_F(GltfSceneTest, ExportRefusesANameThatIsNotGltf) {
+    try {
+        writeGltfScene(Scene{}, dir_ / "scene.obj");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("scene.obj: expected a name ending in .gltf or .glb"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "scene.obj"));
+}
+
+// --camera N (SceneFileOptions::gltfCamera): the file's second camera, in
+// node order; past the last, or for a scene file, one line saying so.
+TEST_F(GltfSceneTest, ACameraIsChosenByItsIndex) {
+    json m = litModel();
+    m["nodes"].push_back({{"name", "second eye"}, {"translation", {0, 7, 0}}, {"camera", 0}});
+    m["scenes"][0]["nodes"].push_back(4);
+    const fs::path file = write(m);
+    EXPECT_NEAR(loadSceneFile(file, {}, SceneFileOptions{1}).camera.position.y, 7.0f, 1e-6f);
+    EXPECT_NEAR(loadSceneFile(file, {}, SceneFileOptions{0}).camera.position.z, 5.0f, 1e-6f);
+    try {
+        loadSceneFile(file, {}, SceneFileOptions{2});
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("model.gltf: cameras: camera 2: the scene places 2 camera(s)"), std::string::npos) << e.what();
+    }
+    std::ofstream(dir_ / "scene.json") << R"({"nodes": []})";
+    EXPECT_THROW(loadSceneFile(dir_ / "scene.json", {}, SceneFileOptions{0}), Error);
+}
+
+// A scene file includes a glTF's lights ({"gltf": FILE} in `lights`) and
+// camera ({"gltf": FILE, "index": N}), before --set addresses them; bad
+// includes name the scene file, the JSON path and the glTF's own error.
+TEST_F(GltfSceneTest, ASceneFileIncludesAGltfsLightsAndCamera) {
+    write(litModel());
+    std::ofstream(dir_ / "scene.json") << R"({
+      "camera": {"gltf": "model.gltf", "index": 0},
+      "lights": [{"type": "point", "position": [0, 3, 0]}, {"gltf": "model.gltf"}],
+      "nodes": [{"mesh": "model.gltf"}]})";
+    const Scene scene = loadSceneFile(dir_ / "scene.json", {"lights[2].shadow.technique=volume"});
+    ASSERT_EQ(scene.lights.size(), 3u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Point);
+    EXPECT_EQ(scene.lights[1].name, "sun");
+    EXPECT_EQ(scene.lights[2].type, LightType::Spot);
+    EXPECT_EQ(scene.lights[2].shadow.technique, "volume");
+    EXPECT_NEAR(scene.camera.position.z, 5.0f, 1e-6f);
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {R"({"lights": [{"gltf": "missing.gltf"}]})", "scene.json: lights[0].gltf: "},
+        {R"({"lights": [{"gltf": "bare.gltf"}]})", "scene.json: lights[0].gltf: bare.gltf has no KHR_lights_punctual light"},
+        {R"({"lights": [{"gltf": "model.gltf", "intensity": 2}]})", "scene.json: lights[0].intensity: unknown key beside \"gltf\""},
+        {R"({"camera": {"gltf": "bare.gltf"}})", "scene.json: camera.gltf: bare.gltf places no camera"},
+        {R"({"camera": {"gltf": "model.gltf", "index": -1}})", "scene.json: camera.index: expected an integer from 0"},
+        {R"({"camera": {"gltf": "model.gltf", "index": 4}})", "scene.json: camera.gltf: "},
+        {R"({"camera": {"gltf": "scene.json"}})", "scene.json: camera.gltf: scene.json: expected a .gltf or .glb file"},
+    };
+    write(triangleModel(), "bare.gltf");
+    for (const auto& [text, expected] : cases) {
+        std::ofstream(dir_ / "scene.json") << text;
+        try {
+            loadSceneFile(dir_ / "scene.json");
+            ADD_FAILURE() << "no error: " << text;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
+        }
     }
 }
