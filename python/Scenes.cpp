@@ -62,6 +62,7 @@ void bindScenes(py::module_& m) {
             d["position"] = vec3(s.scene->camera.position);
             d["target"] = vec3(s.scene->camera.target);
             d["fovY"] = s.scene->camera.fovYDeg;
+            d["orthoHeight"] = s.scene->camera.orthoHeight;
             d["near"] = s.scene->camera.nearPlane;
             d["far"] = s.scene->camera.farPlane;
             return d;

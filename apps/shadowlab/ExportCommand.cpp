@@ -6,6 +6,7 @@
 
 #include <shadowlab/GltfExport.h>
 
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 
@@ -25,7 +26,10 @@ CLI::App* addExport(CLI::App& app, ExportArgs& args) {
 int runExport(const ExportArgs& args) {
     const Scene scene = loadScene(args.scene, args.overrides, args.camera);
     const std::string name = args.output.empty() ? (args.scene.empty() ? std::string("default") : fs::path(args.scene).stem().string()) + ".gltf" : args.output;
-    const fs::path output = checkOutput(name, "-o", fs::path(name).extension() == ".glb" || fs::path(name).extension() == ".GLB" ? ".glb" : ".gltf");
+    std::string extension = fs::path(name).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".gltf" && extension != ".glb") throw Error("-o " + name + ": expected a .gltf or .glb file name");
+    const fs::path output = checkOutput(name, "-o", extension);
     for (const std::string& note : writeGltfScene(scene, output)) std::cerr << "shadowlab: note: " << note << "\n";
     std::cout << "wrote " << output.string() << "\n";
     return 0;

@@ -25,8 +25,10 @@ void ViewerSession::handleMouse(int height) {
         const glm::vec3 forward = glm::normalize(at - eye);
         const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
         const glm::vec3 up = glm::cross(right, forward);
-        // A pixel moves the light by one pixel's width at its distance.
-        const float perPixel = 2.0f * glm::length(light.position - eye) * std::tan(glm::radians(scene.camera.fovYDeg) * 0.5f) / static_cast<float>(height);
+        // A pixel moves the light by one pixel's width at its distance (orthographic: anywhere).
+        const float viewHeight = scene.camera.orthoHeight > 0.0f ? scene.camera.orthoHeight
+                                                                  : 2.0f * glm::length(light.position - eye) * std::tan(glm::radians(scene.camera.fovYDeg) * 0.5f);
+        const float perPixel = viewHeight / static_cast<float>(height);
         const glm::vec3 p = light.position + (io.MouseDelta.x * right - io.MouseDelta.y * up) * perPixel;
         std::ostringstream s;
         s << "[" << p.x << ", " << p.y << ", " << p.z << "]";

@@ -173,7 +173,11 @@ struct SHADOWLAB_API Camera {
     glm::vec3 position{0.0f, 4.0f, 10.0f}; ///< world space; a `path` replaces it when evaluated
     glm::vec3 target{0.0f};                ///< world-space point looked at; a `path` replaces it when evaluated
     glm::vec3 up{0.0f, 1.0f, 0.0f};        ///< world-space up hint
-    float fovYDeg = 45.0f;                 ///< vertical field of view, degrees, (0,180)
+    float fovYDeg = 45.0f;                 ///< vertical field of view, degrees, (0,180); perspective only
+    /// > 0: an orthographic view this many scene units high (glTF's 2 ymag),
+    /// as wide as the frame's aspect makes it; 0 (default): perspective
+    /// with fovYDeg. Volumes and cascades need a perspective camera.
+    float orthoHeight = 0.0f;
     float nearPlane = 0.1f;                ///< > 0
     float farPlane = 100.0f;               ///< > near
     /// How position and target move over time; none (default) = static.
@@ -186,7 +190,7 @@ struct SHADOWLAB_API Camera {
     /// The same perspective with the far plane at infinity (the limit of
     /// clipFromView as farPlane -> inf; depth 1 is reached only at infinity),
     /// for shadow volumes whose far caps must never be clipped.
-    glm::mat4 clipFromViewInfiniteFar(float aspect) const;
+    glm::mat4 clipFromViewInfiniteFar(float aspect) const;  ///< orthographic: clipFromView
 };
 
 /// `camera` at `seconds` (finite; seconds since the start of the animation):

@@ -5,6 +5,8 @@
 #include "geometry/Plane.h"
 #include "gl/Calls.h"
 
+#include <shadowlab/Error.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -138,6 +140,8 @@ void Renderer::Impl::drawShaded(ShaderVariant variant, const std::vector<std::si
 void Renderer::Impl::beginFrame(const Scene& s, glm::ivec2 size, double timeSeconds) {
     bool infiniteFar = false;
     for (const Light& light : s.lights) infiniteFar = infiniteFar || technique(light.shadow.technique).needsInfiniteFar(light);
+    if (infiniteFar && s.camera.orthoHeight > 0.0f)
+        throw UnsupportedError("camera.orthoHeight: shadow volumes need a perspective camera (their far caps lie at infinity); set camera.orthoHeight 0 or another technique");
     scene = &s;
     items = s.drawItems();
     itemBounds.clear();

@@ -68,12 +68,13 @@ CameraPath readCameraPath(const Reader& r, const glm::vec3& up) {
 } // namespace
 
 void readCamera(const Reader& r, Camera& cam) {
-    r.checkKeys({"position", "target", "up", "fovY", "near", "far", "path"});
+    r.checkKeys({"position", "target", "up", "fovY", "orthoHeight", "near", "far", "path"});
     cam.position = r.vec3("position", cam.position);
     cam.target = r.vec3("target", cam.target);
     cam.up = r.direction("up", cam.up);
     cam.fovYDeg = r.positive("fovY", cam.fovYDeg);
     if (cam.fovYDeg >= 180.0f) r.child("fovY").fail("expected degrees in (0, 180), got " + Reader::fmt(cam.fovYDeg));
+    cam.orthoHeight = r.nonNegative("orthoHeight", cam.orthoHeight);
     cam.nearPlane = r.positive("near", cam.nearPlane);
     cam.farPlane = r.positive("far", cam.farPlane);
     if (cam.farPlane <= cam.nearPlane)

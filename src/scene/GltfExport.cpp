@@ -235,9 +235,15 @@ private:
     // The camera on a node of its own; returns the node's index.
     int camera() {
         const Camera& c = scene_.camera;
-        doc_["cameras"] = json::array({{{"type", "perspective"},
-                                        {"perspective", {{"yfov", glm::radians(static_cast<double>(c.fovYDeg))}, {"znear", c.nearPlane}, {"zfar", c.farPlane}}},
-                                        {"extras", {{"shadowlab", {{"position", vec3(c.position)}, {"target", vec3(c.target)}, {"up", vec3(c.up)}}}}}}});
+        json camera{{"extras", {{"shadowlab", {{"position", vec3(c.position)}, {"target", vec3(c.target)}, {"up", vec3(c.up)}}}}}};
+        if (c.orthoHeight > 0.0f) {  // xmag: the frame's aspect is not the scene's; a square
+            camera["type"] = "orthographic";
+            camera["orthographic"] = {{"xmag", 0.5 * c.orthoHeight}, {"ymag", 0.5 * c.orthoHeight}, {"znear", c.nearPlane}, {"zfar", c.farPlane}};
+        } else {
+            camera["type"] = "perspective";
+            camera["perspective"] = {{"yfov", glm::radians(static_cast<double>(c.fovYDeg))}, {"znear", c.nearPlane}, {"zfar", c.farPlane}};
+        }
+        doc_["cameras"] = json::array({std::move(camera)});
         if (c.path) notes_.push_back("camera.path: the camera's animation is not exported (its pose at time 0 is)");
         nodes_.push_back({{"name", "camera"}, {"camera", 0}, {"matrix", matrix(glm::inverse(c.viewFromWorld()))}});
         return static_cast<int>(nodes_.size()) - 1;

@@ -280,20 +280,8 @@ private:
         const auto& [index, world] = cameras_[static_cast<std::size_t>(which)];
         const std::string at = "cameras[" + std::to_string(index) + "]";
         const json& cam = list[static_cast<std::size_t>(index)];
-        const std::string type = cam.value("type", std::string());
-        if (type == "orthographic") fail(at + ".type", "orthographic cameras are not supported yet");
-        if (type != "perspective") fail(at + ".type", "\"" + type + "\" is not perspective or orthographic");
-        const json p = cam.value("perspective", json::object());
-        const double yfov = number(p, "yfov", 0.0, at + ".perspective"), znear = number(p, "znear", 0.0, at + ".perspective");
-        if (!(yfov > 0.0) || yfov >= kPi) fail(at + ".perspective.yfov", "must lie in (0, pi) radians");
-        if (!(znear > 0.0)) fail(at + ".perspective.znear", "must be greater than 0");
-        double zfar = number(p, "zfar", 0.0, at + ".perspective");
-        if (p.contains("zfar") && !(zfar > znear)) fail(at + ".perspective.zfar", "must be greater than znear");
         const glm::dvec3 position(world[3]);
-        if (!p.contains("zfar")) {
-            zfar = std::max(2.0 * (glm::length(position - centre()) + radius()), 2.0 * znear);
-            notes.push_back(file_ + ": " + at + " has no zfar (an infinite far plane): far " + std::to_string(zfar) + ", past the scene's bounds");
-        }
+        json out = lens(cam, at, position, notes);
         const glm::dvec3 forward = glm::normalize(glm::dvec3(world * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
         const glm::dvec3 up = glm::normalize(glm::dvec3(world * glm::dvec4(0.0, 1.0, 0.0, 0.0)));
         glm::dvec3 eye = position, target = position + forward * std::max(glm::length(centre() - position), 1.0), upHint = up;
@@ -306,8 +294,44 @@ private:
             target = *t;
             upHint = *h;
         }
-        return {{"position", vec(eye)}, {"target", vec(target)}, {"up", vec(upHint)},
-                {"fovY", yfov * 180.0 / kPi}, {"near", znear}, {"far", zfar}};
+        out["position"] = vec(eye);
+        out["target"] = vec(target);
+        out["up"] = vec(upHint);
+        return out;
+    }
+
+    // A camera's projection as the scene file's camera keys: perspective
+    // (fovY; no zfar: one past the bounds, with a note) or orthographic
+    // (orthoHeight 2 ymag; a znear of 0: a ten-thousandth of zfar, with a
+    // note). The frame's aspect replaces the file's (aspectRatio, xmag).
+    json lens(const json& cam, const std::string& at, const glm::dvec3& position, std::vector<std::string>& notes) const {
+        const std::string type = cam.value("type", std::string());
+        if (type == "orthographic") {
+            const json o = cam.value("orthographic", json::object());
+            const std::string in = at + ".orthographic";
+            const double ymag = number(o, "ymag", 0.0, in), znear = number(o, "znear", -1.0, in), zfar = number(o, "zfar", 0.0, in);
+            if (!(ymag > 0.0)) fail(in + ".ymag", "must be greater than 0");
+            if (!(znear >= 0.0)) fail(in + ".znear", "must be 0 or more");
+            if (!(zfar > znear)) fail(in + ".zfar", "must be greater than znear");
+            double near = znear;
+            if (!(near > 0.0)) {
+                near = 1e-4 * zfar;
+                notes.push_back(file_ + ": " + at + " has znear 0: near " + std::to_string(near) + " (shadowlab's near plane lies in front of the eye)");
+            }
+            return {{"orthoHeight", 2.0 * ymag}, {"near", near}, {"far", zfar}};
+        }
+        if (type != "perspective") fail(at + ".type", "\"" + type + "\" is not perspective or orthographic");
+        const json p = cam.value("perspective", json::object());
+        const double yfov = number(p, "yfov", 0.0, at + ".perspective"), znear = number(p, "znear", 0.0, at + ".perspective");
+        if (!(yfov > 0.0) || yfov >= kPi) fail(at + ".perspective.yfov", "must lie in (0, pi) radians");
+        if (!(znear > 0.0)) fail(at + ".perspective.znear", "must be greater than 0");
+        double zfar = number(p, "zfar", 0.0, at + ".perspective");
+        if (p.contains("zfar") && !(zfar > znear)) fail(at + ".perspective.zfar", "must be greater than znear");
+        if (!p.contains("zfar")) {
+            zfar = std::max(2.0 * (glm::length(position - centre()) + radius()), 2.0 * znear);
+            notes.push_back(file_ + ": " + at + " has no zfar (an infinite far plane): far " + std::to_string(zfar) + ", past the scene's bounds");
+        }
+        return {{"fovY", yfov * 180.0 / kPi}, {"near", znear}, {"far", zfar}};
     }
 
     struct Placed {

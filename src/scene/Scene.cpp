@@ -13,10 +13,15 @@ namespace shadowlab {
 glm::mat4 Camera::viewFromWorld() const { return glm::lookAt(position, target, up); }
 
 glm::mat4 Camera::clipFromView(float aspect) const {
+    if (orthoHeight > 0.0f) {
+        const float h = 0.5f * orthoHeight, w = h * aspect;
+        return glm::ortho(-w, w, -h, h, nearPlane, farPlane);
+    }
     return glm::perspective(glm::radians(fovYDeg), aspect, nearPlane, farPlane);
 }
 
 glm::mat4 Camera::clipFromViewInfiniteFar(float aspect) const {
+    if (orthoHeight > 0.0f) return clipFromView(aspect);  // no far plane at infinity: Renderer refuses volumes with it
     // glm::perspective with f -> inf: m[2][2] = -(f+n)/(f-n) -> -1,
     // m[3][2] = -2fn/(f-n) -> -2n (OpenGL depth range [-1, 1]).
     glm::mat4 m = clipFromView(aspect);

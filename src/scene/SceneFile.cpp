@@ -11,6 +11,7 @@
 #include <shadowlab/Text.h>
 
 #include <shadowlab/Error.h>
+#include <shadowlab/MapOptions.h>
 
 #include <nlohmann/json.hpp>
 
@@ -110,6 +111,31 @@ struct Document {
     }
 };
 
+// The deepest of `keys` under `r` that the document has (where a value came from, a file's or --set's).
+Reader deepest(const Reader& r, std::initializer_list<const char*> keys) {
+    if (keys.size() == 0 || !r.value().is_object() || !r.has(*keys.begin())) return r;
+    const Reader next = r.child(*keys.begin());
+    const std::vector<const char*> rest(keys.begin() + 1, keys.end());
+    if (rest.empty() || !next.value().is_object() || !next.has(rest.front())) return next;
+    const Reader last = next.child(rest.front());
+    return rest.size() < 2 || !last.value().is_object() || !last.has(rest[1]) ? last : last.child(rest[1]);
+}
+
+// An orthographic camera (camera.orthoHeight) with a technique that needs a
+// perspective one: shadow volumes (their far caps at infinity) and cascades
+// (slices of a perspective view), refused by the light's path.
+void checkOrthographic(const Reader& root, const Scene& scene) {
+    if (scene.camera.orthoHeight <= 0.0f || !root.has("lights")) return;
+    for (std::size_t i = 0; i < scene.lights.size() && i < root.child("lights").value().size(); ++i) {
+        const Light& light = scene.lights[i];
+        const Reader at = root.child("lights").element(i);
+        if (light.shadow.technique == "volume")
+            deepest(at, {"shadow", "technique"}).failUnsupported("\"volume\" needs a perspective camera (its volumes' far caps lie at infinity); camera.orthoHeight is set");
+        if (light.shadow.technique == "map" && light.shadow.get<MapOptions>().cascades > 1)
+            deepest(at, {"shadow", "map", "cascades"}).failUnsupported("cascades split a perspective view; camera.orthoHeight is set: use cascades 1");
+    }
+}
+
 // The `lights` array into scene.lights; with `projectors`, each projector's
 // image is loaded into scene.textures (else projectorTexture stays -1).
 void readLights(const Reader& root, Scene& scene, const ParseContext& ctx, bool projectors) {
@@ -158,6 +184,7 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceName, con
     if (root.has("shadowAtlas")) scene.shadowAtlas = scenefile::readShadowAtlas(root.child("shadowAtlas"));
     if (root.has("nodes")) builder.readNodes(root.child("nodes"), -1);
     builder.checkFinite();
+    checkOrthographic(root, scene);
     return scene;
 }
 

@@ -178,7 +178,11 @@ touch "$work/plainfile"
 expect_error debug-images-is-a-file "--debug-images plainfile: exists and is not a directory" render -o out.png --debug-images plainfile
 expect_error debug-images-under-a-file "--debug-images plainfile/sub: cannot create the directory (Not a directory)" render -o out.png --debug-images plainfile/sub
 expect_error number-past-float "--set lights[0].intensity=1e300: lights[0].intensity: expected a finite number of magnitude at most 3e38 (a float's range), got 1e+300" render -o out.png --set 'lights[0].intensity=1e300'
-expect_error unknown-command "paint: not a command (expected one of render compare bench techniques info" paint
+expect_error unknown-command "paint: not a command (expected one of render compare bench export techniques info" paint
+# export: a name that is not .gltf or .glb, --camera for a scene file or the default scene.
+expect_error export-not-gltf "-o out.png: expected a .gltf or .glb file name" export -o out.png
+expect_error export-camera-default "--camera 1: needs a glTF file (the default scene has one camera)" export --camera 1 -o out.gltf
+expect_error render-camera-json "two-boxes-sun.json: a camera index is for glTF files" render "$src/scenes/two-boxes-sun.json" --camera 0 -o out.png
 expect_error view-from-light-range "--view-from-light: Value -1 not in range 0 to 255" render -o out.png --view-from-light -1
 expect_error fps-zero "--fps 0: expected a finite number of frames per second > 0" render -o out.png --fps 0 --frames 2
 expect_error fps-negative "--fps -30: expected a finite number of frames per second > 0" render -o out.png --fps -30

@@ -78,4 +78,20 @@ print("%s: %.4f %% misclassified away from edges" % (sys.argv[1], 100 * away))
 sys.exit(0 if away <= 0.0005 else 1)
 PY
 done
-echo "PASS: gltf (3 scenes exported, rendered and compared)"
+# --camera N past the file's cameras: one line naming the file and the index, no image.
+if "$tool" render gltf/spot-objects.gltf --camera 3 -o camera3.png 2> camera3.txt; then fail "--camera 3 of a one-camera file succeeded"; fi
+[[ $(wc -l < camera3.txt) -eq 1 ]] && grep -q "spot-objects.gltf: cameras: camera 3: the scene places 1 camera" camera3.txt || fail "--camera 3: $(cat camera3.txt)"
+[[ ! -e camera3.png ]] || fail "--camera 3 left camera3.png"
+
+# An orthographic camera (camera.orthoHeight; glTF's orthographic cameras)
+# holds the same bar against the reference, exported and read back.
+"$tool" export "$src/scenes/spheres-sun.json" --set camera.orthoHeight=7 -o ortho.glb > /dev/null || fail "export with an orthographic camera failed"
+"$tool" compare ortho.glb -o compare-ortho --width 320 --height 240 > /dev/null || fail "compare ortho.glb failed"
+python3 - compare-ortho/metrics.json <<'PY' || fail "compare ortho.glb: over the 0.05 % bar"
+import json, sys
+light = json.load(open(sys.argv[1]))["lights"][0]
+away = light["falseShadowAwayFromEdges"] + light["falseLitAwayFromEdges"]
+print("%s: %.4f %% misclassified away from edges, %d shadowed" % (sys.argv[1], 100 * away, light["referenceShadowedPixels"]))
+sys.exit(0 if away <= 0.0005 and light["referenceShadowedPixels"] > 1000 else 1)
+PY
+echo "PASS: gltf (3 scenes exported, rendered and compared; --camera; an orthographic camera)"

@@ -292,3 +292,20 @@ def test_a_kept_renderer_draws_what_a_new_one_does():
         shadowlab.render(scene, 160, 90, 0.0)
         assert np.array_equal(shadowlab.render(scene, 96, 54, 0.0), first), name
         assert np.array_equal(later, fresh(1.5)), name
+
+
+def test_a_gltf_file_is_a_whole_scene(tmp_path):
+    """load_scene opens a glTF as the CLI does: the file `shadowlab export`
+    writes comes back with its spot light and camera, and renders as the
+    scene JSON it was written from (at most 0.01 % of pixels one 8-bit step
+    apart, as tests/cli/gltf.sh allows)."""
+    source = os.path.join(SOURCE, "scenes", "spot-objects.json")
+    gltf = tmp_path / "spot.glb"
+    subprocess.run([os.environ["SHADOWLAB_TOOL"], "export", source, "-o", str(gltf)], check=True, capture_output=True)
+    scene = shadowlab.load_scene(str(gltf))
+    assert [light["type"] for light in scene.lights] == ["spot"]
+    json_scene = shadowlab.load_scene(source)
+    a = shadowlab.render(scene, 160, 120).astype(int)
+    b = shadowlab.render(json_scene, 160, 120).astype(int)
+    differ = np.abs(a - b).max(axis=2)
+    assert differ.max() <= 1 and (differ > 0).sum() <= 0.0001 * differ.size

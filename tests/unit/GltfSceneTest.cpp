@@ -289,3 +289,45 @@ TEST_F(GltfSceneTest, ASceneFileIncludesAGltfsLightsAndCamera) {
         }
     }
 }
+
+// Orthographic cameras: ymag is half the view's height (Camera::orthoHeight);
+// a znear of 0 becomes a small positive near plane, with a note; bad values
+// name their path. A scene with one refuses volumes and cascades by path.
+TEST_F(GltfSceneTest, OrthographicCamerasKeepTheirHeight) {
+    json m = litModel();
+    m["cameras"][0] = json::parse(R"({"type": "orthographic", "orthographic": {"xmag": 3, "ymag": 2, "znear": 0, "zfar": 40}})");
+    const Scene scene = loadSceneFile(write(m));
+    EXPECT_FLOAT_EQ(scene.camera.orthoHeight, 4.0f);
+    EXPECT_FLOAT_EQ(scene.camera.farPlane, 40.0f);
+    EXPECT_GT(scene.camera.nearPlane, 0.0f);
+    ASSERT_EQ(scene.notes.size(), 1u);
+    EXPECT_NE(scene.notes[0].find("cameras[0] has znear 0"), std::string::npos) << scene.notes[0];
+    const glm::mat4 clip = scene.camera.clipFromView(1.5f);
+    EXPECT_FLOAT_EQ(clip[3][3], 1.0f) << "orthographic: w stays 1";
+    EXPECT_FLOAT_EQ(clip[1][1], 0.5f) << "2 / height";
+    // Written and read back, the height stays.
+    const fs::path again = dir_ / "again.gltf";
+    writeGltfScene(scene, again);
+    EXPECT_FLOAT_EQ(loadSceneFile(again).camera.orthoHeight, 4.0f);
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {R"({"xmag": 1, "ymag": 0, "znear": 0.1, "zfar": 9})", "cameras[0].orthographic.ymag: must be greater than 0"},
+        {R"({"xmag": 1, "ymag": 1, "znear": -1, "zfar": 9})", "cameras[0].orthographic.znear: must be 0 or more"},
+        {R"({"xmag": 1, "ymag": 1, "znear": 2, "zfar": 1})", "cameras[0].orthographic.zfar: must be greater than znear"},
+    };
+    for (const auto& [lens, expected] : cases) {
+        m["cameras"][0]["orthographic"] = json::parse(lens);
+        const std::string message = errorOf(m);
+        EXPECT_NE(message.find("model.gltf: " + expected), std::string::npos) << message;
+    }
+    std::ofstream(dir_ / "scene.json") << R"({"camera": {"orthoHeight": 6}, "lights": [{"type": "directional"}]})";
+    EXPECT_FLOAT_EQ(loadSceneFile(dir_ / "scene.json").camera.orthoHeight, 6.0f);
+    for (const std::string set : {"lights[0].shadow.technique=volume", "lights[0].shadow.map.cascades=2"}) {
+        try {
+            loadSceneFile(dir_ / "scene.json", {set});
+            ADD_FAILURE() << "no error: " << set;
+        } catch (const UnsupportedError& e) {
+            EXPECT_NE(std::string(e.what()).find("perspective"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("--set " + set), std::string::npos) << e.what();
+        }
+    }
+}

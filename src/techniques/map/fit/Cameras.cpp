@@ -5,6 +5,8 @@
 #include "techniques/map/options/Filters.h"
 #include "techniques/map/options/Settings.h"
 
+#include <shadowlab/Error.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,6 +67,7 @@ LightWarp lightWarp(const FrameInfo& frame, const MapOptions& o) {
 
 void fitCascades(MapLight& p, const Light& light, const FrameInfo& frame, const FitInput& in) {
     const Camera& camera = frame.scene.camera;
+    if (camera.orthoHeight > 0.0f) throw UnsupportedError("map: cascades split a perspective view; with camera.orthoHeight set use cascades 1");
     const float aspect = aspectOf(frame);
     // Stabilised slices must not move with the camera: they end at a reach
     // that changes by steps (stableReach); tight ones at the farthest
