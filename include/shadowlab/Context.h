@@ -54,6 +54,22 @@ public:
     /// the same as headless. Throws shadowlab::Error when there is no display,
     /// no OpenGL 4.5 core, or the build has SHADOWLAB_BUILD_VIEWER off.
     static Context createWindow(int width, int height, const std::string& title, const ContextOptions& options = {});
+    /// The OpenGL 4.5 core context current on the calling thread, made by
+    /// the caller (GLFW, SDL, Qt, its own EGL or GLX): shadowlab draws into
+    /// it and owns nothing of it. Every Renderer call on an adopted context
+    /// puts back the GL state it changes (bindings of framebuffers, program,
+    /// vertex array and buffers, textures and samplers on units 0-31, the
+    /// active unit, viewport and scissor, depth, stencil, blend, cull and
+    /// polygon-offset state and masks, clip distances, depth clamp,
+    /// seamless cube maps, clip control, sRGB writes, pixel-store
+    /// alignment, clear values), so the caller's next draw is unaffected.
+    /// With options.debug, shadowlab's KHR_debug callback replaces the
+    /// caller's until the Context is destroyed, which puts the caller's
+    /// back. makeCurrent() checks that the context is still current (it
+    /// cannot make it so); releaseCurrent() does nothing; destroying the
+    /// Context leaves the GL context to the caller. Throws shadowlab::Error
+    /// when no context is current or it is not OpenGL 4.5 core.
+    static Context adoptCurrent(const ContextOptions& options = {});
 
     Context(Context&&) noexcept;
     Context& operator=(Context&&) noexcept;

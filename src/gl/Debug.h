@@ -28,6 +28,8 @@ struct Context::Impl {
     /// Programs live as long as the context; derived destructors call
     /// releaseGlObjects() while the context still exists.
     std::unique_ptr<gl::ProgramCache> programs = std::make_unique<gl::ProgramCache>();
+    /// The caller's context (Context::adoptCurrent): calls put its GL state back.
+    bool adopted = false;
     void releaseGlObjects() { programs.reset(); }
     virtual ~Impl() = default;
     virtual void makeCurrent() = 0;

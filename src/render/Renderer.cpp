@@ -1,9 +1,9 @@
-// The frame: which passes run in which order (see Renderer.h). The
-// renderer's state and its services to techniques: RendererImpl.h.
+// The frame: which passes run in which order (Renderer.h); the renderer's state and its services to techniques: RendererImpl.h.
 #include "render/RendererImpl.h"
 
 #include "gl/Calls.h"
 #include "gl/Debug.h"
+#include "gl/SavedState.h"
 
 #include <shadowlab/Techniques.h>
 
@@ -27,11 +27,14 @@ gl::ClockKind clockKind(TimingClock clock, const GlInfo& info) {
 
 } // namespace
 
-
-Renderer::Renderer(Context& context) : impl_(std::make_unique<Impl>(context)) {}
+Renderer::Renderer(Context& context) {
+    const gl::CallerState kept(context.impl().adopted);
+    impl_ = std::make_unique<Impl>(context);
+}
 Renderer::~Renderer() = default;
 
 void Renderer::upload(const Scene& scene) {
+    const gl::CallerState kept(impl_->context.impl().adopted);
     impl_->gpu.emplace(scene);
     impl_->uploadedMeshes = scene.meshes.size();
     ++impl_->uploads;
@@ -39,7 +42,10 @@ void Renderer::upload(const Scene& scene) {
     gl::throwIfOutOfMemory("while uploading the scene's meshes and textures");
 }
 
-FrameStats Renderer::render(const Scene& scene, const RenderOptions& options) { return impl_->frame(scene, options, nullptr); }
+FrameStats Renderer::render(const Scene& scene, const RenderOptions& options) {
+    const gl::CallerState kept(impl_->context.impl().adopted);  // Context::adoptCurrent: the caller's GL state back after the call
+    return impl_->frame(scene, options, nullptr);
+}
 
 FrameStats Renderer::renderWithVisibility(const Scene& scene, const RenderOptions& options,
                                           const std::vector<std::vector<float>>& visibility) {
@@ -49,6 +55,7 @@ FrameStats Renderer::renderWithVisibility(const Scene& scene, const RenderOption
                     std::to_string(scene.lights.size()) + " lights");
     for (const auto& v : visibility)
         if (v.size() != pixels) throw Error("Renderer::renderWithVisibility: a visibility image does not match the render size");
+    const gl::CallerState kept(impl_->context.impl().adopted);
     return impl_->frame(scene, options, &visibility);
 }
 
@@ -275,12 +282,14 @@ std::vector<T> readTexture(const gl::Texture& texture, glm::ivec2 size, GLenum f
 } // namespace
 
 ImageRGBA8 Renderer::readColor() const {
+    const gl::CallerState kept(impl_->context.impl().adopted);
     if (!impl_->targets) throw Error("Renderer::readColor: nothing rendered yet");
     const FrameTargets& t = *impl_->targets;
     return {t.size.x, t.size.y, readTexture<std::uint8_t>(t.color, t.size, GL_RGBA, GL_UNSIGNED_BYTE, 4)};
 }
 
 std::vector<glm::vec3> Renderer::readVisibilityRgb(const Scene& scene, std::size_t lightIndex) {
+    const gl::CallerState kept(impl_->context.impl().adopted);
     Impl& d = *impl_;
     if (!d.targets) throw Error("Renderer::readVisibility: nothing rendered yet");
     if (lightIndex >= scene.lights.size())
@@ -321,6 +330,7 @@ std::vector<float> Renderer::readVisibility(const Scene& scene, std::size_t ligh
 }
 
 std::vector<DebugImage> Renderer::debugImages(const Scene& scene, const DebugImageKinds& kinds) {
+    const gl::CallerState kept(impl_->context.impl().adopted);
     Impl& d = *impl_;
     if (!d.targets) throw Error("Renderer::debugImages: nothing rendered yet");
     d.checkScene(scene);
@@ -359,6 +369,7 @@ std::vector<LightFrustum> Renderer::lightFrustums(const Scene& scene) const {
 }
 
 void Renderer::blitToDefaultFramebuffer() const {
+    const gl::CallerState kept(impl_->context.impl().adopted);
     if (!impl_->targets) throw Error("Renderer::blitToDefaultFramebuffer: nothing rendered yet");
     const FrameTargets& t = *impl_->targets;
     gl::apply(gl::RenderState{});  // no sRGB conversion: the bytes as they are
@@ -367,6 +378,7 @@ void Renderer::blitToDefaultFramebuffer() const {
 }
 
 SurfaceBuffer Renderer::readSurfaces() const {
+    const gl::CallerState kept(impl_->context.impl().adopted);
     if (!impl_->targets) throw Error("Renderer::readSurfaces: nothing rendered yet");
     if (!impl_->lastFrameHadSurfaces)
         throw Error("Renderer::readSurfaces: the last frame did not write surfaces (render with RenderOptions::surfaces = true)");
