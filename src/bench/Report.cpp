@@ -12,9 +12,6 @@
 #include <shadowlab/FileWrite.h>
 
 #include <algorithm>
-#include <cmath>
-#include <fstream>
-#include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string_view>
