@@ -23,8 +23,8 @@ namespace {
 std::string scenePath(const py::handle& scene) {
     if (py::isinstance<PyScene>(scene)) {
         const PyScene& s = scene.cast<const PyScene&>();
-        if (s.text || s.path.empty() || !s.overrides.empty())
-            throw InputFailure("scenes: bench takes scene files; a Scene from load_scene_json, default_scene or with overrides is not one "
+        if (s.text || s.path.empty() || !s.overrides.empty() || s.camera >= 0)
+            throw InputFailure("scenes: bench takes scene files; a Scene from load_scene_json, default_scene, with overrides or a camera= is not one "
                                   "(give the file, and the overrides as bench's overrides=)");
         return s.path;
     }

@@ -60,6 +60,7 @@ struct PyScene {
     std::vector<std::string> overrides;  ///< as `--set` lines
     std::optional<std::string> text;     ///< load_scene_json: the JSON text
     std::string baseDir;                 ///< load_scene_json: where its relative paths start
+    int camera = -1;                     ///< load_scene's camera=: a glTF file's camera index; -1 its first
 };
 
 // ---- arguments (Arguments.cpp) --------------------------------------------
@@ -104,7 +105,7 @@ void checkSoftSamples(int softSamples, int width, int height);
 
 // ---- scenes (Scenes.cpp) --------------------------------------------------
 
-PyScene load(const std::string& path, std::vector<std::string> lines);
+PyScene load(const std::string& path, std::vector<std::string> lines, int camera = -1);
 PyScene loadJson(const std::string& text, const std::string& baseDir, std::vector<std::string> lines);
 void bindScenes(py::module_& m);
 

@@ -6,10 +6,11 @@
 
 namespace shadowlab::python {
 
-PyScene load(const std::string& path, std::vector<std::string> lines) {
+PyScene load(const std::string& path, std::vector<std::string> lines, int camera) {
+    if (path.empty() && camera >= 0) throw InputFailure("camera: needs a glTF file (the default scene has one camera)");
     try {
-        Scene s = path.empty() ? defaultScene(lines) : loadSceneFile(path, lines);
-        return {std::make_shared<const Scene>(std::move(s)), path, std::move(lines), std::nullopt, {}};
+        Scene s = path.empty() ? defaultScene(lines) : loadSceneFile(path, lines, SceneFileOptions{camera});
+        return {std::make_shared<const Scene>(std::move(s)), path, std::move(lines), std::nullopt, {}, camera};
     } catch (const Error& e) {
         raiseInput(e, lines);
     }
@@ -27,7 +28,7 @@ PyScene loadJson(const std::string& text, const std::string& baseDir, std::vecto
 namespace {
 
 PyScene reload(const PyScene& s, std::vector<std::string> lines) {
-    return s.text ? loadJson(*s.text, s.baseDir, std::move(lines)) : load(s.path, std::move(lines));
+    return s.text ? loadJson(*s.text, s.baseDir, std::move(lines)) : load(s.path, std::move(lines), s.camera);
 }
 
 py::list vec3(const glm::vec3& v) { return py::cast(std::vector<float>{v.x, v.y, v.z}); }
@@ -84,10 +85,18 @@ void bindScenes(py::module_& m) {
         }, py::arg("overrides"), "A new scene: this one's file and overrides, with these set (a key it had takes the new value; the same paths as --set)")
         .def("__repr__", [](const PyScene& s) { return "<shadowlab.Scene '" + s.scene->name + "', " + std::to_string(s.scene->lights.size()) + " lights>"; });
 
-    m.def("load_scene", [](const py::object& path, const py::dict& overrides) {
-        return load(pathArgument(path, "path"), overrideLines(overrides));
-    }, py::arg("path"), py::arg("overrides") = py::dict(),
-          "A scene file (JSON; a str or os.PathLike) with overrides {path: value} as --set takes them, e.g. {\"lights[0].shadow.map.size\": 1024}");
+    m.def("load_scene", [](const py::object& path, const py::dict& overrides, const py::object& camera) {
+        int index = -1;
+        if (!camera.is_none()) {
+            if (PyBool_Check(camera.ptr()) || !py::isinstance<py::int_>(camera)) throw InputFailure("camera: expected an int or None");
+            const long long v = camera.cast<long long>();
+            if (v < 0 || v > 65535) throw InputFailure("camera " + std::to_string(v) + ": expected an index from 0 (a glTF file's cameras, in node order)");
+            index = static_cast<int>(v);
+        }
+        return load(pathArgument(path, "path"), overrideLines(overrides), index);
+    }, py::arg("path"), py::arg("overrides") = py::dict(), py::arg("camera") = py::none(),
+          "A scene file (JSON, or a .gltf/.glb file as a whole scene; a str or os.PathLike) with overrides {path: value} as --set takes them, "
+          "e.g. {\"lights[0].shadow.map.size\": 1024}; camera: a glTF file's camera by index (default its first)");
     m.def("load_scene_json", [](const py::object& text, const py::object& baseDir, const py::dict& overrides) {
         if (!py::isinstance<py::str>(text)) throw InputFailure("text: expected the scene's JSON as a str");
         std::string json;

@@ -159,7 +159,7 @@ void explainArgumentErrors(py::module_& m) {
                   {"frames", Kind::Int, false}, {"warmup", Kind::Int, false}, time, {"fps", Kind::Float, false}, {"flips", Kind::Bool, false},
                   softSamples, {"out", Kind::Any, false}, {"rounds", Kind::Int, false}, {"skip_unsupported", Kind::Bool, false}},
                  scene);
-    wrapFunction(m, "load_scene", {{"path", Kind::Any, true}, overrides}, scene);
+    wrapFunction(m, "load_scene", {{"path", Kind::Any, true}, overrides, {"camera", Kind::Any, false}}, scene);
     wrapFunction(m, "load_scene_json", {{"text", Kind::Any, true}, {"base_dir", Kind::Any, false}, overrides}, scene);
     wrapFunction(m, "default_scene", {overrides}, scene);
     wrapFunction(m, "live_gl_objects", {}, scene);

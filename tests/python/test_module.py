@@ -309,3 +309,10 @@ def test_a_gltf_file_is_a_whole_scene(tmp_path):
     b = shadowlab.render(json_scene, 160, 120).astype(int)
     differ = np.abs(a - b).max(axis=2)
     assert differ.max() <= 1 and (differ > 0).sum() <= 0.0001 * differ.size
+    # camera=N picks a glTF file's camera; past its one camera, or for a scene file, an InputError.
+    assert shadowlab.load_scene(str(gltf), camera=0).camera == scene.camera
+    assert scene.with_overrides({"lights[0].intensity": 2}).camera == scene.camera
+    for path, camera, message in [(str(gltf), 1, r"camera 1: the scene places 1 camera"), (source, 0, r"a camera index is for glTF files"),
+                                  (str(gltf), -2, r"^camera -2: expected an index from 0"), (str(gltf), True, r"^camera: expected an int or None")]:
+        with pytest.raises(shadowlab.InputError, match=message):
+            shadowlab.load_scene(path, camera=camera)
