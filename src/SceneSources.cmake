@@ -9,6 +9,7 @@ file(GLOB _technique_options CONFIGURE_DEPENDS ${_scene_dir}/techniques/*Options
 set(SHADOWLAB_SCENE_SOURCES
   ${_technique_options}
   ${_scene_dir}/techniques/Catalog.cpp
+  ${_scene_dir}/core/Base64.cpp
   ${_scene_dir}/core/FileWrite.cpp
   ${_scene_dir}/core/Image.cpp
   ${_scene_dir}/core/Options.cpp

@@ -10,8 +10,6 @@ namespace shadowlab::bench {
 
 /// `text` with &, <, > and " escaped for HTML.
 std::string escape(const std::string& text);
-/// `bytes` in base64.
-std::string base64(const std::string& bytes);
 /// The PNG `file` at most `width` pixels wide (averaged down), as a data:
 /// URI: a JPEG at quality 85 when `photo` (a rendered frame), else a PNG
 /// (an error image's flat colours). Keeps a report of many images small.

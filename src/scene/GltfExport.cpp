@@ -6,6 +6,9 @@
 // (materials) read back.
 #include <shadowlab/GltfExport.h>
 
+#include "core/Base64.h"
+#include "scene/MeshFile.h"
+
 #include <shadowlab/Error.h>
 #include <shadowlab/FileWrite.h>
 #include <shadowlab/Image.h>
@@ -16,9 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <map>
 #include <utility>
 
@@ -38,19 +39,6 @@ json matrix(const glm::mat4& m) {
     json out = json::array();
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) out.push_back(m[c][r]);
-    return out;
-}
-
-std::string base64(const std::string& bytes) {
-    static const char* const digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-        std::uint32_t v = 0;
-        for (std::size_t k = 0; k < 3; ++k) v = v << 8 | (k < n ? static_cast<std::uint8_t>(bytes[i + k]) : 0u);
-        for (std::size_t k = 0; k < 4; ++k) out += k <= n ? digits[(v >> (18 - 6 * k)) & 63u] : '=';
-    }
     return out;
 }
 
@@ -307,8 +295,7 @@ private:
 } // namespace
 
 std::vector<std::string> writeGltfScene(const Scene& scene, const fs::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = meshfile::lowercaseExtension(file);
     if (ext != ".gltf" && ext != ".glb") throw Error(text::escapeControl(file.string()) + ": expected a name ending in .gltf or .glb");
     if (file.string().size() > 4096) throw Error(text::escapeControl(file.string().substr(0, 64)) + "...: name too long");
     // The lights and the camera where their paths put them at time 0 (glTF animations are not written).

@@ -112,14 +112,11 @@ struct Document {
 };
 
 // The deepest of `keys` under `r` that the document has (where a value came from, a file's or --set's).
-Reader deepest(const Reader& r, std::initializer_list<const char*> keys) {
-    if (keys.size() == 0 || !r.value().is_object() || !r.has(*keys.begin())) return r;
-    const Reader next = r.child(*keys.begin());
-    const std::vector<const char*> rest(keys.begin() + 1, keys.end());
-    if (rest.empty() || !next.value().is_object() || !next.has(rest.front())) return next;
-    const Reader last = next.child(rest.front());
-    return rest.size() < 2 || !last.value().is_object() || !last.has(rest[1]) ? last : last.child(rest[1]);
+Reader deepest(const Reader& r, const char* const* key, const char* const* end) {
+    if (key == end || !r.value().is_object() || !r.has(*key)) return r;
+    return deepest(r.child(*key), key + 1, end);
 }
+Reader deepest(const Reader& r, std::initializer_list<const char*> keys) { return deepest(r, keys.begin(), keys.end()); }
 
 // An orthographic camera (camera.orthoHeight) with a technique that needs a
 // perspective one: shadow volumes (their far caps at infinity) and cascades
